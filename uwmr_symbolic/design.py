@@ -1,0 +1,212 @@
+"""Design loading: read a design file, check it is usable, return a `Design`.
+
+A design file is Python that defines ``f`` (a SymPy expression in real ``e1``,
+``e2``), and optionally ``params``, ``gains``, ``name`` and ``description``.
+Everything that makes a file unusable raises `DesignError` with one line that
+says what is wrong and how to fix it; the CLI turns it into exit status 2."""
+from __future__ import annotations
+
+import ast
+import fractions
+import numbers
+import runpy
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import sympy as sp
+
+from . import e1 as E1, e2 as E2
+
+GAIN_KEYS = ("k1", "k2", "lam", "Vmax", "Wmax", "Vr_max", "Wr_max")
+
+
+class DesignError(Exception):
+    """The design file cannot be used; the message is one line."""
+
+
+@dataclass
+class Design:
+    path: Path
+    f: sp.Expr                       # parameters substituted, canonical e1, e2
+    f_source: sp.Expr                # as written, before substitution
+    params: dict = field(default_factory=dict)   # name -> exact SymPy number
+    gains: dict = field(default_factory=dict)    # scenario -> {key: Rational}
+    name: str = ""
+    description: str = ""
+    f_line: int = 1                  # line of the file that defines f
+
+    @property
+    def stem(self) -> str:
+        return self.path.stem
+
+
+def exact_number(value, what: str) -> sp.Expr:
+    """A number from a design file as an exact SymPy number.  Floats are read
+    as the decimal they print as (0.1 -> 1/10): 'decimal inputs taken as exact
+    rationals'."""
+    if isinstance(value, bool):
+        raise DesignError(f"{what} is a boolean, not a number")
+    if isinstance(value, float):
+        if value != value or value in (float("inf"), float("-inf")):
+            raise DesignError(f"{what} is {value}, not a finite number")
+        return sp.Rational(repr(value))
+    if isinstance(value, (int, fractions.Fraction)):
+        return sp.Rational(value)
+    if isinstance(value, str):
+        try:
+            value = sp.sympify(value, rational=True)
+        except (sp.SympifyError, SyntaxError, TypeError) as exc:
+            raise DesignError(f"{what} = {value!r} is not a number") from exc
+    if isinstance(value, sp.Float):
+        return sp.Rational(str(value))
+    if isinstance(value, sp.Basic) and getattr(value, "is_number", False) and not value.has(sp.I):
+        value = sp.nsimplify(value, rational=True) if value.has(sp.Float) else value
+        if value.is_real is False or value.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+            raise DesignError(f"{what} = {value} is not a finite real number")
+        return value
+    if isinstance(value, numbers.Real):   # numpy scalars
+        return exact_number(float(value), what)
+    raise DesignError(f"{what} = {value!r} is not a number")
+
+
+def _f_line(source: str) -> int:
+    """Line of the last module-level assignment to ``f`` (for annotations)."""
+    line = 1
+    for node in ast.parse(source).body:
+        targets = []
+        if isinstance(node, ast.Assign):
+            targets = node.targets
+        elif isinstance(node, (ast.AnnAssign, ast.AugAssign)):
+            targets = [node.target]
+        for t in targets:
+            if isinstance(t, ast.Name) and t.id == "f":
+                line = node.lineno
+    return line
+
+
+def _run_file(path: Path) -> tuple[dict, str]:
+    try:
+        source = path.read_text()
+    except FileNotFoundError:
+        raise DesignError("no such file") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise DesignError(f"cannot read the file ({exc.__class__.__name__}: {exc})") from None
+    try:
+        compile(source, str(path), "exec")
+    except SyntaxError as exc:
+        raise DesignError(f"syntax error at line {exc.lineno}: {exc.msg}") from None
+    try:
+        namespace = runpy.run_path(str(path), run_name="__uwmr_design__")
+    except SystemExit as exc:
+        raise DesignError(f"the file called exit({exc.code}) while loading") from None
+    except Exception as exc:  # any failure of the user's code is unusable input
+        tb = exc.__traceback__
+        line = None
+        while tb is not None:
+            if tb.tb_frame.f_code.co_filename == str(path):
+                line = tb.tb_lineno
+            tb = tb.tb_next
+        where = f" at line {line}" if line else ""
+        raise DesignError(f"raised {exc.__class__.__name__}{where}: {exc}") from None
+    return namespace, source
+
+
+def _canonical_symbols(expr: sp.Expr) -> sp.Expr:
+    """Replace any symbol named e1/e2 (whatever its assumptions) by ours."""
+    return expr.xreplace({s: {"e1": E1, "e2": E2}[s.name]
+                          for s in expr.free_symbols if s.name in ("e1", "e2")})
+
+
+def _parse_params(raw, f: sp.Expr) -> dict:
+    if raw is None:
+        return {}
+    if not isinstance(raw, dict):
+        raise DesignError(f"params must be a dict, got {type(raw).__name__}")
+    out = {}
+    for key, value in raw.items():
+        name = key.name if isinstance(key, sp.Symbol) else key
+        if not isinstance(name, str):
+            raise DesignError(f"params key {key!r} is neither a symbol nor a name")
+        if name in ("e1", "e2"):
+            raise DesignError(f"params gives a value to {name}, which is a variable of f")
+        out[name] = exact_number(value, f"params[{name}]")
+    return out
+
+
+def _parse_gains(raw) -> dict:
+    if raw is None:
+        return {}
+    if not isinstance(raw, dict):
+        raise DesignError(f"gains must be a dict of scenarios, got {type(raw).__name__}")
+    out = {}
+    for scenario, entries in raw.items():
+        if not isinstance(entries, dict):
+            raise DesignError(f"gain scenario {scenario!r} must be a dict with {', '.join(GAIN_KEYS)}")
+        unknown_keys = sorted(set(entries) - set(GAIN_KEYS))
+        if unknown_keys:
+            raise DesignError(f"gain scenario {scenario!r} has unknown entry {unknown_keys[0]!r}; "
+                              f"expected {', '.join(GAIN_KEYS)}")
+        values = {}
+        for key in GAIN_KEYS:
+            if key not in entries:
+                raise DesignError(f"gain scenario {scenario!r} has no {key!r}")
+            v = exact_number(entries[key], f"gains[{scenario!r}][{key!r}]")
+            if not (v > 0) == True:  # noqa: E712  (SymPy relational)
+                raise DesignError(f"gains[{scenario!r}][{key!r}] = {entries[key]} must be positive")
+            values[key] = v
+        out[str(scenario)] = values
+    return out
+
+
+def _check_real_valued(f: sp.Expr) -> None:
+    """Refuse an f that is undefined or non-real at a sample point.
+
+    This is a cheap screen for unusable input, not a proof of anything: each
+    failure is a concrete point where f has no real value."""
+    if f.has(sp.nan) or f.has(sp.zoo) or f.has(sp.oo) or f.has(-sp.oo):
+        raise DesignError("f contains nan, zoo or infinity (a division by zero in the formula?)")
+    if f.has(sp.I):
+        raise DesignError("f contains the imaginary unit; f must be real-valued")
+    pts = [(0, 0), (1, 0), (0, 1), (-1, 0), (0, -1), (sp.Rational(1, 2), sp.Rational(1, 3)),
+           (3, -2), (-5, 7), (sp.Rational(1, 10), 0), (100, 100)]
+    for a, b in pts:
+        try:
+            v = f.subs({E1: a, E2: b})
+            if isinstance(v, sp.Piecewise) or v.free_symbols:
+                continue
+            v = v.evalf(30)
+        except (ZeroDivisionError, TypeError, ValueError):
+            raise DesignError(f"f cannot be evaluated at (e1, e2) = ({a}, {b})") from None
+        if v.has(sp.nan, sp.zoo) or v.has(sp.oo) or v.has(-sp.oo):
+            hint = " (define the value there with sympy.Piecewise)" if (a, b) == (0, 0) else ""
+            raise DesignError(f"f is undefined at (e1, e2) = ({a}, {b}){hint}")
+        re, im = v.as_real_imag()
+        if im != 0 and abs(im) > 1e-25:
+            raise DesignError(f"f is not real-valued at (e1, e2) = ({a}, {b}): f = {sp.N(v, 6)}")
+
+
+def load_design(path) -> Design:
+    """Load and check a design file (the public contract of the README)."""
+    path = Path(path)
+    ns, source = _run_file(path)
+    if "f" not in ns:
+        raise DesignError("defines no `f`; add e.g. `f = sympy.log(1 + e1**2 + e2**2) / 2`")
+    f_source = ns["f"]
+    if isinstance(f_source, bool) or not isinstance(f_source, sp.Expr):
+        raise DesignError(f"`f` is a {type(f_source).__name__}, not a SymPy expression in e1, e2")
+    f = _canonical_symbols(f_source)
+    params = _parse_params(ns.get("params"), f)
+    f = f.subs({s: params[s.name] for s in f.free_symbols if s.name in params})
+    extra = sorted(s.name for s in f.free_symbols if s not in (E1, E2))
+    if extra:
+        raise DesignError(f"free symbol {extra[0]!r} of f has no value; add it to `params`")
+    unused = sorted(set(params) - {s.name for s in _canonical_symbols(f_source).free_symbols})
+    if unused:
+        raise DesignError(f"params[{unused[0]!r}] names no symbol of f")
+    f = sp.piecewise_fold(f.rewrite(sp.Piecewise)) if f.has(sp.Abs, sp.Max, sp.Min, sp.Heaviside, sp.sign) else f
+    _check_real_valued(f)
+    gains = _parse_gains(ns.get("gains"))
+    name = ns.get("name") if isinstance(ns.get("name"), str) else path.stem
+    description = ns.get("description") if isinstance(ns.get("description"), str) else ""
+    return Design(path=path, f=f, f_source=f_source, params=params, gains=gains,
+                  name=name, description=description, f_line=_f_line(source))

@@ -1,0 +1,54 @@
+"""Gain check against bound (10), in exact rational arithmetic.
+
+  |V| <= |Vr|max + k1                 must be <= Vmax
+  |W| <= |Wr|max + lam |Vr|max kf + k2  must be <= Wmax
+
+Inputs are exact rationals (decimals read as written), kf is its certified
+upper bound (the exact value when it is proved).  A violation by 1e-5 is a
+violation."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+
+@dataclass
+class GainCheck:
+    scenario: str
+    V_bound: sp.Expr
+    W_bound: sp.Expr | None     # None: kf infinite
+    V_margin: sp.Expr
+    W_margin: sp.Expr | None
+    lam_max: sp.Expr | None     # largest lam keeping the W bound within Wmax
+    kf_known: bool = True       # False: kf undecided, the W bound cannot be checked
+
+    @property
+    def V_ok(self) -> bool:
+        return bool(self.V_margin >= 0)
+
+    @property
+    def W_ok(self) -> bool | None:
+        if not self.kf_known:
+            return None
+        return self.W_margin is not None and bool(self.W_margin >= 0)
+
+
+def check_gains(gains: dict, kf_upper, kf_known: bool = True) -> dict[str, GainCheck]:
+    """Bound (10) for every scenario.  kf_upper: exact SymPy number, or None
+    with kf_known=True for an infinite kf (the W bound is then infinite and
+    only lam = 0 would do), or kf_known=False when kf is undecided."""
+    out = {}
+    for name, g in gains.items():
+        V_bound = g["Vr_max"] + g["k1"]
+        V_margin = g["Vmax"] - V_bound
+        if kf_upper is None:
+            W_bound = W_margin = None
+            lam_max = sp.Integer(0) if kf_known else None
+        else:
+            W_bound = g["Wr_max"] + g["lam"] * g["Vr_max"] * kf_upper + g["k2"]
+            W_margin = g["Wmax"] - W_bound
+            room = g["Wmax"] - g["Wr_max"] - g["k2"]
+            lam_max = sp.Max(0, room / (g["Vr_max"] * kf_upper)) if kf_upper != 0 else sp.oo
+        out[name] = GainCheck(name, V_bound, W_bound, V_margin, W_margin, lam_max, kf_known)
+    return out

@@ -1,0 +1,154 @@
+"""kf = sup over R^2 of |df/de2| (property P1, bound (10)), certified.
+
+For a radial f, |df/de2| = |F'(s)| |e2|/s, whose supremum over the circle of
+radius s is |F'(s)| (at e1 = 0), so kf = sup_{s >= 0} |F'(s)|.  The result is
+a rigorous enclosure [lower, upper] from interval branch and bound, and an
+exact closed form when one is found *and proved*: a candidate c (a critical
+value or a limit) is accepted only after c - |F'| >= 0 is proved on all of
+[0, oo) with the prover of `univariate`."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+
+import sympy as sp
+
+from .limits import NoLimit, limit_right
+from .profile import S, float_of, one_sided_value
+from .timeouts import attempt
+from .univariate import T, enclose_sup, exact_sign, exact_value, prepare, prove_sign, tail_form
+
+REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
+
+
+@dataclass
+class SupCertificate:
+    """sup of a function of s over [0, oo) in [lower, upper]; `exact` when
+    proved; `attained` True/False when proved, else None."""
+    lower: Fraction | None
+    upper: Fraction | None        # None: no finite bound
+    exact: sp.Expr | None
+    attained: bool | None
+    reason: str
+    unbounded_witness: dict | None = None
+
+    def show(self) -> str:
+        if self.exact is not None:
+            return f"{self.exact} = {float_of(self.exact):.10g}"
+        if self.upper is None:
+            return "unbounded" if self.unbounded_witness else "undecided"
+        return f"[{float(self.lower):.10g}, {float(self.upper):.10g}]"
+
+
+KfCertificate = SupCertificate
+
+
+def _candidates(expr, lo, hi):
+    """(value, point) candidates for the sup of expr on (lo, hi): critical
+    points found by SymPy, one-sided values at the ends (point None at oo)."""
+    out = []
+    crit = attempt(lambda: sp.solveset(sp.diff(expr, S), S, sp.Interval.open(lo, hi)), 3.0)
+    if isinstance(crit, sp.FiniteSet):
+        for c in crit:
+            v = exact_value(expr, S, c)
+            if v is not None:
+                out.append((attempt(lambda: sp.nsimplify(sp.radsimp(v)) if v.has(sp.Float) else sp.radsimp(v), 2.0, v), c))
+    if lo != sp.oo:
+        v = one_sided_value(expr, lo, +1)
+        if v is not None and v not in (sp.oo, -sp.oo):
+            out.append((v, lo))
+    if hi == sp.oo:
+        try:
+            v = limit_right(tail_form(expr, S), T).value
+            if v not in (sp.oo, -sp.oo):
+                out.append((v, None))
+        except NoLimit:
+            pass
+    else:
+        v = one_sided_value(expr, hi, -1)
+        if v is not None and v not in (sp.oo, -sp.oo):
+            out.append((v, hi))
+    return out
+
+
+def _prove_bound(c, exprs, pieces, zeros_of) -> tuple[bool, bool]:
+    """Prove c - E_i >= 0 on every piece; returns (proved, strictly)."""
+    strict = True
+    for E, piece in zip(exprs, pieces):
+        zeros = zeros_of.get(id(piece), [])
+        zeros_in = [z for z in zeros if z is not None and z != piece.lo and z != piece.hi]
+        v = prove_sign(c - E, S, piece.lo, piece.hi, want=1, zeros=zeros_in)
+        if not v.proved:
+            return False, False
+        strict = strict and not zeros_in
+    return True, strict
+
+
+def certify_sup(analysis, exprs, name: str) -> SupCertificate:
+    """Certify sup over s > 0 of a function given piecewise by ``exprs``
+    (one expression per piece of the profile)."""
+    pieces = analysis.profile.pieces
+    exprs = [prepare(e) for e in exprs]
+    # unboundedness: a one-sided limit of +oo is a proof
+    for E, piece in zip(exprs, pieces):
+        ends = [(piece.lo, +1)] + ([(piece.hi, -1)] if piece.hi != sp.oo else [])
+        for c, side in ends:
+            v = one_sided_value(E, c, side)
+            if v == sp.oo:
+                return SupCertificate(None, None, None, None, f"{name} -> oo as s -> {c}",
+                                      {"s": str(c), "limit": "oo"})
+        if piece.hi == sp.oo:
+            try:
+                if limit_right(tail_form(E, S), T).value == sp.oo:
+                    return SupCertificate(None, None, None, None, f"{name} -> oo as s -> oo",
+                                          {"s": "oo", "limit": "oo"})
+            except NoLimit:
+                pass
+    lower, upper, top = None, Fraction(0), None
+    for E, piece in zip(exprs, pieces):
+        enc = enclose_sup(E, S, piece.lo, piece.hi, rel_tol=REL_WIDTH)
+        if enc.lower is not None and (lower is None or enc.lower > lower):
+            lower, top = enc.lower, (E, piece, enc)
+        if enc.upper is None:
+            upper = None
+        elif upper is not None:
+            upper = max(upper, enc.upper)
+    if upper is None or lower is None:
+        return SupCertificate(lower, None, None, None, f"branch and bound found no finite bound for {name}")
+    # exact candidates from the piece holding the supremum
+    E, piece, enc = top
+    for value, point in _candidates(E, piece.lo, piece.hi):
+        fv = float_of(value)
+        if not (float(lower) - 1e-9 * abs(fv) - 1e-300 <= fv <= float(upper) + 1e-9 * abs(fv)):
+            continue
+        zeros = {id(piece): [point] if point is not None else []}
+        ok, strict = _prove_bound(value, exprs, pieces, zeros)
+        if not ok:
+            continue
+        if point is not None and point != sp.oo:
+            attained = True
+        else:
+            attained = False if strict else None
+        where = f"at s = {point}" if point is not None else "approached as s -> oo"
+        return SupCertificate(value, value, value, attained,
+                              f"sup {name} = {value} {where}, proved by {value} - {name} >= 0 on [0, oo)")
+    return SupCertificate(lower, upper, None, None,
+                          f"interval branch and bound: sup {name} in [{float(lower):.10g}, {float(upper):.10g}]")
+
+
+def certify_kf(analysis) -> SupCertificate:
+    """kf = sup |F'| over [0, oo) (bound (10), property P1)."""
+    pieces = analysis.profile.pieces
+    dF = [prepare(sp.diff(p.expr, S)) for p in pieces]
+    pos = certify_sup(analysis, dF, "F'")
+    if pos.upper is None:
+        return pos
+    neg = certify_sup(analysis, [-e for e in dF], "-F'")
+    if neg.upper is None:
+        return neg
+    if neg.upper <= (pos.lower if pos.lower is not None else 0):
+        return pos
+    if pos.upper <= (neg.lower if neg.lower is not None else 0):
+        return neg
+    return SupCertificate(max(pos.lower, neg.lower), max(pos.upper, neg.upper), None, None,
+                          "sup |F'| from both signs of F'")

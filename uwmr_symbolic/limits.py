@@ -1,0 +1,236 @@
+"""One-sided limits by continuity rules: a small, rigorous limit calculus.
+
+``limit_right(expr, x)`` computes lim_{x->0+} expr.  It walks the expression
+and applies only textbook limit theorems (sums, products and quotients of
+limits, continuity of elementary functions at finite points, the limits of
+monotone functions at +-infinity, and powers of a quantity that tends to 0
+from a known side).  Every indeterminate form (inf - inf, 0 * inf, 0/0,
+inf/inf, oscillation) raises `NoLimit`: the calculus never guesses, so a
+returned value is a proof.  SymPy's own ``limit`` is a heuristic and is never
+used to prove anything here.
+
+Values are exact SymPy numbers or +-oo.  Each limit carries ``side``: the
+eventual strict sign of the quantity near the limit (+1, -1), 0 for an exact
+constant, or None when it is not known."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from .interval import Interval, Undefined
+
+
+class NoLimit(Exception):
+    """The limit calculus cannot decide this limit."""
+
+
+@dataclass(frozen=True)
+class Lim:
+    value: sp.Expr      # exact number, sp.oo or -sp.oo
+    side: int | None    # eventual sign (+1/-1), 0 if exactly constant, None if unknown
+
+    @property
+    def infinite(self) -> bool:
+        return self.value in (sp.oo, -sp.oo)
+
+
+def sign_of(value: sp.Expr) -> int:
+    """Rigorous sign of an exact real constant (interval arithmetic)."""
+    if value == sp.oo:
+        return 1
+    if value == -sp.oo:
+        return -1
+    if value == 0:
+        return 0
+    try:
+        box = Interval.point(value)
+    except (Undefined, TypeError, ValueError) as exc:
+        raise NoLimit(f"cannot evaluate {value}: {exc}") from None
+    if box.is_positive():
+        return 1
+    if box.is_negative():
+        return -1
+    if sp.simplify(value) == 0:
+        return 0
+    raise NoLimit(f"cannot decide the sign of {value}")
+
+
+def _eventual_sign(lim: Lim) -> int | None:
+    s = sign_of(lim.value)
+    return s if s != 0 else lim.side
+
+
+_MONOTONE_AT_INF = {
+    sp.tanh: (sp.Integer(1), sp.Integer(-1)),
+    sp.atan: (sp.pi / 2, -sp.pi / 2),
+    sp.erf: (sp.Integer(1), sp.Integer(-1)),
+    sp.exp: (sp.oo, sp.Integer(0)),
+    sp.sinh: (sp.oo, -sp.oo),
+    sp.asinh: (sp.oo, -sp.oo),
+    sp.cosh: (sp.oo, sp.oo),
+}
+
+
+def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
+    if expr == x:
+        return Lim(sp.Integer(0), 1)
+    if not expr.has(x):
+        if expr.is_number:
+            return Lim(expr, 0)
+        raise NoLimit(f"{expr} has other free symbols")
+    if isinstance(expr, sp.Add):
+        return _add([_limit(a, x) for a in expr.args])
+    if isinstance(expr, sp.Mul):
+        return _mul([_limit(a, x) for a in expr.args])
+    if isinstance(expr, sp.Pow):
+        base, ex = expr.args
+        if ex.has(x):
+            return _limit(sp.exp(ex * sp.log(base)), x)
+        return _pow(_limit(base, x), ex)
+    if isinstance(expr, sp.Piecewise):
+        for branch, cond in expr.args:
+            truth = _condition(cond, x)
+            if truth is True:
+                return _limit(branch, x)
+            if truth is None:
+                raise NoLimit(f"cannot decide {cond} near the limit")
+        raise NoLimit("no branch of a Piecewise applies")
+    if isinstance(expr, sp.Function) and len(expr.args) == 1:
+        return _function(expr.func, _limit(expr.args[0], x))
+    raise NoLimit(f"no limit rule for {expr.func.__name__}")
+
+
+def _add(terms: list[Lim]) -> Lim:
+    infs = {t.value for t in terms if t.infinite}
+    if len(infs) == 2:
+        raise NoLimit("inf - inf")
+    if infs:
+        v = infs.pop()
+        return Lim(v, 1 if v == sp.oo else -1)
+    value = sp.Add(*[t.value for t in terms])
+    if sign_of(value) != 0:
+        return Lim(value, None)
+    sides = {t.side for t in terms if t.side != 0}
+    if not sides:
+        return Lim(value, 0)
+    return Lim(value, sides.pop() if len(sides) == 1 and None not in sides else None)
+
+
+def _mul(factors: list[Lim]) -> Lim:
+    zero = any(sign_of(f.value) == 0 for f in factors)
+    inf = any(f.infinite for f in factors)
+    if zero and inf:
+        raise NoLimit("0 * inf")
+    signs = [_eventual_sign(f) for f in factors]
+    sign = None if None in signs else int(sp.prod(signs))
+    if inf:
+        if sign is None or sign == 0:
+            raise NoLimit("sign of an infinite product unknown")
+        return Lim(sp.oo if sign > 0 else -sp.oo, sign)
+    value = sp.Mul(*[f.value for f in factors])
+    if all(f.side == 0 for f in factors):
+        return Lim(value, 0)
+    return Lim(value, sign if sign_of(value) == 0 else None)
+
+
+def _pow(base: Lim, ex: sp.Expr) -> Lim:
+    e_sign = sign_of(ex)
+    if e_sign == 0:
+        return Lim(sp.Integer(1), 0)
+    integer = ex.is_integer is True
+    b_sign = _eventual_sign(base)
+    if b_sign is None:
+        raise NoLimit("power of a quantity of unknown sign")
+    if b_sign < 0 and not integer:
+        raise NoLimit("non-integer power of a negative quantity")
+    odd = integer and int(ex) % 2 != 0
+    out_sign = -1 if (b_sign < 0 and odd) else 1
+    if base.infinite:
+        if e_sign > 0:
+            return Lim(sp.oo if out_sign > 0 else -sp.oo, out_sign)
+        return Lim(sp.Integer(0), out_sign)
+    if sign_of(base.value) == 0:
+        if base.side == 0:
+            if e_sign < 0:
+                raise NoLimit("0 to a negative power")
+            return Lim(sp.Integer(0), 0)
+        if e_sign > 0:
+            return Lim(sp.Integer(0), out_sign)
+        return Lim(sp.oo if out_sign > 0 else -sp.oo, out_sign)
+    return Lim(base.value ** ex, 0 if base.side == 0 else None)
+
+
+def _function(func, arg: Lim) -> Lim:
+    if arg.infinite:
+        if func in _MONOTONE_AT_INF:
+            at_pos, at_neg = _MONOTONE_AT_INF[func]
+            v = at_pos if arg.value == sp.oo else at_neg
+            if v in (sp.oo, -sp.oo):
+                return Lim(v, 1 if v == sp.oo else -1)
+            # tanh, atan, erf approach their finite limits from inside
+            return Lim(v, 1 if v == 0 else None)
+        if func is sp.log and arg.value == sp.oo:
+            return Lim(sp.oo, 1)
+        if func is sp.Abs:
+            return Lim(sp.oo, 1)
+        raise NoLimit(f"{func.__name__} at infinity")
+    s = sign_of(arg.value)
+    if func is sp.log:
+        if s > 0:
+            return Lim(sp.log(arg.value), None if arg.side != 0 else 0)
+        if s == 0 and arg.side == 1:
+            return Lim(-sp.oo, -1)
+        raise NoLimit("log of a non-positive quantity")
+    if func is sp.sign:
+        e = _eventual_sign(arg)
+        if e is None:
+            raise NoLimit("sign of a quantity of unknown sign")
+        return Lim(sp.Integer(e), 0)
+    if func is sp.Abs:
+        if s == 0:
+            return Lim(sp.Integer(0), 1 if arg.side in (1, -1) else (0 if arg.side == 0 else None))
+        return Lim(abs(arg.value), None if arg.side != 0 else 0)
+    if func in (sp.exp, sp.sin, sp.cos, sp.tanh, sp.sinh, sp.cosh, sp.atan, sp.asinh, sp.erf):
+        value = func(arg.value)
+        if arg.side == 0:
+            return Lim(value, 0)
+        if s == 0 and func in (sp.sin, sp.tanh, sp.sinh, sp.atan, sp.asinh, sp.erf):
+            return Lim(value, arg.side)    # odd, increasing through 0
+        return Lim(value, None)
+    raise NoLimit(f"no limit rule for {func.__name__}")
+
+
+def _condition(cond, x) -> bool | None:
+    if cond is sp.true or cond is True:
+        return True
+    if cond is sp.false or cond is False:
+        return False
+    if isinstance(cond, sp.And):
+        vals = [_condition(c, x) for c in cond.args]
+        return False if False in vals else (None if None in vals else True)
+    if isinstance(cond, sp.Or):
+        vals = [_condition(c, x) for c in cond.args]
+        return True if True in vals else (None if None in vals else False)
+    if isinstance(cond, sp.Not):
+        v = _condition(cond.args[0], x)
+        return None if v is None else not v
+    if isinstance(cond, sp.core.relational.Relational):
+        d = _limit(cond.lhs - cond.rhs, x)
+        sgn = _eventual_sign(d)
+        if sgn is None or (sgn == 0 and d.side is None):
+            return None
+        if isinstance(cond, (sp.StrictGreaterThan, sp.GreaterThan)):
+            return sgn > 0 or (sgn == 0 and isinstance(cond, sp.GreaterThan))
+        if isinstance(cond, (sp.StrictLessThan, sp.LessThan)):
+            return sgn < 0 or (sgn == 0 and isinstance(cond, sp.LessThan))
+        if isinstance(cond, sp.Eq):
+            return sgn == 0
+        if isinstance(cond, sp.Ne):
+            return sgn != 0
+    return None
+
+
+def limit_right(expr: sp.Expr, x: sp.Symbol) -> Lim:
+    """lim_{x -> 0+} expr, proved by the rules above, or `NoLimit`."""
+    return _limit(sp.sympify(expr), x)

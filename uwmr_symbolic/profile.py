@@ -1,0 +1,287 @@
+"""Radial reduction (P4) and the profile F of a radial f.
+
+If f(e1, e2) = F(|(e1, e2)|) as a symbolic identity, then
+  df/de1 = F'(s) e1/s,  df/de2 = F'(s) e2/s,  s = sqrt(e1^2 + e2^2),
+so e1 df/de2 = e2 df/de1 wherever F is differentiable (P4), and every other
+property becomes a claim about F on [0, oo).  A Piecewise F is split at its
+boundaries into pieces, each a plain expression on an open interval; the
+boundaries are found by SymPy and then *checked*: every condition is proved
+to keep a constant sign between consecutive boundaries, so no boundary can
+be missed.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import sympy as sp
+
+from . import e1 as E1, e2 as E2
+from .interval import Interval, IntervalFunction, Undefined
+from .limits import NoLimit, limit_right
+from .univariate import X, exact_sign, exact_value, prepare, prove_sign, rational_between
+from .verdict import Verdict, proved, refuted, unknown
+
+S = sp.Symbol("s", nonnegative=True)     # the radius |(e1, e2)|
+RHO = sp.sqrt(E1 ** 2 + E2 ** 2)
+
+# exact points on circles of radius 1: (a, b) with a^2 + b^2 = 1
+_UNIT_CIRCLE = [(sp.Integer(1), 0), (0, sp.Integer(1)), (-1, 0), (0, -1),
+                (sp.Rational(3, 5), sp.Rational(4, 5)), (sp.Rational(-3, 5), sp.Rational(4, 5)),
+                (sp.Rational(5, 13), sp.Rational(-12, 13)), (sp.Rational(-8, 17), sp.Rational(-15, 17)),
+                (sp.Rational(20, 29), sp.Rational(21, 29))]
+_RADII = [sp.Rational(1, 3), sp.Rational(1, 2), 1, sp.Rational(3, 2), 2, 3, 5, 10, 37]
+
+
+def radial_profile(f: sp.Expr) -> sp.Expr:
+    """F(s) = f(s, 0) for s >= 0 (the candidate profile)."""
+    return sp.piecewise_fold(f.subs({E1: S, E2: 0}))
+
+
+def verify_radial(f: sp.Expr, F: sp.Expr) -> Verdict:
+    """P4 through radial symmetry: prove f == F(|e|), or refute it with two
+    points on one circle where f takes different (certified) values."""
+    diff = f - F.subs(S, RHO)
+    try:
+        if diff == 0 or sp.simplify(diff) == 0:
+            return proved("f(e1, e2) = F(sqrt(e1^2 + e2^2)) is a symbolic identity, "
+                          "so e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
+    except Exception:  # noqa: BLE001 - SymPy failure is just 'not shown'
+        pass
+    fn = IntervalFunction(f, [E1, E2], mode="range", prec=200)
+    for r in _RADII:
+        values = []
+        for a, b in _UNIT_CIRCLE:
+            p = (r * a, r * b)
+            try:
+                values.append((p, fn(Interval.point(p[0]), Interval.point(p[1]))))
+            except Undefined:
+                continue
+        for p, vp in values:
+            for q, vq in values:
+                if vp.upper_fraction() is not None and vq.lower_fraction() is not None \
+                        and vp.upper_fraction() < vq.lower_fraction():
+                    return refuted(
+                        f"f is not radial: f{_pt(p)} < f{_pt(q)} on the circle of radius {r}, so "
+                        "e1 df/de2 = e2 df/de1 fails somewhere on the arc between them (or the "
+                        "derivatives do not exist there)",
+                        {"point_a": _pt_json(p), "point_b": _pt_json(q),
+                         "f_a": [vp.lower_float(), vp.upper_float()],
+                         "f_b": [vq.lower_float(), vq.upper_float()]})
+    d = sp.diff(f, E2) * E1 - sp.diff(f, E1) * E2
+    try:
+        if sp.simplify(d) == 0:
+            return proved("e1 df/de2 - e2 df/de1 simplifies to 0")
+    except Exception:  # noqa: BLE001
+        pass
+    return unknown("could neither prove f radial nor find two points on a circle with different values")
+
+
+def _pt(p):
+    return f"({p[0]}, {p[1]})"
+
+
+def _pt_json(p):
+    return [str(p[0]), str(p[1])]
+
+
+# --------------------------------------------------------------------------
+# pieces of a Piecewise profile
+
+@dataclass
+class Piece:
+    lo: sp.Expr            # exact, >= 0
+    hi: sp.Expr            # exact or oo
+    expr: sp.Expr          # F on the open interval (lo, hi)
+
+
+@dataclass
+class Profile:
+    """F on [0, oo): pieces between exact boundaries, and F's branch at each
+    boundary point (and at 0)."""
+    pieces: list
+    at_point: dict = field(default_factory=dict)   # boundary -> expression valid there
+
+    @property
+    def boundaries(self):
+        return [p.lo for p in self.pieces[1:]]
+
+
+def _relationals(cond):
+    if isinstance(cond, sp.core.relational.Relational):
+        return [cond]
+    if isinstance(cond, (sp.And, sp.Or, sp.Not)):
+        return [r for a in cond.args for r in _relationals(a)]
+    return []
+
+
+def _choose_branch(pw: sp.Piecewise, truth: dict):
+    for branch, cond in pw.args:
+        value = cond.xreplace(truth) if truth else cond
+        if value in (True, sp.true):
+            return branch
+        if value not in (False, sp.false):
+            return None
+    return None
+
+
+def split_profile(F: sp.Expr) -> tuple[Profile | None, Verdict]:
+    """Split F into pieces, proving the boundary list complete."""
+    F = sp.piecewise_fold(F)
+    if not isinstance(F, sp.Piecewise):
+        if F.has(sp.Piecewise):
+            return None, unknown("nested Piecewise that could not be folded")
+        return Profile([Piece(sp.Integer(0), sp.oo, F)], {sp.Integer(0): F}), proved("no boundaries")
+    rels = list(dict.fromkeys(r for _, c in F.args for r in _relationals(c)))
+    points = set()
+    for rel in rels:
+        g = rel.lhs - rel.rhs
+        try:
+            sols = sp.solveset(sp.Eq(g, 0), S, sp.Interval.open(0, sp.oo))
+        except Exception:  # noqa: BLE001
+            return None, unknown(f"cannot locate where {rel} switches")
+        if not isinstance(sols, sp.FiniteSet):
+            return None, unknown(f"cannot locate where {rel} switches ({sols})")
+        for b in sols:
+            v = exact_value(g, S, b)
+            if v is None or exact_sign(v) != 0:
+                return None, unknown(f"boundary candidate {b} of {rel} not confirmed")
+            points.add(sp.nsimplify(b) if b.has(sp.Float) else b)
+    bounds = [sp.Integer(0), *sorted(points, key=lambda b: float(b)), sp.oo]
+    pieces, at_point = [], {}
+    for i in range(len(bounds) - 1):
+        a, b = bounds[i], bounds[i + 1]
+        truth = {}
+        for rel in rels:
+            g = rel.lhs - rel.rhs
+            m = rational_between(a, b) if b != sp.oo else a + 1
+            s_m = exact_sign(exact_value(g, S, m))
+            if not s_m:
+                return None, unknown(f"cannot decide {rel} at s = {m}")
+            v = prove_sign(g, S, a, b, want=s_m, budget=1500)
+            if not v.proved:
+                return None, unknown(f"cannot prove {rel} keeps its truth value on ({a}, {b}): {v.reason}")
+            truth[rel] = sp.true if rel.func(s_m, 0) else sp.false
+        branch = _choose_branch(F, truth)
+        if branch is None:
+            return None, unknown(f"no branch of F applies on ({a}, {b})")
+        pieces.append(Piece(a, b, branch))
+    for b in bounds[:-1]:
+        truth = {}
+        for rel in rels:
+            sgn = exact_sign(exact_value(rel.lhs - rel.rhs, S, b))
+            if sgn is None:
+                return None, unknown(f"cannot decide {rel} at s = {b}")
+            truth[rel] = sp.true if rel.func(sgn, 0) else sp.false
+        branch = _choose_branch(F, truth)
+        if branch is None:
+            return None, unknown(f"no branch of F applies at s = {b}")
+        at_point[b] = branch
+    return Profile(pieces, at_point), proved(f"boundaries at s = {', '.join(map(str, bounds[1:-1]))}")
+
+
+# --------------------------------------------------------------------------
+# continuity of one expression on an interval, and one-sided values
+
+def guards(expr: sp.Expr) -> list[tuple[sp.Expr, str]] | None:
+    """Conditions under which expr is continuous: (g, 'nonzero'|'positive'|
+    'nonnegative').  None if expr contains an operation we cannot vouch for."""
+    out = []
+    for node in sp.preorder_traversal(expr):
+        if isinstance(node, (sp.Symbol, sp.Number, sp.NumberSymbol, sp.Add, sp.Mul)):
+            continue
+        if isinstance(node, sp.Pow):
+            b, e = node.args
+            if not e.is_number:
+                out.append((b, "positive"))
+            elif e.is_integer:
+                if e < 0:
+                    out.append((b, "nonzero"))
+            elif e > 0:
+                out.append((b, "nonnegative"))
+            else:
+                out.append((b, "positive"))
+        elif isinstance(node, sp.log):
+            out.append((node.args[0], "positive"))
+        elif isinstance(node, (sp.sign, sp.Heaviside)):
+            out.append((node.args[0], "nonzero"))
+        elif isinstance(node, sp.tan):
+            out.append((sp.cos(node.args[0]), "nonzero"))
+        elif isinstance(node, sp.acosh):
+            out.append((node.args[0] - 1, "nonnegative"))
+        elif isinstance(node, sp.atanh):
+            out.append((1 - node.args[0] ** 2, "positive"))
+        elif isinstance(node, (sp.asin, sp.acos)):
+            out.append((1 - node.args[0] ** 2, "nonnegative"))
+        elif isinstance(node, sp.Piecewise):
+            for _, c in node.args:
+                out.extend((r.lhs - r.rhs, "nonzero") for r in _relationals(c))
+        elif isinstance(node, (sp.exp, sp.sin, sp.cos, sp.sinh, sp.cosh, sp.tanh, sp.atan,
+                               sp.asinh, sp.erf, sp.Abs, sp.Max, sp.Min)):
+            continue
+        elif isinstance(node, sp.logic.boolalg.Boolean):
+            continue
+        else:
+            return None
+    return [(g, k) for g, k in dict.fromkeys(out) if g.has(S)]
+
+
+def continuous_on(expr, lo, hi, closed=True) -> Verdict:
+    """Prove expr continuous on [lo, hi] (closed=True, finite ends included)
+    or on the open (lo, hi): every guard holds there."""
+    gs = guards(expr)
+    if gs is None:
+        return unknown(f"cannot vouch for the continuity of {expr}")
+    for g, kind in gs:
+        want_signs = [1, -1] if kind == "nonzero" else [1]
+        ok = False
+        last = None
+        for want in want_signs:
+            v = prove_sign(g, S, lo, hi, want=want, lo_open=not closed, hi_open=not closed or hi == sp.oo)
+            if v.proved:
+                ok = True
+                break
+            last = v
+        if not ok and kind == "nonnegative":
+            v = prove_sign(g, S, lo, hi, want=1, lo_open=True, hi_open=True)
+            ends_ok = all(exact_sign(exact_value(g, S, c)) in (0, 1) for c in (lo, hi) if c != sp.oo) \
+                if closed else True
+            ok = v.proved and ends_ok
+            last = v
+        if not ok:
+            where = f"[{lo}, {hi}]" if closed else f"({lo}, {hi})"
+            if last is not None and last.refuted:
+                return refuted(f"{g} violates '{kind}' at s = {last.witness} inside {where}", last.witness)
+            return unknown(f"cannot show {g} {kind} on {where}")
+    return proved("continuous")
+
+
+def one_sided_value(expr, c, side: int):
+    """lim expr as s -> c from the right (side=+1) or left (side=-1):
+    an exact number, +-oo, or None when undecided.  Substitution when expr
+    is continuous up to c; the limit calculus otherwise."""
+    try:
+        lim = limit_right(prepare(expr).subs(S, c + side * X), X)
+        return lim.value
+    except NoLimit:
+        return None
+    except (ZeroDivisionError, TypeError, ValueError):
+        return None
+
+
+def same_value(a, b) -> bool | None:
+    """Exact comparison of two exact limits: True, False or None."""
+    if a is None or b is None:
+        return None
+    if a in (sp.oo, -sp.oo) or b in (sp.oo, -sp.oo):
+        return a == b
+    sgn = exact_sign(sp.nsimplify(a - b) if (a - b).has(sp.Float) else a - b)
+    return None if sgn is None else sgn == 0
+
+
+def float_of(v) -> float:
+    return float(sp.N(v, 20)) if v not in (sp.oo, -sp.oo) else (float("inf") if v == sp.oo else float("-inf"))
+
+
+def frac_point(v) -> Fraction:
+    return Interval.point(v).lower_fraction()

@@ -1,0 +1,390 @@
+"""Properties P1-P8 of f (Section 3 of the paper), each as a `Verdict`.
+
+For a radial f = F(|e|) (P4 proved first) every property reduces to F on
+[0, oo), split into pieces at Piecewise boundaries (see `profile`):
+
+  P1  F, F' continuous on every piece and across every boundary, F'(0+) = 0
+      (gradient continuous at the origin), and kf = sup |F'| finite
+  P2  f(0, 0) = 0, by exact evaluation
+  P3  F > 0 on (0, oo) and F -> oo as s -> oo
+  P5  F' > 0 on (0, oo) (df/de1 = F'(s) e1/s), derivative existing everywhere
+  P6  0 <= F'(s)/s <= k: k = sup F'/s, h = F'(s)/(k s)
+  P7  F'' continuous on every piece and across every boundary, F''(0+) finite
+  P8  F'(0+) = 0 and F' bounded near every point of (0, oo)
+
+When f is not radial the verifier still refutes what it can with certified
+witnesses (P2 exactly; values along rays via the limit calculus) and says
+"unknown" for the rest.
+"""
+from __future__ import annotations
+
+from functools import cached_property
+
+import sympy as sp
+
+from . import e1 as E1, e2 as E2
+from .design import Design
+from .interval import Interval, IntervalFunction, Undefined
+from .kf import KfCertificate, certify_kf, certify_sup
+from .limits import NoLimit, limit_right
+from .profile import (S, continuous_on, float_of, one_sided_value, radial_profile,
+                      same_value, split_profile, verify_radial)
+from .univariate import T, X, exact_sign, exact_value, prepare, prove_sign, tail_form
+from .verdict import Verdict, proved, refuted, unknown
+
+PROPERTIES = ("P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8")
+
+
+def _at(s_value):
+    """The witness point (s, 0) of the plane for a radius s."""
+    return {"e1": str(s_value), "e2": "0", "e1_float": float_of(s_value)}
+
+
+class Analysis:
+    """Everything the properties share for one design, computed once."""
+
+    def __init__(self, design: Design):
+        self.design = design
+        self.f = design.f
+
+    # ---- radial reduction -------------------------------------------------
+    @cached_property
+    def F(self):
+        return radial_profile(self.f)
+
+    @cached_property
+    def p4(self) -> Verdict:
+        return verify_radial(self.f, self.F)
+
+    @cached_property
+    def split(self):
+        if not self.p4.proved:
+            return None, unknown("f is not known to be radial")
+        return split_profile(self.F)
+
+    @property
+    def profile(self):
+        return self.split[0]
+
+    def derivative(self, expr, k):
+        return prepare(sp.diff(expr, S, k)) if k else expr
+
+    # ---- continuity facts (order k = 0, 1, 2) -----------------------------
+    def _piece_continuity(self, k) -> Verdict:
+        for piece in self.profile.pieces:
+            v = continuous_on(self.derivative(piece.expr, k), piece.lo, piece.hi, closed=False)
+            if v.refuted:
+                return refuted(f"F{'′' * k} is singular at s = {v.witness}: {v.reason}",
+                               _at(v.witness))
+            if not v.proved:
+                return unknown(f"continuity of F{'′' * k} on ({piece.lo}, {piece.hi}): {v.reason}")
+        return proved(f"F{'′' * k} continuous on every piece")
+
+    def _boundary_match(self, k) -> Verdict:
+        """F^(k) has equal one-sided limits at every boundary (and, for k = 0,
+        equal to F's value there)."""
+        pieces = self.profile.pieces
+        for left, right in zip(pieces, pieces[1:]):
+            b = right.lo
+            lv = one_sided_value(self.derivative(left.expr, k), b, -1)
+            rv = one_sided_value(self.derivative(right.expr, k), b, +1)
+            values = [lv, rv]
+            if k == 0:
+                values.append(exact_value(self.profile.at_point[b], S, b))
+            verdicts = [same_value(values[0], v) for v in values[1:]]
+            if all(verdicts):
+                continue
+            name = "F" + "′" * k
+            if False in verdicts:
+                return refuted(
+                    f"{name} jumps at s = {b} (|e| = {float_of(b):.6g}): left limit {_show(lv)}, right limit "
+                    f"{_show(rv)}" + ("" if k else f", value {_show(values[2])}"),
+                    {**_at(b), "left": _show(lv), "right": _show(rv)})
+            return unknown(f"cannot compare the one-sided limits of {name} at s = {b}")
+        return proved("no jumps at the boundaries")
+
+    @cached_property
+    def dF0(self):
+        """F'(0+): the limit of |grad f| at the origin."""
+        return one_sided_value(self.derivative(self.profile.pieces[0].expr, 1), 0, +1)
+
+    @cached_property
+    def d2F0(self):
+        return one_sided_value(self.derivative(self.profile.pieces[0].expr, 2), 0, +1)
+
+    @cached_property
+    def c0(self):
+        return self._piece_continuity(0), self._boundary_match(0)
+
+    @cached_property
+    def c1(self) -> Verdict:
+        """f is C^1 on R^2."""
+        parts = [*self.c0, self._piece_continuity(1), self._boundary_match(1), self._origin_gradient()]
+        return _all(parts, "f is C^1: F, F' continuous on each piece, no jumps, grad f(0) = 0")
+
+    def _origin_gradient(self) -> Verdict:
+        d = self.dF0
+        if d is None:
+            return unknown("cannot compute F'(0+)")
+        if d == 0:
+            return proved("F'(0+) = 0")
+        return refuted(
+            f"the gradient is not continuous at the origin: df/de2(0, h) -> {_show(d)} as h -> 0+ "
+            f"but -> {_show(-d)} as h -> 0- (F'(0+) = {_show(d)})",
+            {"e1": "0", "e2": "0", "F'(0+)": _show(d)})
+
+    @cached_property
+    def c2(self) -> Verdict:
+        parts = [self.c1, self._piece_continuity(2), self._boundary_match(2)]
+        d2 = self.d2F0
+        if d2 is None:
+            parts.append(unknown("cannot compute F''(0+)"))
+        elif d2 in (sp.oo, -sp.oo):
+            parts.append(refuted(
+                f"d2f/de2^2 (0, h) = F''(h) -> {_show(d2)} as h -> 0+: not continuous at the origin",
+                {"e1": "0", "e2": "h -> 0+", "limit": _show(d2)}))
+        else:
+            parts.append(proved(f"F''(0+) = {_show(d2)} = lim F'(s)/s"))
+        return _all(parts, "f is C^2: F'' continuous on each piece, no jumps, F''(0+) finite")
+
+    @cached_property
+    def kf(self) -> KfCertificate:
+        return certify_kf(self)
+
+
+def _show(v):
+    return "undecided" if v is None else str(v)
+
+
+def _all(parts, what) -> Verdict:
+    for v in parts:
+        if v.refuted:
+            return v
+    for v in parts:
+        if not v.proved:
+            return v
+    return proved(what)
+
+
+# --------------------------------------------------------------------------
+# the properties
+
+def verify_p2(a: Analysis) -> Verdict:
+    """P2: f(0, 0) = 0, by exact evaluation."""
+    v = a.f.subs({E1: 0, E2: 0})
+    if v.has(sp.Piecewise) or v.free_symbols:
+        return unknown("cannot evaluate f at the origin exactly")
+    sgn = exact_sign(v)
+    if sgn == 0:
+        return proved("f(0, 0) = 0 exactly")
+    if sgn is None:
+        return unknown(f"cannot decide whether f(0, 0) = {v} is zero")
+    return refuted(f"f(0, 0) = {v} != 0", {"e1": "0", "e2": "0", "f": str(v)})
+
+
+def verify_p4(a: Analysis) -> Verdict:
+    """P4: e1 df/de2 = e2 df/de1 (radial symmetry)."""
+    return a.p4
+
+
+def _needs_profile(a: Analysis, name: str) -> Verdict | None:
+    if not a.p4.proved:
+        return _non_radial(a, name)
+    if a.profile is None:
+        return unknown(f"radial, but {a.split[1].reason}")
+    return None
+
+
+def verify_p1(a: Analysis) -> Verdict:
+    """P1: df/de1, df/de2 exist and are continuous; kf = sup|df/de2| finite."""
+    early = _needs_profile(a, "P1")
+    if early:
+        return early
+    c1 = a.c1
+    if not c1.proved:
+        return c1
+    kf = a.kf
+    if kf.unbounded_witness is not None:
+        return refuted(f"kf is infinite: {kf.reason}", kf.unbounded_witness)
+    if kf.upper is None:
+        return unknown(f"C^1 proved, but no finite bound on |df/de2| found: {kf.reason}")
+    return proved(f"{c1.reason}; kf = sup|F'| in [{float(kf.lower):.9g}, {float(kf.upper):.9g}]")
+
+
+def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
+    """F^(k) > 0 on every open piece and at every boundary point."""
+    prof = a.profile
+    for piece in prof.pieces:
+        e = a.derivative(piece.expr, k)
+        v = prove_sign(e, S, piece.lo, piece.hi, want=1, lo_open=True, hi_open=True)
+        if v.refuted:
+            return refuted(f"{what} fails at |e| = {v.witness}: {v.reason}", _at(v.witness))
+        if not v.proved:
+            return unknown(f"{what} on ({piece.lo}, {piece.hi}): {v.reason}")
+    for b in prof.boundaries:
+        e = a.derivative(prof.at_point[b], k) if k == 0 else a.derivative(
+            next(p.expr for p in prof.pieces if p.lo == b), k)
+        val = one_sided_value(e, b, +1)
+        sgn = None if val is None else (1 if val == sp.oo else exact_sign(val))
+        if sgn is None:
+            return unknown(f"cannot decide the sign of {what} at the boundary s = {b}")
+        if sgn <= 0:
+            return refuted(f"{what} fails at the boundary |e| = {b} (value {val})", _at(b))
+    return proved(f"{what} on (0, oo) (interval arithmetic, s = 1/t on the tail, Taylor at zeros)")
+
+
+def verify_p3(a: Analysis) -> Verdict:
+    """P3: f > 0 away from the origin, and f radially unbounded."""
+    early = _needs_profile(a, "P3")
+    if early:
+        return early
+    c0 = _all(list(a.c0), "")
+    if c0.refuted:
+        # a jump does not matter for positivity, but the pieces must be sound
+        pass
+    pos = _positive_on_pieces(a, 0, "F(s) > 0")
+    if pos.refuted:
+        return refuted(f"f is not positive: {pos.reason}", pos.witness)
+    last = a.profile.pieces[-1].expr
+    try:
+        lim = limit_right(tail_form(last, S), T).value
+    except NoLimit as exc:
+        return unknown(f"{pos.reason if pos.proved else pos.reason}; cannot decide whether f -> oo ({exc})")
+    if lim != sp.oo:
+        return refuted(f"f is not radially unbounded: f(e) -> {lim} as |e| -> oo in every direction "
+                       "(limit calculus on F(1/t), t -> 0+)",
+                       {"direction": "every", "limit": str(lim)})
+    if not pos.proved:
+        return pos
+    return proved(f"{pos.reason}; F(s) -> oo as s -> oo (limit calculus on F(1/t))")
+
+
+def verify_p5(a: Analysis) -> Verdict:
+    """P5: (df/de1) tanh(e1) > 0 for e1 != 0, = 0 for e1 = 0."""
+    early = _needs_profile(a, "P5")
+    if early:
+        return early
+    exists = _all([*a.c0, a._boundary_match(1), a._origin_gradient()], "")
+    if exists.refuted:
+        return refuted(f"df/de1 does not exist everywhere: {exists.reason}", exists.witness)
+    pos = _positive_on_pieces(a, 1, "F'(s) > 0")
+    if not pos.proved:
+        return pos
+    if not exists.proved:
+        return unknown(f"{pos.reason}, but {exists.reason}")
+    return proved(f"df/de1 tanh(e1) = F'(s) e1 tanh(e1)/s with {pos.reason}; "
+                  "df/de1 = 0 on e1 = 0 (F'(0+) = 0 at the origin)")
+
+
+def verify_p6(a: Analysis) -> Verdict:
+    """P6: df/de1 = k e1 h(e1, e2), k > 0 constant, 0 <= h <= 1."""
+    early = _needs_profile(a, "P6")
+    if early:
+        return early
+    p5 = verify_p5(a)
+    if p5.refuted and p5.witness and "e1" in p5.witness and p5.witness.get("e2") == "0" \
+            and p5.witness.get("e1") not in (None, "0"):
+        s0 = sp.sympify(p5.witness["e1"])
+        val = exact_value(a.derivative(a.F, 1), S, s0)
+        if val is not None and exact_sign(val) == -1:
+            return refuted(f"h = F'(s)/(k s) < 0 at |e| = {s0} for every k > 0", p5.witness)
+    if p5.refuted and "does not exist" in p5.reason:
+        return refuted(f"df/de1 does not exist everywhere: {p5.reason}", p5.witness)
+    G = [sp.together(a.derivative(p.expr, 1) / S) if not p.expr.has(sp.Function) else
+         a.derivative(p.expr, 1) / S for p in a.profile.pieces]
+    g0 = one_sided_value(G[0], 0, +1)
+    if g0 in (sp.oo,):
+        return refuted("F'(s)/s -> oo as s -> 0+, so no constant k bounds h = F'(s)/(k s) by 1",
+                       {"e1": "h -> 0+", "e2": "0", "limit": "oo"})
+    sup = certify_sup(a, G, "F'(s)/s")
+    if sup.upper is None:
+        return unknown(f"no finite bound for F'(s)/s found: {sup.reason}")
+    if not p5.proved:
+        return unknown(f"k = {sup.show()}, but the sign of h is undecided: {p5.reason}")
+    k = sup.exact if sup.exact is not None else sp.Rational(sup.upper)
+    h = sp.simplify(a.derivative(a.F, 1) / (k * S)).subs(S, sp.sqrt(E1 ** 2 + E2 ** 2))
+    return proved(f"k = {sup.show()} (smallest), h = F'(s)/(k s) in [0, 1]; h(e1, e2) = {h}",
+                  k=str(k), k_float=float_of(k), h=str(h))
+
+
+def verify_p7(a: Analysis) -> Verdict:
+    """P7: d2f/de2^2 and d2f/de1de2 exist and are continuous."""
+    early = _needs_profile(a, "P7")
+    if early:
+        return early
+    return a.c2
+
+
+def verify_p8(a: Analysis) -> Verdict:
+    """P8: lim_{e2 -> 0} df/de2 = 0 for every e1."""
+    early = _needs_profile(a, "P8")
+    if early:
+        return early
+    d = a.dF0
+    if d is None:
+        return unknown("cannot compute F'(0+)")
+    if d != 0:
+        return refuted(f"df/de2(0, e2) = F'(|e2|) sign(e2) -> {_show(d)} != 0 as e2 -> 0+",
+                       {"e1": "0", "e2": "-> 0+", "limit": _show(d)})
+    for piece in a.profile.pieces:
+        dF = a.derivative(piece.expr, 1)
+        for c, side in ((piece.lo, +1), (piece.hi, -1)):
+            if c == sp.oo or (c == 0 and side > 0):
+                continue
+            v = one_sided_value(dF, c, side)
+            if v is None or v in (sp.oo, -sp.oo):
+                return unknown(f"cannot bound F' near s = {c}")
+        cont = continuous_on(dF, piece.lo, piece.hi, closed=False)
+        if not cont.proved:
+            return unknown(f"F' on ({piece.lo}, {piece.hi}): {cont.reason}")
+    return proved("F'(0+) = 0, and F' is bounded near every s > 0, so F'(s) e2/s -> 0 as e2 -> 0")
+
+
+# --------------------------------------------------------------------------
+# f that is not (known to be) radial: refute what can be refuted
+
+_RAYS = [(1, 0), (0, 1), (1, 1), (-1, 2), (3, -1), (-2, -3)]
+
+
+def _non_radial(a: Analysis, name: str) -> Verdict:
+    f = a.f
+    if name == "P3":
+        for dx, dy in _RAYS:
+            try:
+                lim = limit_right(prepare(f.subs({E1: dx / X, E2: dy / X})), X).value
+            except (NoLimit, ZeroDivisionError, TypeError, ValueError):
+                continue
+            if lim != sp.oo:
+                return refuted(f"f -> {lim} along the ray through ({dx}, {dy}): not radially unbounded",
+                               {"direction": [dx, dy], "limit": str(lim)})
+    if name == "P1":
+        g = sp.diff(f, E2)
+        for dx, dy in _RAYS:
+            try:
+                lim = limit_right(prepare(g.subs({E1: dx / X, E2: dy / X})), X).value
+            except (NoLimit, ZeroDivisionError, TypeError, ValueError):
+                continue
+            if lim in (sp.oo, -sp.oo):
+                return refuted(f"|df/de2| -> oo along the ray through ({dx}, {dy}): kf is infinite",
+                               {"direction": [dx, dy], "limit": str(lim)})
+    checks = {"P3": f, "P5": sp.diff(f, E1) * sp.tanh(E1), "P6": None}
+    expr = checks.get(name)
+    if expr is not None:
+        fn = IntervalFunction(expr, [E1, E2], mode="range", prec=200)
+        grid = [sp.Rational(k, 4) for k in (-12, -7, -4, -2, -1, 1, 2, 4, 7, 12)]
+        for x in grid:
+            for y in grid + [0]:
+                try:
+                    val = fn(Interval.point(x), Interval.point(y))
+                except Undefined:
+                    continue
+                if val.is_nonpositive() and (x, y) != (0, 0):
+                    return refuted(f"fails at (e1, e2) = ({x}, {y}): value in "
+                                   f"[{val.lower_float():.6g}, {val.upper_float():.6g}]",
+                                   {"e1": str(x), "e2": str(y)})
+    return unknown("f is not radial; this verifier proves properties of radial f only "
+                   "(P4 " + a.p4.status + ")")
+
+
+VERIFIERS = {"P1": verify_p1, "P2": verify_p2, "P3": verify_p3, "P4": verify_p4,
+             "P5": verify_p5, "P6": verify_p6, "P7": verify_p7, "P8": verify_p8}

@@ -1,0 +1,461 @@
+"""Rigorous facts about one real function of one variable on an interval of
+[0, oo): strict or weak sign, and enclosures of the supremum.
+
+Once P4 reduces f to a radial profile F(s), s = |(e1, e2)|, every property
+of the paper is a statement of this kind about F, F', F'' or F'/s.  The
+arguments used here, and only these, make a claim "proved":
+
+* interval arithmetic with outward rounding (`interval.IntervalFunction`)
+  over a finite cover of the compact part [lo, R];
+* the substitution s = 1/t, which turns the unbounded part [R, oo) into the
+  compact t-interval [0, 1/R] evaluated with extended (limit) arithmetic;
+* near a point c where the function vanishes, Taylor's theorem with the
+  Lagrange remainder: if E(c) = ... = E^(m-1)(c) = 0 exactly and E^(m) has a
+  sign on [c, c + w] (continuous-mode interval evaluation), E has that sign
+  (times (+-1)^m) on the punctured neighbourhood;
+* the sign of a product is the product of the signs of its factors.
+
+Refutations come with a point whose value is certified by interval
+arithmetic at an exact rational point, or an exact zero found by SymPy and
+confirmed by exact substitution.
+"""
+from __future__ import annotations
+
+import heapq
+from dataclasses import dataclass
+from fractions import Fraction
+from functools import lru_cache
+
+import sympy as sp
+
+from .interval import Interval, IntervalFunction, Undefined
+from .verdict import Verdict, proved, refuted, unknown
+
+T = sp.Symbol("t", positive=True)       # t = 1/s on the unbounded part
+X = sp.Symbol("x", positive=True)       # distance from a boundary point
+
+MAX_BOXES = 4000          # bisection budget for one sign proof
+TAYLOR_ORDER = 6          # highest derivative tried at a zero
+NEAR_WIDTHS = [Fraction(1, 2 ** k) for k in range(1, 16, 2)]
+
+
+# --------------------------------------------------------------------------
+# expression preparation
+
+def _hyperbolic_to_tanh(expr: sp.Expr) -> sp.Expr:
+    """sinh(a)**p * cosh(a)**-p -> tanh(a)**p inside products: the quotient
+    form is inf/inf for large a, tanh is bounded (also what code generation
+    wants: a sinh/cosh overflows at about 710)."""
+    def fix(m):
+        if not isinstance(m, sp.Mul):
+            return m
+        powers = {}
+        for factor in m.args:
+            b, e = factor.as_base_exp()
+            powers[b] = powers.get(b, 0) + e
+        changed = False
+        for b in list(powers):
+            if isinstance(b, sp.sinh):
+                c = sp.cosh(b.args[0])
+                if c in powers and powers[c] == -powers[b]:
+                    p = powers.pop(b)
+                    powers.pop(c)
+                    powers[sp.tanh(b.args[0])] = powers.get(sp.tanh(b.args[0]), 0) + p
+                    changed = True
+        if not changed:
+            return m
+        return sp.Mul(*[b ** e for b, e in powers.items()])
+    return sp.bottom_up(expr, fix)
+
+
+def prepare(expr: sp.Expr) -> sp.Expr:
+    """A form of expr that interval arithmetic handles well (same function)."""
+    return _hyperbolic_to_tanh(expr)
+
+
+def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
+    """expr(1/t) for t > 0, with radicals of rational functions brought over a
+    common denominator so that powers of t cancel (sqrt(4/t**2 + 1) becomes
+    sqrt(t**2 + 4)/t).  An identity for t > 0."""
+    e = expr.subs(s, 1 / T)
+    e = sp.bottom_up(e, lambda node: sp.together(node) if isinstance(node, (sp.Pow, sp.Add)) else node)
+    e = prepare(e)
+    if not e.has(sp.Function, sp.Piecewise):
+        e = sp.cancel(e)
+    return e
+
+
+@lru_cache(maxsize=4096)
+def _compiled(expr: sp.Expr, var: sp.Symbol, mode: str) -> IntervalFunction:
+    return IntervalFunction(expr, [var], mode=mode)
+
+
+def enclose(expr, var, lo, hi, mode="range") -> Interval:
+    """Enclosure of expr over var in [lo, hi] (raises Undefined)."""
+    return _compiled(expr, var, mode)(Interval.of(lo, hi))
+
+
+def value_at(expr, var, point, prec=256) -> Interval:
+    """Tight certified enclosure of expr at an exact point."""
+    return IntervalFunction(expr, [var], mode="range", prec=prec)(Interval.point(point))
+
+
+def exact_value(expr, var, point):
+    """expr at an exact point, as an exact SymPy number, or None."""
+    try:
+        v = expr.subs(var, point)
+    except (ZeroDivisionError, TypeError, ValueError):
+        return None
+    if v.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or v.free_symbols or isinstance(v, sp.Piecewise):
+        return None
+    return v
+
+
+def exact_sign(value) -> int | None:
+    """Sign of an exact constant: interval arithmetic, or a symbolic zero."""
+    if value == 0:
+        return 0
+    try:
+        box = Interval.point(value)
+        if box.is_positive():
+            return 1
+        if box.is_negative():
+            return -1
+    except (Undefined, TypeError, ValueError):
+        pass
+    try:
+        if sp.simplify(value) == 0:
+            return 0
+    except Exception:  # noqa: BLE001 - SymPy may fail in many ways
+        return None
+    return None
+
+
+def _frac(x) -> Fraction:
+    if isinstance(x, Fraction):
+        return x
+    r = sp.Rational(x)
+    return Fraction(int(r.p), int(r.q))
+
+
+def rational_between(lo, hi) -> sp.Rational:
+    """A simple exact rational strictly inside (lo, hi), lo < hi finite."""
+    lo_f = Interval.point(lo).upper_fraction()
+    hi_f = Interval.point(hi).lower_fraction()
+    mid = (lo_f + hi_f) / 2
+    # prefer short rationals
+    for den in (1, 2, 4, 8, 10, 16, 100, 1000, 10 ** 6):
+        cand = Fraction(round(mid * den), den)
+        if lo_f < cand < hi_f:
+            return sp.Rational(cand.numerator, cand.denominator)
+    return sp.Rational(mid.numerator, mid.denominator)
+
+
+# --------------------------------------------------------------------------
+# sign of E near a point (one side)
+
+def _derivative_values(expr, var, c, order):
+    """Exact values E(c), E'(c), ..., up to the first nonzero one."""
+    out = []
+    d = expr
+    for k in range(order + 1):
+        v = exact_value(d, var, c)
+        if v is None:
+            return out, None
+        sgn = exact_sign(v)
+        if sgn is None:
+            return out, None
+        out.append(sgn)
+        if sgn != 0:
+            return out, d
+        d = sp.diff(d, var)
+    return out, None
+
+
+def _sign_near(expr, var, c, side: int, want: int, width: Fraction) -> bool:
+    """True if want*expr > 0 on the punctured one-sided neighbourhood
+    (c, c + width] (side=+1) or [c - width, c) (side=-1); False if not shown."""
+    lo, hi = (c, c + sp.Rational(width)) if side > 0 else (c - sp.Rational(width), c)
+    try:
+        box = enclose(expr, var, lo, hi)
+        if (box.is_positive() if want > 0 else box.is_negative()):
+            return True
+    except Undefined:
+        pass
+    # the variable itself, or a factor (var - c) with the right orientation
+    if expr == var and c == 0 and side > 0:
+        return want > 0
+    if isinstance(expr, sp.Mul) or (isinstance(expr, sp.Pow) and expr.exp.is_integer):
+        factors = expr.args if isinstance(expr, sp.Mul) else [expr.base] * int(abs(expr.exp))
+        if isinstance(expr, sp.Pow) and expr.exp < 0:
+            factors = [1 / b for b in factors]
+        total = 1
+        for factor in factors:
+            if not factor.has(var):
+                sgn = exact_sign(factor)
+                if not sgn:
+                    return False
+            elif _sign_near(factor, var, c, side, 1, width):
+                sgn = 1
+            elif _sign_near(factor, var, c, side, -1, width):
+                sgn = -1
+            else:
+                return False
+            total *= sgn
+        return total == want
+    # Taylor with Lagrange remainder at c
+    signs, dm = _derivative_values(expr, var, c, TAYLOR_ORDER)
+    if dm is None or not signs or signs[-1] == 0:
+        return False
+    m = len(signs) - 1
+    if signs[-1] * (side ** m) != want:
+        return False
+    try:
+        box = enclose(dm, var, lo, hi, mode="continuous")
+    except Undefined:
+        return False
+    return box.is_positive() if signs[-1] > 0 else box.is_negative()
+
+
+def sign_near(expr, var, c, side, want) -> Fraction | None:
+    """Largest tried width on which want*expr > 0 beside c, or None."""
+    for w in NEAR_WIDTHS:
+        try:
+            if _sign_near(expr, var, c, side, want, w):
+                return w
+        except Undefined:
+            continue
+    return None
+
+
+# --------------------------------------------------------------------------
+# sign of E on a whole interval
+
+@dataclass
+class SignClaim:
+    """want * expr > 0 on the open interval (lo, hi), lo < hi, hi may be oo;
+    ``zeros`` are exact interior points where expr is known to vanish (the
+    claim is then weak there)."""
+    expr: sp.Expr
+    var: sp.Symbol
+    lo: sp.Expr
+    hi: sp.Expr
+    want: int = 1
+
+
+def _witness_check(expr, var, point, want) -> bool:
+    """True if want*expr(point) <= 0, certified."""
+    try:
+        box = value_at(expr, var, point)
+    except Undefined:
+        return False
+    return box.is_nonpositive() if want > 0 else box.is_nonnegative()
+
+
+def _exact_zero_in(expr, var, lo, hi):
+    """An exact zero of expr in (lo, hi) found by SymPy and confirmed by exact
+    substitution, or None."""
+    try:
+        sols = sp.solveset(sp.Eq(expr, 0), var, sp.Interval.open(lo, hi))
+    except Exception:  # noqa: BLE001
+        return None
+    if not isinstance(sols, sp.FiniteSet):
+        return None
+    for root in sols:
+        v = exact_value(expr, var, root)
+        if v is not None and exact_sign(v) == 0:
+            return root
+    return None
+
+
+def _cover(expr, var, lo, hi, want, left_open, right_open, budget) -> Verdict:
+    """want*expr > 0 on the finite interval between lo and hi (exact), using
+    one-sided lemmas at open ends, bisection in between."""
+    a, b = lo, hi
+    if left_open:
+        w = sign_near(expr, var, lo, +1, want)
+        if w is None:
+            return unknown(f"cannot decide the sign just right of {var} = {lo}")
+        a = lo + sp.Rational(w)
+    if right_open:
+        w = sign_near(expr, var, hi, -1, want)
+        if w is None:
+            return unknown(f"cannot decide the sign just left of {var} = {hi}")
+        b = hi - sp.Rational(w)
+    if (a >= b) == True:  # noqa: E712
+        return proved("one-sided lemmas cover the interval")
+    fn = _compiled(expr, var, "range")
+    queue = [(a, b)]
+    evaluations = 0
+    while queue:
+        u, v = queue.pop()
+        evaluations += 1
+        if evaluations > budget:
+            return unknown(f"undecided near {var} = {float((u + v) / 2):.6g} after {budget} boxes")
+        try:
+            box = fn(Interval.of(u, v))
+            if box.is_positive() if want > 0 else box.is_negative():
+                continue
+        except Undefined as exc:
+            box = None
+            if float(v - u) < 1e-12:
+                return unknown(f"not defined near {var} = {float(u):.6g}: {exc}")
+        m = rational_between(u, v)
+        if _witness_check(expr, var, m, want):
+            return refuted(f"fails at {var} = {m}", m)
+        queue.append((m, v))
+        queue.append((u, m))
+    return proved("interval arithmetic on a finite cover")
+
+
+def prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
+               zeros=(), budget=MAX_BOXES) -> Verdict:
+    """Prove want*expr > 0 on the interval from lo to hi (hi may be oo),
+    open or closed at each end, except at the exact points ``zeros`` where
+    expr vanishes (they are excluded from the strict claim; the caller has
+    checked expr = 0 there).  Returns a proved / refuted (witness: a point of
+    the variable) / unknown verdict."""
+    expr = prepare(sp.sympify(expr))
+    points = sorted(set(zeros), key=lambda z: float(z))
+    if hi == sp.oo:
+        R = sp.Integer(max(4, int(2 * float(lo) + 4)))
+        while points and float(points[-1]) >= float(R) - 1:
+            R = 2 * R
+        finite_parts = [lo, *points, R]
+    else:
+        R = None
+        finite_parts = [lo, *points, hi]
+    for i in range(len(finite_parts) - 1):
+        a, b = finite_parts[i], finite_parts[i + 1]
+        left_open = (i > 0) or lo_open
+        right_open = (i < len(finite_parts) - 2) or (R is None and hi_open)
+        if R is not None and i == len(finite_parts) - 2:
+            right_open = False
+        if not left_open:
+            w = _witness_check(expr, var, a, want)
+            if w:
+                return refuted(f"fails at {var} = {a}", a)
+        if not right_open and R is None:
+            if _witness_check(expr, var, b, want):
+                return refuted(f"fails at {var} = {b}", b)
+        v = _cover(expr, var, a, b, want, left_open, right_open, budget)
+        if not v.proved and not v.refuted:
+            root = _exact_zero_in(expr, var, a, b)
+            if root is not None:
+                return refuted(f"vanishes at {var} = {root} (exact)", root)
+        if not v.proved:
+            return v
+    if R is not None:
+        tail = tail_form(expr, var)
+        v = _cover(tail, T, sp.Integer(0), 1 / R, want, True, False, budget)
+        if v.refuted:
+            return refuted(f"fails at {var} = {1 / v.witness}", 1 / v.witness)
+        if not v.proved:
+            return unknown(f"on [{R}, oo) via s = 1/t: {v.reason}")
+    return proved("interval arithmetic on a finite cover, s = 1/t on the unbounded part, "
+                  "Taylor's theorem at zeros")
+
+
+# --------------------------------------------------------------------------
+# supremum
+
+@dataclass
+class SupEnclosure:
+    """sup of expr over the interval lies in [lower, upper] (upper None: no
+    finite upper bound was found).  ``at_infinity`` tells whether the best
+    box at the end was the one touching s = oo."""
+    lower: Fraction | None
+    upper: Fraction | None
+    at_infinity: bool
+    near: float | None
+
+
+def _upper_fraction(x) -> Fraction:
+    return Interval.point(x).upper_fraction()
+
+
+def _lower_fraction(x) -> Fraction:
+    return Interval.point(x).lower_fraction()
+
+
+def _mean_value_upper(fn, dfn, u, v):
+    """Upper bound of E on [u, v] from the mean-value form
+    E(x) = E(m) + E'(xi) (x - m), tighter than the natural enclosure near a
+    smooth maximum (the overestimate is quadratic in the width)."""
+    m = rational_between(u, v)
+    em = fn(Interval.point(m))
+    d = dfn(Interval.of(u, v))
+    if not (em.is_finite() and d.is_finite()):
+        return None
+    mf = Fraction(int(m.p), int(m.q))
+    right = max(Fraction(0), d.upper_fraction()) * (_upper_fraction(v) - mf)
+    left = max(Fraction(0), -d.lower_fraction()) * (mf - _lower_fraction(u))
+    return em.upper_fraction() + max(right, left)
+
+
+def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
+    """Rigorous enclosure of sup expr over [lo, hi] (hi may be oo) by interval
+    branch and bound: every box keeps an upper bound, every evaluated value a
+    lower bound, until they agree to rel_tol."""
+    expr = prepare(sp.sympify(expr))
+    parts = []   # (variable, expression, derivative) per region
+    if hi == sp.oo:
+        R = sp.Integer(max(4, int(2 * float(lo) + 4)))
+        tail = tail_form(expr, var)
+        parts.append(("s", expr, lo, R))
+        parts.append(("t", tail, sp.Integer(0), 1 / R))
+    else:
+        parts.append(("s", expr, lo, hi))
+    fns = {}
+    for kind, e, _, _ in parts:
+        v = var if kind == "s" else T
+        fns[kind] = (_compiled(e, v, "range"), _compiled(prepare(sp.diff(e, v)), v, "range"))
+    lower = None
+    heap = []
+    counter = 0
+
+    def raise_lower(box):
+        nonlocal lower
+        lf = box.lower_fraction()
+        if lf is not None and (lower is None or lf > lower):
+            lower = lf
+
+    def push(kind, u, v):
+        nonlocal counter
+        fn, dfn = fns[kind]
+        up = None
+        try:
+            box = fn(Interval.of(u, v))
+            raise_lower(box)
+            up = box.upper_fraction()
+        except Undefined:
+            pass
+        if not (kind == "t" and u == 0):
+            try:
+                mv = _mean_value_upper(fn, dfn, u, v)
+                if mv is not None and (up is None or mv < up):
+                    up = mv
+            except Undefined:
+                pass
+        counter += 1
+        heapq.heappush(heap, (float("-inf") if up is None else -float(up), counter, kind, u, v, up))
+
+    for kind, _, a, b in parts:
+        push(kind, a, b)
+    for count in range(budget):
+        _, _, kind, u, v, up = heap[0]
+        if up is not None and lower is not None and \
+                up - lower <= Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 30)):
+            near = float((u + v) / 2) if kind == "s" else None
+            return SupEnclosure(lower, up, at_infinity=(kind == "t" and u == 0), near=near)
+        heapq.heappop(heap)
+        m = rational_between(u, v)
+        try:
+            raise_lower(fns[kind][0](Interval.point(m)))
+        except Undefined:
+            pass
+        push(kind, u, m)
+        push(kind, m, v)
+    ups = [h[-1] for h in heap]
+    upper = None if (not ups or any(u is None for u in ups)) else max(ups)
+    return SupEnclosure(lower, upper, at_infinity=False, near=None)

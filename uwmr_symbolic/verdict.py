@@ -1,0 +1,53 @@
+"""Verdicts: the three answers the verifier may give about a property."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+PROVED, REFUTED, UNKNOWN = "proved", "refuted", "unknown"
+
+
+@dataclass
+class Verdict:
+    """The verifier's answer about one claim.
+
+    ``status`` is ``proved`` (a symbolic identity or a rigorous argument over the
+    whole domain), ``refuted`` (with a ``witness`` re-checked rigorously) or
+    ``unknown`` (``reason`` says what was left undecided)."""
+
+    status: str
+    reason: str
+    witness: Any = None
+    details: dict = field(default_factory=dict)
+
+    @property
+    def proved(self) -> bool:
+        return self.status == PROVED
+
+    @property
+    def refuted(self) -> bool:
+        return self.status == REFUTED
+
+
+def proved(reason: str, **details) -> Verdict:
+    return Verdict(PROVED, reason, None, details)
+
+
+def refuted(reason: str, witness: Any, **details) -> Verdict:
+    return Verdict(REFUTED, reason, witness, details)
+
+
+def unknown(reason: str, **details) -> Verdict:
+    return Verdict(UNKNOWN, reason, None, details)
+
+
+def conjunction(parts: list[tuple[str, Verdict]], what: str) -> Verdict:
+    """Combine verdicts of sub-claims that must all hold: any refuted part
+    refutes the whole, all proved proves it, else unknown."""
+    for name, v in parts:
+        if v.refuted:
+            return Verdict(REFUTED, f"{name}: {v.reason}", v.witness, v.details)
+    for name, v in parts:
+        if not v.proved:
+            return Verdict(UNKNOWN, f"{name}: {v.reason}", None, v.details)
+    return Verdict(PROVED, what or "; ".join(v.reason for _, v in parts))

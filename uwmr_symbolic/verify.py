@@ -1,0 +1,93 @@
+"""The verifier: load a design, decide P1-P8, certify kf, replay the proof,
+check the gains against bound (10).  Returns a `Report`."""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import sympy as sp
+
+from .design import Design, DesignError, load_design
+from .gains import GainCheck, check_gains
+from .kf import SupCertificate
+from .properties import PROPERTIES, VERIFIERS, Analysis
+from .replay import replay
+from .timeouts import TimeLimit, time_limit
+from .verdict import Verdict, unknown
+
+DEFAULT_TIMEOUT = 60.0
+
+EXIT_OK, EXIT_REFUTED, EXIT_UNUSABLE, EXIT_INCONCLUSIVE = 0, 1, 2, 3
+
+
+@dataclass
+class Report:
+    path: Path
+    design: Design | None
+    properties: dict[str, Verdict]
+    kf: SupCertificate | None
+    gains: dict[str, GainCheck] = field(default_factory=dict)
+    proof_replay: dict = field(default_factory=lambda: {"ok": False, "steps": {}})
+    seconds: float = 0.0
+    error: str | None = None      # unusable input
+
+    @property
+    def exit_status(self) -> int:
+        if self.error is not None:
+            return EXIT_UNUSABLE
+        verdicts = list(self.properties.values())
+        gains_fail = any(not g.V_ok or g.W_ok is False for g in self.gains.values())
+        if any(v.refuted for v in verdicts) or gains_fail:
+            return EXIT_REFUTED
+        if all(v.proved for v in verdicts) and self.proof_replay.get("ok") \
+                and all(g.W_ok for g in self.gains.values()):
+            return EXIT_OK
+        return EXIT_INCONCLUSIVE
+
+
+def _timed_out(what: str, timeout: float) -> Verdict:
+    return unknown(f"{what} did not finish within --timeout {timeout:g} s")
+
+
+def verify_design(path, timeout: float = DEFAULT_TIMEOUT) -> Report:
+    """Verify one design file (never raises for bad input: see Report.error)."""
+    path = Path(path)
+    start = time.monotonic()
+    deadline = start + timeout
+    try:
+        with time_limit(timeout):
+            design = load_design(path)
+    except DesignError as exc:
+        return Report(path, None, {}, None, error=str(exc), seconds=time.monotonic() - start)
+    except TimeLimit:
+        props = {p: _timed_out("loading the design file", timeout) for p in PROPERTIES}
+        return Report(path, None, props, None, seconds=time.monotonic() - start)
+    analysis = Analysis(design)
+    props: dict[str, Verdict] = {}
+    # P4 first: it decides whether the radial reduction is available
+    for name in ("P4", "P2", "P1", "P3", "P5", "P6", "P7", "P8"):
+        remaining = deadline - time.monotonic()
+        if remaining <= 0:
+            props[name] = _timed_out(name, timeout)
+            continue
+        try:
+            with time_limit(remaining):
+                props[name] = VERIFIERS[name](analysis)
+        except TimeLimit:
+            props[name] = _timed_out(name, timeout)
+    props = {p: props[p] for p in PROPERTIES}
+    kf = None
+    if analysis.p4.proved and analysis.profile is not None and "kf" in analysis.__dict__:
+        kf = analysis.kf
+    try:
+        with time_limit(max(deadline - time.monotonic(), 5.0)):
+            proof = replay(design.f, analysis.p4.proved)
+    except TimeLimit:
+        proof = {"ok": False, "steps": {"replay": {"ok": False, "detail": "timed out"}}}
+    kf_for_gains = None
+    if kf is not None and kf.upper is not None:
+        kf_for_gains = kf.exact if kf.exact is not None else sp.Rational(kf.upper.numerator, kf.upper.denominator)
+    kf_known = kf_for_gains is not None or (kf is not None and kf.unbounded_witness is not None)
+    gains = check_gains(design.gains, kf_for_gains, kf_known)
+    return Report(path, design, props, kf, gains, proof, seconds=time.monotonic() - start)
