@@ -623,6 +623,39 @@ _UNSUPPORTED_HINT = {
 }
 
 
+def _cached(f):
+    """Per-call result cache keyed on the identity of the argument tuple.  The
+    cache keeps a reference to that tuple, so no other live tuple can have the
+    same identity; (args, result) is stored in one atomic assignment."""
+    slot = [((), None)]
+
+    def c(a):
+        k = slot[0]
+        if k[0] is a:
+            return k[1]
+        r = f(a)
+        slot[0] = (a, r)
+        return r
+
+    return c
+
+
+def _narrow(a, cons):
+    """Box ``a`` intersected with the bounds ``cons`` (None if empty)."""
+    b = list(a)
+    for idx, kind, fk in cons:
+        kl, kh = fk(None)  # a folded constant (may raise Undefined: conservative)
+        lo, hi = b[idx]
+        if kind != "le" and kl > lo:
+            lo = kl
+        if kind != "ge" and kh < hi:
+            hi = kh
+        if lo > hi:
+            return None
+        b[idx] = (lo, hi)
+    return tuple(b)
+
+
 def _raiser(msg):
     def f(a):
         raise Undefined(msg)
@@ -631,11 +664,17 @@ def _raiser(msg):
 
 
 class _Compiler:
-    def __init__(self, index, cont):
+    def __init__(self, index, cont, expr):
         self.index = index
         self.cont = cont
         self.memo = {}
         self.cmemo = {}
+        # sub-expressions occurring more than once get a per-call result cache
+        counts = {}
+        for node in sp.preorder_traversal(expr):
+            counts[node] = counts.get(node, 0) + 1
+        self.shared = {k for k, v in counts.items()
+                       if v > 1 and isinstance(k, sp.Expr) and not k.is_Symbol}
 
     # -- expressions -----------------------------------------------------
     def compile(self, e):
@@ -665,7 +704,9 @@ class _Compiler:
                     raise _undef(e, "unbounded intermediate (not continuous)")
                 return r
 
-            return g
+            f = g
+        if e in self.shared:
+            f = _cached(f)
         return f
 
     def _node(self, e):
@@ -851,13 +892,30 @@ class _Compiler:
 
             return pw_cont
 
+        # Branch i is only active where cond_i holds and cond_0..cond_{i-1} fail;
+        # simple bounds "symbol op constant" from these are used to narrow the
+        # box on which an undecided branch is evaluated (a closed superset of
+        # the points where it is active, so the hull stays sound).
+        narrows = []
+        previous = []
+        for pc in e.args:
+            cons = self._simple_bounds(pc.cond, True) + previous
+            narrows.append(cons)
+            previous = previous + self._simple_bounds(pc.cond, False)
+
         def pw_range(a):
             lo = hi = None
-            for fe, fc in pairs:
+            for (fe, fc), cons in zip(pairs, narrows):
                 v = fc(a)
                 if v is False:
                     continue
-                r = fe(a)
+                if cons:
+                    b = _narrow(a, cons)
+                    if b is None:  # branch provably inactive on the box
+                        continue
+                    r = fe(b)
+                else:
+                    r = fe(a)
                 if lo is None:
                     lo, hi = r
                 else:
@@ -870,6 +928,39 @@ class _Compiler:
             raise _undef(e, "Piecewise: no condition provably holds (may be undefined) on part of the box")
 
         return pw_range
+
+    def _simple_bounds(self, c, positive):
+        """Bounds (index, kind, constant_fn) implied by ``c`` (if positive) or by
+        ``not c``; kind 'ge': sym >= const, 'le': sym <= const, 'eq': both.
+        Only conditions of the form Symbol op constant (and And / Or of them)
+        are used; anything else implies nothing (returns [])."""
+        if isinstance(c, sp.core.relational.Relational):
+            op = c.rel_op
+            if c.lhs.is_Symbol and c.lhs in self.index and not c.rhs.free_symbols:
+                sym, k = c.lhs, c.rhs
+            elif c.rhs.is_Symbol and c.rhs in self.index and not c.lhs.free_symbols:
+                sym, k = c.rhs, c.lhs
+                op = {">": "<", ">=": "<=", "<": ">", "<=": ">=", "==": "==", "!=": "!="}[op]
+            else:
+                return []
+            if not isinstance(k, sp.Expr):
+                return []
+            kind = {">": "ge", ">=": "ge", "<": "le", "<=": "le", "==": "eq"}.get(op)
+            if not positive:
+                kind = {"ge": "le", "le": "ge"}.get(kind)  # not(s > c) => s <= c, etc.
+                if op == "!=":
+                    kind = "eq"
+            if kind is None:
+                return []
+            return [(self.index[sym], kind, self.compile(k))]
+        if positive and isinstance(c, sp.And) or (not positive) and isinstance(c, sp.Or):
+            out = []
+            for x in c.args:
+                out += self._simple_bounds(x, positive)
+            return out
+        if isinstance(c, sp.Not):
+            return self._simple_bounds(c.args[0], not positive)
+        return []
 
     # -- conditions ------------------------------------------------------
     def compile_cond(self, c):
@@ -1260,7 +1351,7 @@ class IntervalFunction:
         old = ctx.prec
         ctx.prec = self.prec
         try:
-            self._fn = _Compiler(index, self._cont).compile(expr)
+            self._fn = _Compiler(index, self._cont, expr).compile(expr)
         finally:
             ctx.prec = old
 

@@ -14,7 +14,7 @@ from fractions import Fraction
 import sympy as sp
 
 from .limits import NoLimit, limit_right
-from .profile import S, float_of, one_sided_value
+from .profile import S, float_of, limit_at_infinity, one_sided_value
 from .timeouts import attempt
 from .univariate import T, enclose_sup, exact_sign, exact_value, prepare, prove_sign, tail_form
 
@@ -59,7 +59,7 @@ def _candidates(expr, lo, hi):
             out.append((v, lo))
     if hi == sp.oo:
         try:
-            v = limit_right(tail_form(expr, S), T).value
+            v = limit_at_infinity(expr)
             if v not in (sp.oo, -sp.oo):
                 out.append((v, None))
         except NoLimit:
@@ -71,24 +71,35 @@ def _candidates(expr, lo, hi):
     return out
 
 
-def _prove_bound(c, exprs, pieces, zeros_of) -> tuple[bool, bool]:
-    """Prove c - E_i >= 0 on every piece; returns (proved, strictly)."""
-    strict = True
+def _prove_bound(c, exprs, pieces, zeros_of) -> tuple[bool, bool | None]:
+    """Prove c - E_i >= 0 on every piece; returns (proved, strictly): strictly
+    is True when c - E_i > 0 was proved everywhere, None when undecided."""
     for E, piece in zip(exprs, pieces):
-        zeros = zeros_of.get(id(piece), [])
-        zeros_in = [z for z in zeros if z is not None and z != piece.lo and z != piece.hi]
-        v = prove_sign(c - E, S, piece.lo, piece.hi, want=1, zeros=zeros_in)
-        if not v.proved:
-            return False, False
-        strict = strict and not zeros_in
-    return True, strict
+        zeros = [z for z in zeros_of.get(id(piece), []) if z is not None and z not in (piece.lo, piece.hi)]
+        if not prove_sign(c - E, S, piece.lo, piece.hi, want=1, strict=False, zeros=zeros).proved:
+            return False, None
+    for E, piece in zip(exprs, pieces):
+        zeros = [z for z in zeros_of.get(id(piece), []) if z is not None]
+        if zeros or not prove_sign(c - E, S, piece.lo, piece.hi, want=1).proved:
+            return True, None if not zeros else False
+    return True, True
 
 
-def certify_sup(analysis, exprs, name: str) -> SupCertificate:
+NEAR_ZERO = Fraction(1, 8)
+
+
+def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
     """Certify sup over s > 0 of a function given piecewise by ``exprs``
-    (one expression per piece of the profile)."""
+    (one expression per piece of the profile).
+
+    ``near_zero``: for E = F'/s, whose formula is 0/0 at s = 0, the caller
+    passes F''; by the mean value theorem (F'(0) = 0) E(s) = F''(xi) with
+    0 < xi < s, so sup F'' over [0, 1/8] bounds E there from above."""
     pieces = analysis.profile.pieces
     exprs = [prepare(e) for e in exprs]
+    if all(not e.has(S) for e in exprs) and len(set(exprs)) == 1:
+        c = exprs[0]
+        return SupCertificate(c, c, c, True, f"{name} = {c} is constant")
     # unboundedness: a one-sided limit of +oo is a proof
     for E, piece in zip(exprs, pieces):
         ends = [(piece.lo, +1)] + ([(piece.hi, -1)] if piece.hi != sp.oo else [])
@@ -99,14 +110,23 @@ def certify_sup(analysis, exprs, name: str) -> SupCertificate:
                                       {"s": str(c), "limit": "oo"})
         if piece.hi == sp.oo:
             try:
-                if limit_right(tail_form(E, S), T).value == sp.oo:
+                if limit_at_infinity(E) == sp.oo:
                     return SupCertificate(None, None, None, None, f"{name} -> oo as s -> oo",
                                           {"s": "oo", "limit": "oo"})
             except NoLimit:
                 pass
     lower, upper, top = None, Fraction(0), None
-    for E, piece in zip(exprs, pieces):
-        enc = enclose_sup(E, S, piece.lo, piece.hi, rel_tol=REL_WIDTH)
+    for i, (E, piece) in enumerate(zip(exprs, pieces)):
+        lo = piece.lo
+        if i == 0 and near_zero is not None and exact_value(E, S, 0) is None \
+                and (piece.hi == sp.oo or piece.hi > NEAR_ZERO):
+            near = enclose_sup(prepare(near_zero), S, 0, sp.Rational(NEAR_ZERO), rel_tol=REL_WIDTH)
+            if near.upper is None:
+                upper = None
+            elif upper is not None:
+                upper = max(upper, near.upper)      # an upper bound only (see above)
+            lo = sp.Rational(NEAR_ZERO)
+        enc = enclose_sup(E, S, lo, piece.hi, rel_tol=REL_WIDTH)
         if enc.lower is not None and (lower is None or enc.lower > lower):
             lower, top = enc.lower, (E, piece, enc)
         if enc.upper is None:

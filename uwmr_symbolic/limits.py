@@ -141,6 +141,8 @@ def _pow(base: Lim, ex: sp.Expr) -> Lim:
     integer = ex.is_integer is True
     b_sign = _eventual_sign(base)
     if b_sign is None:
+        if integer and e_sign > 0 and not base.infinite:
+            return Lim(base.value ** ex, None)      # continuity of x**n
         raise NoLimit("power of a quantity of unknown sign")
     if b_sign < 0 and not integer:
         raise NoLimit("non-integer power of a negative quantity")

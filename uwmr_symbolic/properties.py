@@ -18,6 +18,8 @@ witnesses (P2 exactly; values along rays via the limit calculus) and says
 """
 from __future__ import annotations
 
+import math
+from fractions import Fraction
 from functools import cached_property
 
 import sympy as sp
@@ -27,7 +29,7 @@ from .design import Design
 from .interval import Interval, IntervalFunction, Undefined
 from .kf import KfCertificate, certify_kf, certify_sup
 from .limits import NoLimit, limit_right
-from .profile import (S, continuous_on, float_of, one_sided_value, radial_profile,
+from .profile import (S, continuous_on, float_of, limit_at_infinity, one_sided_value, radial_profile,
                       same_value, split_profile, verify_radial)
 from .univariate import T, X, exact_sign, exact_value, prepare, prove_sign, tail_form
 from .verdict import Verdict, proved, refuted, unknown
@@ -247,7 +249,7 @@ def verify_p3(a: Analysis) -> Verdict:
         return refuted(f"f is not positive: {pos.reason}", pos.witness)
     last = a.profile.pieces[-1].expr
     try:
-        lim = limit_right(tail_form(last, S), T).value
+        lim = limit_at_infinity(last)
     except NoLimit as exc:
         return unknown(f"{pos.reason if pos.proved else pos.reason}; cannot decide whether f -> oo ({exc})")
     if lim != sp.oo:
@@ -296,15 +298,25 @@ def verify_p6(a: Analysis) -> Verdict:
     if g0 in (sp.oo,):
         return refuted("F'(s)/s -> oo as s -> 0+, so no constant k bounds h = F'(s)/(k s) by 1",
                        {"e1": "h -> 0+", "e2": "0", "limit": "oo"})
-    sup = certify_sup(a, G, "F'(s)/s")
+    sup = certify_sup(a, G, "F'(s)/s", near_zero=a.derivative(a.profile.pieces[0].expr, 2))
+    if sup.unbounded_witness is not None:
+        return refuted(f"no constant k bounds h = F'(s)/(k s) by 1: {sup.reason}", sup.unbounded_witness)
     if sup.upper is None:
         return unknown(f"no finite bound for F'(s)/s found: {sup.reason}")
     if not p5.proved:
         return unknown(f"k = {sup.show()}, but the sign of h is undecided: {p5.reason}")
-    k = sup.exact if sup.exact is not None else sp.Rational(sup.upper)
+    k = sup.exact if sup.exact is not None else round_up(sup.upper)
     h = sp.simplify(a.derivative(a.F, 1) / (k * S)).subs(S, sp.sqrt(E1 ** 2 + E2 ** 2))
-    return proved(f"k = {sup.show()} (smallest), h = F'(s)/(k s) in [0, 1]; h(e1, e2) = {h}",
+    smallest = f"sup F'(s)/s = {sup.show()}"
+    return proved(f"k = {k} ({smallest}), h = F'(s)/(k s) in [0, 1]: h(e1, e2) = {h}",
                   k=str(k), k_float=float_of(k), h=str(h))
+
+
+def round_up(x: Fraction, digits: int = 7) -> sp.Rational:
+    """A short decimal >= x (a valid constant k when x bounds a supremum)."""
+    exp10 = math.floor(math.log10(float(x))) if x > 0 else 0
+    scale = Fraction(10) ** (digits - 1 - exp10)
+    return sp.Rational(math.ceil(x * scale)) / sp.Rational(scale)
 
 
 def verify_p7(a: Analysis) -> Verdict:

@@ -6,6 +6,7 @@ import math
 
 import sympy as sp
 
+from .interval import Interval
 from .verify import Report
 
 MARK = {"proved": "proved ", "refuted": "REFUTED", "unknown": "unknown"}
@@ -41,8 +42,8 @@ def to_dict(r: Report) -> dict:
                            "witness": _jsonable(v.witness), **_jsonable(v.details)}
                        for p, v in r.properties.items()},
         "kf": {"exact": None if kf is None or kf.exact is None else str(kf.exact),
-               "lower": None if kf is None or kf.lower is None else float(kf.lower),
-               "upper": None if kf is None or kf.upper is None else float(kf.upper),
+               "lower": None if kf is None or kf.lower is None else Interval.point(kf.lower).lower_float(),
+               "upper": None if kf is None or kf.upper is None else Interval.point(kf.upper).upper_float(),
                "attained": None if kf is None else kf.attained,
                "reason": "undecided (f not radial or P1 not analysed)" if kf is None else kf.reason},
         "gains": {name: {"V_bound": _num(g.V_bound), "W_bound": _num(g.W_bound),

@@ -22,6 +22,7 @@ confirmed by exact substitution.
 from __future__ import annotations
 
 import heapq
+import math
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import lru_cache
@@ -185,6 +186,9 @@ def _sign_near(expr, var, c, side: int, want: int, width: Fraction) -> bool:
     # the variable itself, or a factor (var - c) with the right orientation
     if expr == var and c == 0 and side > 0:
         return want > 0
+    if isinstance(expr, sp.Pow) and not expr.exp.is_integer:
+        # a real power is defined and positive exactly where its base is > 0
+        return want > 0 and _sign_near(expr.base, var, c, side, 1, width)
     if isinstance(expr, sp.Mul) or (isinstance(expr, sp.Pow) and expr.exp.is_integer):
         factors = expr.args if isinstance(expr, sp.Mul) else [expr.base] * int(abs(expr.exp))
         if isinstance(expr, sp.Pow) and expr.exp < 0:
@@ -243,13 +247,15 @@ class SignClaim:
     want: int = 1
 
 
-def _witness_check(expr, var, point, want) -> bool:
-    """True if want*expr(point) <= 0, certified."""
+def _witness_check(expr, var, point, want, strict=True) -> bool:
+    """True if want*expr(point) <= 0 (strict claim) or < 0 (weak), certified."""
     try:
         box = value_at(expr, var, point)
     except Undefined:
         return False
-    return box.is_nonpositive() if want > 0 else box.is_nonnegative()
+    if strict:
+        return box.is_nonpositive() if want > 0 else box.is_nonnegative()
+    return box.is_negative() if want > 0 else box.is_positive()
 
 
 def _exact_zero_in(expr, var, lo, hi):
@@ -268,20 +274,26 @@ def _exact_zero_in(expr, var, lo, hi):
     return None
 
 
-def _cover(expr, var, lo, hi, want, left_open, right_open, budget) -> Verdict:
+def _accepts(box, want, strict):
+    if strict:
+        return box.is_positive() if want > 0 else box.is_negative()
+    return box.is_nonnegative() if want > 0 else box.is_nonpositive()
+
+
+def _cover(expr, var, lo, hi, want, left_open, right_open, budget, strict=True) -> Verdict:
     """want*expr > 0 on the finite interval between lo and hi (exact), using
     one-sided lemmas at open ends, bisection in between."""
     a, b = lo, hi
+    # at an open end the function may vanish: a one-sided lemma (strict, so
+    # also enough for a weak claim); a weak claim may do without it
     if left_open:
         w = sign_near(expr, var, lo, +1, want)
-        if w is None:
-            return unknown(f"cannot decide the sign just right of {var} = {lo}")
-        a = lo + sp.Rational(w)
+        if w is not None:
+            a = lo + sp.Rational(w)
     if right_open:
         w = sign_near(expr, var, hi, -1, want)
-        if w is None:
-            return unknown(f"cannot decide the sign just left of {var} = {hi}")
-        b = hi - sp.Rational(w)
+        if w is not None:
+            b = hi - sp.Rational(w)
     if (a >= b) == True:  # noqa: E712
         return proved("one-sided lemmas cover the interval")
     fn = _compiled(expr, var, "range")
@@ -294,14 +306,15 @@ def _cover(expr, var, lo, hi, want, left_open, right_open, budget) -> Verdict:
             return unknown(f"undecided near {var} = {float((u + v) / 2):.6g} after {budget} boxes")
         try:
             box = fn(Interval.of(u, v))
-            if box.is_positive() if want > 0 else box.is_negative():
+            if _accepts(box, want, strict):
                 continue
         except Undefined as exc:
-            box = None
             if float(v - u) < 1e-12:
                 return unknown(f"not defined near {var} = {float(u):.6g}: {exc}")
+        if float(v - u) < 1e-15:
+            return unknown(f"cannot decide the sign near {var} = {float(u):.6g}")
         m = rational_between(u, v)
-        if _witness_check(expr, var, m, want):
+        if _witness_check(expr, var, m, want, strict):
             return refuted(f"fails at {var} = {m}", m)
         queue.append((m, v))
         queue.append((u, m))
@@ -309,7 +322,7 @@ def _cover(expr, var, lo, hi, want, left_open, right_open, budget) -> Verdict:
 
 
 def prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
-               zeros=(), budget=MAX_BOXES) -> Verdict:
+               zeros=(), budget=MAX_BOXES, strict=True) -> Verdict:
     """Prove want*expr > 0 on the interval from lo to hi (hi may be oo),
     open or closed at each end, except at the exact points ``zeros`` where
     expr vanishes (they are excluded from the strict claim; the caller has
@@ -331,15 +344,12 @@ def prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
         right_open = (i < len(finite_parts) - 2) or (R is None and hi_open)
         if R is not None and i == len(finite_parts) - 2:
             right_open = False
-        if not left_open:
-            w = _witness_check(expr, var, a, want)
-            if w:
-                return refuted(f"fails at {var} = {a}", a)
-        if not right_open and R is None:
-            if _witness_check(expr, var, b, want):
-                return refuted(f"fails at {var} = {b}", b)
-        v = _cover(expr, var, a, b, want, left_open, right_open, budget)
-        if not v.proved and not v.refuted:
+        if not left_open and _witness_check(expr, var, a, want, strict):
+            return refuted(f"fails at {var} = {a}", a)
+        if not right_open and R is None and _witness_check(expr, var, b, want, strict):
+            return refuted(f"fails at {var} = {b}", b)
+        v = _cover(expr, var, a, b, want, left_open, right_open, budget, strict)
+        if strict and not v.proved and not v.refuted:
             root = _exact_zero_in(expr, var, a, b)
             if root is not None:
                 return refuted(f"vanishes at {var} = {root} (exact)", root)
@@ -347,7 +357,7 @@ def prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
             return v
     if R is not None:
         tail = tail_form(expr, var)
-        v = _cover(tail, T, sp.Integer(0), 1 / R, want, True, False, budget)
+        v = _cover(tail, T, sp.Integer(0), 1 / R, want, True, False, budget, strict)
         if v.refuted:
             return refuted(f"fails at {var} = {1 / v.witness}", 1 / v.witness)
         if not v.proved:
@@ -378,6 +388,18 @@ def _lower_fraction(x) -> Fraction:
     return Interval.point(x).lower_fraction()
 
 
+def _lo(box: Interval) -> Fraction | None:
+    """Lower end rounded down to a double (keeps the arithmetic cheap: exact
+    endpoints of exp(-1/t^2) have million-bit denominators)."""
+    x = box.lower_float()
+    return Fraction(x) if math.isfinite(x) else None
+
+
+def _hi(box: Interval) -> Fraction | None:
+    x = box.upper_float()
+    return Fraction(x) if math.isfinite(x) else None
+
+
 def _mean_value_upper(fn, dfn, u, v):
     """Upper bound of E on [u, v] from the mean-value form
     E(x) = E(m) + E'(xi) (x - m), tighter than the natural enclosure near a
@@ -388,9 +410,9 @@ def _mean_value_upper(fn, dfn, u, v):
     if not (em.is_finite() and d.is_finite()):
         return None
     mf = Fraction(int(m.p), int(m.q))
-    right = max(Fraction(0), d.upper_fraction()) * (_upper_fraction(v) - mf)
-    left = max(Fraction(0), -d.lower_fraction()) * (mf - _lower_fraction(u))
-    return em.upper_fraction() + max(right, left)
+    right = max(Fraction(0), _hi(d)) * (_hi(Interval.point(v)) - mf)
+    left = max(Fraction(0), -_lo(d)) * (mf - _lo(Interval.point(u)))
+    return _hi(em) + max(right, left)
 
 
 def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
@@ -416,7 +438,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
 
     def raise_lower(box):
         nonlocal lower
-        lf = box.lower_fraction()
+        lf = _lo(box)
         if lf is not None and (lower is None or lf > lower):
             lower = lf
 
@@ -427,7 +449,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
         try:
             box = fn(Interval.of(u, v))
             raise_lower(box)
-            up = box.upper_fraction()
+            up = _hi(box)
         except Undefined:
             pass
         if not (kind == "t" and u == 0):

@@ -1,0 +1,7 @@
+"""Unusable: e1/0 makes SymPy's complex infinity: f == zoo*e1 + e2**2."""
+import sympy as sp
+
+e1, e2 = sp.symbols("e1 e2", real=True)
+f = e1 / 0 + e2**2
+assert f.has(sp.zoo)
+gains = {"circle": dict(k1=0.25, k2=0.7, lam=1.2, Vmax=0.75, Wmax=2.0, Vr_max=0.5, Wr_max=1.0)}

@@ -1,0 +1,55 @@
+"""Unusable design files: exit status 2, exactly one line on stderr naming the file,
+no traceback.  A design that hangs at import must be given up on after --timeout."""
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from _cli import ROOT, run_cli  # noqa: E402
+
+BAD = "tests/bad_inputs"
+
+#: file -> what is wrong with it
+CASES = {
+    "syntax_error.py": "not valid Python",
+    "import_raises.py": "raises RuntimeError at import",
+    "no_f.py": "defines no f",
+    "f_string.py": "f is a str",
+    "f_list.py": "f is a list",
+    "free_symbol.py": "free symbol a without a value in params",
+    "not_real.py": "sqrt(e1**2 - 1) is not real for |e1| < 1",
+    "zoo_inside.py": "f contains zoo (e1/0)",
+    "nan_inside.py": "f is nan",
+    "gain_missing_wmax.py": "gain scenario without Wmax",
+    "gain_negative_k1.py": "gain scenario with k1 = -0.1",
+    "does_not_exist.py": "no such file",
+}
+HANGS = "sleep_forever.py"
+
+
+def test_every_bad_input_file_is_covered():
+    on_disk = {p.name for p in (ROOT / BAD).glob("*.py")}
+    assert on_disk == (set(CASES) - {"does_not_exist.py"}) | {HANGS}
+    assert not (ROOT / BAD / "does_not_exist.py").exists()
+
+
+@pytest.mark.parametrize("name", sorted(CASES), ids=lambda n: n.removesuffix(".py"))
+def test_unusable_input(name):
+    run = run_cli([f"{BAD}/{name}", "--format", "json"], timeout=300)
+    info = f"case: {CASES[name]}\n{run.describe()}"
+    assert not run.timed_out, info
+    assert "Traceback" not in run.stdout and "Traceback" not in run.stderr, info
+    assert run.returncode == 2, info
+    lines = run.stderr.strip("\n").splitlines()
+    assert len(lines) == 1, f"expected exactly one line on stderr, got {len(lines)}\n{info}"
+    assert name in lines[0], f"stderr does not name the file\n{info}"
+
+
+def test_design_hanging_at_import_times_out():
+    run = run_cli([f"{BAD}/{HANGS}", "--format", "json", "--timeout", "3"], timeout=30)
+    info = run.describe()
+    assert not run.timed_out, f"still running after 30 s\n{info}"
+    assert run.elapsed < 30, info
+    assert "Traceback" not in run.stdout and "Traceback" not in run.stderr, info
+    assert run.returncode == 3, info
