@@ -141,8 +141,11 @@ def _frac(x) -> Fraction:
 
 def rational_between(lo, hi) -> sp.Rational:
     """A simple exact rational strictly inside (lo, hi), lo < hi finite."""
-    lo_f = Interval.point(lo).upper_fraction()
-    hi_f = Interval.point(hi).lower_fraction()
+    if isinstance(lo, sp.Rational) and isinstance(hi, sp.Rational):
+        lo_f, hi_f = Fraction(int(lo.p), int(lo.q)), Fraction(int(hi.p), int(hi.q))
+    else:
+        lo_f = Interval.point(lo).upper_fraction()
+        hi_f = Interval.point(hi).lower_fraction()
     mid = (lo_f + hi_f) / 2
     # prefer short rationals
     for den in (1, 2, 4, 8, 10, 16, 100, 1000, 10 ** 6):
@@ -467,7 +470,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
     for count in range(budget):
         _, _, kind, u, v, up = heap[0]
         if up is not None and lower is not None and \
-                up - lower <= Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 30)):
+                up - lower <= Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 9)):
             near = float((u + v) / 2) if kind == "s" else None
             return SupEnclosure(lower, up, at_infinity=(kind == "t" and u == 0), near=near)
         heapq.heappop(heap)
