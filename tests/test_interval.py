@@ -499,3 +499,11 @@ def test_piecewise_branch_narrowing_is_sound_and_useful():
         r = evaluate(pw, {s: Interval.of(a, b)})
         for p in samples(rng, a, b, 6):
             assert_encloses(r, mp_value(pw, [s], [p]), (a, b, p))
+
+
+def test_contains_is_exact_for_rationals():
+    r = evaluate(1 / sp.Min(-3, sp.log(sp.Max(sp.Rational(5, 4), s))), {s: Interval.of(-sp.oo, -2)})
+    assert r.contains(sp.Rational(-1, 3)) and r.contains(F(-1, 3))
+    assert not r.contains(F(-1, 3) + F(1, 10**30))
+    assert Interval.point(sp.pi).contains(Interval.point(sp.pi, prec=256))
+    assert Interval.of(3, 4).contains(sp.pi) and not Interval.of(3, F(314, 100)).contains(sp.pi)

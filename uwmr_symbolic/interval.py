@@ -17,7 +17,11 @@ Two modes
     ``{expr(x) : x in the box, every sub-expression defined at x}``.
     Infinite endpoints are allowed in inputs and outputs.  A Piecewise whose
     conditions cannot be decided on the box yields the hull of the candidate
-    branches (each evaluated on the whole box, which is sound).
+    branches.  Each candidate branch is evaluated on the box narrowed by the
+    bounds "symbol op constant" implied by its own condition and by the
+    negations of the earlier conditions (a closed superset of the points where
+    the branch is active; other conditions imply no narrowing), so the hull
+    is sound; a branch whose narrowed box is empty is skipped.
 ``mode="continuous"``
     As above, and additionally the evaluation *proves* that the expression is
     defined and continuous on the whole (closed, bounded) box: the expression
@@ -58,6 +62,12 @@ number, ``log`` of a not strictly positive interval, domain errors of
 ``acosh``/``atanh``/``asin``/``acos``, ``tan`` across a pole, ``nan``/``zoo``/
 ``I``, unevaluated ``Derivative``/``Integral``/..., unsupported nodes).
 Raising is always sound: it never claims anything.
+
+Implementation: :class:`IntervalFunction` compiles the SymPy tree once into
+nested closures working on tuples ``(lo, hi)``; constant sub-trees are folded
+at compile time, and sub-expressions occurring several times are cached per
+call.  ``prec`` (bits) is set on ``flint.ctx`` for the duration of a call and
+restored afterwards (not thread-safe, like flint's global context).
 """
 from __future__ import annotations
 
@@ -587,7 +597,19 @@ class Interval:
 
     def contains(self, x) -> bool:
         """True if x (a number or Interval) provably lies in this interval."""
-        lo, hi = _enclose_value(x, 256) if not isinstance(x, Interval) else (x.lo, x.hi)
+        if isinstance(x, (int, Fraction)) or (isinstance(x, sp.Basic) and x.is_Rational):
+            q = Fraction(int(x.p), int(x.q)) if isinstance(x, sp.Basic) else Fraction(x)
+            lo, hi = self.lower_fraction(), self.upper_fraction()
+            return (lo is None or lo <= q) and (hi is None or q <= hi)
+        if isinstance(x, Interval):
+            lo, hi = x.lo, x.hi
+        else:
+            old = ctx.prec
+            ctx.prec = 512
+            try:
+                lo, hi = _enclose_value(x, 512)
+            finally:
+                ctx.prec = old
         return self.lo <= lo and hi <= self.hi
 
     def hull(self, other: "Interval") -> "Interval":
@@ -780,7 +802,10 @@ class _Compiler:
             if coeff == -1:
                 cf = _negi
             else:
-                cv = self.compile(coeff)(None)  # may raise for nan; let it
+                try:
+                    cv = self.compile(coeff)(None)
+                except Undefined as ex:
+                    return _raiser(str(ex))
                 if cv[0] == cv[1]:
                     c = cv[0]
                     if c == ZERO:
