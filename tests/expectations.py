@@ -148,17 +148,8 @@ EXPECTATIONS = {
 # closed form) and "attained".  Every other check of the design stays strict.
 # Remove an entry as soon as the verifier decides it: the test then insists.
 KNOWN_GAPS = {
-    # sup not attained at infinity: strictness at t = 0 needs open interval ends
-    "designs/design3_logcosh.py": {"attained"},
-    "tests/designs/v03_logcosh_norm.py": {"attained"},
     # f is not radial: the verifier refutes P4 but does not prove 2-D properties
     "tests/designs/r01_nonradial.py": {"P1", "P3", "P5", "P6", "P7", "P8", "kf", "kf_exact", "attained"},
-    # exp(-1/t^2)/t at t = 0: needs asymptotic (not interval) reasoning
-    "tests/designs/r02_bounded.py": {"P1", "P5", "P6", "kf", "kf_exact", "attained"},
-    # F = log(1 + s^(3/2)) near s = 0: Taylor's theorem does not apply to s^(3/2)
-    "tests/designs/r08_rho_three_quarters.py": {"P3"},
     # F = u - sin(u) vanishes to sixth order at 0; F' has infinitely many zeros
     "tests/designs/r09_slope_zero.py": {"P3", "P5", "P6", "kf_exact", "attained"},
-    # s atan(s) - log(1 + s^2)/2 at infinity: inf - inf in the limit calculus
-    "tests/designs/v08_atan_integral.py": {"P3", "kf_exact", "attained"},
 }

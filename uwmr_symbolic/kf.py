@@ -163,6 +163,9 @@ def certify_kf(analysis) -> SupCertificate:
     pos = certify_sup(analysis, dF, "F'")
     if pos.upper is None:
         return pos
+    if all(prove_sign(e, S, p.lo, p.hi, want=1, strict=False, budget=1500).proved
+           for e, p in zip(dF, pieces)):
+        return pos      # F' >= 0 everywhere: sup |F'| = sup F'
     neg = certify_sup(analysis, [-e for e in dF], "-F'")
     if neg.upper is None:
         return neg

@@ -31,7 +31,7 @@ from .kf import KfCertificate, certify_kf, certify_sup
 from .limits import NoLimit, limit_right
 from .profile import (S, continuous_on, float_of, limit_at_infinity, one_sided_value, radial_profile,
                       same_value, split_profile, verify_radial)
-from .univariate import T, X, exact_sign, exact_value, prepare, prove_sign, tail_form
+from .univariate import T, X, enclose, exact_sign, exact_value, prepare, prove_sign, tail_form
 from .verdict import Verdict, proved, refuted, unknown
 
 PROPERTIES = ("P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8")
@@ -247,11 +247,16 @@ def verify_p3(a: Analysis) -> Verdict:
     pos = _positive_on_pieces(a, 0, "F(s) > 0")
     if pos.refuted:
         return refuted(f"f is not positive: {pos.reason}", pos.witness)
-    last = a.profile.pieces[-1].expr
+    last = a.profile.pieces[-1]
     try:
-        lim = limit_at_infinity(last)
+        lim = limit_at_infinity(last.expr)
     except NoLimit as exc:
-        return unknown(f"{pos.reason if pos.proved else pos.reason}; cannot decide whether f -> oo ({exc})")
+        growth = _grows_without_bound(a.derivative(last.expr, 1), last.lo)
+        if growth is None:
+            return unknown(f"{pos.reason}; cannot decide whether f -> oo ({exc})")
+        if not pos.proved:
+            return pos
+        return proved(f"{pos.reason}; {growth}")
     if lim != sp.oo:
         return refuted(f"f is not radially unbounded: f(e) -> {lim} as |e| -> oo in every direction "
                        "(limit calculus on F(1/t), t -> 0+)",
@@ -259,6 +264,22 @@ def verify_p3(a: Analysis) -> Verdict:
     if not pos.proved:
         return pos
     return proved(f"{pos.reason}; F(s) -> oo as s -> oo (limit calculus on F(1/t))")
+
+
+def _grows_without_bound(dF, lo) -> str | None:
+    """F -> oo from a lower bound c > 0 on F' (F >= F(R) + c (s - R)) or on
+    s F' (F >= F(R) + c log(s/R)) over [R, oo), by interval arithmetic on the
+    t-form; a description of the argument, or None."""
+    R = sp.Integer(max(4, int(2 * float(lo) + 4)))
+    for rate, what in ((dF, "F' >= {c} on [{R}, oo), so F grows at least linearly"),
+                       (S * dF, "s F'(s) >= {c} on [{R}, oo), so F grows at least like log s")):
+        try:
+            box = enclose(tail_form(rate, S), T, 0, 1 / R)
+        except Undefined:
+            continue
+        if box.is_positive():
+            return what.format(c=f"{box.lower_float():.6g}", R=R)
+    return None
 
 
 def verify_p5(a: Analysis) -> Verdict:

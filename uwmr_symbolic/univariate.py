@@ -30,6 +30,7 @@ from functools import lru_cache
 import sympy as sp
 
 from .interval import Interval, IntervalFunction, Undefined
+from .limits import NoLimit, limit_right
 from .verdict import Verdict, proved, refuted, unknown
 
 T = sp.Symbol("t", positive=True)       # t = 1/s on the unbounded part
@@ -69,9 +70,29 @@ def _hyperbolic_to_tanh(expr: sp.Expr) -> sp.Expr:
     return sp.bottom_up(expr, fix)
 
 
+def _one_minus_tanh_squared(expr: sp.Expr) -> sp.Expr:
+    """Write 1 - tanh(x)^2 as cosh(x)^-2 where differentiation spread it over
+    a sum: the difference of two O(1) terms that is exponentially small is
+    hopeless for interval arithmetic, cosh(x)^-2 is not."""
+    squares = [p for p in expr.atoms(sp.Pow) if isinstance(p.base, sp.tanh) and p.exp == 2]
+    if not squares or not isinstance(expr, sp.Add):
+        return expr
+    out = sp.expand_mul(expr.xreplace({p: 1 - sp.cosh(p.base.args[0]) ** -2 for p in squares}))
+    return out if sp.count_ops(out) <= sp.count_ops(expr) + 12 else expr
+
+
 def prepare(expr: sp.Expr) -> sp.Expr:
-    """A form of expr that interval arithmetic handles well (same function)."""
-    return _hyperbolic_to_tanh(expr)
+    """A form of expr that interval arithmetic handles well (same function):
+    tanh instead of sinh/cosh, cosh^-2 instead of 1 - tanh^2, and sums
+    regrouped on their transcendental factors (fewer cancelling terms)."""
+    out = _one_minus_tanh_squared(_hyperbolic_to_tanh(expr))
+    if isinstance(out, sp.Add) and out.has(sp.Function):
+        syms = list(out.free_symbols)
+        if len(syms) == 1:
+            grouped = _regroup(out, syms[0])
+            if sp.count_ops(grouped) <= sp.count_ops(out):
+                out = grouped
+    return out
 
 
 def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
@@ -81,6 +102,9 @@ def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
     e = expr.subs(s, 1 / T)
     e = sp.bottom_up(e, lambda node: sp.together(node) if isinstance(node, (sp.Pow, sp.Add)) else node)
     e = prepare(e)
+    e = e.replace(lambda n: isinstance(n, sp.atan) and n.args[0].is_positive and
+                  (1 / n.args[0]).count_ops() < n.args[0].count_ops(),
+                  lambda n: sp.pi / 2 - sp.atan(sp.cancel(1 / n.args[0])))
     if not e.has(sp.Function, sp.Piecewise):
         e = sp.cancel(e)
     return e
@@ -192,10 +216,15 @@ def _sign_near(expr, var, c, side: int, want: int, width: Fraction) -> bool:
     if isinstance(expr, sp.Pow) and not expr.exp.is_integer:
         # a real power is defined and positive exactly where its base is > 0
         return want > 0 and _sign_near(expr.base, var, c, side, 1, width)
-    if isinstance(expr, sp.Mul) or (isinstance(expr, sp.Pow) and expr.exp.is_integer):
-        factors = expr.args if isinstance(expr, sp.Mul) else [expr.base] * int(abs(expr.exp))
-        if isinstance(expr, sp.Pow) and expr.exp < 0:
-            factors = [1 / b for b in factors]
+    if isinstance(expr, sp.Pow) and expr.exp.is_integer:
+        # b**n and b**-n have the sign of b**|n|
+        n = abs(int(expr.exp))
+        if n % 2 == 0:
+            return want > 0 and (_sign_near(expr.base, var, c, side, 1, width)
+                                 or _sign_near(expr.base, var, c, side, -1, width))
+        return _sign_near(expr.base, var, c, side, want, width)
+    if isinstance(expr, sp.Mul):
+        factors = expr.args
         total = 1
         for factor in factors:
             if not factor.has(var):
@@ -210,6 +239,23 @@ def _sign_near(expr, var, c, side: int, want: int, width: Fraction) -> bool:
                 return False
             total *= sgn
         return total == want
+    if isinstance(expr, _SIGN_PRESERVING) and len(expr.args) == 1:
+        # odd, strictly increasing, g(0) = 0: g(Y) has the sign of Y
+        return _sign_near(expr.args[0], var, c, side, want, width)
+    if isinstance(expr, sp.exp):
+        return want > 0
+    if isinstance(expr, sp.log):
+        # log(Y) > 0 iff Y - 1 > 0;  log(Y) < 0 iff 0 < Y < 1
+        y = expr.args[0]
+        if want > 0:
+            return _sign_near(y - 1, var, c, side, 1, width)
+        return _sign_near(y - 1, var, c, side, -1, width) and _sign_near(y, var, c, side, 1, width)
+    if isinstance(expr, sp.Add):
+        for form in (expr, _regroup(expr, var)):
+            if isinstance(form, sp.Add) and _sum_sign_near(form, var, lo, hi, c, side, want, width):
+                return True
+            if form is not expr and not isinstance(form, sp.Add) and _sign_near(form, var, c, side, want, width):
+                return True
     # Taylor with Lagrange remainder at c
     signs, dm = _derivative_values(expr, var, c, TAYLOR_ORDER)
     if dm is None or not signs or signs[-1] == 0:
@@ -222,6 +268,45 @@ def _sign_near(expr, var, c, side: int, want: int, width: Fraction) -> bool:
     except Undefined:
         return False
     return box.is_positive() if signs[-1] > 0 else box.is_negative()
+
+
+_SIGN_PRESERVING = (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf)
+
+
+def _regroup(expr, var):
+    """The same sum with terms collected on their transcendental factors and
+    polynomial coefficients factored: t(t^2+4)^2 X - 4t(t^2+4) X becomes
+    t^3 (t^2+4) X, whose sign the product rule can see."""
+    funcs = sorted({f for f in expr.atoms(sp.Function) if f.has(var)}, key=sp.default_sort_key)
+    try:
+        grouped = sp.collect(expr, funcs)
+    except Exception:  # noqa: BLE001
+        return expr
+    terms = []
+    for term in sp.Add.make_args(grouped):
+        coeff, rest = term.as_independent(*funcs, as_Add=False)
+        if coeff.has(var) and not coeff.has(sp.Function, sp.Piecewise):
+            coeff = sp.factor(sp.together(coeff))
+        terms.append(coeff * rest)
+    return sp.Add(*terms)
+
+
+def _sum_sign_near(expr, var, lo, hi, c, side, want, width) -> bool:
+    """A sum has sign `want` if every term has it weakly on the closed box
+    (interval arithmetic) and one term has it strictly (recursively)."""
+    strict_found = False
+    for term in expr.args:
+        try:
+            box = enclose(term, var, lo, hi)
+        except Undefined:
+            return False
+        if not (box.is_nonnegative() if want > 0 else box.is_nonpositive()):
+            return False
+        if not strict_found and (
+                (box.is_positive() if want > 0 else box.is_negative())
+                or (term.has(var) and _sign_near(term, var, c, side, want, width))):
+            strict_found = True
+    return strict_found
 
 
 def sign_near(expr, var, c, side, want) -> Fraction | None:
@@ -324,8 +409,34 @@ def _cover(expr, var, lo, hi, want, left_open, right_open, budget, strict=True) 
     return proved("interval arithmetic on a finite cover")
 
 
+def _monotone_tail(expr, var, R, want, strict, depth) -> bool:
+    """want*expr > 0 (or >= 0) on [R, oo) by monotonicity, when interval
+    arithmetic on the t-form cannot see it (limits attained only at t = 0):
+    (a) want*expr(R) > 0 and want*expr' >= 0 on [R, oo); or
+    (b) lim_{s->oo} want*expr >= 0 and want*expr' < 0 on [R, oo) (strictly
+        monotone towards a non-negative limit stays above it)."""
+    d = prepare(sp.diff(expr, var))
+    try:
+        at_r = value_at(expr, var, R)
+        if (at_r.is_positive() if want > 0 else at_r.is_negative()) and prove_sign(
+                d, var, R, sp.oo, want=want, lo_open=False, strict=False, budget=1500,
+                _depth=depth + 1).proved:
+            return True
+    except Undefined:
+        pass
+    try:
+        lim = limit_right(tail_form(expr, var), T).value
+    except NoLimit:
+        return False
+    sgn = 1 if lim == sp.oo else (-1 if lim == -sp.oo else exact_sign(lim))
+    if sgn is None or sgn * want < 0 or (sgn == 0 and False):
+        return False
+    return prove_sign(d, var, R, sp.oo, want=-want, lo_open=False, strict=True, budget=1500,
+                      _depth=depth + 1).proved
+
+
 def prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
-               zeros=(), budget=MAX_BOXES, strict=True) -> Verdict:
+               zeros=(), budget=MAX_BOXES, strict=True, _depth=0) -> Verdict:
     """Prove want*expr > 0 on the interval from lo to hi (hi may be oo),
     open or closed at each end, except at the exact points ``zeros`` where
     expr vanishes (they are excluded from the strict claim; the caller has
@@ -361,6 +472,8 @@ def prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
     if R is not None:
         tail = tail_form(expr, var)
         v = _cover(tail, T, sp.Integer(0), 1 / R, want, True, False, budget, strict)
+        if not v.proved and not v.refuted and _depth < 2 and _monotone_tail(expr, var, R, want, strict, _depth):
+            v = proved("monotone on the unbounded part")
         if v.refuted:
             return refuted(f"fails at {var} = {1 / v.witness}", 1 / v.witness)
         if not v.proved:
@@ -428,7 +541,16 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
         R = sp.Integer(max(4, int(2 * float(lo) + 4)))
         tail = tail_form(expr, var)
         parts.append(("s", expr, lo, R))
-        parts.append(("t", tail, sp.Integer(0), 1 / R))
+        try:
+            box = _compiled(tail, T, "range")(Interval.of(0, 1 / R))
+            blind = box.upper_fraction() is None
+        except Undefined:
+            blind = True
+        if blind and prove_sign(sp.diff(expr, var), var, R, sp.oo, want=-1, lo_open=False,
+                                strict=False, budget=1500).proved:
+            pass   # expr is non-increasing on [R, oo): sup there is expr(R), in the first part
+        else:
+            parts.append(("t", tail, sp.Integer(0), 1 / R))
     else:
         parts.append(("s", expr, lo, hi))
     fns = {}
