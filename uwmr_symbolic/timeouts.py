@@ -11,6 +11,10 @@ from contextlib import contextmanager
 
 _deadlines: list[float] = []
 
+#: How many limits set by `attempt` have expired in this process (a result
+#: computed while one expired depends on the time it was given: not cached).
+expired = 0
+
 
 class TimeLimit(BaseException):
     """A time limit expired (a BaseException, so that design files and
@@ -49,6 +53,8 @@ def attempt(fn, seconds: float, default=None):
         with time_limit(seconds):
             return fn()
     except TimeLimit:
+        global expired
+        expired += 1
         return default   # an outer limit that also expired fires again at once
     except Exception:  # noqa: BLE001 - SymPy failures mean 'not found'
         return default

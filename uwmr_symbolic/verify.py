@@ -13,6 +13,7 @@ from .gains import GainCheck, check_gains
 from .kf import SupCertificate
 from .properties import PROPERTIES, VERIFIERS, Analysis
 from .replay import replay
+from . import timeouts
 from .timeouts import TimeLimit, time_limit
 from .verdict import Verdict, unknown
 
@@ -31,6 +32,7 @@ class Report:
     proof_replay: dict = field(default_factory=lambda: {"ok": False, "steps": {}})
     seconds: float = 0.0
     error: str | None = None      # unusable input
+    timed_out: bool = False       # some step hit --timeout (the result depends on the time given)
 
     @property
     def exit_status(self) -> int:
@@ -50,19 +52,38 @@ def _timed_out(what: str, timeout: float) -> Verdict:
     return unknown(f"{what} did not finish within --timeout {timeout:g} s")
 
 
-def verify_design(path, timeout: float = DEFAULT_TIMEOUT) -> Report:
-    """Verify one design file (never raises for bad input: see Report.error)."""
+def load_with_limit(path, timeout: float = DEFAULT_TIMEOUT, start: float | None = None) -> Design | Report:
+    """Load a design file within `timeout`: the `Design`, or the final `Report`
+    when the file is unusable or loading it timed out."""
     path = Path(path)
-    start = time.monotonic()
-    deadline = start + timeout
+    start = time.monotonic() if start is None else start
     try:
         with time_limit(timeout):
-            design = load_design(path)
+            return load_design(path)
     except DesignError as exc:
         return Report(path, None, {}, None, error=str(exc), seconds=time.monotonic() - start)
     except TimeLimit:
         props = {p: _timed_out("loading the design file", timeout) for p in PROPERTIES}
-        return Report(path, None, props, None, seconds=time.monotonic() - start)
+        return Report(path, None, props, None, seconds=time.monotonic() - start, timed_out=True)
+
+
+def verify_design(path, timeout: float = DEFAULT_TIMEOUT) -> Report:
+    """Verify one design file (never raises for bad input: see Report.error)."""
+    start = time.monotonic()
+    loaded = load_with_limit(path, timeout, start)
+    if isinstance(loaded, Report):
+        return loaded
+    return verify_loaded(loaded, timeout, start)
+
+
+def verify_loaded(design: Design, timeout: float = DEFAULT_TIMEOUT, start: float | None = None) -> Report:
+    """Decide P1-P8, kf, the proof replay and the gains of a loaded design;
+    `start` (time.monotonic()) is when the `timeout` began to run."""
+    path = design.path
+    start = time.monotonic() if start is None else start
+    deadline = start + timeout
+    timed_out = False
+    expired_before = timeouts.expired
     analysis = Analysis(design)
     props: dict[str, Verdict] = {}
     # P4 first: it decides whether the radial reduction is available
@@ -70,12 +91,14 @@ def verify_design(path, timeout: float = DEFAULT_TIMEOUT) -> Report:
         remaining = deadline - time.monotonic()
         if remaining <= 0:
             props[name] = _timed_out(name, timeout)
+            timed_out = True
             continue
         try:
             with time_limit(remaining):
                 props[name] = VERIFIERS[name](analysis)
         except TimeLimit:
             props[name] = _timed_out(name, timeout)
+            timed_out = True
     props = {p: props[p] for p in PROPERTIES}
     kf = None
     if analysis.p4.proved and analysis.profile is not None:
@@ -84,14 +107,18 @@ def verify_design(path, timeout: float = DEFAULT_TIMEOUT) -> Report:
                 kf = analysis.kf    # sup |F'| over the pieces, also when P1 fails
         except TimeLimit:
             kf = None
+            timed_out = True
     try:
         with time_limit(max(deadline - time.monotonic(), 5.0)):
             proof = replay(design.f, analysis.p4.proved)
     except TimeLimit:
         proof = {"ok": False, "steps": {"replay": {"ok": False, "detail": "timed out"}}}
+        timed_out = True
     kf_for_gains = None
     if kf is not None and kf.upper is not None:
         kf_for_gains = kf.exact if kf.exact is not None else sp.Rational(kf.upper.numerator, kf.upper.denominator)
     kf_known = kf_for_gains is not None or (kf is not None and kf.unbounded_witness is not None)
     gains = check_gains(design.gains, kf_for_gains, kf_known)
-    return Report(path, design, props, kf, gains, proof, seconds=time.monotonic() - start)
+    timed_out = timed_out or timeouts.expired != expired_before
+    return Report(path, design, props, kf, gains, proof, seconds=time.monotonic() - start,
+                  timed_out=timed_out)
