@@ -1,8 +1,17 @@
-"""Rendering a `Report` as a readable table or as one JSON object."""
+"""Rendering verification results.
+
+`to_dict` turns a `Report` into a JSON-able dict; every format (text, JSON,
+JUnit XML, GitHub workflow annotations, the summary table) is rendered from
+that dict alone, so a result read back from the cache prints exactly as the
+run that computed it."""
 from __future__ import annotations
 
+import ast
 import json
 import math
+import re
+from pathlib import Path
+from xml.etree import ElementTree as ET
 
 import sympy as sp
 
@@ -10,6 +19,10 @@ from .interval import Interval
 from .verify import Report
 
 MARK = {"proved": "proved ", "refuted": "REFUTED", "unknown": "unknown"}
+LETTER = {"proved": "P", "refuted": "R", "unknown": "?"}
+STATUS_TEXT = {0: "all properties proved, gains within the limits", 1: "REFUTED or a gain check fails",
+               2: "unusable input", 3: "inconclusive"}
+PROPS = ("P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8")
 
 
 def _num(x):
@@ -30,6 +43,32 @@ def _jsonable(obj):
     return str(obj)
 
 
+def assignment_line(source: str, name: str) -> int | None:
+    """Line of the last module-level assignment to `name` in Python `source`."""
+    line = None
+    try:
+        body = ast.parse(source).body
+    except (SyntaxError, ValueError):
+        return None
+    for node in body:
+        targets = node.targets if isinstance(node, ast.Assign) else \
+            [node.target] if isinstance(node, (ast.AnnAssign, ast.AugAssign)) else []
+        if any(isinstance(t, ast.Name) and t.id == name for t in targets):
+            line = node.lineno
+    return line
+
+
+def design_fields(design) -> dict:
+    """What a result says about the file rather than about f: filled in afresh
+    when a result comes from the cache (another file may define the same f)."""
+    try:
+        gains_line = assignment_line(Path(design.path).read_text(), "gains")
+    except (OSError, UnicodeDecodeError):
+        gains_line = None
+    return {"design": str(design.path), "name": design.name, "f": str(design.f),
+            "f_line": design.f_line, "gains_line": gains_line or design.f_line}
+
+
 def to_dict(r: Report) -> dict:
     if r.error is not None:
         return {"design": str(r.path), "error": r.error, "exit_status": r.exit_status}
@@ -45,9 +84,11 @@ def to_dict(r: Report) -> dict:
                "lower": None if kf is None or kf.lower is None else Interval.point(kf.lower).lower_float(),
                "upper": None if kf is None or kf.upper is None else Interval.point(kf.upper).upper_float(),
                "attained": None if kf is None else kf.attained,
+               "unbounded": kf is not None and kf.upper is None and bool(kf.unbounded_witness),
                "reason": "undecided (f not radial or P1 not analysed)" if kf is None else kf.reason},
         "gains": {name: {"V_bound": _num(g.V_bound), "W_bound": _num(g.W_bound),
                          "V_margin": str(g.V_margin), "W_margin": None if g.W_margin is None else str(g.W_margin),
+                         "V_margin_float": _num(g.V_margin), "W_margin_float": _num(g.W_margin),
                          "V_ok": g.V_ok, "W_ok": g.W_ok, "lam_max": _num(g.lam_max),
                          "lam_max_exact": None if g.lam_max is None else str(g.lam_max)}
                   for name, g in r.gains.items()},
@@ -55,57 +96,228 @@ def to_dict(r: Report) -> dict:
         "seconds": round(r.seconds, 3),
         "exit_status": r.exit_status,
     }
+    if r.design is not None:
+        d.update(design_fields(r.design))
+    else:
+        d["f_line"] = d["gains_line"] = 1
     return d
 
 
-def render_json(r: Report) -> str:
-    return json.dumps(to_dict(r), indent=2)
+def _as_dict(r) -> dict:
+    return to_dict(r) if isinstance(r, Report) else r
+
+
+def render_json(r) -> str:
+    return json.dumps(_as_dict(r), indent=2)
 
 
 def _fmt(x, digits=10):
-    if x is None:
-        return "inf"
-    return f"{float(sp.N(x, 30)):.{digits}g}"
+    return "inf" if x is None else f"{float(x):.{digits}g}"
 
 
-def render_text(r: Report) -> str:
-    if r.error is not None:
-        return f"{r.path}: {r.error}"
-    lines = []
-    title = r.design.name if r.design else r.path.name
-    lines.append(f"{r.path}  —  {title}")
-    if r.design:
-        lines.append(f"  f = {r.design.f}")
+# ---------------------------------------------------------------- text
+
+def render_text(r) -> str:
+    """The readable report of one design (a `Report` or its dict)."""
+    d = _as_dict(r)
+    if d.get("error") is not None:
+        return f"{d['design']}: {d['error']}"
+    lines = [f"{d['design']}  —  {d.get('name') or Path(d['design']).name}"]
+    if d.get("f") is not None:
+        lines.append(f"  f = {d['f']}")
     lines.append("")
-    for p, v in r.properties.items():
-        lines.append(f"  {p}  {MARK[v.status]}  {v.reason}")
-        if v.witness is not None and not v.proved:
-            lines.append(f"               witness: {json.dumps(_jsonable(v.witness))}")
-    kf = r.kf
+    for p, v in d["properties"].items():
+        lines.append(f"  {p}  {MARK[v['verdict']]}  {v['reason']}")
+        if v.get("witness") is not None and v["verdict"] != "proved":
+            lines.append(f"               witness: {json.dumps(v['witness'])}")
+    kf = d["kf"]
     lines.append("")
-    if kf is None:
-        lines.append("  kf: undecided")
-    elif kf.upper is None:
-        lines.append(f"  kf: {'infinite' if kf.unbounded_witness else 'undecided'} — {kf.reason}")
+    if kf["upper"] is None:
+        lines.append(f"  kf: {'infinite' if kf.get('unbounded') else 'undecided'} — {kf['reason']}")
     else:
         att = {True: "attained", False: "approached at infinity, not attained", None: "attainment undecided"}
-        exact = f"{kf.exact} = " if kf.exact is not None else ""
-        lines.append(f"  kf = {exact}{float(kf.upper):.12g}  enclosure [{float(kf.lower):.12g}, "
-                     f"{float(kf.upper):.12g}]  ({att[kf.attained]})")
-    if r.gains:
+        exact = f"{kf['exact']} = " if kf["exact"] is not None else ""
+        lines.append(f"  kf = {exact}{kf['upper']:.12g}  enclosure [{kf['lower']:.12g}, "
+                     f"{kf['upper']:.12g}]  ({att[kf['attained']]})")
+    if d["gains"]:
         lines.append("")
         lines.append("  bound (10)     |V| bound  margin          |W| bound  margin          lam_max")
-        for name, g in r.gains.items():
-            v_ok = "PASS" if g.V_ok else "FAIL"
-            w_ok = {True: "PASS", False: "FAIL", None: "????"}[g.W_ok]
-            w_margin = "—" if g.W_margin is None else f"{float(sp.N(g.W_margin, 30)):+.3e}"
-            lines.append(f"  {name:<12} {_fmt(g.V_bound, 8):>10}  {float(sp.N(g.V_margin, 30)):+.3e} {v_ok}"
-                         f"  {_fmt(g.W_bound, 8):>10}  {w_margin} {w_ok}  {_fmt(g.lam_max, 8) if g.lam_max is not None else '?'}")
+        for name, g in d["gains"].items():
+            v_ok = "PASS" if g["V_ok"] else "FAIL"
+            w_ok = {True: "PASS", False: "FAIL", None: "????"}[g["W_ok"]]
+            w_margin = "—" if g["W_margin_float"] is None else f"{g['W_margin_float']:+.3e}"
+            lam = _fmt(g["lam_max"], 8) if g["lam_max"] is not None else "?"
+            lines.append(f"  {name:<12} {_fmt(g['V_bound'], 8):>10}  {g['V_margin_float']:+.3e} {v_ok}"
+                         f"  {_fmt(g['W_bound'], 8):>10}  {w_margin} {w_ok}  {lam}")
     lines.append("")
-    pr = r.proof_replay
+    pr = d["proof_replay"]
     lines.append(f"  proof replay: {'ok' if pr.get('ok') else 'NOT ok'} — "
                  + "; ".join(f"{k}: {'ok' if s['ok'] else 'no'}" for k, s in pr.get("steps", {}).items()))
-    status = {0: "all properties proved, gains within the limits", 1: "REFUTED or a gain check fails",
-              3: "inconclusive"}[r.exit_status]
-    lines.append(f"  => {status}  ({r.seconds:.2f} s)")
+    served = ", served from the cache" if d.get("cached") else ""
+    lines.append(f"  => {STATUS_TEXT[d['exit_status']]}  ({d['seconds']:.2f} s{served})")
     return "\n".join(lines)
+
+
+def _kf_summary(kf: dict) -> str:
+    if kf["upper"] is None:
+        return "infinite" if kf.get("unbounded") else "undecided"
+    return kf["exact"] if kf["exact"] is not None else f"~{kf['upper']:.9g}"
+
+
+def _gain_word(g: dict) -> str:
+    if not g["V_ok"] or g["W_ok"] is False:
+        return "FAIL"
+    return "ok" if g["W_ok"] else "?"
+
+
+def render_summary(results: list[dict]) -> str:
+    """One table for a set of designs, and the count of each outcome."""
+    width = max([len("design")] + [len(d["design"]) for d in results])
+    lines = ["Summary (P proved, R refuted, ? unknown; kf certified; bound (10) per scenario)",
+             f"{'design':<{width}}  P1..P8    {'kf':<20} {'gains':<30} exit  time"]
+    for d in results:
+        if d.get("error") is not None:
+            lines.append(f"{d['design']:<{width}}  unusable: {d['error']}")
+            continue
+        row = "".join(LETTER[d["properties"][p]["verdict"]] for p in d["properties"])
+        gains = " ".join(f"{n}:{_gain_word(g)}" for n, g in d["gains"].items()) or "-"
+        cached = "  (cached)" if d.get("cached") else ""
+        lines.append(f"{d['design']:<{width}}  {row:<8}  {_kf_summary(d['kf']):<20} {gains:<30} "
+                     f"{d['exit_status']:>4}  {d['seconds']:5.2f} s{cached}")
+    counts = {s: sum(1 for d in results if d["exit_status"] == s) for s in (0, 1, 3, 2)}
+    lines.append(f"{len(results)} design file(s): {counts[0]} proved, {counts[1]} refuted or failing gains, "
+                 f"{counts[3]} inconclusive, {counts[2]} unusable")
+    return "\n".join(lines)
+
+
+# ---------------------------------------------------------------- JUnit XML
+
+def _classname(path: str) -> str:
+    p = Path(path)
+    return ".".join(p.with_suffix("").parts).lstrip(".") or p.name
+
+
+def _testcases(d: dict):
+    """(name, outcome, type, message, text) per property, proof replay and gain
+    scenario; outcome is 'passed', 'failure', 'error' or 'skipped'."""
+    if d.get("error") is not None:
+        yield "load", "error", "unusable", d["error"], d["error"]
+        return
+    for p, v in d["properties"].items():
+        if v["verdict"] == "proved":
+            yield p, "passed", None, None, v["reason"]
+        else:
+            text = v["reason"] + ("" if v.get("witness") is None else f"\nwitness: {json.dumps(v['witness'])}")
+            yield p, "failure", v["verdict"], f"{p} {v['verdict']}: {v['reason']}", text
+    pr = d["proof_replay"]
+    steps = "\n".join(f"{k}: {'ok' if s['ok'] else 'no'} — {s.get('detail', '')}" for k, s in pr.get("steps", {}).items())
+    if pr.get("ok"):
+        yield "proof_replay", "passed", None, None, steps
+    else:
+        yield "proof_replay", "failure", "unknown", "proof replay not ok", steps
+    if not d["gains"]:
+        yield "gains", "skipped", None, "the design has no gain scenarios", ""
+    kf_line = f"kf = {_kf_summary(d['kf'])}: {d['kf']['reason']}"
+    for name, g in d["gains"].items():
+        text = (f"|V| bound {_fmt(g['V_bound'], 10)} (margin {g['V_margin']}), "
+                f"|W| bound {_fmt(g['W_bound'], 10)} (margin {g['W_margin']}), lam_max {g['lam_max_exact']}\n{kf_line}")
+        word = _gain_word(g)
+        if word == "ok":
+            yield f"gains[{name}]", "passed", None, None, text
+        elif word == "FAIL":
+            which = " and ".join(w for w, ok in (("|V|", g["V_ok"]), ("|W|", g["W_ok"])) if ok is False)
+            yield f"gains[{name}]", "failure", "refuted", f"bound (10) fails for {which} in scenario {name}", text
+        else:
+            yield f"gains[{name}]", "failure", "unknown", f"kf undecided: |W| bound of scenario {name} unchecked", text
+
+
+def render_junit(results: list[dict]) -> str:
+    """JUnit XML in the shape pytest writes (xunit2): one <testcase> per design
+    and property P1-P8, proof replay and gain scenario; classname is the design
+    file's path.  refuted and unknown are <failure type="refuted|unknown">,
+    an unusable file is an <error>.  No timestamp or hostname, so the same
+    results always give the same bytes."""
+    suite = ET.Element("testsuite", name="uwmr-verify")
+    counts = {"tests": 0, "failures": 0, "errors": 0, "skipped": 0}
+    total = 0.0
+    for d in results:
+        cls = _classname(d["design"])
+        cases = list(_testcases(d))
+        seconds = d.get("seconds", 0.0)
+        total += seconds
+        for i, (name, outcome, kind, message, text) in enumerate(cases):
+            # the design's verification time goes on its first test case
+            tc = ET.SubElement(suite, "testcase", classname=cls, name=name,
+                               time=f"{seconds if i == 0 else 0.0:.3f}")
+            counts["tests"] += 1
+            if outcome == "passed":
+                if text:
+                    ET.SubElement(tc, "system-out").text = text
+                continue
+            tag = {"failure": "failure", "error": "error", "skipped": "skipped"}[outcome]
+            counts[{"failure": "failures", "error": "errors", "skipped": "skipped"}[outcome]] += 1
+            el = ET.SubElement(tc, tag, message=message)
+            if kind:
+                el.set("type", kind)
+            el.text = text or None
+    for k in ("errors", "failures", "skipped", "tests"):
+        suite.set(k, str(counts[k]))
+    suite.set("time", f"{total:.3f}")
+    root = ET.Element("testsuites", name="uwmr-verify")
+    root.append(suite)
+    ET.indent(root)
+    return '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(root, encoding="unicode")
+
+
+# ---------------------------------------------------------------- GitHub annotations
+
+def _gh_data(s: str) -> str:
+    return s.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
+
+
+def _gh_prop(s: str) -> str:
+    return _gh_data(s).replace(":", "%3A").replace(",", "%2C")
+
+
+def _annotation(level: str, file: str, line: int, title: str, message: str) -> str:
+    return f"::{level} file={_gh_prop(file)},line={line},title={_gh_prop(title)}::{_gh_data(message)}"
+
+
+def render_github(results: list[dict]) -> str:
+    """GitHub Actions workflow commands: ::error at the line defining f for each
+    refuted property (at the `gains` line for a failing bound (10)), ::warning
+    for each unknown, ::notice for a design proved in full, ::error for an
+    unusable file (at the line of its syntax error or exception when known)."""
+    out = []
+    for d in results:
+        path = d["design"]
+        if d.get("error") is not None:
+            m = re.search(r"at line (\d+)", d["error"])
+            out.append(_annotation("error", path, int(m.group(1)) if m else 1,
+                                   "uwmr-verify: unusable design", d["error"]))
+            continue
+        f_line, gains_line = d.get("f_line") or 1, d.get("gains_line") or d.get("f_line") or 1
+        name = d.get("name") or Path(path).name
+        for p, v in d["properties"].items():
+            if v["verdict"] == "proved":
+                continue
+            level = "error" if v["verdict"] == "refuted" else "warning"
+            msg = v["reason"] + ("" if v.get("witness") is None else f" (witness: {json.dumps(v['witness'])})")
+            out.append(_annotation(level, path, f_line, f"uwmr-verify {p} {v['verdict']} ({name})", msg))
+        if not d["proof_replay"].get("ok"):
+            out.append(_annotation("warning", path, f_line, f"uwmr-verify proof replay ({name})",
+                                   "the proof replay did not go through"))
+        for scen, g in d["gains"].items():
+            word = _gain_word(g)
+            if word == "FAIL":
+                out.append(_annotation("error", path, gains_line, f"uwmr-verify bound (10) fails ({name}, {scen})",
+                                       f"|V| bound {_fmt(g['V_bound'], 10)} margin {g['V_margin']}; "
+                                       f"|W| bound {_fmt(g['W_bound'], 10)} margin {g['W_margin']}; "
+                                       f"largest lam within the limits {g['lam_max_exact']}"))
+            elif word == "?":
+                out.append(_annotation("warning", path, gains_line, f"uwmr-verify bound (10) unchecked ({name}, {scen})",
+                                       "kf undecided, so the |W| bound cannot be checked"))
+        if d["exit_status"] == 0:
+            out.append(_annotation("notice", path, f_line, f"uwmr-verify proved ({name})",
+                                   f"P1-P8 proved, kf = {_kf_summary(d['kf'])}, every gain scenario within bound (10)"))
+    return "\n".join(out)
