@@ -1,13 +1,15 @@
-"""Command line: `uwmr-verify FILE... [--format text|json] [--timeout S]`."""
+"""Command line: `uwmr-verify FILE... [--format text|json|junit|github] [--timeout S]`."""
 from __future__ import annotations
 
 import argparse
+import importlib
 import json
 import sys
 
 from . import __version__
-from .report import render_json, render_text, to_dict
-from .verify import DEFAULT_TIMEOUT, verify_design
+from .batch import Progress, check_files, expand_paths, worst_status
+from .report import render_github, render_json, render_junit, render_summary, render_text
+from .verify import DEFAULT_TIMEOUT
 
 EPILOG = """\
 exit status:
@@ -16,6 +18,23 @@ exit status:
   2  unusable input: the design file is missing, broken or not a valid design
   3  inconclusive: some verdict is unknown, nothing refuted
 With several files the status is the worst one (2 > 1 > 3 > 0).
+
+FILE may be a glob ('designs/*.py', quoted or not) or a directory (its *.py files).
+Several files are checked in parallel (--jobs, default: one per CPU core).
+
+formats:
+  text    the report of each design, then a summary table when there are several
+  json    one JSON object for one file, a JSON array for several
+  junit   JUnit XML as pytest writes it: a test case per design and property P1-P8,
+          proof replay and gain scenario (refuted/unknown are failures)
+  github  GitHub Actions annotations (::error at the line defining f for a refuted
+          property, ::warning for an unknown one), then the summary table
+
+cache:
+  Results are cached by the design's canonical expression, parameters, gains,
+  the tool's version and the verifier's source, in $UWMR_CACHE_DIR (default
+  ~/.cache/uwmr-symbolic); --no-cache recomputes everything and stores nothing.
+  A result in which a time limit expired is not stored.
 
 A design file defines f (a SymPy expression in real symbols e1, e2) and
 optionally params, gains, name, description: see the README."""
@@ -28,18 +47,41 @@ def build_parser() -> argparse.ArgumentParser:
                     "controller family (9) of Moreno-Valenzuela et al. (2020), certify kf, "
                     "replay the Lyapunov proof and check gains against bound (10).",
         epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("files", nargs="+", metavar="FILE", help="design file(s)")
-    p.add_argument("--format", choices=("text", "json"), default="text", help="output format (default text)")
+    p.add_argument("files", nargs="*", metavar="FILE", help="design file(s), globs or directories")
+    p.add_argument("--format", choices=("text", "json", "junit", "github"), default="text",
+                   help="output format (default text)")
+    p.add_argument("--junit-xml", metavar="PATH",
+                   help="also write the JUnit XML report to PATH (whatever --format is)")
     p.add_argument("--timeout", type=float, default=DEFAULT_TIMEOUT,
                    help=f"seconds per design before undecided properties become 'unknown' "
                         f"(default {DEFAULT_TIMEOUT:g})")
+    p.add_argument("-j", "--jobs", type=int, default=None,
+                   help="worker processes for several files (default: the number of CPU cores)")
+    p.add_argument("--no-cache", action="store_true", help="neither read nor write the result cache")
+    p.add_argument("-q", "--quiet", action="store_true",
+                   help="text format: with several files print only the summary table")
+    p.add_argument("--check-generated", action="store_true",
+                   help="check that generated/ matches what the current designs and tool generate")
     p.add_argument("--version", action="version", version=f"uwmr-verify {__version__}")
     return p
 
 
-def _worst(statuses):
-    order = {0: 0, 3: 1, 1: 2, 2: 3}
-    return max(statuses, key=lambda s: order[s]) if statuses else 0
+def check_generated(args) -> int:
+    """Hook for `--check-generated`: delegates to
+    `uwmr_symbolic.codegen.check_generated()` once code generation exists."""
+    try:
+        codegen = importlib.import_module("uwmr_symbolic.codegen")
+    except ModuleNotFoundError as exc:
+        if exc.name not in ("uwmr_symbolic.codegen",):
+            raise
+        codegen = None
+    fn = getattr(codegen, "check_generated", None)
+    if fn is None:
+        print("uwmr-verify: --check-generated is not available yet: this installation has no "
+              "code generator (uwmr_symbolic.codegen.check_generated)", file=sys.stderr)
+        return 2
+    status = fn()
+    return status if isinstance(status, int) else 0
 
 
 def main(argv=None) -> int:
@@ -47,20 +89,57 @@ def main(argv=None) -> int:
     if args.timeout <= 0:
         print("uwmr-verify: --timeout must be positive", file=sys.stderr)
         return 2
-    reports = [verify_design(f, timeout=args.timeout) for f in args.files]
-    for r in reports:
-        if r.error is not None:
-            print(f"{r.path}: {r.error}", file=sys.stderr)
-    good = [r for r in reports if r.error is None]
+    if args.jobs is not None and args.jobs < 1:
+        print("uwmr-verify: --jobs must be at least 1", file=sys.stderr)
+        return 2
+    if args.check_generated:
+        if args.files:
+            print("uwmr-verify: --check-generated takes no design files", file=sys.stderr)
+            return 2
+        return check_generated(args)
+    if not args.files:
+        print("uwmr-verify: no design file given (try: uwmr-verify designs/*.py)", file=sys.stderr)
+        return 2
+    paths = expand_paths(args.files)
+    progress = Progress(len(paths))
+    try:
+        results = check_files(paths, args.timeout, use_cache=not args.no_cache, jobs=args.jobs,
+                              progress=progress)
+    finally:
+        progress.close()
+    for d in results:
+        if d.get("error") is not None:
+            print(f"{d['design']}: {d['error']}", file=sys.stderr)
+    good = [d for d in results if d.get("error") is None]
+    many = len(paths) > 1
     if args.format == "json":
-        if len(args.files) == 1:
+        if not many:
             if good:
                 print(render_json(good[0]))
         else:
-            print(json.dumps([to_dict(r) for r in reports], indent=2))
+            print(json.dumps(results, indent=2))
+    elif args.format == "junit":
+        print(render_junit(results))
+    elif args.format == "github":
+        annotations = render_github(results)
+        if annotations:
+            print(annotations)
+        print(render_summary(results))
     else:
-        print("\n\n".join(render_text(r) for r in good))
-    return _worst([r.exit_status for r in reports])
+        if good and not (many and args.quiet):
+            print("\n\n".join(render_text(d) for d in good))
+        if many:
+            if good and not args.quiet:
+                print()
+            print(render_summary(results))
+    if args.junit_xml:
+        try:
+            with open(args.junit_xml, "w", encoding="utf-8") as fh:
+                fh.write(render_junit(results) + "\n")
+        except OSError as exc:
+            print(f"uwmr-verify: cannot write {args.junit_xml}: {exc}", file=sys.stderr)
+            return 2
+    return worst_status(d["exit_status"] for d in results)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,127 @@
+"""Result cache: a verified design's result (the dict of `report.to_dict`),
+stored as JSON and found again by what the result depends on.
+
+The key holds the canonical form of what is verified — ``sympy.srepr`` of f
+with the parameters substituted, the parameter values and the gain scenarios
+(exact SymPy numbers, also as ``srepr``) — together with the tool's version, a
+hash of the verifier's own source files and the versions of SymPy,
+python-flint, mpmath and Python.  Editing the verifier, upgrading a
+dependency or changing f, a parameter or a gain therefore never reuses an old
+result.  The file name, the design's ``name`` and the line numbers are not
+part of the key: they are filled in from the file being checked.
+
+Entries live in ``$UWMR_CACHE_DIR``, else ``$XDG_CACHE_HOME/uwmr-symbolic``,
+else ``~/.cache/uwmr-symbolic``; one file ``<sha256 of the key>.json`` each,
+written to a temporary file and renamed into place (atomic), so a reader sees
+either nothing or a whole entry.  An entry that does not parse, or whose
+stored key differs from the one asked for, is treated as missing."""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import sys
+import tempfile
+from functools import lru_cache
+from pathlib import Path
+
+import sympy as sp
+
+from . import __version__
+
+#: Bump when the layout of an entry changes.
+CACHE_FORMAT = 1
+PACKAGE_DIR = Path(__file__).resolve().parent
+
+
+def default_dir() -> Path:
+    env = os.environ.get("UWMR_CACHE_DIR")
+    if env:
+        return Path(env).expanduser()
+    xdg = os.environ.get("XDG_CACHE_HOME")
+    base = Path(xdg).expanduser() if xdg else Path.home() / ".cache"
+    return base / "uwmr-symbolic"
+
+
+@lru_cache(maxsize=1)
+def source_hash() -> str:
+    """sha256 over the verifier's Python sources (every module of the package
+    except the code generator, which does not affect a verdict)."""
+    h = hashlib.sha256()
+    for path in sorted(PACKAGE_DIR.rglob("*.py")):
+        rel = path.relative_to(PACKAGE_DIR).as_posix()
+        if rel.startswith("codegen/"):
+            continue
+        h.update(rel.encode() + b"\0")
+        h.update(path.read_bytes())
+        h.update(b"\0")
+    return h.hexdigest()
+
+
+@lru_cache(maxsize=1)
+def _dependency_versions() -> dict:
+    from importlib.metadata import PackageNotFoundError, version
+    out = {"python": ".".join(map(str, sys.version_info[:3]))}
+    for dist in ("sympy", "python-flint", "mpmath"):
+        try:
+            out[dist] = version(dist)
+        except PackageNotFoundError:
+            out[dist] = None
+    return out
+
+
+def design_key(design) -> dict:
+    """Everything a verification result depends on, as JSON-able data."""
+    return {
+        "format": CACHE_FORMAT,
+        "tool": __version__,
+        "source": source_hash(),
+        "deps": _dependency_versions(),
+        "f": sp.srepr(design.f),
+        "params": {name: sp.srepr(v) for name, v in sorted(design.params.items())},
+        "gains": {scen: {k: sp.srepr(v) for k, v in sorted(vals.items())}
+                  for scen, vals in sorted(design.gains.items())},
+    }
+
+
+def digest(key: dict) -> str:
+    return hashlib.sha256(json.dumps(key, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
+
+
+class ResultCache:
+    def __init__(self, directory: Path | str | None = None):
+        self.directory = Path(directory) if directory is not None else default_dir()
+
+    def path_for(self, key: dict) -> Path:
+        return self.directory / f"{digest(key)}.json"
+
+    def get(self, key: dict) -> dict | None:
+        """The stored result for `key`, or None (missing, unreadable or corrupt)."""
+        try:
+            entry = json.loads(self.path_for(key).read_text())
+        except (OSError, UnicodeDecodeError, ValueError):
+            return None
+        if not isinstance(entry, dict) or entry.get("key") != key or not isinstance(entry.get("result"), dict):
+            return None
+        return entry["result"]
+
+    def put(self, key: dict, result: dict) -> bool:
+        """Store atomically; False (and no exception) when the cache is not writable."""
+        target = self.path_for(key)
+        tmp = None
+        try:
+            self.directory.mkdir(parents=True, exist_ok=True)
+            fd, tmp = tempfile.mkstemp(dir=self.directory, prefix=".tmp-", suffix=".json")
+            with os.fdopen(fd, "w") as fh:
+                json.dump({"key": key, "result": result}, fh, indent=1)  # key order kept: output order
+                fh.flush()
+                os.fsync(fh.fileno())
+            os.replace(tmp, target)
+            return True
+        except OSError:
+            if tmp is not None:
+                try:
+                    os.unlink(tmp)
+                except OSError:
+                    pass
+            return False
