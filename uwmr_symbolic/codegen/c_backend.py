@@ -1,0 +1,156 @@
+"""C99 back-end: `<stem>.h` and `<stem>.c` with a double and a float variant.
+
+The law's structure (regions, branches, guarded product) comes from
+`law.LawModel`; this module only prints it.  Both variants share one
+template and differ by the `CConfig` below."""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+import sympy as sp
+
+from .law import RHO, THRESHOLDS, LawModel
+from .printers import CPrinter, cse_lines
+from .. import e1 as E1, e2 as E2
+from ..univariate import T
+
+
+@dataclass(frozen=True)
+class CConfig:
+    """One precision of the C back-end.
+
+    precision  "double" or "float": the C type and the libm family
+               (sin/sinf ...), literal suffix and limits (DBL_*/FLT_*).
+    suffix     appended to public names: "" for double, "_f32" for float.
+    tiny, far  region switches on m = max(|e1|, |e2|) (see `law`).
+    sinc_cut   |e3| below which sin(e3)/e3 = 1 - e3^2/6 + e3^4/120
+               (truncation error below e3^6/5040, far under one ulp)."""
+    precision: str
+    suffix: str
+    tiny: float
+    far: float
+    sinc_cut: float
+
+    @property
+    def ctype(self) -> str:
+        return "float" if self.precision == "float" else "double"
+
+    @property
+    def fn(self) -> str:
+        return "f" if self.precision == "float" else ""
+
+    @property
+    def limit(self) -> str:
+        return "FLT" if self.precision == "float" else "DBL"
+
+    def printer(self, names=None) -> CPrinter:
+        return CPrinter(self.precision, names)
+
+    def lit(self, value) -> str:
+        return self.printer().literal(value)
+
+
+DOUBLE = CConfig("double", "", *THRESHOLDS["double"], sinc_cut=2.0 ** -12)
+FLOAT = CConfig("float", "_f32", *THRESHOLDS["float"], sinc_cut=2.0 ** -6)
+
+
+def c_identifier(stem: str) -> str:
+    ident = re.sub(r"[^0-9A-Za-z_]", "_", stem)
+    return ident if not ident[:1].isdigit() else "d_" + ident
+
+
+def _indent(lines, n):
+    pad = " " * n
+    return [pad + ln if ln else ln for ln in lines]
+
+
+def _chain(branches, var, cfg, body):
+    """if/else chain over branches (sorted by increasing var); `body(branch)`
+    gives the lines of one branch."""
+    if len(branches) == 1:
+        return ["{", *_indent(body(branches[0]), 4), "}"]
+    out = []
+    for i, br in enumerate(branches):
+        if i < len(branches) - 1:
+            op = "<=" if br.hi_closed else "<"
+            head = ("if" if i == 0 else "} else if") + f" ({var} {op} {cfg.lit(br.hi)}) {{"
+        else:
+            head = "} else {"
+        out.append(head)
+        out.extend(_indent(body(br), 4))
+    out.append("}")
+    return out
+
+
+def _product(cfg, factors, name):
+    n = len(factors)
+    return [f"const {cfg.ctype} {name}[{n}] = {{{', '.join(factors)}}};",
+            f"return prod{cfg.suffix}({name}, {n});"]
+
+
+def gterm_lines(model: LawModel, cfg: CConfig, names) -> list[str]:
+    """Body of the static function returning lam*vr*g*sinc."""
+    pr = cfg.printer(names)
+    decl = lambda n, c: f"const {cfg.ctype} {n} = {c};"   # noqa: E731
+    t = cfg.ctype
+    if not model.radial:
+        lines, g = cse_lines(model.general, pr, decl)
+        return [*lines, f"const {t} g = {g};", *_product(cfg, ["lam", "vr", "sinc", "g"], "x")]
+
+    out = [f"const {t} a1 = fabs{cfg.fn}(e1), a2 = fabs{cfg.fn}(e2);",
+           f"const {t} m = a1 > a2 ? a1 : a2;"]
+    lower = f"m >= {cfg.lit(cfg.tiny)}" if model.tiny is not None else "m > 0"
+    out.append(f"if ({lower} && m <= {cfg.lit(cfg.far)}) {{")
+    uses_rho = len(model.mid) > 1 or any(br.expr.has(RHO) for br in model.mid)
+    mid = [f"const {t} rho = e1 * e1 + e2 * e2;"] if uses_rho else []
+
+    def mid_body(br):
+        lines, h = cse_lines(br.expr, pr, decl)
+        return [*lines, f"const {t} H = {h};", *_product(cfg, ["lam", "vr", "sinc", "e2", "H"], "x")]
+
+    mid += _chain(model.mid, "rho", cfg, mid_body)
+    out += _indent(mid, 4) + ["}",
+                              f"if (m == {cfg.lit(0)}) {{",
+                              f"    return {cfg.lit(0)};   /* g(0, 0) = F'(0+) * 0 */",
+                              "}",
+                              "{"]
+    rest = [f"const {t} q = (a1 > a2 ? a2 : a1) / m;",
+            f"const {t} r = sqrt{cfg.fn}({cfg.lit(1)} + q * q);   /* s = m r, no overflow */",
+            f"const {t} ir = {cfg.lit(1)} / r;"]
+    if model.tiny is not None:
+        a, j = model.tiny
+        rest += [f"if (m < {cfg.lit(cfg.tiny)}) {{",
+                 f"    /* F'(s) = {sp.sstr(a)} s^{j} (1 + O(s^2)) with s^{j} = m^{j} r^{j} */",
+                 f"    const {t} c = (e2 / m) * ir;   /* e2 / s: no underflow while m < TINY */",
+                 *_indent(_product(cfg, ["lam", "vr", "sinc", "c", cfg.lit(a)] + ["m"] * j + ["r"] * j, "x"), 4),
+                 "}"]
+    rest.append("{")
+    far = [f"const {t} im = {cfg.lit(1)} / m;",
+           f"const {t} tt = im * ir;   /* t = 1/s; e2/s = e2 im ir as separate factors */"]
+
+    def far_body(br):
+        lines, d = cse_lines(br.expr, pr, decl)
+        comment = f"/* F'(1/t) = t^{br.k} D(t) */" if br.k else "/* F'(1/t) = D(t) */"
+        return [comment, *lines, f"const {t} D = {d};",
+                *_product(cfg, ["lam", "vr", "sinc", "e2", "im", "ir", "D"] + ["im", "ir"] * br.k, "x")]
+
+    far += _chain(model.far, "tt", cfg, far_body)
+    rest += _indent(far, 4) + ["}"]
+    out += _indent(rest, 4) + ["}"]
+    return out
+
+
+def render(env, model: LawModel, context: dict) -> dict[str, str]:
+    """{file name: text} for the C back-end."""
+    ident = c_identifier(model.stem)
+    names = {RHO: "rho", T: "tt", E1: "e1", E2: "e2"}
+    variants = []
+    for cfg in (DOUBLE, FLOAT):
+        variants.append(dict(cfg=cfg, body=gterm_lines(model, cfg, names),
+                             tiny=cfg.lit(cfg.tiny), far=cfg.lit(cfg.far), cut=cfg.lit(cfg.sinc_cut),
+                             zero=cfg.lit(0), one=cfg.lit(1), huge="HUGE_VALF" if cfg.precision == "float" else "HUGE_VAL", c6=cfg.lit(sp.Rational(1, 6)),
+                             c120=cfg.lit(sp.Rational(1, 120))))
+    ctx = dict(context, ident=ident, IDENT=ident.upper(), variants=variants, stem=model.stem)
+    return {f"{model.stem}.h": env.get_template("c_header.h.j2").render(ctx),
+            f"{model.stem}.c": env.get_template("c_source.c.j2").render(ctx)}

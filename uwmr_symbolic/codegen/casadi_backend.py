@@ -1,0 +1,96 @@
+"""CasADi back-end: the law as a `casadi.Function` of SX expressions.
+
+    control(e1, e2, e3, vr, wr, k1, k2, lam) -> (v, w)
+
+For a radial design it uses the mid-region form g = e2 H(rho) of `law`
+(with `if_else` for Piecewise branches and for sin(e3)/e3 at 0), which is
+what an optimiser wants: smooth, cheap, exact in the range where a robot's
+errors live.  The overflow-safe regions of the C and Python code are not
+reproduced: for |e1|, |e2| beyond about 1e150 rho overflows."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import casadi as ca
+import sympy as sp
+
+from .law import RHO, LawModel
+from .. import e1 as E1, e2 as E2
+
+
+@dataclass(frozen=True)
+class CasadiConfig:
+    """name      the casadi.Function's name;
+    sinc_cut  |e3| below which sin(e3)/e3 is its series 1 - e3^2/6 + e3^4/120."""
+    name: str = "control"
+    sinc_cut: float = 2.0 ** -12
+
+
+_UNARY = {sp.sin: ca.sin, sp.cos: ca.cos, sp.tan: ca.tan, sp.tanh: ca.tanh, sp.sinh: ca.sinh,
+          sp.cosh: ca.cosh, sp.exp: ca.exp, sp.log: ca.log, sp.atan: ca.atan, sp.asin: ca.asin,
+          sp.acos: ca.acos, sp.asinh: ca.asinh, sp.acosh: ca.acosh, sp.atanh: ca.atanh, sp.Abs: ca.fabs}
+
+
+def to_casadi(expr: sp.Expr, env: dict):
+    """A SymPy expression as a CasADi SX expression (symbols from env)."""
+    if expr in env:
+        return env[expr]
+    if expr.is_Number or isinstance(expr, sp.NumberSymbol):
+        return ca.SX(float(expr))
+    if isinstance(expr, sp.Add):
+        out = 0
+        for a in expr.args:
+            out = out + to_casadi(a, env)
+        return out
+    if isinstance(expr, sp.Mul):
+        out = 1
+        for a in expr.args:
+            out = out * to_casadi(a, env)
+        return out
+    if isinstance(expr, sp.Pow):
+        b, e = expr.args
+        cb = to_casadi(b, env)
+        if e == sp.Rational(1, 2):
+            return ca.sqrt(cb)
+        if e == -sp.Rational(1, 2):
+            return 1 / ca.sqrt(cb)
+        if e.is_Integer:
+            return cb ** int(e) if e > 0 else 1 / cb ** int(-e)
+        return ca.power(cb, to_casadi(e, env))
+    if type(expr) in _UNARY:
+        return _UNARY[type(expr)](to_casadi(expr.args[0], env))
+    if isinstance(expr, sp.Piecewise):
+        out = None
+        for value, cond in reversed(expr.args):
+            v = to_casadi(value, env)
+            out = v if out is None or cond == sp.true else ca.if_else(to_casadi(cond, env), v, out)
+        return out
+    if isinstance(expr, (sp.StrictLessThan, sp.LessThan, sp.StrictGreaterThan, sp.GreaterThan)):
+        a, b = to_casadi(expr.lhs, env), to_casadi(expr.rhs, env)
+        return {sp.StrictLessThan: a < b, sp.LessThan: a <= b,
+                sp.StrictGreaterThan: a > b, sp.GreaterThan: a >= b}[type(expr)]
+    raise NotImplementedError(f"no CasADi translation for {expr.func.__name__}")
+
+
+def casadi_function(model: LawModel, config: CasadiConfig = CasadiConfig()) -> ca.Function:
+    names = ["e1", "e2", "e3", "vr", "wr", "k1", "k2", "lam"]
+    sym = {n: ca.SX.sym(n) for n in names}
+    e1, e2, e3, vr, wr, k1, k2, lam = (sym[n] for n in names)
+    env = {E1: e1, E2: e2}
+    if model.radial:
+        rho = e1 * e1 + e2 * e2
+        env[RHO] = rho
+        # branches in increasing rho: the first whose upper end is not passed
+        H = to_casadi(model.mid[-1].expr, env)
+        for br in reversed(model.mid[:-1]):
+            cond = rho <= float(br.hi) if br.hi_closed else rho < float(br.hi)
+            H = ca.if_else(cond, to_casadi(br.expr, env), H)
+        g = e2 * H
+    else:
+        g = to_casadi(model.general, env)
+    z = e3 * e3
+    safe = ca.if_else(e3 == 0, 1, e3)
+    sinc = ca.if_else(ca.fabs(e3) < config.sinc_cut, 1 - z * (1.0 / 6 - z / 120), ca.sin(safe) / safe)
+    v = vr * ca.cos(e3) + k1 * ca.tanh(e1)
+    w = wr + lam * vr * g * sinc + k2 * ca.tanh(e3)
+    return ca.Function(config.name, [sym[n] for n in names], [v, w], names, ["v", "w"])

@@ -1,0 +1,179 @@
+"""Compile generated C and call it from Python (tests and benchmarks).
+
+`build_library` compiles `<stem>.c` with a small batch driver into a shared
+library and wraps it with ctypes; `build_executable` compiles the same driver
+as a program (used for the -fsanitize=address,undefined run, whose runtime
+cannot be loaded into a Python process)."""
+from __future__ import annotations
+
+import ctypes
+import os
+import subprocess
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .c_backend import c_identifier
+
+STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-Wdouble-promotion"]
+
+DRIVER = r"""
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "{stem}.h"
+
+void uwmr_batch(long n, const double *x, double *out, int *st)
+{{
+    long i;
+    for (i = 0; i < n; ++i) {{
+        const double *a = x + 8 * i;
+        uwmr_{ident}_gains g;
+        g.k1 = a[5];
+        g.k2 = a[6];
+        g.lambda = a[7];
+        st[i] = uwmr_{ident}_control(a[0], a[1], a[2], a[3], a[4], &g, out + 2 * i, out + 2 * i + 1);
+    }}
+}}
+
+void uwmr_batch_f32(long n, const float *x, float *out, int *st)
+{{
+    long i;
+    for (i = 0; i < n; ++i) {{
+        const float *a = x + 8 * i;
+        uwmr_{ident}_gains_f32 g;
+        g.k1 = a[5];
+        g.k2 = a[6];
+        g.lambda = a[7];
+        st[i] = uwmr_{ident}_control_f32(a[0], a[1], a[2], a[3], a[4], &g, out + 2 * i, out + 2 * i + 1);
+    }}
+}}
+
+#ifdef UWMR_DRIVER_MAIN
+/* driver d|f N IN OUT: N rows of 8 inputs from IN, 2 outputs + status to OUT;
+   then the NULL-pointer calls, which must return nonzero. */
+int main(int argc, char **argv)
+{{
+    long n;
+    int f32, *st, rc = 0;
+    size_t size;
+    void *x, *out;
+    FILE *fin, *fout;
+    if (argc != 5) {{
+        return 2;
+    }}
+    f32 = argv[1][0] == 'f';
+    n = atol(argv[2]);
+    size = f32 ? sizeof(float) : sizeof(double);
+    x = malloc((size_t)n * 8 * size);
+    out = malloc((size_t)n * 2 * size);
+    st = (int *)malloc((size_t)n * sizeof(int));
+    fin = fopen(argv[3], "rb");
+    if (!x || !out || !st || !fin || fread(x, size, (size_t)n * 8, fin) != (size_t)n * 8) {{
+        return 2;
+    }}
+    fclose(fin);
+    if (f32) {{
+        uwmr_batch_f32(n, (const float *)x, (float *)out, st);
+    }} else {{
+        uwmr_batch(n, (const double *)x, (double *)out, st);
+    }}
+    fout = fopen(argv[4], "wb");
+    if (!fout) {{
+        return 2;
+    }}
+    fwrite(out, size, (size_t)n * 2, fout);
+    fwrite(st, sizeof(int), (size_t)n, fout);
+    fclose(fout);
+    {{
+        double v = 1.0, w = 1.0;
+        float vf = 1.0F, wf = 1.0F;
+        uwmr_{ident}_gains g = {{1.0, 1.0, 1.0}};
+        uwmr_{ident}_gains_f32 gf = {{1.0F, 1.0F, 1.0F}};
+        rc |= uwmr_{ident}_control(1.0, 1.0, 1.0, 1.0, 1.0, NULL, &v, &w) == 0 || v != 0.0 || w != 0.0;
+        rc |= uwmr_{ident}_control(1.0, 1.0, 1.0, 1.0, 1.0, &g, NULL, &w) == 0 || w != 0.0;
+        rc |= uwmr_{ident}_control(1.0, 1.0, 1.0, 1.0, 1.0, &g, &v, NULL) == 0 || v != 0.0;
+        rc |= uwmr_{ident}_control_f32(1.0F, 1.0F, 1.0F, 1.0F, 1.0F, NULL, &vf, &wf) == 0 || vf != 0.0F;
+        rc |= uwmr_{ident}_control_f32(1.0F, 1.0F, 1.0F, 1.0F, 1.0F, &gf, NULL, NULL) == 0;
+    }}
+    free(x);
+    free(out);
+    free(st);
+    return rc ? 3 : 0;
+}}
+#endif
+"""
+
+
+def driver_source(stem: str) -> str:
+    return DRIVER.format(stem=stem, ident=c_identifier(stem))
+
+
+def _compile(src_dir: Path, stem: str, out: Path, flags, cc="gcc"):
+    driver = out.parent / f"{stem}_driver.c"
+    driver.write_text(driver_source(stem))
+    cmd = [cc, *flags, "-I", str(src_dir), str(src_dir / f"{stem}.c"), str(driver), "-o", str(out), "-lm"]
+    res = subprocess.run(cmd, capture_output=True, text=True)
+    if res.returncode != 0:
+        raise RuntimeError(f"compilation failed: {' '.join(cmd)}\n{res.stderr}")
+    return res
+
+
+@dataclass
+class Compiled:
+    lib: ctypes.CDLL
+    ident: str
+    path: Path
+
+    def run(self, x: np.ndarray, f32=False):
+        """(v, w, status) for rows of 8 inputs."""
+        dt = np.float32 if f32 else np.float64
+        x = np.ascontiguousarray(x, dtype=dt)
+        n = len(x)
+        out = np.zeros((n, 2), dtype=dt)
+        st = np.zeros(n, dtype=np.int32)
+        fn = self.lib.uwmr_batch_f32 if f32 else self.lib.uwmr_batch
+        fn(ctypes.c_long(n), x.ctypes.data_as(ctypes.c_void_p), out.ctypes.data_as(ctypes.c_void_p),
+           st.ctypes.data_as(ctypes.c_void_p))
+        return out[:, 0], out[:, 1], st
+
+    def function(self, f32=False):
+        return getattr(self.lib, f"uwmr_{self.ident}_control{'_f32' if f32 else ''}")
+
+
+def build_library(src_dir, stem: str, work_dir, extra=("-O2",)) -> Compiled:
+    """Compile with the strict flags into a shared library loaded by ctypes."""
+    src_dir, work_dir = Path(src_dir), Path(work_dir)
+    out = work_dir / f"lib{stem}.so"
+    _compile(src_dir, stem, out, [*STRICT, *extra, "-fPIC", "-shared"])
+    lib = ctypes.CDLL(str(out))
+    for name in ("uwmr_batch", "uwmr_batch_f32"):
+        getattr(lib, name).restype = None
+    return Compiled(lib, c_identifier(stem), out)
+
+
+def build_executable(src_dir, stem: str, work_dir, extra=()) -> Path:
+    src_dir, work_dir = Path(src_dir), Path(work_dir)
+    out = work_dir / f"{stem}_driver"
+    _compile(src_dir, stem, out, [*STRICT, *extra, "-DUWMR_DRIVER_MAIN"])
+    return out
+
+
+def run_executable(exe: Path, x: np.ndarray, work_dir, f32=False, env=None):
+    """(v, w, status, completed process) from the driver program."""
+    dt = np.float32 if f32 else np.float64
+    x = np.ascontiguousarray(x, dtype=dt)
+    work_dir = Path(work_dir)
+    fin, fout = work_dir / "in.bin", work_dir / "out.bin"
+    x.tofile(fin)
+    res = subprocess.run([str(exe), "f" if f32 else "d", str(len(x)), str(fin), str(fout)],
+                         capture_output=True, text=True, env={**os.environ, **(env or {})})
+    if res.returncode != 0:
+        return None, None, None, res
+    raw = fout.read_bytes()
+    n = len(x)
+    size = np.dtype(dt).itemsize
+    out = np.frombuffer(raw[:n * 2 * size], dtype=dt).reshape(n, 2)
+    st = np.frombuffer(raw[n * 2 * size:], dtype=np.int32)
+    return out[:, 0], out[:, 1], st, res

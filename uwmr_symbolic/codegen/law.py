@@ -1,0 +1,244 @@
+"""The numeric form of the control law (9) that every back-end prints.
+
+    V = vr cos(e3) + k1 tanh(e1)
+    W = wr + lam vr g(e1, e2) sinc(e3) + k2 tanh(e3),   g = df/de2
+
+For a radial f = F(s), s = |(e1, e2)|, g = F'(s) e2/s, and g is evaluated in
+one of three regions of m = max(|e1|, |e2|), each with a form that neither
+overflows nor cancels there:
+
+* tiny   (0 < m < TINY): F'(s) is replaced by the leading term a s**j of its
+  series at 0 (the next term is below 1e-20 relative there), s**j = m**j r**j
+  with r = sqrt(1 + q**2), q = min/m, and e2/s = (e2/m)/r;
+* mid    (TINY <= m <= FAR): g = e2 H(rho) with rho = e1**2 + e2**2 and
+  H(rho) = F'(s)/s written in rho (no square root of rho for smooth F);
+* far    (m > FAR): t = 1/s = (1/m)/r and g = t**k D(t) (e2/m)/r with
+  D(t) t**k = F'(1/t) (the verifier's `tail_form`), k the order of F' at
+  s = oo, so that t**k, which may underflow, is a separate factor.
+
+m == 0 gives g = 0 (F'(0+) = 0 for a design with P1).  Piecewise profiles keep
+their branch structure in each region (conditions on rho or on t).  The term
+lam vr g sinc(e3) is a product of several factors, multiplied by the back-ends
+with a guard against an intermediate overflow or underflow (`factors`).
+
+`stabilize` removes the cancellation of sqrt(P) - Q (Q > 0), which would lose
+every digit of sqrt(4 rho + 1) - 1 for small rho: it becomes (P - Q**2)/(sqrt(P) + Q).
+
+A design that is not radial (only generated with force=True) gets the plain
+derivative g = df/de2 (with SymPy's tanh rewriting), evaluated as written."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import sympy as sp
+
+from .. import e1 as E1, e2 as E2
+from ..profile import S
+from ..univariate import T, prepare, tail_form
+
+RHO = sp.Symbol("rho", positive=True)
+
+#: Region switches on m = max(|e1|, |e2|), per precision.  TINY keeps
+#: rho >= TINY**2 a normal number; FAR keeps every mid-region form far from
+#: overflow (rho <= 2 FAR**2) and makes t <= 1/FAR small in the tail forms.
+THRESHOLDS = {"double": (1e-100, 1e4), "float": (1e-12, 1e4)}
+
+
+@dataclass
+class Branch:
+    """expr holds for lo < x < hi (x is rho or t); `hi_closed` says whether
+    x = hi belongs to this branch.  lo/hi are exact SymPy numbers (0 and oo
+    at the ends of the region variable's range)."""
+    lo: sp.Expr
+    hi: sp.Expr
+    hi_closed: bool
+    expr: sp.Expr
+    k: int = 0                 # far region: power of t split off the expression
+
+    @property
+    def lo_float(self) -> float:
+        return float(self.lo)
+
+    @property
+    def hi_float(self) -> float:
+        return math.inf if self.hi == sp.oo else float(self.hi)
+
+
+@dataclass
+class LawModel:
+    stem: str
+    name: str
+    radial: bool
+    params: dict                          # name -> exact SymPy number
+    kf_upper: Fraction | None              # certified upper bound (None: unbounded/unknown)
+    kf_text: str                           # how the verifier states kf
+    reasons: list = field(default_factory=list)   # why not verified (empty: verified)
+    tiny: tuple | None = None              # (a, j): F'(s) ~ a s**j as s -> 0+
+    mid: list = field(default_factory=list)        # Branches in rho, g = e2 H(rho)
+    far: list = field(default_factory=list)        # Branches in t, F'(1/t) = t**k D(t)
+    general: sp.Expr | None = None         # non-radial: df/de2 in e1, e2
+    notes: list = field(default_factory=list)      # numerical choices, for the banner
+
+    @property
+    def verified(self) -> bool:
+        return not self.reasons
+
+
+# --------------------------------------------------------------------------
+# rewriting
+
+def stabilize(expr: sp.Expr) -> sp.Expr:
+    """Rewrite every c sqrt(P) - Q with c, Q > 0 (by SymPy's assumptions,
+    variables being positive) as (c**2 P - Q**2)/(c sqrt(P) + Q): the same
+    function, without the cancellation when c sqrt(P) ~ Q."""
+    def fix(node):
+        if not isinstance(node, sp.Add):
+            return node
+        roots = [a for a in node.args
+                 if any(isinstance(f, sp.Pow) and f.exp == sp.Rational(1, 2) for f in sp.Mul.make_args(a))]
+        if len(roots) != 1:
+            return node
+        a = roots[0]
+        q = -(node - a)
+        if not (a.is_positive and q.is_positive) or q.has(sp.Pow) and any(
+                isinstance(p, sp.Pow) and p.exp == sp.Rational(1, 2) for p in sp.preorder_traversal(q)):
+            return node
+        num = sp.expand(a ** 2 - q ** 2)
+        if num == 0:
+            return node
+        return num / (a + q)
+    return sp.bottom_up(expr, fix)
+
+
+def _polish(expr: sp.Expr) -> sp.Expr:
+    return stabilize(prepare(expr))
+
+
+def _leading(expr: sp.Expr, var: sp.Symbol, at_zero=True):
+    """(a, j) with expr ~ a var**j as var -> 0+ (j an integer), or None."""
+    try:
+        lead = sp.nsimplify(expr.as_leading_term(var)) if expr.has(sp.Float) else expr.as_leading_term(var)
+    except Exception:  # noqa: BLE001 - no expansion: caller falls back
+        return None
+    a, j = lead.as_coeff_exponent(var)
+    if a.free_symbols or not j.is_integer or a == 0:
+        return None
+    return a, int(j)
+
+
+def _next_ratio(expr, var, a, j, x):
+    """|next term / leading term| at var = x, from the series (0 if none)."""
+    try:
+        ser = sp.series(expr, var, 0, j + 4).removeO()
+    except Exception:  # noqa: BLE001
+        return math.inf
+    rest = sp.expand(ser - a * var ** j)
+    if rest == 0:
+        return 0.0
+    b, i = _leading(rest, var) or (None, None)
+    if b is None or i <= j:
+        return math.inf
+    return abs(float(b / a)) * x ** (i - j)
+
+
+# --------------------------------------------------------------------------
+# the model
+
+def _kf_fraction(report) -> tuple[Fraction | None, str]:
+    """A rational upper bound of the certified kf and how to state kf."""
+    kf = getattr(report, "kf", None) if report is not None else None
+    if kf is None or kf.upper is None:
+        return None, kf.show() if kf is not None else "not certified"
+    upper = kf.upper
+    if isinstance(upper, Fraction):
+        return upper, kf.show()
+    upper = sp.sympify(upper)
+    if upper.is_Rational:
+        return Fraction(int(upper.p), int(upper.q)), kf.show()
+    # an exact irrational value: its 60-digit decimal plus a margin far above the error
+    approx = Fraction(str(sp.N(upper, 60)))
+    return approx + abs(approx) * Fraction(1, 10 ** 50) + Fraction(1, 10 ** 300), kf.show()
+
+
+def _same(a, b) -> bool:
+    try:
+        return a == b or sp.simplify(a - b) == 0
+    except Exception:  # noqa: BLE001
+        return False
+
+
+def _branches(pieces, at_point, to_var, reverse):
+    """Branches for the pieces in a region variable x = to_var(s), which
+    increases with s (rho) or decreases (t); returned in increasing x, each
+    closed at its upper end when F takes that piece's formula there."""
+    out = []
+    for p in pieces:
+        if reverse:
+            lo, hi, end = to_var(p.hi), to_var(p.lo), p.lo
+        else:
+            lo, hi, end = to_var(p.lo), to_var(p.hi), p.hi
+        closed = end in at_point and end not in (0, sp.oo) and _same(at_point[end], p.expr)
+        out.append((lo, hi, closed, p))
+    return out[::-1] if reverse else out
+
+
+def build_model(design, analysis, report=None) -> LawModel:
+    """The numeric model of the law for one design (see the module doc)."""
+    kf_upper, kf_text = _kf_fraction(report)
+    model = LawModel(stem=design.stem, name=design.name, radial=False, params=dict(design.params),
+                     kf_upper=kf_upper, kf_text=kf_text)
+    profile = None
+    if analysis.p4.proved:
+        try:
+            profile = analysis.profile
+        except Exception:  # noqa: BLE001 - split failed: treat as general
+            profile = None
+    if profile is None:
+        model.general = prepare(sp.diff(design.f, E2))
+        model.notes.append("f is not known to be radial: g = df/de2 is evaluated as derived, "
+                           "without the overflow-safe radial forms")
+        return model
+    model.radial = True
+    pieces = profile.pieces
+    at_point = profile.at_point
+
+    # tiny region: leading term of F' on the first piece
+    dF0 = prepare(sp.diff(pieces[0].expr, S))
+    lead = _leading(dF0, S)
+    tiny_ok = lead is not None and float(pieces[0].hi) > 2 * THRESHOLDS["double"][0] * 2
+    if tiny_ok:
+        a, j = lead
+        worst = max(_next_ratio(dF0, S, a, j, math.sqrt(2) * THRESHOLDS[p][0]) for p in THRESHOLDS)
+        tiny_ok = worst < 1e-20 and j >= 0
+    if tiny_ok:
+        model.tiny = (a, j)
+    else:
+        model.notes.append("no usable series of F' at 0: the mid-region form is used down to s = 0")
+
+    # mid region: H(rho) = F'(s)/s in rho
+    tiny, far = THRESHOLDS["double"]
+    for lo, hi, closed, p in _branches(pieces, at_point, lambda b: b ** 2, reverse=False):
+        if float(hi) < tiny ** 2 or float(lo) > 2 * far ** 2:
+            continue
+        dF = prepare(sp.diff(p.expr, S))
+        H = sp.powsimp(sp.expand_power_base((dF / S).subs(S, sp.sqrt(RHO))))
+        H = _polish(sp.cancel(H) if not H.has(sp.Function) else H)
+        model.mid.append(Branch(lo, hi, closed, H))
+
+    # far region: F'(1/t) = t**k D(t)
+    for lo, hi, closed, p in _branches(
+            pieces, at_point, lambda b: sp.Integer(0) if b == sp.oo else (sp.oo if b == 0 else 1 / b), reverse=True):
+        if float(lo) > 1 / far:
+            continue
+        dF = prepare(sp.diff(p.expr, S))
+        D = tail_form(dF, S)
+        k = 0
+        lead = _leading(D, T)
+        if lead is not None and lead[1] > 0:
+            cand = sp.cancel(D / T ** lead[1]) if not D.has(sp.Function) else sp.simplify(D / T ** lead[1])
+            if not cand.has(sp.zoo, sp.nan) and cand.subs(T, 0).is_finite and cand.subs(T, 0) != 0:
+                D, k = cand, lead[1]
+        model.far.append(Branch(lo, hi, closed, _polish(D), k))
+    return model

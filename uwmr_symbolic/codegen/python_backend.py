@@ -1,0 +1,72 @@
+"""Python back-end: `<stem>.py`, importing numpy only.
+
+The module has a fast path (the mid-region form of `law`, evaluated with
+numpy's floating-point errors raised, so that any overflow, underflow or
+invalid operation sends the call to the careful path) and a careful path that
+mirrors the C code element by element (regions, branches, guarded product,
+status codes)."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from .law import RHO, THRESHOLDS, LawModel
+from .printers import PyPrinter, cse_lines, double_literal
+from .. import e1 as E1, e2 as E2
+from ..univariate import T
+
+
+@dataclass(frozen=True)
+class PythonConfig:
+    """The Python back-end's choices.
+
+    tiny, far  region switches on m = max(|e1|, |e2|) (as the C double variant).
+    sinc_cut   |e3| below which sin(e3)/e3 is replaced by 1 - e3^2/6 + e3^4/120."""
+    tiny: float = THRESHOLDS["double"][0]
+    far: float = THRESHOLDS["double"][1]
+    sinc_cut: float = 2.0 ** -12
+
+
+def _function(name, arg, expr, printer):
+    lines, value = cse_lines(expr, printer, lambda n, c: f"{n} = {c}")
+    first = arg.split(",")[0]
+    tail = f" + 0.0 * {first}" if not expr.free_symbols else ""   # keep the array shape
+    return [f"def {name}({arg}):", *[f"    {ln}" for ln in lines], f"    return {value}{tail}"]
+
+
+def _masks(branches, var):
+    """[(condition code for branch i given earlier ones are excluded)]"""
+    out = []
+    for i, br in enumerate(branches):
+        if i == len(branches) - 1:
+            out.append(None)
+        else:
+            out.append(f"{var} {'<=' if br.hi_closed else '<'} {double_literal(br.hi)}")
+    return out
+
+
+def render(env, model: LawModel, context: dict, config: PythonConfig = PythonConfig()) -> dict[str, str]:
+    pr = PyPrinter({RHO: "rho", T: "tt", E1: "e1", E2: "e2"})
+    functions = []
+    ctx = dict(context, cfg=config, radial=model.radial,
+               tiny=double_literal(config.tiny), far=double_literal(config.far),
+               tiny2=double_literal(config.tiny ** 2), far2=double_literal(config.far ** 2),
+               cut=double_literal(config.sinc_cut))
+    if not model.radial:
+        functions += _function("_g_general", "e1, e2", model.general, pr)
+        ctx.update(functions=functions)
+        return {f"{model.stem}.py": env.get_template("python_module.py.j2").render(ctx)}
+    mid = []
+    for i, (br, cond) in enumerate(zip(model.mid, _masks(model.mid, "rho"))):
+        functions += _function(f"_H{i}", "rho", br.expr, pr) + [""]
+        mid.append(dict(fn=f"_H{i}", cond=cond))
+    far = []
+    for i, (br, cond) in enumerate(zip(model.far, _masks(model.far, "tt"))):
+        functions += _function(f"_D{i}", "tt", br.expr, pr) + [""]
+        far.append(dict(fn=f"_D{i}", cond=cond, k=br.k))
+    tiny = None
+    if model.tiny is not None:
+        tiny = dict(a=double_literal(model.tiny[0]), j=model.tiny[1], text=sp.sstr(model.tiny[0]))
+    ctx.update(functions=functions, mid=mid, far=far, tiny_term=tiny)
+    return {f"{model.stem}.py": env.get_template("python_module.py.j2").render(ctx)}

@@ -1,0 +1,215 @@
+"""High-precision reference values of the law (9), for tests and benchmarks.
+
+The reference is independent of the numerics of `law`: it evaluates the
+plain derivative g = df/de2 of the design's f (SymPy's `diff`, with the
+verifier's sinh/cosh -> tanh rewriting, an identity) in ball arithmetic
+(python-flint's Arb), raising the working precision until every component is
+known to 2**-90 relative (cancellation such as sqrt(4 rho + 1) - 1 at
+rho = 1e-300 needs thousands of bits; Arb's radius says when it is enough).
+`mp_law` evaluates the same law with mpmath at 50 digits (or more when the
+two disagree), the cross-check the issue asks for.
+
+The tolerance scale of a component is the largest magnitude among the exact
+value and the terms it is the sum of (v: vr cos e3, k1 tanh e1; w: wr,
+lam vr g sinc e3, k2 tanh e3), floored at the smallest normal number of the
+precision: the relative error that a correct floating-point evaluation of
+the sum can guarantee."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import flint
+import mpmath
+import numpy as np
+import sympy as sp
+
+from .. import e1 as E1, e2 as E2
+from ..univariate import prepare
+
+START_PREC, MAX_PREC = 128, 16384
+REL = 2.0 ** -90
+
+
+class NeedPrecision(Exception):
+    pass
+
+
+def _arb_fn(expr: sp.Expr):
+    """Compile expr(e1, e2) into a function of two arbs (closures)."""
+    if expr == E1:
+        return lambda a, b: a
+    if expr == E2:
+        return lambda a, b: b
+    if expr.is_Rational:
+        p, q = int(expr.p), int(expr.q)
+        return lambda a, b: flint.arb(p) / q
+    if expr == sp.pi:
+        return lambda a, b: flint.arb.pi()
+    if expr == sp.E:
+        return lambda a, b: flint.arb(1).exp()
+    if expr.is_Float:
+        val = flint.arb(str(expr))
+        return lambda a, b: val
+    args = [_arb_fn(x) for x in expr.args] if not isinstance(expr, sp.Piecewise) else None
+    if isinstance(expr, sp.Add):
+        def add(a, b, fs=args):
+            out = fs[0](a, b)
+            for f in fs[1:]:
+                out = out + f(a, b)
+            return out
+        return add
+    if isinstance(expr, sp.Mul):
+        def mul(a, b, fs=args):
+            out = fs[0](a, b)
+            for f in fs[1:]:
+                out = out * f(a, b)
+            return out
+        return mul
+    if isinstance(expr, sp.Pow):
+        base, ex = args
+        e = expr.args[1]
+        if e == sp.Rational(1, 2):
+            return lambda a, b: base(a, b).sqrt()
+        if e == -sp.Rational(1, 2):
+            return lambda a, b: 1 / base(a, b).sqrt()
+        if e.is_Integer:
+            n = int(e)
+            return (lambda a, b: base(a, b) ** n) if n > 0 else (lambda a, b: 1 / base(a, b) ** (-n))
+        return lambda a, b: base(a, b) ** ex(a, b)
+    names = {sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.tanh: "tanh", sp.sinh: "sinh",
+             sp.cosh: "cosh", sp.exp: "exp", sp.log: "log", sp.atan: "atan", sp.asinh: "asinh",
+             sp.Abs: "__abs__"}
+    if type(expr) in names:
+        (f,), name = args, names[type(expr)]
+        return lambda a, b: getattr(f(a, b), name)()
+    if isinstance(expr, sp.Piecewise):
+        branches = [(_arb_fn(v), _arb_cond(c)) for v, c in expr.args]
+
+        def pw(a, b):
+            for val, cond in branches:
+                if cond(a, b):
+                    return val(a, b)
+            raise NeedPrecision
+        return pw
+    raise NotImplementedError(f"reference: no Arb evaluation for {expr.func.__name__}")
+
+
+def _arb_cond(cond):
+    if cond in (True, sp.true):
+        return lambda a, b: True
+    lhs, rhs = _arb_fn(cond.lhs), _arb_fn(cond.rhs)
+
+    def decide(a, b, op=type(cond)):
+        d = lhs(a, b) - rhs(a, b)
+        if d > 0:
+            return op in (sp.StrictGreaterThan, sp.GreaterThan)
+        if d < 0:
+            return op in (sp.StrictLessThan, sp.LessThan)
+        if d == 0:    # exactly zero
+            return op in (sp.GreaterThan, sp.LessThan)
+        raise NeedPrecision
+    return decide
+
+
+def adaptive(fn, *args):
+    """fn(*arbs) to relative accuracy REL, raising the precision as needed."""
+    prec = START_PREC
+    old = flint.ctx.prec
+    try:
+        while True:
+            flint.ctx.prec = prec
+            try:
+                val = fn(*[flint.arb(x) for x in args])
+                if val.rad() == 0 or val.rad() <= abs(val.mid()) * REL:
+                    return val
+            except NeedPrecision:
+                val = None
+            if prec >= MAX_PREC:
+                if val is None:
+                    raise ArithmeticError("reference: a Piecewise condition is undecidable at these inputs")
+                return val
+            prec *= 2
+    finally:
+        flint.ctx.prec = old
+
+
+def _sinc(x):
+    return x.sin() / x if x != 0 else flint.arb(1)
+
+
+@dataclass
+class Law:
+    """The exact law (9) of one design."""
+    g_expr: sp.Expr
+
+    @classmethod
+    def of(cls, design) -> "Law":
+        return cls(prepare(sp.diff(design.f, E2)))
+
+    def __post_init__(self):
+        self._g = _arb_fn(self.g_expr)
+
+    def g(self, e1: float, e2: float):
+        return adaptive(self._g, e1, e2)
+
+    def evaluate(self, x, floor: float, cache=None):
+        """Reference for one input row x = (e1, e2, e3, vr, wr, k1, k2, lam) of
+        floats: (v, w, scale_v, scale_w) as arbs at >= 200 bits."""
+        e1, e2, e3, vr, wr, k1, k2, lam = (float(t) for t in x)
+        cache = cache if cache is not None else {}
+        key = ("g", e1, e2)
+        if key not in cache:
+            cache[key] = self.g(e1, e2)
+        g = cache[key]
+        for name, arg, fn in (("sinc", e3, _sinc), ("cos", e3, lambda a: a.cos()),
+                              ("th", e3, lambda a: a.tanh()), ("th", e1, lambda a: a.tanh())):
+            if (name, arg) not in cache:
+                cache[(name, arg)] = adaptive(fn, arg)
+        old = flint.ctx.prec
+        flint.ctx.prec = 256
+        try:
+            A = flint.arb
+            tv1, tv2 = A(vr) * cache[("cos", e3)], A(k1) * cache[("th", e1)]
+            tw1, tw2, tw3 = A(wr), A(lam) * A(vr) * g * cache[("sinc", e3)], A(k2) * cache[("th", e3)]
+            v, w = tv1 + tv2, tw1 + tw2 + tw3
+            sv = max(abs(v).mid(), abs(tv1).mid(), abs(tv2).mid(), A(floor).mid())
+            sw = max(abs(w).mid(), abs(tw1).mid(), abs(tw2).mid(), abs(tw3).mid(), A(floor).mid())
+            return v, w, A(sv), A(sw)
+        finally:
+            flint.ctx.prec = old
+
+
+def relative_errors(law: Law, inputs: np.ndarray, v: np.ndarray, w: np.ndarray, floor: float, limit: float):
+    """For each row: (err_v, err_w, overflow) with err = |computed - exact| /
+    scale (see the module doc); overflow is True where an exact result
+    exceeds `limit` in magnitude (the code must then report a range error)."""
+    n = len(inputs)
+    ev, ew = np.zeros(n), np.zeros(n)
+    over = np.zeros(n, dtype=bool)
+    cache = {}
+    old = flint.ctx.prec
+    for i in range(n):
+        V, W, sv, sw = law.evaluate(inputs[i], floor, cache)
+        flint.ctx.prec = 256
+        try:
+            if abs(V) > limit or abs(W) > limit:
+                over[i] = True
+                continue
+            ev[i] = float((abs(flint.arb(float(v[i])) - V) / sv).upper())
+            ew[i] = float((abs(flint.arb(float(w[i])) - W) / sw).upper())
+        finally:
+            flint.ctx.prec = old
+    return ev, ew, over
+
+
+def mp_g(design, e1: float, e2: float, dps: int = 50):
+    """g = df/de2 with mpmath at 50 digits plus the digits that the
+    cancellation of rho = e1^2 + e2^2 against 1 costs (1e-300 -> 650 digits)."""
+    expr = prepare(sp.diff(design.f, E2))
+    fn = sp.lambdify((E1, E2), expr, "mpmath")
+    rho = mpmath.mpf(e1) ** 2 + mpmath.mpf(e2) ** 2
+    if rho != 0:
+        dps += max(0, int(-mpmath.log10(rho)) + 1)
+    with mpmath.workdps(dps):
+        return +fn(mpmath.mpf(e1), mpmath.mpf(e2))
