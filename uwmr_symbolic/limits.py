@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .interval import Interval, Undefined
+from .interval import Interval, IntervalFunction, Undefined
 
 
 class NoLimit(Exception):
@@ -79,10 +79,18 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
         if expr.is_number:
             return Lim(expr, 0)
         raise NoLimit(f"{expr} has other free symbols")
-    if isinstance(expr, sp.Add):
-        return _add([_limit(a, x) for a in expr.args])
-    if isinstance(expr, sp.Mul):
-        return _mul([_limit(a, x) for a in expr.args])
+    if isinstance(expr, (sp.Add, sp.Mul)):
+        limits, bounded = [], []
+        for a in expr.args:
+            try:
+                limits.append(_limit(a, x))
+            except NoLimit:
+                if not _bounded_near_zero(a, x):
+                    raise
+                bounded.append(a)
+        if bounded:
+            return _with_bounded(limits, isinstance(expr, sp.Add))
+        return _add(limits) if isinstance(expr, sp.Add) else _mul(limits)
     if isinstance(expr, sp.Pow):
         base, ex = expr.args
         if ex.has(x):
@@ -99,6 +107,32 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
     if isinstance(expr, sp.Function) and len(expr.args) == 1:
         return _function(expr.func, _limit(expr.args[0], x))
     raise NoLimit(f"no limit rule for {expr.func.__name__}")
+
+
+_NEAR = sp.Rational(1, 64)
+
+
+def _bounded_near_zero(expr, x) -> bool:
+    """expr is bounded for 0 < x <= 1/64 (interval arithmetic)."""
+    try:
+        box = IntervalFunction(expr, [x], mode="range")(Interval.of(0, _NEAR))
+    except (Undefined, ValueError):
+        return False
+    return box.is_finite()
+
+
+def _with_bounded(limits: list[Lim], is_sum: bool) -> Lim:
+    """Terms (factors) without a limit but bounded near 0: a sum with an
+    infinite part still tends to that infinity; a product with a part that
+    tends to 0 (and nothing infinite) tends to 0."""
+    part = _add(limits) if is_sum else (_mul(limits) if limits else None)
+    if part is None:
+        raise NoLimit("bounded factors without a limit")
+    if is_sum and part.infinite:
+        return part
+    if not is_sum and not part.infinite and sign_of(part.value) == 0:
+        return Lim(sp.Integer(0), None)
+    raise NoLimit("a bounded term without a limit")
 
 
 def _add(terms: list[Lim]) -> Lim:

@@ -325,7 +325,10 @@ def verify_p6(a: Analysis) -> Verdict:
     if sup.upper is None:
         return unknown(f"no finite bound for F'(s)/s found: {sup.reason}")
     if not p5.proved:
-        return unknown(f"k = {sup.show()}, but the sign of h is undecided: {p5.reason}")
+        weak = [prove_sign(a.derivative(p.expr, 1), S, p.lo, p.hi, want=1, strict=False)
+                for p in a.profile.pieces]
+        if not all(v.proved for v in weak) or a._boundary_match(1).refuted:
+            return unknown(f"k = {sup.show()}, but the sign of h is undecided: {p5.reason}")
     k = sup.exact if sup.exact is not None else round_up(sup.upper)
     h = sp.simplify(a.derivative(a.F, 1) / (k * S)).subs(S, sp.sqrt(E1 ** 2 + E2 ** 2))
     smallest = f"sup F'(s)/s = {sup.show()}"

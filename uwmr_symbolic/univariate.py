@@ -256,6 +256,8 @@ def _sign_near(expr, var, c, side: int, want: int, width: Fraction) -> bool:
                 return True
             if form is not expr and not isinstance(form, sp.Add) and _sign_near(form, var, c, side, want, width):
                 return True
+    if _composed_sign_near(expr, var, lo, hi, c, side, want):
+        return True
     # Taylor with Lagrange remainder at c
     signs, dm = _derivative_values(expr, var, c, TAYLOR_ORDER)
     if dm is None or not signs or signs[-1] == 0:
@@ -271,6 +273,34 @@ def _sign_near(expr, var, c, side: int, want: int, width: Fraction) -> bool:
 
 
 _SIGN_PRESERVING = (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf)
+U = sp.Symbol("u", real=True)     # an inner expression, for the composition rule
+
+
+def _composed_sign_near(expr, var, lo, hi, c, side, want) -> bool:
+    """expr = G(u(var)) for an inner u with u(c) = 0 and a sign beside c:
+    then expr has the sign of G on the u-interval (0, max u] (or [min u, 0)),
+    a one-variable problem whose derivatives are far simpler (u - sin u has
+    a zero of order 6 in s but of order 3 in u)."""
+    inner = {a for f in expr.atoms(sp.Function) for a in f.args if a.has(var) and a != var}
+    for u in sorted(inner, key=sp.count_ops):
+        G = expr.subs(u, U)
+        if G.has(var) or not G.has(U):
+            continue
+        at_c = exact_value(u, var, c)
+        if at_c is None or exact_sign(at_c) != 0:
+            continue
+        for u_side in (1, -1):
+            if not _sign_near(u, var, c, side, u_side, Fraction(hi - lo) if hi != lo else Fraction(0)):
+                continue
+            try:
+                box = enclose(u, var, lo, hi)
+            except Undefined:
+                return False
+            reach = box.upper_fraction() if u_side > 0 else -box.lower_fraction()
+            if reach is None or reach <= 0:
+                return False
+            return _sign_near(G, U, sp.Integer(0), u_side, want, reach)
+    return False
 
 
 def _regroup(expr, var):
@@ -282,6 +312,9 @@ def _regroup(expr, var):
         grouped = sp.collect(expr, funcs)
     except Exception:  # noqa: BLE001
         return expr
+    common = sp.factor_terms(grouped)
+    if not isinstance(common, sp.Add):
+        return common
     terms = []
     for term in sp.Add.make_args(grouped):
         coeff, rest = term.as_independent(*funcs, as_Add=False)
@@ -353,13 +386,41 @@ def _exact_zero_in(expr, var, lo, hi):
         sols = sp.solveset(sp.Eq(expr, 0), var, sp.Interval.open(lo, hi))
     except Exception:  # noqa: BLE001
         return None
-    if not isinstance(sols, sp.FiniteSet):
-        return None
-    for root in sols:
+    for root in sorted(set(_set_candidates(sols)), key=sp.default_sort_key):
+        if not root.is_number or root.has(sp.I):
+            continue
+        try:
+            box = Interval.point(root)
+            if not (box.lower_fraction() > _upper_fraction(lo) and
+                    (hi == sp.oo or box.upper_fraction() < _lower_fraction(hi))):
+                continue
+        except (Undefined, TypeError, ValueError):
+            continue
         v = exact_value(expr, var, root)
         if v is not None and exact_sign(v) == 0:
             return root
     return None
+
+
+def _set_candidates(sset, depth=0):
+    """Points proposed by a SymPy solution set (finite sets, unions,
+    intersections, image sets over the integers for |n| <= 6).  Only a
+    proposal: the caller checks each point exactly."""
+    if depth > 4:
+        return
+    if isinstance(sset, sp.FiniteSet):
+        yield from sset.args
+    elif isinstance(sset, (sp.Union, sp.Intersection)):
+        for part in sset.args:
+            yield from _set_candidates(part, depth + 1)
+    elif isinstance(sset, sp.ImageSet) and len(sset.lamda.variables) == 1:
+        base = sset.base_sets[0]
+        points = range(-6, 7) if base == sp.S.Integers else _set_candidates(base, depth + 1)
+        for b in points:
+            try:
+                yield sset.lamda(b)
+            except Exception:  # noqa: BLE001
+                continue
 
 
 def _accepts(box, want, strict):
@@ -474,6 +535,10 @@ def prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
         v = _cover(tail, T, sp.Integer(0), 1 / R, want, True, False, budget, strict)
         if not v.proved and not v.refuted and _depth < 2 and _monotone_tail(expr, var, R, want, strict, _depth):
             v = proved("monotone on the unbounded part")
+        if strict and not v.proved and not v.refuted:
+            root = _exact_zero_in(expr, var, R, sp.oo)
+            if root is not None:
+                return refuted(f"vanishes at {var} = {root} (exact)", root)
         if v.refuted:
             return refuted(f"fails at {var} = {1 / v.witness}", 1 / v.witness)
         if not v.proved:
