@@ -41,13 +41,17 @@ def radial_profile(f: sp.Expr) -> sp.Expr:
 def verify_radial(f: sp.Expr, F: sp.Expr) -> Verdict:
     """P4 through radial symmetry: prove f == F(|e|), or refute it with two
     points on one circle where f takes different (certified) values."""
+    if _same_function(f, F.subs(S, RHO)):
+        return proved("f(e1, e2) = F(sqrt(e1^2 + e2^2)) is a symbolic identity, "
+                      "so e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
     diff = f - F.subs(S, RHO)
-    try:
-        if diff == 0 or sp.simplify(diff) == 0:
-            return proved("f(e1, e2) = F(sqrt(e1^2 + e2^2)) is a symbolic identity, "
-                          "so e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
-    except Exception:  # noqa: BLE001 - SymPy failure is just 'not shown'
-        pass
+    for simplifier in (lambda e: e, sp.expand, sp.simplify, lambda e: sp.simplify(sp.expand(e))):
+        try:
+            if simplifier(diff) == 0:
+                return proved("f(e1, e2) = F(sqrt(e1^2 + e2^2)) is a symbolic identity, "
+                              "so e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
+        except Exception:  # noqa: BLE001 - SymPy failure is just 'not shown'
+            continue
     fn = IntervalFunction(f, [E1, E2], mode="range", prec=200)
     for r in _RADII:
         values = []
@@ -68,13 +72,47 @@ def verify_radial(f: sp.Expr, F: sp.Expr) -> Verdict:
                         {"point_a": _pt_json(p), "point_b": _pt_json(q),
                          "f_a": [vp.lower_float(), vp.upper_float()],
                          "f_b": [vq.lower_float(), vq.upper_float()]})
-    d = sp.diff(f, E2) * E1 - sp.diff(f, E1) * E2
-    try:
-        if sp.simplify(d) == 0:
-            return proved("e1 df/de2 - e2 df/de1 simplifies to 0")
-    except Exception:  # noqa: BLE001
-        pass
+    # (e1 df/de2 - e2 df/de1 simplifying to 0 is not used: SymPy differentiates
+    # a Piecewise branch by branch and says nothing about its boundaries, and
+    # only the identity f = F(|e|) licenses the reduction to F)
     return unknown("could neither prove f radial nor find two points on a circle with different values")
+
+
+def _zero(e) -> bool:
+    try:
+        return e == 0 or sp.expand(e) == 0 or sp.simplify(e) == 0
+    except Exception:  # noqa: BLE001
+        return False
+
+
+def _same_function(a, b) -> bool:
+    """a and b are the same expression up to SymPy identities, compared
+    branch by branch and condition by condition for Piecewise."""
+    if isinstance(a, sp.Piecewise) and isinstance(b, sp.Piecewise):
+        return len(a.args) == len(b.args) and all(
+            _same_function(ea, eb) and _same_condition(ca, cb)
+            for (ea, ca), (eb, cb) in zip(a.args, b.args))
+    return _zero(a - b)
+
+
+def _canonical_relation(rel):
+    """(strict?, g) with the relation meaning g > 0 (strict) or g >= 0."""
+    if isinstance(rel, (sp.StrictGreaterThan, sp.GreaterThan)):
+        return isinstance(rel, sp.StrictGreaterThan), rel.lhs - rel.rhs
+    if isinstance(rel, (sp.StrictLessThan, sp.LessThan)):
+        return isinstance(rel, sp.StrictLessThan), rel.rhs - rel.lhs
+    return None
+
+
+def _same_condition(a, b) -> bool:
+    if a == b:
+        return True
+    ka, kb = _canonical_relation(a), _canonical_relation(b)
+    if ka is not None and kb is not None and ka[0] == kb[0]:
+        return _zero(ka[1] - kb[1])
+    if isinstance(a, (sp.And, sp.Or)) and type(a) is type(b) and len(a.args) == len(b.args):
+        return all(_same_condition(x, y) for x, y in zip(a.args, b.args))
+    return False
 
 
 def _pt(p):

@@ -95,12 +95,24 @@ def prepare(expr: sp.Expr) -> sp.Expr:
     return out
 
 
+def _cancel_rational_part(term: sp.Expr) -> sp.Expr:
+    funcs = [f for f in sp.Mul.make_args(term) if f.has(sp.Function, sp.Piecewise)]
+    rest = sp.Mul(*[f for f in sp.Mul.make_args(term) if not f.has(sp.Function, sp.Piecewise)])
+    return sp.cancel(sp.together(rest)) * sp.Mul(*funcs)
+
+
 def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
     """expr(1/t) for t > 0, with radicals of rational functions brought over a
     common denominator so that powers of t cancel (sqrt(4/t**2 + 1) becomes
     sqrt(t**2 + 4)/t).  An identity for t > 0."""
-    e = expr.subs(s, 1 / T)
-    e = sp.bottom_up(e, lambda node: sp.together(node) if isinstance(node, (sp.Pow, sp.Add)) else node)
+    e = sp.expand_mul(expr).subs(s, 1 / T)
+    # radicands and function arguments over a common denominator...
+    e = sp.bottom_up(e, lambda node: node.func(*[sp.together(a) if isinstance(a, sp.Add) else a
+                                                 for a in node.args])
+                     if isinstance(node, (sp.Pow, sp.Function)) and node.args else node)
+    # ...and each term's rational factor cancelled on its own: merging the
+    # terms of a sum into one fraction makes 0*oo forms such as t^3 log(1/t)
+    e = sp.Add(*[_cancel_rational_part(term) for term in sp.Add.make_args(e)])
     e = prepare(e)
     e = e.replace(lambda n: isinstance(n, sp.atan) and n.args[0].is_positive and
                   (1 / n.args[0]).count_ops() < n.args[0].count_ops(),
@@ -591,9 +603,13 @@ def _mean_value_upper(fn, dfn, u, v):
     if not (em.is_finite() and d.is_finite()):
         return None
     mf = Fraction(int(m.p), int(m.q))
-    right = max(Fraction(0), _hi(d)) * (_hi(Interval.point(v)) - mf)
-    left = max(Fraction(0), -_lo(d)) * (mf - _lo(Interval.point(u)))
-    return _hi(em) + max(right, left)
+    ends = (_hi(d), _lo(d), _hi(em), _hi(Interval.point(v)), _lo(Interval.point(u)))
+    if any(x is None for x in ends):       # beyond double range: no bound here
+        return None
+    d_hi, d_lo, em_hi, v_hi, u_lo = ends
+    right = max(Fraction(0), d_hi) * (v_hi - mf)
+    left = max(Fraction(0), -d_lo) * (mf - u_lo)
+    return em_hi + max(right, left)
 
 
 def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:

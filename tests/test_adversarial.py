@@ -1,0 +1,41 @@
+"""Designs built to trap a careless verifier: branch-wise radial pieces that
+are not radial together, a norm that is not radial, a radial f that SymPy
+writes with flipped Piecewise conditions.  A wrong "proved" here would be the
+worst kind of bug, so each test pins the verdicts that are decidable."""
+import json
+from pathlib import Path
+
+import pytest
+
+from _cli import run_cli
+
+HERE = Path(__file__).parent / "adversarial"
+
+
+def verdicts(name):
+    run = run_cli([HERE / name, "--format", "json"], timeout=300)
+    assert "Traceback" not in run.stderr, run.describe()
+    report = json.loads(run.stdout)
+    return {p: v["verdict"] for p, v in report["properties"].items()}, report, run.returncode
+
+
+@pytest.mark.parametrize("name", ["l1_norm.py", "half_plane_switch.py"])
+def test_non_radial_is_refuted_and_nothing_else_is_claimed(name):
+    v, report, code = verdicts(name)
+    assert v["P4"] == "refuted"
+    assert report["properties"]["P4"]["witness"] is not None
+    assert v["P2"] == "proved"
+    # none of the other properties may be claimed proved on the strength of
+    # the branch-wise derivative identity
+    for p in ("P1", "P5", "P6", "P7", "P8"):
+        assert v[p] in ("refuted", "unknown"), (p, v[p])
+    assert code == 1
+
+
+def test_flipped_piecewise_conditions_still_radial():
+    v, report, code = verdicts("max_disguise.py")
+    assert v["P4"] == "proved"
+    assert v["P1"] == "refuted"            # kf infinite: F'(s) = s
+    assert report["kf"]["upper"] is None
+    assert all(v[p] == "proved" for p in ("P2", "P3", "P5", "P6", "P7", "P8"))
+    assert code == 1
