@@ -193,8 +193,9 @@ def render_summary(results: list[dict]) -> str:
 # ---------------------------------------------------------------- JUnit XML
 
 def _classname(path: str) -> str:
-    p = Path(path)
-    return ".".join(p.with_suffix("").parts).lstrip(".") or p.name
+    p = Path(path).with_suffix("")
+    parts = [x for x in (p.parts[1:] if p.is_absolute() else p.parts) if x not in (".", "..")]
+    return ".".join(parts) or p.name
 
 
 def _testcases(d: dict):
@@ -219,8 +220,7 @@ def _testcases(d: dict):
         yield "gains", "skipped", None, "the design has no gain scenarios", ""
     kf_line = f"kf = {_kf_summary(d['kf'])}: {d['kf']['reason']}"
     for name, g in d["gains"].items():
-        text = (f"|V| bound {_fmt(g['V_bound'], 10)} (margin {g['V_margin']}), "
-                f"|W| bound {_fmt(g['W_bound'], 10)} (margin {g['W_margin']}), lam_max {g['lam_max_exact']}\n{kf_line}")
+        text = f"{_bound_text(g, 'V')}\n{_bound_text(g, 'W')}\nlargest lam within the limits: {g['lam_max_exact']}\n{kf_line}"
         word = _gain_word(g)
         if word == "ok":
             yield f"gains[{name}]", "passed", None, None, text
@@ -283,6 +283,16 @@ def _annotation(level: str, file: str, line: int, title: str, message: str) -> s
     return f"::{level} file={_gh_prop(file)},line={line},title={_gh_prop(title)}::{_gh_data(message)}"
 
 
+def _bound_text(g: dict, which: str) -> str:
+    """e.g. '|W| bound 2.000012851 FAIL, margin -1.285e-05 = 3/10 - 13857*sqrt(3)/80000'."""
+    ok = g[f"{which}_ok"]
+    word = {True: "ok", False: "FAIL", None: "unchecked"}[ok]
+    margin, exact = g[f"{which}_margin_float"], g[f"{which}_margin"]
+    m = "—" if exact is None else (f"{margin:+.3e}" if margin is not None else "?") + \
+        ("" if exact in (None, "0") or "/" not in exact and "sqrt" not in exact else f" = {exact}")
+    return f"|{which}| bound {_fmt(g[f'{which}_bound'], 10)} {word}, margin {m}"
+
+
 def render_github(results: list[dict]) -> str:
     """GitHub Actions workflow commands: ::error at the line defining f for each
     refuted property (at the `gains` line for a failing bound (10)), ::warning
@@ -311,9 +321,8 @@ def render_github(results: list[dict]) -> str:
             word = _gain_word(g)
             if word == "FAIL":
                 out.append(_annotation("error", path, gains_line, f"uwmr-verify bound (10) fails ({name}, {scen})",
-                                       f"|V| bound {_fmt(g['V_bound'], 10)} margin {g['V_margin']}; "
-                                       f"|W| bound {_fmt(g['W_bound'], 10)} margin {g['W_margin']}; "
-                                       f"largest lam within the limits {g['lam_max_exact']}"))
+                                       f"{_bound_text(g, 'V')}; {_bound_text(g, 'W')}; "
+                                       f"largest lam within the limits: {g['lam_max_exact']}"))
             elif word == "?":
                 out.append(_annotation("warning", path, gains_line, f"uwmr-verify bound (10) unchecked ({name}, {scen})",
                                        "kf undecided, so the |W| bound cannot be checked"))

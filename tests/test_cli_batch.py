@@ -1,0 +1,377 @@
+"""`uwmr-verify` on many files: a folder mixing proved, refuted, inconclusive and
+malformed designs, every output format (JUnit XML parsed with ElementTree),
+the worst exit status, and the result cache (a second run is served from it,
+a changed parameter or gain is not, a corrupt entry is ignored)."""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+from xml.etree import ElementTree as ET
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from _cli import ROOT  # noqa: E402
+
+from uwmr_symbolic import batch, cache  # noqa: E402
+from uwmr_symbolic.batch import Progress, expand_paths, worst_status  # noqa: E402
+from uwmr_symbolic.report import assignment_line  # noqa: E402
+
+PROPS = [f"P{i}" for i in range(1, 9)]
+#: --timeout for runs that include the design that hangs while loading
+SLOW_TIMEOUT = 4
+
+#: An inconclusive design whatever the verifier learns: loading it outlasts
+#: --timeout, so every property ends "unknown" (exit status 3).
+SLOW_DESIGN = '''"""Inconclusive: loading takes longer than --timeout."""
+import time
+import sympy as sp
+e1, e2 = sp.symbols("e1 e2", real=True)
+time.sleep(600)
+f = sp.log(1 + e1**2 + e2**2) / 2
+'''
+
+#: name in the mixed folder -> (source, expected exit status)
+MIXED = {
+    "a_proved.py": ("designs/design1_jiang.py", 0),
+    "b_refuted.py": ("designs/design5_rational.py", 1),
+    "c_inconclusive.py": (None, 3),
+    "d_syntax_error.py": ("tests/bad_inputs/syntax_error.py", 2),
+    "e_no_f.py": ("tests/bad_inputs/no_f.py", 2),
+}
+
+
+def run(args, cache_dir, timeout=300, env_extra=None):
+    """`python -m uwmr_symbolic.cli *args` with its own cache folder."""
+    env = {**os.environ, "UWMR_CACHE_DIR": str(cache_dir), **(env_extra or {})}
+    t0 = time.monotonic()
+    proc = subprocess.run([sys.executable, "-m", "uwmr_symbolic.cli", *map(str, args)], cwd=ROOT, env=env,
+                          capture_output=True, text=True, timeout=timeout, stdin=subprocess.DEVNULL)
+    proc.elapsed = time.monotonic() - t0
+    assert "Traceback" not in proc.stderr and "Traceback" not in proc.stdout, proc.stderr
+    return proc
+
+
+def describe(proc):
+    return f"exit {proc.returncode}\nstderr:\n{proc.stderr[-3000:]}\nstdout:\n{proc.stdout[:3000]}"
+
+
+@pytest.fixture(scope="module")
+def mixed(tmp_path_factory):
+    """The mixed folder, checked once per format (concurrently; one shared cache)."""
+    folder = tmp_path_factory.mktemp("designs")
+    for name, (src, _) in MIXED.items():
+        (folder / name).write_text(SLOW_DESIGN if src is None else (ROOT / src).read_text())
+    cache_dir = tmp_path_factory.mktemp("cache")
+    junit_file = folder.parent / "report.xml"
+    glob_arg = str(folder / "*.py")          # a glob the CLI expands itself (no shell here)
+    common = [glob_arg, "--timeout", SLOW_TIMEOUT]
+    # json first (it computes and caches design 1 and 5), then the other formats
+    # at once: they are served from the cache and only wait for the slow file.
+    runs = {"json": run([*common, "--format", "json", "--junit-xml", junit_file], cache_dir)}
+    with ThreadPoolExecutor(3) as pool:
+        futs = {fmt: pool.submit(run, [*common, "--format", fmt], cache_dir) for fmt in ("junit", "github", "text")}
+        runs.update({fmt: f.result() for fmt, f in futs.items()})
+    return {"folder": folder, "runs": runs, "junit_file": junit_file, "cache": cache_dir}
+
+
+def _paths(folder):
+    return {name: str(folder / name) for name in MIXED}
+
+
+def test_mixed_folder_json_and_exit_status(mixed):
+    r = mixed["runs"]["json"]
+    assert r.returncode == 2, describe(r)           # malformed files make the set unusable
+    results = json.loads(r.stdout)
+    assert isinstance(results, list)
+    assert [d["design"] for d in results] == [str(mixed["folder"] / n) for n in sorted(MIXED)]
+    by_name = {Path(d["design"]).name: d for d in results}
+    for name, (_, status) in MIXED.items():
+        assert by_name[name]["exit_status"] == status, (name, by_name[name])
+    proved, refuted, slow = by_name["a_proved.py"], by_name["b_refuted.py"], by_name["c_inconclusive.py"]
+    assert {p: v["verdict"] for p, v in proved["properties"].items()} == dict.fromkeys(PROPS, "proved")
+    assert refuted["properties"]["P3"]["verdict"] == "refuted" and refuted["properties"]["P3"]["witness"]
+    assert refuted["gains"]["circle"]["W_ok"] is False
+    assert all(v["verdict"] == "unknown" for v in slow["properties"].values())
+    assert "timeout" in slow["properties"]["P1"]["reason"]
+    assert by_name["d_syntax_error.py"]["error"].startswith("syntax error at line 5")
+    assert "defines no `f`" in by_name["e_no_f.py"]["error"]
+    # malformed files: one line each on stderr, naming the file
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 2 and "d_syntax_error.py" in lines[0] and "e_no_f.py" in lines[1], r.stderr
+    assert proved["f_line"] == assignment_line((ROOT / MIXED["a_proved.py"][0]).read_text(), "f")
+
+
+def _xml_cases(xml_text):
+    root = ET.fromstring(xml_text)
+    assert root.tag == "testsuites"
+    suites = root.findall("testsuite")
+    assert len(suites) == 1
+    return suites[0], suites[0].findall("testcase")
+
+
+def test_mixed_folder_junit(mixed):
+    r = mixed["runs"]["junit"]
+    assert r.returncode == 2, describe(r)
+    suite, cases = _xml_cases(r.stdout)
+    # the counts agree with the test cases (what CI services display)
+    assert int(suite.get("tests")) == len(cases)
+    assert int(suite.get("failures")) == sum(1 for c in cases if c.find("failure") is not None)
+    assert int(suite.get("errors")) == sum(1 for c in cases if c.find("error") is not None)
+    assert int(suite.get("skipped")) == sum(1 for c in cases if c.find("skipped") is not None)
+    for c in cases:
+        float(c.get("time"))
+    by_design = {}
+    for c in cases:
+        by_design.setdefault(c.get("classname"), {})[c.get("name")] = c
+    folder_cls = ".".join(mixed["folder"].parts[1:])
+    proved = by_design[f"{folder_cls}.a_proved"]
+    assert set(proved) == set(PROPS) | {"proof_replay", "gains[circle]", "gains[lemniscate]"}
+    assert all(len(c.findall("failure")) == 0 and len(c.findall("error")) == 0 for c in proved.values())
+    refuted = by_design[f"{folder_cls}.b_refuted"]
+    fail = refuted["P3"].find("failure")
+    assert fail is not None and fail.get("type") == "refuted" and "witness" in fail.text
+    assert refuted["gains[circle]"].find("failure").get("type") == "refuted"
+    assert refuted["gains[lemniscate]"].find("failure") is None
+    assert refuted["P1"].find("failure") is None
+    slow = by_design[f"{folder_cls}.c_inconclusive"]
+    assert all(slow[p].find("failure").get("type") == "unknown" for p in PROPS)
+    assert slow["gains"].find("skipped") is not None          # no gain scenarios in that file
+    for bad in ("d_syntax_error", "e_no_f"):
+        cases_bad = by_design[f"{folder_cls}.{bad}"]
+        assert list(cases_bad) == ["load"] and cases_bad["load"].find("error") is not None
+    # --junit-xml beside --format json writes the same report
+    # the time of the file that hangs differs between the runs, nothing else
+    assert re.sub(r' time="[0-9.]+"', "", mixed["junit_file"].read_text().strip()) == \
+        re.sub(r' time="[0-9.]+"', "", r.stdout.strip())
+
+
+def test_mixed_folder_github_annotations(mixed):
+    r = mixed["runs"]["github"]
+    assert r.returncode == 2, describe(r)
+    ann = [line for line in r.stdout.splitlines() if line.startswith("::")]
+    paths = _paths(mixed["folder"])
+    f_line_refuted = assignment_line((ROOT / "designs/design5_rational.py").read_text(), "f")
+    gains_line_refuted = assignment_line((ROOT / "designs/design5_rational.py").read_text(), "gains")
+    assert f"::error file={paths['b_refuted.py']},line={f_line_refuted},title=uwmr-verify P3 refuted" \
+        in "\n".join(ann)
+    assert any(a.startswith(f"::error file={paths['b_refuted.py']},line={gains_line_refuted},")
+               and "bound (10) fails" in a for a in ann)
+    warnings = [a for a in ann if a.startswith(f"::warning file={paths['c_inconclusive.py']},")]
+    assert len(warnings) >= 8 and all("unknown" in a for a in warnings[:8])
+    assert any(a.startswith(f"::error file={paths['d_syntax_error.py']},line=5,") for a in ann)
+    assert any(a.startswith(f"::error file={paths['e_no_f.py']},line=1,") for a in ann)
+    assert any(a.startswith(f"::notice file={paths['a_proved.py']},") for a in ann)
+    assert not any(a.startswith(("::error", "::warning")) and paths["a_proved.py"] in a for a in ann)
+    for a in ann:   # workflow-command syntax: ::level key=value,...::message on one line
+        assert re.fullmatch(r"::(error|warning|notice) file=[^,:]+,line=\d+,title=[^:]+::.+", a), a
+    assert "5 design file(s): 1 proved, 1 refuted or failing gains, 1 inconclusive, 2 unusable" in r.stdout
+
+
+def test_mixed_folder_text_summary(mixed):
+    r = mixed["runs"]["text"]
+    assert r.returncode == 2, describe(r)
+    out = r.stdout
+    assert "Summary" in out and "P1  proved" in out and "P3  REFUTED" in out
+    rows = {Path(line.split()[0]).name: line for line in out.splitlines()
+            if line.startswith(str(mixed["folder"])) and ("  " in line)}
+    assert re.search(r"PPPPPPPP .* 0 ", rows["a_proved.py"]), rows
+    assert re.search(r"PPRPPPPP .* 1 ", rows["b_refuted.py"]), rows
+    assert re.search(r"\?\?\?\?\?\?\?\? .* 3 ", rows["c_inconclusive.py"]), rows
+    assert "unusable: syntax error" in rows["d_syntax_error.py"]
+    assert "5 design file(s): 1 proved, 1 refuted or failing gains, 1 inconclusive, 2 unusable" in out
+    assert r.stderr.count("\n") == 2         # the two malformed files; no progress output off a TTY
+
+
+def test_worst_status_of_a_set(mixed, tmp_path):
+    folder = mixed["folder"]
+    assert run([folder / "a_proved.py", folder / "b_refuted.py", "--format", "json"], mixed["cache"]).returncode == 1
+    r = run([folder / "a_proved.py", folder / "c_inconclusive.py", "--timeout", SLOW_TIMEOUT, "--format", "json"],
+            mixed["cache"])
+    assert r.returncode == 3, describe(r)
+    assert run([folder / "a_proved.py", "--format", "json"], mixed["cache"]).returncode == 0
+    assert [worst_status(s) for s in ([], [0, 0], [0, 3], [3, 1, 0], [1, 2, 3])] == [0, 0, 3, 1, 2]
+
+
+# ---------------------------------------------------------------- cache
+
+@pytest.fixture
+def two_designs(tmp_path):
+    folder = tmp_path / "designs"
+    folder.mkdir()
+    shutil.copy(ROOT / "designs/design1_jiang.py", folder / "proved.py")
+    shutil.copy(ROOT / "designs/design5_rational.py", folder / "refuted.py")
+    return folder
+
+
+def _strip_cached(results):
+    return [{k: v for k, v in d.items() if k != "cached"} for d in results]
+
+
+def test_second_run_is_served_from_the_cache_and_prints_the_same(two_designs, tmp_path):
+    files = [two_designs / "proved.py", two_designs / "refuted.py"]
+    outputs = {}
+    for fmt in ("json", "junit", "github", "text"):
+        cache_dir = tmp_path / f"cache-{fmt}"
+        extra = ["--junit-xml", tmp_path / f"{fmt}-%d.xml"] if fmt == "json" else []
+        first = run([*files, "--format", fmt] + [str(a).replace("%d", "1") for a in extra], cache_dir)
+        second = run([*files, "--format", fmt] + [str(a).replace("%d", "2") for a in extra], cache_dir)
+        assert first.returncode == second.returncode == 1, describe(first) + describe(second)
+        assert len(list(cache_dir.glob("*.json"))) == 2        # one entry per design
+        assert not list(cache_dir.glob(".tmp-*"))               # atomic writes leave nothing behind
+        outputs[fmt] = (first.stdout, second.stdout)
+    cold, warm = (json.loads(s) for s in outputs["json"])
+    assert [d["cached"] for d in cold] == [False, False] and [d["cached"] for d in warm] == [True, True]
+    assert _strip_cached(cold) == _strip_cached(warm)
+    assert outputs["json"][0].replace('"cached": false', '"cached": true') == outputs["json"][1]
+    assert (tmp_path / "json-1.xml").read_text() == (tmp_path / "json-2.xml").read_text()
+    assert outputs["junit"][0] == outputs["junit"][1]
+    assert re.sub(r"(\d+\.\d\d s)\n", r"\1  (cached)\n", outputs["github"][0]) == outputs["github"][1]
+    text_cold, text_warm = outputs["text"]
+    assert "served from the cache" not in text_cold and text_warm.count("served from the cache") == 2
+    marked = re.sub(r"\((\d+\.\d\d) s\)", r"(\1 s, served from the cache)", text_cold)
+    assert re.sub(r"(\d+\.\d\d s)\n", r"\1  (cached)\n", marked) == text_warm
+
+
+def test_cache_is_keyed_by_content_not_path(two_designs, tmp_path):
+    cache_dir = tmp_path / "cache"
+    run([two_designs / "proved.py", "--format", "json"], cache_dir)
+    shutil.copy(two_designs / "proved.py", two_designs / "renamed.py")
+    r = run([two_designs / "renamed.py", "--format", "json"], cache_dir)
+    d = json.loads(r.stdout)
+    assert d["cached"] is True and d["design"].endswith("renamed.py") and r.returncode == 0
+
+
+def test_changed_parameter_or_gain_is_not_served_from_the_cache(tmp_path):
+    folder = tmp_path / "d"
+    folder.mkdir()
+    src = (ROOT / "tests/designs/v06_param_float.py").read_text()
+    design = folder / "param.py"
+    design.write_text(src)
+    cache_dir = tmp_path / "cache"
+    first = json.loads(run([design, "--format", "json"], cache_dir).stdout)
+    again = json.loads(run([design, "--format", "json"], cache_dir).stdout)
+    assert (first["cached"], again["cached"]) == (False, True)
+    assert "params = {c: 0.5}" in src
+    design.write_text(src.replace("params = {c: 0.5}", "params = {c: 2}"))
+    changed = json.loads(run([design, "--format", "json"], cache_dir).stdout)
+    assert changed["cached"] is False
+    assert changed["kf"]["exact"] != first["kf"]["exact"]     # kf = sqrt(c)
+    design.write_text(src.replace("k2=0.5, lam=1.0, Vmax=0.75, Wmax=1.85356", "k2=0.5, lam=0.9, Vmax=0.75, Wmax=1.85356"))
+    gain_changed = json.loads(run([design, "--format", "json"], cache_dir).stdout)
+    assert gain_changed["cached"] is False
+    assert len(list(cache_dir.glob("*.json"))) == 3
+
+
+def test_corrupt_cache_entries_are_ignored_and_replaced(two_designs, tmp_path):
+    cache_dir = tmp_path / "cache"
+    files = [two_designs / "proved.py", two_designs / "refuted.py"]
+    cold = json.loads(run([*files, "--format", "json"], cache_dir).stdout)
+    entries = sorted(cache_dir.glob("*.json"))
+    entries[0].write_text("{ not json")
+    entries[1].write_text(json.dumps({"key": {"something": "else"}, "result": {}}))
+    r = run([*files, "--format", "json"], cache_dir)
+    again = json.loads(r.stdout)
+    assert r.returncode == 1 and [d["cached"] for d in again] == [False, False]
+    assert [d["exit_status"] for d in again] == [d["exit_status"] for d in cold]
+    assert [d["properties"] for d in again] == [d["properties"] for d in cold]
+    assert all(json.loads(e.read_text())["result"]["exit_status"] in (0, 1) for e in entries)
+
+
+def test_no_cache_neither_reads_nor_writes(two_designs, tmp_path):
+    cache_dir = tmp_path / "cache"
+    files = [two_designs / "proved.py", two_designs / "refuted.py"]
+    r = run([*files, "--format", "json", "--no-cache"], cache_dir)
+    assert r.returncode == 1 and not cache_dir.exists()
+    run([*files, "--format", "json"], cache_dir)
+    again = json.loads(run([*files, "--format", "json", "--no-cache"], cache_dir).stdout)
+    assert [d["cached"] for d in again] == [False, False]
+
+
+def test_changed_verifier_source_is_a_different_key(monkeypatch):
+    from uwmr_symbolic.design import load_design
+    d = load_design(ROOT / "designs/design1_jiang.py")
+    key = cache.design_key(d)
+    assert key["f"].startswith("Mul(") or key["f"].startswith("Add(") or "log" in key["f"]
+    assert key["tool"] and len(key["source"]) == 64
+    monkeypatch.setattr(cache, "source_hash", lambda: "0" * 64)
+    assert cache.digest(cache.design_key(d)) != cache.digest(key)
+
+
+def test_a_result_with_an_expired_time_limit_is_not_cached(tmp_path):
+    """design 3 needs about a second: with --timeout 0.2 it ends inconclusive,
+    a result that depends on the time given, so it is not stored."""
+    d = batch.check_file(str(ROOT / "designs/design3_logcosh.py"), 0.2, str(tmp_path), True)
+    assert d["exit_status"] == 3 and d["cached"] is False
+    assert not list(tmp_path.glob("*.json"))
+
+
+def test_cache_put_into_an_unwritable_place_is_harmless(tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    assert cache.ResultCache(blocker / "sub").put({"k": 1}, {"exit_status": 0}) is False
+    c = cache.ResultCache(tmp_path / "ok")
+    assert c.put({"k": 1}, {"exit_status": 0}) and c.get({"k": 1}) == {"exit_status": 0}
+    assert c.get({"k": 2}) is None
+
+
+# ---------------------------------------------------------------- small pieces
+
+def test_expand_paths(tmp_path):
+    for n in ("b.py", "a.py", "c.txt"):
+        (tmp_path / n).write_text("")
+    a, b = str(tmp_path / "a.py"), str(tmp_path / "b.py")
+    assert expand_paths([str(tmp_path / "*.py")]) == [a, b]
+    assert expand_paths([str(tmp_path)]) == [a, b]
+    assert expand_paths([b, str(tmp_path / "*.py")]) == [b, a]          # order kept, no duplicates
+    assert expand_paths([str(tmp_path / "none*.py")]) == [str(tmp_path / "none*.py")]   # reported as missing
+
+
+def test_glob_matching_nothing_is_unusable_input(tmp_path):
+    r = run([tmp_path / "nothing*.py", "--format", "json"], tmp_path / "cache")
+    assert r.returncode == 2 and "nothing*.py" in r.stderr and len(r.stderr.strip().splitlines()) == 1
+
+
+class _Stream:
+    def __init__(self, tty):
+        self.tty, self.text = tty, ""
+
+    def isatty(self):
+        return self.tty
+
+    def write(self, s):
+        self.text += s
+
+    def flush(self):
+        pass
+
+
+def test_progress_only_on_a_terminal():
+    tty, pipe = _Stream(True), _Stream(False)
+    for stream in (tty, pipe):
+        p = Progress(2, stream)
+        p.step("x.py")
+        p.step("y.py")
+        p.close()
+    assert "[1/2] x.py" in tty.text and "[2/2] y.py" in tty.text
+    assert pipe.text == ""
+    single = _Stream(True)
+    Progress(1, single).step("x.py")
+    assert single.text == ""
+
+
+def test_check_generated_hook(tmp_path):
+    try:
+        from uwmr_symbolic import codegen
+        available = hasattr(codegen, "check_generated")
+    except ImportError:
+        available = False
+    if available:
+        pytest.skip("code generation has landed: --check-generated is tested with it")
+    r = run(["--check-generated"], tmp_path / "cache")
+    assert r.returncode == 2 and "--check-generated" in r.stderr and len(r.stderr.strip().splitlines()) == 1
