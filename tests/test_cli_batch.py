@@ -75,9 +75,13 @@ def mixed(tmp_path_factory):
     # at once: they are served from the cache and only wait for the slow file.
     runs = {"json": run([*common, "--format", "json", "--junit-xml", junit_file], cache_dir)}
     with ThreadPoolExecutor(3) as pool:
-        futs = {fmt: pool.submit(run, [*common, "--format", fmt], cache_dir) for fmt in ("junit", "github", "text")}
+        step_summary = folder.parent / "step_summary.md"
+        futs = {fmt: pool.submit(run, [*common, "--format", fmt], cache_dir,
+                                 env_extra={"GITHUB_STEP_SUMMARY": str(step_summary)} if fmt == "github" else None)
+                for fmt in ("junit", "github", "text")}
         runs.update({fmt: f.result() for fmt, f in futs.items()})
-    return {"folder": folder, "runs": runs, "junit_file": junit_file, "cache": cache_dir}
+    return {"folder": folder, "runs": runs, "junit_file": junit_file, "cache": cache_dir,
+            "step_summary": step_summary}
 
 
 def _paths(folder):
@@ -171,6 +175,8 @@ def test_mixed_folder_github_annotations(mixed):
     for a in ann:   # workflow-command syntax: ::level key=value,...::message on one line
         assert re.fullmatch(r"::(error|warning|notice) file=[^,:]+,line=\d+,title=[^:]+::.+", a), a
     assert "5 design file(s): 1 proved, 1 refuted or failing gains, 1 inconclusive, 2 unusable" in r.stdout
+    md = mixed["step_summary"].read_text()          # $GITHUB_STEP_SUMMARY gets a Markdown table
+    assert md.count("\n| `") == 5 and "| `PPPPPPPP` |" in md and "**unusable**" in md
 
 
 def test_mixed_folder_text_summary(mixed):

@@ -4,11 +4,13 @@ from __future__ import annotations
 import argparse
 import importlib
 import json
+import os
 import sys
 
 from . import __version__
 from .batch import Progress, check_files, expand_paths, worst_status
-from .report import render_github, render_json, render_junit, render_summary, render_text
+from .report import (render_github, render_json, render_junit, render_markdown_summary, render_summary,
+                     render_text)
 from .verify import DEFAULT_TIMEOUT
 
 EPILOG = """\
@@ -28,7 +30,8 @@ formats:
   junit   JUnit XML as pytest writes it: a test case per design and property P1-P8,
           proof replay and gain scenario (refuted/unknown are failures)
   github  GitHub Actions annotations (::error at the line defining f for a refuted
-          property, ::warning for an unknown one), then the summary table
+          property, ::warning for an unknown one), then the summary table; also
+          appended as Markdown to $GITHUB_STEP_SUMMARY when that is set
 
 cache:
   Results are cached by the design's canonical expression, parameters, gains,
@@ -125,6 +128,13 @@ def main(argv=None) -> int:
         if annotations:
             print(annotations)
         print(render_summary(results))
+        step_summary = os.environ.get("GITHUB_STEP_SUMMARY")
+        if step_summary:
+            try:
+                with open(step_summary, "a", encoding="utf-8") as fh:
+                    fh.write(render_markdown_summary(results))
+            except OSError:
+                pass    # the job summary is a nicety; the annotations and exit status are what count
     else:
         if good and not (many and args.quiet):
             print("\n\n".join(render_text(d) for d in good))

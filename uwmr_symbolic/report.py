@@ -190,6 +190,21 @@ def render_summary(results: list[dict]) -> str:
     return "\n".join(lines)
 
 
+def render_markdown_summary(results: list[dict]) -> str:
+    """The summary table as Markdown (for $GITHUB_STEP_SUMMARY)."""
+    word = {0: "proved", 1: "**refuted / gains fail**", 2: "**unusable**", 3: "inconclusive"}
+    lines = ["### uwmr-verify", "", "| design | P1..P8 | kf | bound (10) | result |", "|---|---|---|---|---|"]
+    for d in results:
+        if d.get("error") is not None:
+            error = d["error"].replace("|", "\\|")
+            lines.append(f"| `{d['design']}` | | | | {word[2]}: {error} |")
+            continue
+        row = "".join(LETTER[v["verdict"]] for v in d["properties"].values())
+        gains = " ".join(f"{n}:{_gain_word(g)}" for n, g in d["gains"].items()) or "-"
+        lines.append(f"| `{d['design']}` | `{row}` | {_kf_summary(d['kf'])} | {gains} | {word[d['exit_status']]} |")
+    return "\n".join(lines) + "\n"
+
+
 # ---------------------------------------------------------------- JUnit XML
 
 def _classname(path: str) -> str:
