@@ -126,14 +126,16 @@ def gterm_lines(model: LawModel, cfg: CConfig, names) -> list[str]:
                  *_indent(_product(cfg, ["lam", "vr", "sinc", "c", cfg.lit(a)] + ["m"] * j + ["r"] * j, "x"), 4),
                  "}"]
     rest.append("{")
-    far = [f"const {t} im = {cfg.lit(1)} / m;",
-           f"const {t} tt = im * ir;   /* t = 1/s; e2/s = e2 im ir as separate factors */"]
+    far = [f"const {t} im = {cfg.lit(1)} / m;   /* e2/s = e2 im ir, as separate factors */"]
+    if len(model.far) > 1 or any(br.expr.has(T) for br in model.far):
+        far.append(f"const {t} tt = im * ir;   /* t = 1/s */")
 
     def far_body(br):
         lines, d = cse_lines(br.expr, pr, decl)
         comment = f"/* F'(1/t) = t^{br.k} D(t) */" if br.k else "/* F'(1/t) = D(t) */"
         return [comment, *lines, f"const {t} D = {d};",
-                *_product(cfg, ["lam", "vr", "sinc", "e2", "im", "ir", "D"] + ["im", "ir"] * br.k, "x")]
+                *_product(cfg, ["lam", "vr", "sinc", "e2", "im", "ir", "D"]
+                          + (["im", "ir"] * br.k if br.k > 0 else ["m", "r"] * -br.k), "x")]
 
     far += _chain(model.far, "tt", cfg, far_body)
     rest += _indent(far, 4) + ["}"]
@@ -149,7 +151,7 @@ def render(env, model: LawModel, context: dict) -> dict[str, str]:
     for cfg in (DOUBLE, FLOAT):
         variants.append(dict(cfg=cfg, body=gterm_lines(model, cfg, names),
                              tiny=cfg.lit(cfg.tiny), far=cfg.lit(cfg.far), cut=cfg.lit(cfg.sinc_cut),
-                             zero=cfg.lit(0), one=cfg.lit(1), huge="HUGE_VALF" if cfg.precision == "float" else "HUGE_VAL", c6=cfg.lit(sp.Rational(1, 6)),
+                             zero=cfg.lit(0), one=cfg.lit(1), two=cfg.lit(2), half=cfg.lit(sp.Rational(1, 2)), huge="HUGE_VALF" if cfg.precision == "float" else "HUGE_VAL", c6=cfg.lit(sp.Rational(1, 6)),
                              c120=cfg.lit(sp.Rational(1, 120))))
     ctx = dict(context, ident=ident, IDENT=ident.upper(), variants=variants, stem=model.stem)
     return {f"{model.stem}.h": env.get_template("c_header.h.j2").render(ctx),

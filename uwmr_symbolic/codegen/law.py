@@ -13,8 +13,9 @@ overflows nor cancels there:
 * mid    (TINY <= m <= FAR): g = e2 H(rho) with rho = e1**2 + e2**2 and
   H(rho) = F'(s)/s written in rho (no square root of rho for smooth F);
 * far    (m > FAR): t = 1/s = (1/m)/r and g = t**k D(t) (e2/m)/r with
-  D(t) t**k = F'(1/t) (the verifier's `tail_form`), k the order of F' at
-  s = oo, so that t**k, which may underflow, is a separate factor.
+  D(t) t**k = F'(1/t) (the verifier's `tail_form`), k the order of F'(1/t)
+  at t = 0, so that t**k, which may underflow (k > 0) or overflow (k < 0),
+  enters the product as k factors 1/m, 1/r (or -k factors m, r).
 
 m == 0 gives g = 0 (F'(0+) = 0 for a design with P1).  Piecewise profiles keep
 their branch structure in each region (conditions on rho or on t).  The term
@@ -236,7 +237,7 @@ def build_model(design, analysis, report=None) -> LawModel:
         D = tail_form(dF, S)
         k = 0
         lead = _leading(D, T)
-        if lead is not None and lead[1] > 0:
+        if lead is not None and lead[1] != 0:
             cand = sp.cancel(D / T ** lead[1]) if not D.has(sp.Function) else sp.simplify(D / T ** lead[1])
             if not cand.has(sp.zoo, sp.nan) and cand.subs(T, 0).is_finite and cand.subs(T, 0) != 0:
                 D, k = cand, lead[1]

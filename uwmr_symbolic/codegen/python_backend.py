@@ -50,7 +50,7 @@ def render(env, model: LawModel, context: dict, config: PythonConfig = PythonCon
     pr = PyPrinter({RHO: "rho", T: "tt", E1: "e1", E2: "e2"})
     functions = []
     ctx = dict(context, cfg=config, radial=model.radial,
-               tiny=double_literal(config.tiny), far=double_literal(config.far),
+               tiny_lit=double_literal(config.tiny), far_lit=double_literal(config.far),
                tiny2=double_literal(config.tiny ** 2), far2=double_literal(config.far ** 2),
                cut=double_literal(config.sinc_cut))
     if not model.radial:

@@ -13,7 +13,11 @@ The tolerance scale of a component is the largest magnitude among the exact
 value and the terms it is the sum of (v: vr cos e3, k1 tanh e1; w: wr,
 lam vr g sinc e3, k2 tanh e3), floored at the smallest normal number of the
 precision: the relative error that a correct floating-point evaluation of
-the sum can guarantee."""
+the sum can guarantee.  The scale of w also contains lam vr sinc(e3) times
+|e . grad g|, the change of the g term under a relative change of the radius:
+where g itself is ill-conditioned in s (design 4's sin(sqrt(rho+1) - 1) near
+its zero at s = 4.016, which no evaluation of that formula in float can
+resolve) the error is judged as a mixed forward/backward error."""
 from __future__ import annotations
 
 import math
@@ -149,19 +153,38 @@ class Law:
 
     def __post_init__(self):
         self._g = _arb_fn(self.g_expr)
+        # e . grad g: the change of g under a relative change of the radius
+        self._dg = _arb_fn(prepare(E1 * sp.diff(self.g_expr, E1) + E2 * sp.diff(self.g_expr, E2)))
+
+    def radial_sensitivity(self, e1: float, e2: float) -> float:
+        """A lower bound of |e . grad g| (128-bit Arb, no refinement: only a
+        tolerance scale, never inflated by a wide ball)."""
+        old = flint.ctx.prec
+        flint.ctx.prec = 128
+        try:
+            val = abs(self._dg(flint.arb(e1), flint.arb(e2)))
+            lo = val.lower()
+            return 0.0 if not lo.is_finite() or not lo > 0 else _to_float(lo)
+        except (NeedPrecision, ZeroDivisionError, ValueError):
+            return 0.0
+        finally:
+            flint.ctx.prec = old
 
     def g(self, e1: float, e2: float):
         return adaptive(self._g, e1, e2)
 
-    def evaluate(self, x, floor: float, cache=None):
+    def evaluate(self, x, cache=None):
         """Reference for one input row x = (e1, e2, e3, vr, wr, k1, k2, lam) of
-        floats: (v, w, scale_v, scale_w) as arbs at >= 200 bits."""
+        floats: (v, w, scale_v, scale_w) as arbs at 256 bits, the scales being
+        the largest magnitude of the result and its terms."""
         e1, e2, e3, vr, wr, k1, k2, lam = (float(t) for t in x)
         cache = cache if cache is not None else {}
         key = ("g", e1, e2)
         if key not in cache:
             cache[key] = self.g(e1, e2)
         g = cache[key]
+        if ("dg", e1, e2) not in cache:
+            cache[("dg", e1, e2)] = flint.arb(self.radial_sensitivity(e1, e2))
         for name, arg, fn in (("sinc", e3, _sinc), ("cos", e3, lambda a: a.cos()),
                               ("th", e3, lambda a: a.tanh()), ("th", e1, lambda a: a.tanh())):
             if (name, arg) not in cache:
@@ -173,33 +196,82 @@ class Law:
             tv1, tv2 = A(vr) * cache[("cos", e3)], A(k1) * cache[("th", e1)]
             tw1, tw2, tw3 = A(wr), A(lam) * A(vr) * g * cache[("sinc", e3)], A(k2) * cache[("th", e3)]
             v, w = tv1 + tv2, tw1 + tw2 + tw3
-            sv = max(abs(v).mid(), abs(tv1).mid(), abs(tv2).mid(), A(floor).mid())
-            sw = max(abs(w).mid(), abs(tw1).mid(), abs(tw2).mid(), abs(tw3).mid(), A(floor).mid())
+            sv = max(abs(v).mid(), abs(tv1).mid(), abs(tv2).mid())
+            tw4 = A(lam) * A(vr) * cache[("dg", e1, e2)] * cache[("sinc", e3)]
+            sw = max(abs(w).mid(), abs(tw1).mid(), abs(tw2).mid(), abs(tw3).mid(), abs(tw4).mid())
             return v, w, A(sv), A(sw)
         finally:
             flint.ctx.prec = old
 
 
-def relative_errors(law: Law, inputs: np.ndarray, v: np.ndarray, w: np.ndarray, floor: float, limit: float):
-    """For each row: (err_v, err_w, overflow) with err = |computed - exact| /
-    scale (see the module doc); overflow is True where an exact result
-    exceeds `limit` in magnitude (the code must then report a range error)."""
+LIMITS = {"double": (2.2250738585072014e-308, 1.7976931348623157e308),
+          "float": (1.1754943508222875e-38, 3.4028234663852886e38)}
+
+
+def _to_float(x) -> float:
+    """Nearest double of an arb's midpoint (+-inf beyond the double range)."""
+    m = x.mid()
+    if abs(m) > flint.arb(1.7976931348623157e308):
+        return math.inf if m > 0 else -math.inf
+    return float(m)
+
+
+def table(law: Law, inputs: np.ndarray) -> dict:
+    """Reference for rows of 8 inputs: exact v and w as double-double
+    (v_hi + v_lo; v_hi = +-inf beyond the double range) and the magnitudes of
+    the terms (the tolerance scales before the floor, see `errors`)."""
     n = len(inputs)
-    ev, ew = np.zeros(n), np.zeros(n)
-    over = np.zeros(n, dtype=bool)
+    out = {k: np.zeros(n) for k in ("v_hi", "v_lo", "w_hi", "w_lo", "scale_v", "scale_w")}
     cache = {}
     old = flint.ctx.prec
     for i in range(n):
-        V, W, sv, sw = law.evaluate(inputs[i], floor, cache)
+        V, W, sv, sw = law.evaluate(inputs[i], cache)
         flint.ctx.prec = 256
         try:
-            if abs(V) > limit or abs(W) > limit:
-                over[i] = True
-                continue
-            ev[i] = float((abs(flint.arb(float(v[i])) - V) / sv).upper())
-            ew[i] = float((abs(flint.arb(float(w[i])) - W) / sw).upper())
+            for name, val in (("v", V), ("w", W)):
+                hi = _to_float(val)
+                out[f"{name}_hi"][i] = hi
+                out[f"{name}_lo"][i] = float((val - flint.arb(hi)).mid()) if math.isfinite(hi) else 0.0
+            out["scale_v"][i] = _to_float(sv)
+            out["scale_w"][i] = _to_float(sw)
         finally:
             flint.ctx.prec = old
+    return out
+
+
+def _table_job(args):
+    design_path, inputs = args
+    from ..design import load_design
+    return table(Law.of(load_design(design_path)), inputs)
+
+
+def table_parallel(design_path, inputs: np.ndarray, procs: int = 2) -> dict:
+    """`table` computed by `procs` worker processes (chunks of rows)."""
+    import multiprocessing as mp
+    chunks = np.array_split(np.asarray(inputs, dtype=float), max(1, procs))
+    jobs = [(str(design_path), c) for c in chunks if len(c)]
+    if procs <= 1:
+        parts = [_table_job(j) for j in jobs]
+    else:
+        with mp.get_context("fork").Pool(procs) as pool:
+            parts = pool.map(_table_job, jobs)
+    return {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
+
+
+def errors(ref: dict, v, w, precision: str = "double"):
+    """(err_v, err_w, over): relative errors |computed - exact| / scale with
+    the scale floored at the precision's smallest normal number, and `over`
+    where an exact |v| or |w| exceeds its largest finite number (the code must
+    then report a range error; the errors there are set to 0)."""
+    floor, limit = LIMITS[precision]
+    v = np.asarray(v, dtype=float)
+    w = np.asarray(w, dtype=float)
+    over = ~(np.abs(ref["v_hi"]) <= limit) | ~(np.abs(ref["w_hi"]) <= limit)
+    with np.errstate(all="ignore"):
+        ev = np.abs((v - ref["v_hi"]) - ref["v_lo"]) / np.maximum(ref["scale_v"], floor)
+        ew = np.abs((w - ref["w_hi"]) - ref["w_lo"]) / np.maximum(ref["scale_w"], floor)
+    ev[over] = 0.0
+    ew[over] = 0.0
     return ev, ew, over
 
 

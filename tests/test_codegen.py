@@ -1,0 +1,144 @@
+"""Code generation: refusal, NOT VERIFIED banner, determinism, staleness of
+generated/, atomic writes, the Python module's interface, CasADi."""
+from __future__ import annotations
+
+import importlib.util
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from uwmr_symbolic.codegen import CodegenRefused, build, casadi_function, generate
+from uwmr_symbolic.codegen import c_backend
+from uwmr_symbolic.verify import verify_design
+
+ROOT = Path(__file__).resolve().parent.parent
+DESIGNS = sorted((ROOT / "designs").glob("*.py"))
+VERIFIED = {"design1_jiang", "design2_sqrt", "design3_logcosh"}
+
+
+@pytest.fixture(scope="module")
+def reports():
+    return {p.stem: verify_design(p) for p in DESIGNS}
+
+
+def load_module(path: Path):
+    spec = importlib.util.spec_from_file_location(f"gen_{path.stem}", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_verified_set_is_what_the_verifier_says(reports):
+    for stem, rep in reports.items():
+        assert all(v.proved for v in rep.properties.values()) == (stem in VERIFIED), stem
+
+
+@pytest.mark.parametrize("stem", ["design4_cosine", "design5_rational", "unsaturated_baseline"])
+def test_refuses_unverified_and_writes_nothing(stem, reports, tmp_path):
+    out = tmp_path / "out"
+    with pytest.raises(CodegenRefused) as exc:
+        generate(ROOT / "designs" / f"{stem}.py", out, report=reports[stem])
+    assert exc.value.reasons and all(r.startswith("P") for r in exc.value.reasons)
+    assert not out.exists()
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_force_puts_banner_on_top_of_every_file(reports, tmp_path):
+    written = generate(ROOT / "designs" / "unsaturated_baseline.py", tmp_path / "b", force=True,
+                       report=reports["unsaturated_baseline"])
+    assert sorted(p.name for p in written) == ["unsaturated_baseline.c", "unsaturated_baseline.h",
+                                                 "unsaturated_baseline.py"]
+    for p in written:
+        head = "\n".join(p.read_text().splitlines()[:3])
+        assert "NOT VERIFIED: P1 refuted" in head, p
+    mod = load_module(tmp_path / "b" / "unsaturated_baseline.py")
+    assert mod.VERIFIED is False and math.isinf(mod.KF)
+
+
+def test_verified_files_have_no_banner(reports, tmp_path):
+    for p in generate(ROOT / "designs" / "design3_logcosh.py", tmp_path, report=reports["design3_logcosh"]):
+        text = p.read_text()
+        assert "NOT VERIFIED" not in text and "Verified: P1-P8 proved, kf = 2" in text
+
+
+def test_deterministic_and_generated_dir_is_current(reports):
+    """What `make generate` writes is what is committed (the CI staleness
+    check is `git diff --exit-code generated/` after regenerating)."""
+    stems = {p.name for p in (ROOT / "generated").iterdir() if p.is_dir()}
+    assert stems == {p.stem for p in DESIGNS}
+    for design in DESIGNS:
+        _, files = build(design, force=True, report=reports[design.stem])
+        _, again = build(design, force=True, report=reports[design.stem])
+        assert files == again
+        committed = {p.name: p.read_text() for p in (ROOT / "generated" / design.stem).iterdir()}
+        assert committed == files, f"generated/{design.stem} is stale: run `make generate`"
+
+
+def test_failure_while_writing_leaves_old_files(reports, tmp_path, monkeypatch):
+    out = tmp_path / "design1_jiang"
+    generate(ROOT / "designs" / "design1_jiang.py", out, report=reports["design1_jiang"])
+    before = {p.name: p.read_text() for p in out.iterdir()}
+    (out / "design1_jiang.c").write_text("old")
+    before["design1_jiang.c"] = "old"
+
+    def broken(*a, **k):
+        raise RuntimeError("template failure")
+    monkeypatch.setattr(c_backend, "render", broken)
+    with pytest.raises(RuntimeError):
+        generate(ROOT / "designs" / "design1_jiang.py", out, report=reports["design1_jiang"])
+    assert {p.name: p.read_text() for p in out.iterdir()} == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["design1_jiang"]   # no temp dir left
+
+
+def test_python_module_imports_numpy_only():
+    code = ("import sys, importlib.util\n"
+            f"spec = importlib.util.spec_from_file_location('m', {str(ROOT / 'generated/design3_logcosh/design3_logcosh.py')!r})\n"
+            "m = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)\n"
+            "print(m.control(1.0, 2.0, 0.5, 0.5, 1.0, 0.25, 0.7, 0.3))\n"
+            "assert 'sympy' not in sys.modules and 'uwmr_symbolic' not in sys.modules\n")
+    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd="/")
+    assert res.returncode == 0, res.stderr
+
+
+def test_python_constants_scalars_broadcasting_and_safe_stop():
+    mod = load_module(ROOT / "generated/design3_logcosh/design3_logcosh.py")
+    assert mod.KF == 2.0 and mod.PARAMS == {"alpha": 1.0, "beta": 4.0} and mod.VERIFIED is True
+    v, w = mod.control(1.0, 2.0, 0.5, 0.5, 1.0, 0.25, 0.7, 0.3)
+    assert isinstance(v, float) and isinstance(w, float)
+    e1 = np.linspace(-3, 3, 7)
+    e2 = np.linspace(-2, 2, 5)[:, None]
+    V, W = mod.control(e1, e2, 0.1, 0.5, 1.0, 0.25, 0.7, 0.3)
+    assert V.shape == W.shape == (5, 7)
+    assert W[2, 3] == mod.control(0.0, 0.0, 0.1, 0.5, 1.0, 0.25, 0.7, 0.3)[1]
+    # safe stop element by element, status codes as in C
+    bad = np.array([1.0, np.nan, np.inf, -np.inf, 2.0])
+    V, W = mod.control(bad, 1.0, 0.2, 0.5, 1.0, 0.25, 0.7, 0.3)
+    assert np.all(V[1:4] == 0) and np.all(W[1:4] == 0) and np.all(np.isfinite(V)) and V[0] != 0
+    _, _, st = mod.control_status(bad, 1.0, 0.2, 0.5, 1.0, [0.25, 0.25, 0.25, 0.25, -1.0], 0.7, 0.3)
+    assert st.tolist() == [mod.OK, mod.ERR_NONFINITE, mod.ERR_NONFINITE, mod.ERR_NONFINITE, mod.ERR_GAIN]
+    assert mod.control_status(0, 0, 0, 1e300, 0, 0, 0, 1e300)[2] == mod.OK
+    assert mod.control_status(1, 1, 0, 1e300, 0, 0, 0, 1e300)[2] == mod.ERR_RANGE
+    # the issue's example: |e2| = 1e300 gives df/de2 ~ 2, not 0 or NaN
+    _, w = mod.control(0.0, 1e300, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)
+    assert w == pytest.approx(2.0, rel=1e-15)
+
+
+@pytest.mark.parametrize("stem", ["design3_logcosh", "design4_cosine", "design5_rational"])
+def test_casadi_function_matches_python(stem):
+    fn = casadi_function(ROOT / "designs" / f"{stem}.py")
+    assert fn.name_in() == ["e1", "e2", "e3", "vr", "wr", "k1", "k2", "lam"] and fn.name_out() == ["v", "w"]
+    mod = load_module(ROOT / "generated" / stem / f"{stem}.py")
+    rng = np.random.default_rng(5)
+    x = rng.uniform(-6, 6, (300, 8))
+    x[:, 5:] = np.abs(x[:, 5:])
+    x[::10, 2] = 0.0
+    v, w = mod.control(*x.T)
+    out = fn.map(len(x))(*[x[:, i][None, :] for i in range(8)])
+    cv, cw = np.asarray(out[0]).ravel(), np.asarray(out[1]).ravel()
+    scale = np.abs(x[:, 3]) + x[:, 5] + np.abs(x[:, 4]) + x[:, 7] * np.abs(x[:, 3]) * 2 + x[:, 6]
+    assert np.max(np.abs(cv - v) / scale) < 1e-13
+    assert np.max(np.abs(cw - w) / scale) < 1e-13
