@@ -4,7 +4,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test bench clean
+.PHONY: demo test bench clean generate embedded
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -17,10 +17,23 @@ demo: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q
+	$(MAKE) --no-print-directory embedded
+
+# Controllers for every design (unverified ones with the NOT VERIFIED banner);
+# CI: `make generate && git diff --exit-code generated/` fails when stale.
+generate: $(STAMP)
+	$(BIN)/python -m uwmr_symbolic.codegen --force designs/*.py
+
+# Cortex-M4F build of the float variants; installs the toolchain when missing.
+embedded: $(STAMP)
+	@command -v arm-none-eabi-gcc >/dev/null 2>&1 || { apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq gcc-arm-none-eabi libnewlib-arm-none-eabi; }
+	$(BIN)/python -m uwmr_symbolic.codegen.embedded
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_verify.py
 	$(BIN)/python benchmarks/bench_cache.py
+	$(BIN)/python benchmarks/bench_codegen.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info

@@ -49,8 +49,10 @@ extern "C" {
 typedef struct { double k1, k2, lambda; } uwmr_design1_jiang_gains;
 typedef struct { float k1, k2, lambda; } uwmr_design1_jiang_gains_f32;
 
+#ifndef UWMR_NO_DOUBLE   /* define it to build the float variant alone (no double code at all) */
 int uwmr_design1_jiang_control(double e1, double e2, double e3, double vr, double wr,
                                    const uwmr_design1_jiang_gains *gains, double *v, double *w);
+#endif
 
 /* The same law in single precision only (no double arithmetic, no double
  * libm calls): for FPUs without double support such as the Cortex-M4F. */

@@ -11,6 +11,7 @@
 #include <stddef.h>
 
 /* ---- double precision ---------------------------------------------------------- */
+#ifndef UWMR_NO_DOUBLE   /* define it to build the float variant alone */
 
 /* x[0] * ... * x[n-1], rounded as well as the plain product whenever that
  * stays in the normal range; if a partial product leaves it (an overflow, an
@@ -134,6 +135,7 @@ int uwmr_design3_logcosh_control(double e1, double e2, double e3, double vr, dou
     *w = ww;
     return UWMR_OK;
 }
+#endif /* UWMR_NO_DOUBLE */
 
 /* ---- float precision ---------------------------------------------------------- */
 
