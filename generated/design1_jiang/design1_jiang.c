@@ -13,20 +13,13 @@
 /* ---- double precision ---------------------------------------------------------- */
 #ifndef UWMR_NO_DOUBLE   /* define it to build the float variant alone */
 
-/* x[0] * ... * x[n-1], rounded as well as the plain product whenever that
- * stays in the normal range; if a partial product leaves it (an overflow, an
- * underflow, a zero), mantissas and exponents are multiplied separately. */
-static double prod(const double *x, int n)
+/* x[0] * ... * x[n-1] when a plain product of them leaves the normal range
+ * somewhere (an overflow, an underflow, a zero): mantissas and exponents are
+ * multiplied separately, so the result is right whenever it is representable. */
+static double prod_slow(const double *x, int n)
 {
-    double p = x[0], mant = 1.0;
-    int ok = 1, i, ex = 0, e;
-    for (i = 1; i < n; ++i) {
-        p *= x[i];
-        ok &= fabs(p) >= DBL_MIN;
-    }
-    if (ok && fabs(p) <= DBL_MAX) {
-        return p;
-    }
+    double mant = 1.0;
+    int i, ex = 0, e;
     for (i = 0; i < n; ++i) {
         if (x[i] == 0.0) {
             return 0.0;
@@ -54,8 +47,16 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
         const double rho = e1 * e1 + e2 * e2;
         {
             const double H = (1.0/((rho + 1.0)));
-            const double x[5] = {lam, vr, sinc, e2, H};
-            return prod(x, 5);
+            const double p1 = lam * vr;
+            const double p2 = p1 * sinc;
+            const double p3 = p2 * e2;
+            const double p4 = p3 * H;
+            if ((fabs(p1) >= DBL_MIN) & (fabs(p2) >= DBL_MIN) & (fabs(p3) >= DBL_MIN) & (fabs(p4) >= DBL_MIN) & (fabs(p4) <= DBL_MAX)) {
+                return p4;
+            } else {
+                const double x[5] = {lam, vr, sinc, e2, H};
+                return prod_slow(x, 5);
+            }
         }
     }
     if (m == 0.0) {
@@ -68,8 +69,18 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
         if (m < 1e-100) {
             /* F'(s) = 1 s^1 (1 + O(s^2)) with s^1 = m^1 r^1 */
             const double c = (e2 / m) * ir;   /* e2 / s: no underflow while m < TINY */
-            const double x[7] = {lam, vr, sinc, c, 1.0, m, r};
-            return prod(x, 7);
+            const double p1 = lam * vr;
+            const double p2 = p1 * sinc;
+            const double p3 = p2 * c;
+            const double p4 = p3 * 1.0;
+            const double p5 = p4 * m;
+            const double p6 = p5 * r;
+            if ((fabs(p1) >= DBL_MIN) & (fabs(p2) >= DBL_MIN) & (fabs(p3) >= DBL_MIN) & (fabs(p4) >= DBL_MIN) & (fabs(p5) >= DBL_MIN) & (fabs(p6) >= DBL_MIN) & (fabs(p6) <= DBL_MAX)) {
+                return p6;
+            } else {
+                const double x[7] = {lam, vr, sinc, c, 1.0, m, r};
+                return prod_slow(x, 7);
+            }
         }
         {
             const double im = 1.0 / m;   /* e2/s = e2 im ir, as separate factors */
@@ -77,8 +88,20 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
             {
                 /* F'(1/t) = t^1 D(t) */
                 const double D = (1.0/((((tt)*(tt)) + 1.0)));
-                const double x[9] = {lam, vr, sinc, e2, im, ir, D, im, ir};
-                return prod(x, 9);
+                const double p1 = lam * vr;
+                const double p2 = p1 * sinc;
+                const double p3 = p2 * e2;
+                const double p4 = p3 * im;
+                const double p5 = p4 * ir;
+                const double p6 = p5 * D;
+                const double p7 = p6 * im;
+                const double p8 = p7 * ir;
+                if ((fabs(p1) >= DBL_MIN) & (fabs(p2) >= DBL_MIN) & (fabs(p3) >= DBL_MIN) & (fabs(p4) >= DBL_MIN) & (fabs(p5) >= DBL_MIN) & (fabs(p6) >= DBL_MIN) & (fabs(p7) >= DBL_MIN) & (fabs(p8) >= DBL_MIN) & (fabs(p8) <= DBL_MAX)) {
+                    return p8;
+                } else {
+                    const double x[9] = {lam, vr, sinc, e2, im, ir, D, im, ir};
+                    return prod_slow(x, 9);
+                }
             }
         }
     }
@@ -111,7 +134,7 @@ int uwmr_design1_jiang_control(double e1, double e2, double e3, double vr, doubl
         const double z = e3 * e3;
         sinc = 1.0 - z * (0.16666666666666666 - z * 0.008333333333333333);
     } else {
-        sinc = sin(e3) / e3;
+        sinc = sin(e3) / e3;   /* (kept apart from cos: glibc's sincos is slower) */
     }
     c3 = cos(e3);
     t1 = tanh(e1);
@@ -136,20 +159,13 @@ int uwmr_design1_jiang_control(double e1, double e2, double e3, double vr, doubl
 
 /* ---- float precision ---------------------------------------------------------- */
 
-/* x[0] * ... * x[n-1], rounded as well as the plain product whenever that
- * stays in the normal range; if a partial product leaves it (an overflow, an
- * underflow, a zero), mantissas and exponents are multiplied separately. */
-static float prod_f32(const float *x, int n)
+/* x[0] * ... * x[n-1] when a plain product of them leaves the normal range
+ * somewhere (an overflow, an underflow, a zero): mantissas and exponents are
+ * multiplied separately, so the result is right whenever it is representable. */
+static float prod_slow_f32(const float *x, int n)
 {
-    float p = x[0], mant = 1.0F;
-    int ok = 1, i, ex = 0, e;
-    for (i = 1; i < n; ++i) {
-        p *= x[i];
-        ok &= fabsf(p) >= FLT_MIN;
-    }
-    if (ok && fabsf(p) <= FLT_MAX) {
-        return p;
-    }
+    float mant = 1.0F;
+    int i, ex = 0, e;
     for (i = 0; i < n; ++i) {
         if (x[i] == 0.0F) {
             return 0.0F;
@@ -177,8 +193,16 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
         const float rho = e1 * e1 + e2 * e2;
         {
             const float H = (1.0F/((rho + 1.0F)));
-            const float x[5] = {lam, vr, sinc, e2, H};
-            return prod_f32(x, 5);
+            const float p1 = lam * vr;
+            const float p2 = p1 * sinc;
+            const float p3 = p2 * e2;
+            const float p4 = p3 * H;
+            if ((fabsf(p1) >= FLT_MIN) & (fabsf(p2) >= FLT_MIN) & (fabsf(p3) >= FLT_MIN) & (fabsf(p4) >= FLT_MIN) & (fabsf(p4) <= FLT_MAX)) {
+                return p4;
+            } else {
+                const float x[5] = {lam, vr, sinc, e2, H};
+                return prod_slow_f32(x, 5);
+            }
         }
     }
     if (m == 0.0F) {
@@ -191,8 +215,18 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
         if (m < 1e-12F) {
             /* F'(s) = 1 s^1 (1 + O(s^2)) with s^1 = m^1 r^1 */
             const float c = (e2 / m) * ir;   /* e2 / s: no underflow while m < TINY */
-            const float x[7] = {lam, vr, sinc, c, 1.0F, m, r};
-            return prod_f32(x, 7);
+            const float p1 = lam * vr;
+            const float p2 = p1 * sinc;
+            const float p3 = p2 * c;
+            const float p4 = p3 * 1.0F;
+            const float p5 = p4 * m;
+            const float p6 = p5 * r;
+            if ((fabsf(p1) >= FLT_MIN) & (fabsf(p2) >= FLT_MIN) & (fabsf(p3) >= FLT_MIN) & (fabsf(p4) >= FLT_MIN) & (fabsf(p5) >= FLT_MIN) & (fabsf(p6) >= FLT_MIN) & (fabsf(p6) <= FLT_MAX)) {
+                return p6;
+            } else {
+                const float x[7] = {lam, vr, sinc, c, 1.0F, m, r};
+                return prod_slow_f32(x, 7);
+            }
         }
         {
             const float im = 1.0F / m;   /* e2/s = e2 im ir, as separate factors */
@@ -200,8 +234,20 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
             {
                 /* F'(1/t) = t^1 D(t) */
                 const float D = (1.0F/((((tt)*(tt)) + 1.0F)));
-                const float x[9] = {lam, vr, sinc, e2, im, ir, D, im, ir};
-                return prod_f32(x, 9);
+                const float p1 = lam * vr;
+                const float p2 = p1 * sinc;
+                const float p3 = p2 * e2;
+                const float p4 = p3 * im;
+                const float p5 = p4 * ir;
+                const float p6 = p5 * D;
+                const float p7 = p6 * im;
+                const float p8 = p7 * ir;
+                if ((fabsf(p1) >= FLT_MIN) & (fabsf(p2) >= FLT_MIN) & (fabsf(p3) >= FLT_MIN) & (fabsf(p4) >= FLT_MIN) & (fabsf(p5) >= FLT_MIN) & (fabsf(p6) >= FLT_MIN) & (fabsf(p7) >= FLT_MIN) & (fabsf(p8) >= FLT_MIN) & (fabsf(p8) <= FLT_MAX)) {
+                    return p8;
+                } else {
+                    const float x[9] = {lam, vr, sinc, e2, im, ir, D, im, ir};
+                    return prod_slow_f32(x, 9);
+                }
             }
         }
     }
@@ -234,7 +280,7 @@ int uwmr_design1_jiang_control_f32(float e1, float e2, float e3, float vr, float
         const float z = e3 * e3;
         sinc = 1.0F - z * (0.16666667F - z * 0.008333334F);
     } else {
-        sinc = sinf(e3) / e3;
+        sinc = sinf(e3) / e3;   /* (kept apart from cos: glibc's sincos is slower) */
     }
     c3 = cosf(e3);
     t1 = tanhf(e1);

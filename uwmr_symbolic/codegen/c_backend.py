@@ -84,9 +84,21 @@ def _chain(branches, var, cfg, body):
 
 
 def _product(cfg, factors, name):
+    """Multiply the factors in order; if a partial product leaves the normal
+    range (or a factor is 0) call the exponent-splitting `prod_slow`."""
     n = len(factors)
-    return [f"const {cfg.ctype} {name}[{n}] = {{{', '.join(factors)}}};",
-            f"return prod{cfg.suffix}({name}, {n});"]
+    t = cfg.ctype
+    lines = [f"const {t} p1 = {factors[0]} * {factors[1]};"]
+    for i in range(2, n):
+        lines.append(f"const {t} p{i} = p{i - 1} * {factors[i]};")
+    checks = " & ".join(f"(fabs{cfg.fn}(p{i}) >= {cfg.limit}_MIN)" for i in range(1, n))
+    lines += [f"if ({checks} & (fabs{cfg.fn}(p{n - 1}) <= {cfg.limit}_MAX)) {{",
+              f"    return p{n - 1};",
+              "} else {",
+              f"    const {t} {name}[{n}] = {{{', '.join(factors)}}};",
+              f"    return prod_slow{cfg.suffix}({name}, {n});",
+              "}"]
+    return lines
 
 
 def gterm_lines(model: LawModel, cfg: CConfig, names) -> list[str]:
