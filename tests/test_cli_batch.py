@@ -381,3 +381,12 @@ def test_check_generated_hook(tmp_path):
         pytest.skip("code generation has landed: --check-generated is tested with it")
     r = run(["--check-generated"], tmp_path / "cache")
     assert r.returncode == 2 and "--check-generated" in r.stderr and len(r.stderr.strip().splitlines()) == 1
+
+
+def test_cache_key_is_the_same_in_every_process():
+    """The key must not depend on Python's hash seed (set iteration, dict order)."""
+    code = ("import glob; from uwmr_symbolic.design import load_design; from uwmr_symbolic import cache; "
+            "print(' '.join(cache.digest(cache.design_key(load_design(p))) for p in sorted(glob.glob('designs/*.py'))))")
+    outs = {subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, check=True,
+                           env={**os.environ, "PYTHONHASHSEED": seed}).stdout for seed in ("1", "2")}
+    assert len(outs) == 1 and len(outs.pop().split()) == len(list((ROOT / "designs").glob("*.py")))

@@ -4,7 +4,7 @@ stored as JSON and found again by what the result depends on.
 The key holds the canonical form of what is verified — ``sympy.srepr`` of f
 with the parameters substituted, the parameter values and the gain scenarios
 (exact SymPy numbers, also as ``srepr``) — together with the tool's version, a
-hash of the verifier's own source files and the versions of SymPy,
+hash of the verifier's own source files (see `source_hash`) and the versions of SymPy,
 python-flint, mpmath and Python.  Editing the verifier, upgrading a
 dependency or changing f, a parameter or a gain therefore never reuses an old
 result.  The file name, the design's ``name`` and the line numbers are not
@@ -45,13 +45,22 @@ def default_dir() -> Path:
 
 @lru_cache(maxsize=1)
 def source_hash() -> str:
-    """sha256 over the verifier's Python sources (every module of the package
-    except the code generator, which does not affect a verdict)."""
+    """sha256 over the verifier's Python sources: every top-level module of
+    the package, and every module of a subpackage that has been imported by
+    now (the verifier is imported before the first key is made).  Subpackages
+    the verifier does not use, such as the code generator, are left out, so
+    editing them keeps the cache."""
+    from . import verify  # noqa: F401  (make sure the verifier's modules are loaded)
+    files = set(PACKAGE_DIR.glob("*.py"))
+    for name, module in list(sys.modules.items()):
+        file = getattr(module, "__file__", None)
+        if (name == "uwmr_symbolic" or name.startswith("uwmr_symbolic.")) and file and file.endswith(".py"):
+            path = Path(file).resolve()
+            if PACKAGE_DIR in path.parents:
+                files.add(path)
     h = hashlib.sha256()
-    for path in sorted(PACKAGE_DIR.rglob("*.py")):
+    for path in sorted(files):
         rel = path.relative_to(PACKAGE_DIR).as_posix()
-        if rel.startswith("codegen/"):
-            continue
         h.update(rel.encode() + b"\0")
         h.update(path.read_bytes())
         h.update(b"\0")
