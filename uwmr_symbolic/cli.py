@@ -2,10 +2,10 @@
 from __future__ import annotations
 
 import argparse
-import importlib
 import json
 import os
 import sys
+from pathlib import Path
 
 from . import __version__
 from .batch import Progress, check_files, expand_paths, worst_status
@@ -63,28 +63,55 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--no-cache", action="store_true", help="neither read nor write the result cache")
     p.add_argument("-q", "--quiet", action="store_true",
                    help="text format: with several files print only the summary table")
+    p.add_argument("--codegen", nargs="?", const="", metavar="DIR",
+                   help="after verifying, write the controller (Python, C99 double and float) into DIR "
+                        "(default generated/<stem>/; with several files DIR/<stem>/); only for designs "
+                        "whose P1-P8 are all proved")
+    p.add_argument("--force", action="store_true",
+                   help="with --codegen: generate unverified designs too, every file headed by a "
+                        "NOT VERIFIED banner with the reasons")
     p.add_argument("--check-generated", action="store_true",
-                   help="check that generated/ matches what the current designs and tool generate")
+                   help="check that generated/ matches what the design files (default designs/*.py) "
+                        "and this tool generate; exit 1 when stale")
     p.add_argument("--version", action="version", version=f"uwmr-verify {__version__}")
     return p
 
 
 def check_generated(args) -> int:
-    """Hook for `--check-generated`: delegates to
-    `uwmr_symbolic.codegen.check_generated()` once code generation exists."""
-    try:
-        codegen = importlib.import_module("uwmr_symbolic.codegen")
-    except ModuleNotFoundError as exc:
-        if exc.name not in ("uwmr_symbolic.codegen",):
-            raise
-        codegen = None
-    fn = getattr(codegen, "check_generated", None)
-    if fn is None:
-        print("uwmr-verify: --check-generated is not available yet: this installation has no "
-              "code generator (uwmr_symbolic.codegen.check_generated)", file=sys.stderr)
+    """`--check-generated`: 0 when generated/ is up to date, 1 when stale."""
+    from .codegen.staleness import stale_files
+    designs = [Path(p) for p in expand_paths(args.files)] if args.files else sorted(Path("designs").glob("*.py"))
+    if not designs:
+        print("uwmr-verify: --check-generated found no design files (run it from the "
+              "repository root or name them)", file=sys.stderr)
         return 2
-    status = fn()
-    return status if isinstance(status, int) else 0
+    problems = stale_files(designs, Path("generated"))
+    for line in problems:
+        print(line)
+    if not problems:
+        print(f"generated/ is up to date for {len(designs)} design(s)")
+    return 1 if problems else 0
+
+
+def write_code(paths, results, out, force) -> int:
+    """`--codegen`: generate each usable design; 1 if one was refused."""
+    from .codegen import CodegenRefused, generate
+    status = 0
+    usable = {d["design"] for d in results if d.get("error") is None}
+    for path in map(Path, paths):
+        if str(path) not in usable:
+            continue
+        target = None if out == "" else (Path(out) / path.stem if len(paths) > 1 else Path(out))
+        try:
+            written = generate(path, target, force=force)
+        except CodegenRefused as exc:
+            print(f"{path}: no code generated, the design is not verified ({len(exc.reasons)} "
+                  f"reason(s): {exc.reasons[0]} ...); use --force for a NOT VERIFIED build",
+                  file=sys.stderr)
+            status = 1
+            continue
+        print(f"{path}: wrote " + ", ".join(str(p) for p in written), file=sys.stderr)
+    return status
 
 
 def main(argv=None) -> int:
@@ -96,10 +123,10 @@ def main(argv=None) -> int:
         print("uwmr-verify: --jobs must be at least 1", file=sys.stderr)
         return 2
     if args.check_generated:
-        if args.files:
-            print("uwmr-verify: --check-generated takes no design files", file=sys.stderr)
-            return 2
         return check_generated(args)
+    if args.force and args.codegen is None:
+        print("uwmr-verify: --force only makes sense with --codegen", file=sys.stderr)
+        return 2
     if not args.files:
         print("uwmr-verify: no design file given (try: uwmr-verify designs/*.py)", file=sys.stderr)
         return 2
@@ -149,7 +176,10 @@ def main(argv=None) -> int:
         except OSError as exc:
             print(f"uwmr-verify: cannot write {args.junit_xml}: {exc}", file=sys.stderr)
             return 2
-    return worst_status(d["exit_status"] for d in results)
+    status = worst_status(d["exit_status"] for d in results)
+    if args.codegen is not None:
+        status = worst_status([status, write_code(paths, results, args.codegen, args.force)])
+    return status
 
 
 if __name__ == "__main__":

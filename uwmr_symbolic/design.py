@@ -7,9 +7,11 @@ says what is wrong and how to fix it; the CLI turns it into exit status 2."""
 from __future__ import annotations
 
 import ast
+import contextlib
 import fractions
 import numbers
 import runpy
+import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -96,7 +98,9 @@ def _run_file(path: Path) -> tuple[dict, str]:
     except SyntaxError as exc:
         raise DesignError(f"syntax error at line {exc.lineno}: {exc.msg}") from None
     try:
-        namespace = runpy.run_path(str(path), run_name="__uwmr_design__")
+        # a print() in a design file must not corrupt JSON on stdout
+        with contextlib.redirect_stdout(sys.stderr):
+            namespace = runpy.run_path(str(path), run_name="__uwmr_design__")
     except SystemExit as exc:
         raise DesignError(f"the file called exit({exc.code}) while loading") from None
     except Exception as exc:  # any failure of the user's code is unusable input

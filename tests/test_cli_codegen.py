@@ -1,0 +1,65 @@
+"""`uwmr-verify --codegen [DIR] [--force]` and `--check-generated`."""
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def cli(*args, cwd=ROOT):
+    return subprocess.run([sys.executable, "-m", "uwmr_symbolic.cli", *map(str, args)], cwd=cwd,
+                          capture_output=True, text=True, timeout=600)
+
+
+def test_verified_design_is_generated_as_committed(tmp_path):
+    out = tmp_path / "d1"
+    run = cli(ROOT / "designs/design1_jiang.py", "--codegen", out, "--no-cache")
+    assert run.returncode == 0, run.stderr
+    names = sorted(p.name for p in out.iterdir())
+    assert names == ["design1_jiang.c", "design1_jiang.h", "design1_jiang.py"]
+    for name in names:
+        assert (out / name).read_text() == (ROOT / "generated/design1_jiang" / name).read_text()
+
+
+def test_refuted_design_needs_force_and_then_carries_the_banner(tmp_path):
+    out = tmp_path / "d5"
+    run = cli(ROOT / "designs/design5_rational.py", "--codegen", out)
+    assert run.returncode == 1
+    assert "not verified" in run.stderr and "P3 refuted" in run.stderr
+    assert not out.exists()
+    run = cli(ROOT / "designs/design5_rational.py", "--codegen", out, "--force")
+    assert run.returncode == 1                      # the verdict is still a refutation
+    for name in ("design5_rational.c", "design5_rational.h", "design5_rational.py"):
+        head = (out / name).read_text()[:400]
+        assert "NOT VERIFIED: P3 refuted" in head, name
+
+
+def test_force_without_codegen_is_a_usage_error():
+    run = cli(ROOT / "designs/design1_jiang.py", "--force")
+    assert run.returncode == 2 and "--codegen" in run.stderr
+
+
+def test_check_generated_detects_a_stale_file(tmp_path):
+    shutil.copy(ROOT / "designs/design1_jiang.py", tmp_path / "design1_jiang.py")
+    shutil.copytree(ROOT / "generated/design1_jiang", tmp_path / "generated/design1_jiang")
+    run = cli("--check-generated", "design1_jiang.py", cwd=tmp_path)
+    assert run.returncode == 0, run.stdout + run.stderr
+    c_file = tmp_path / "generated/design1_jiang/design1_jiang.c"
+    c_file.write_text(c_file.read_text().replace("0.5", "0.25", 1))
+    run = cli("--check-generated", "design1_jiang.py", cwd=tmp_path)
+    assert run.returncode == 1
+    assert "design1_jiang.c: stale" in run.stdout
+    (tmp_path / "generated/design1_jiang/extra.txt").write_text("x")
+    c_file.unlink()
+    run = cli("--check-generated", "design1_jiang.py", cwd=tmp_path)
+    assert "design1_jiang.c: missing" in run.stdout and "extra.txt: not produced" in run.stdout
+
+
+def test_design_that_prints_keeps_json_clean(tmp_path):
+    src = (ROOT / "designs/design1_jiang.py").read_text() + "\nprint('hello from the design')\n"
+    (tmp_path / "chatty.py").write_text(src)
+    run = cli(tmp_path / "chatty.py", "--format", "json", "--no-cache")
+    import json
+    assert json.loads(run.stdout)["properties"]["P1"]["verdict"] == "proved"
+    assert "hello from the design" in run.stderr

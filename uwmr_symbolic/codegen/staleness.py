@@ -1,0 +1,32 @@
+"""`uwmr-verify --check-generated`: does generated/ hold exactly what the
+current designs and the current tool generate?  Used by CI of repositories
+that commit generated code (this one included)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from . import build
+
+
+def stale_files(designs, generated_root) -> list[str]:
+    """One line per problem: a missing, differing or unexpected file."""
+    problems = []
+    root = Path(generated_root)
+    for path in sorted(Path(p) for p in designs):
+        _, files = build(path, force=True)
+        folder = root / path.stem
+        for name, text in sorted(files.items()):
+            target = folder / name
+            if not target.exists():
+                problems.append(f"{target}: missing (generate it with `make generate`)")
+            elif target.read_text(encoding="utf-8") != text:
+                problems.append(f"{target}: stale, differs from what {path} generates now")
+        if folder.is_dir():
+            for extra in sorted(set(p.name for p in folder.iterdir() if p.is_file()) - set(files)):
+                problems.append(f"{folder / extra}: not produced by the generator")
+    known = {Path(p).stem for p in designs}
+    if root.is_dir():
+        for folder in sorted(p for p in root.iterdir() if p.is_dir() and p.name not in known
+                             and not p.name.startswith(".")):
+            problems.append(f"{folder}: no design file {folder.name}.py")
+    return problems
