@@ -4,7 +4,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test bench clean generate embedded
+.PHONY: demo test bench clean generate embedded paper figures
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -34,6 +34,15 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_verify.py
 	$(BIN)/python benchmarks/bench_cache.py
 	$(BIN)/python benchmarks/bench_codegen.py
+	$(BIN)/python benchmarks/bench_sim.py
+
+# Section 5 of the paper in simulation: Table 1 in exact arithmetic, Tables 2-3 simulated.
+paper: $(STAMP)
+	$(BIN)/python -m uwmr_symbolic.simulation.paper
+
+# PNGs in the style of Figures 4-9 into figures/.
+figures: $(STAMP)
+	$(BIN)/python -m uwmr_symbolic.simulation.figures --out figures
 
 clean:
 	rm -rf $(VENV) build *.egg-info
