@@ -371,18 +371,6 @@ def test_progress_only_on_a_terminal():
     assert single.text == ""
 
 
-def test_check_generated_hook(tmp_path):
-    try:
-        from uwmr_symbolic import codegen
-        available = hasattr(codegen, "check_generated")
-    except ImportError:
-        available = False
-    if available:
-        pytest.skip("code generation has landed: --check-generated is tested with it")
-    r = run(["--check-generated"], tmp_path / "cache")
-    assert r.returncode == 2 and "--check-generated" in r.stderr and len(r.stderr.strip().splitlines()) == 1
-
-
 def test_cache_key_is_the_same_in_every_process():
     """The key must not depend on Python's hash seed (set iteration, dict order)."""
     code = ("import glob; from uwmr_symbolic.design import load_design; from uwmr_symbolic import cache; "

@@ -63,3 +63,32 @@ def test_design_that_prints_keeps_json_clean(tmp_path):
     import json
     assert json.loads(run.stdout)["properties"]["P1"]["verdict"] == "proved"
     assert "hello from the design" in run.stderr
+
+
+def test_simulate_json_has_the_checks_and_a_custom_reference(tmp_path):
+    import json
+    import numpy as np
+    src = (ROOT / "designs/design1_jiang.py").read_text()
+    src = src[:src.index("gains = {")] + (
+        "gains = {'custom': dict(k1=0.25, k2=0.7, lam=1.2, Vmax=0.75, Wmax=2.0, Vr_max=0.5, Wr_max=1.0)}\n")
+    (tmp_path / "d.py").write_text(src)
+    t = np.linspace(0, 30, 301)
+    np.savetxt(tmp_path / "ref.csv", np.c_[t, 0.5 * np.sin(t / 2), 0.5 - 0.5 * np.cos(t / 2)], delimiter=",")
+    run = cli(tmp_path / "d.py", "--simulate", "--reference", f"custom={tmp_path / 'ref.csv'}",
+              "--format", "json", "--no-cache")
+    assert run.returncode == 0, run.stderr[-2000:]
+    sim = json.loads(run.stdout)["simulation"]["custom"]
+    for kind in ("continuous", "digital"):
+        m = sim[kind]
+        for key in ("max_abs_v", "max_abs_w", "rms", "final_errors", "converged",
+                    "max_lyapunov_increase", "c_python_max_diff"):
+            assert key in m, (kind, key)
+    assert sim["continuous"]["max_abs_v"] <= 0.75 and sim["continuous"]["max_abs_w"] <= 2.0
+    assert sim["continuous"]["c_python_max_diff"] < 1e-9
+
+
+def test_bad_reference_is_a_one_line_usage_error(tmp_path):
+    (tmp_path / "ref.csv").write_text("0,1\n1,2\n")
+    run = cli(ROOT / "designs/design1_jiang.py", "--simulate", "--reference", f"circle={tmp_path / 'ref.csv'}")
+    assert run.returncode == 2
+    assert len(run.stderr.strip().splitlines()) == 1 and "ref.csv" in run.stderr

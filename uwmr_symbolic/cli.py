@@ -13,6 +13,11 @@ from .report import (render_github, render_json, render_junit, render_markdown_s
                      render_text)
 from .verify import DEFAULT_TIMEOUT
 
+
+def render_simulation_text(sim) -> str:
+    from .simulation import render_simulation_text as render
+    return render(sim)
+
 EPILOG = """\
 exit status:
   0  every property P1-P8 proved, proof replay ok, every gain scenario within bound (10)
@@ -70,6 +75,19 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--force", action="store_true",
                    help="with --codegen: generate unverified designs too, every file headed by a "
                         "NOT VERIFIED banner with the reasons")
+    p.add_argument("--simulate", action="store_true",
+                   help="after verifying, run the generated C and Python controllers in closed loop on "
+                        "each gain scenario (circle, lemniscate or --reference), continuous time and "
+                        "100 Hz, beside the unsaturated baseline (38); exit 1 if a check fails")
+    p.add_argument("--monte-carlo", type=int, default=0, metavar="N",
+                   help="with --simulate: also N random initial poses per scenario (100 Hz, vectorised)")
+    p.add_argument("--seed", type=int, default=0, help="seed for --monte-carlo and pose noise (default 0)")
+    p.add_argument("--delay", type=int, default=0, metavar="SAMPLES",
+                   help="with --simulate: command delay of the 100 Hz loop in samples (default 0)")
+    p.add_argument("--reference", action="append", default=[], metavar="SCENARIO=FILE",
+                   help="with --simulate: the reference for a gain scenario, from a CSV of waypoints "
+                        "(columns t,x,y) or a Python file defining pose(t) -> (xr, yr, thr, vr, wr) "
+                        "(numpy arrays, continuous heading) and duration")
     p.add_argument("--check-generated", action="store_true",
                    help="check that generated/ matches what the design files (default designs/*.py) "
                         "and this tool generate; exit 1 when stale")
@@ -91,6 +109,57 @@ def check_generated(args) -> int:
     if not problems:
         print(f"generated/ is up to date for {len(designs)} design(s)")
     return 1 if problems else 0
+
+
+class UsageError(Exception):
+    """A command-line argument cannot be used (exit 2, one line)."""
+
+
+def load_references(specs) -> dict:
+    """--reference SCENARIO=FILE: waypoints (CSV t,x,y) or pose(t) from a Python file."""
+    import numpy as np
+    import runpy
+    from .simulation import ReferenceError, from_function, from_waypoints
+    refs = {}
+    for spec in specs:
+        name, sep, file = spec.partition("=")
+        if not sep or not name or not file:
+            raise UsageError(f"--reference {spec!r}: expected SCENARIO=FILE")
+        path = Path(file)
+        try:
+            if path.suffix == ".csv":
+                data = np.loadtxt(path, delimiter=",", ndmin=2, comments="#")
+                if data.shape[1] != 3:
+                    raise UsageError(f"{path}: expected three columns t,x,y, found {data.shape[1]}")
+                refs[name] = from_waypoints(data[:, 0], data[:, 1], data[:, 2], name=name)
+            else:
+                ns = runpy.run_path(str(path))
+                if not callable(ns.get("pose")) or "duration" not in ns:
+                    raise UsageError(f"{path}: define pose(t) -> (xr, yr, thr, vr, wr) and duration")
+                refs[name] = from_function(ns["pose"], 0.0, float(ns["duration"]), name=name)
+        except UsageError:
+            raise
+        except (OSError, ValueError, ReferenceError) as exc:
+            raise UsageError(f"{path}: {exc}") from None
+        except Exception as exc:  # the user's file raised
+            raise UsageError(f"{path}: raised {exc.__class__.__name__}: {exc}") from None
+    return refs
+
+
+def run_simulations(results, args) -> int:
+    """--simulate: attach result["simulation"]; 1 if a check failed."""
+    from .simulation import simulate_design
+    refs = load_references(args.reference)
+    status = 0
+    for d in results:
+        if d.get("error") is not None:
+            continue
+        sim = simulate_design(d["design"], monte_carlo=args.monte_carlo, seed=args.seed,
+                              references=refs or None, delay=args.delay)
+        d["simulation"] = sim
+        if not all(entry.get("ok", True) for entry in sim.values()):
+            status = 1
+    return status
 
 
 def write_code(paths, results, out, force) -> int:
@@ -130,6 +199,10 @@ def main(argv=None) -> int:
     if not args.files:
         print("uwmr-verify: no design file given (try: uwmr-verify designs/*.py)", file=sys.stderr)
         return 2
+    if args.monte_carlo < 0 or args.delay < 0:
+        print("uwmr-verify: --monte-carlo and --delay must not be negative", file=sys.stderr)
+        return 2
+    simulate = args.simulate or args.monte_carlo > 0
     paths = expand_paths(args.files)
     progress = Progress(len(paths))
     try:
@@ -140,6 +213,13 @@ def main(argv=None) -> int:
     for d in results:
         if d.get("error") is not None:
             print(f"{d['design']}: {d['error']}", file=sys.stderr)
+    sim_status = 0
+    if simulate:
+        try:
+            sim_status = run_simulations(results, args)
+        except UsageError as exc:
+            print(f"uwmr-verify: {exc}", file=sys.stderr)
+            return 2
     good = [d for d in results if d.get("error") is None]
     many = len(paths) > 1
     if args.format == "json":
@@ -164,7 +244,8 @@ def main(argv=None) -> int:
                 pass    # the job summary is a nicety; the annotations and exit status are what count
     else:
         if good and not (many and args.quiet):
-            print("\n\n".join(render_text(d) for d in good))
+            print("\n\n".join(render_text(d) + (("\n\n" + render_simulation_text(d["simulation"]))
+                                                 if "simulation" in d else "") for d in good))
         if many:
             if good and not args.quiet:
                 print()
@@ -176,7 +257,7 @@ def main(argv=None) -> int:
         except OSError as exc:
             print(f"uwmr-verify: cannot write {args.junit_xml}: {exc}", file=sys.stderr)
             return 2
-    status = worst_status(d["exit_status"] for d in results)
+    status = worst_status([*(d["exit_status"] for d in results), sim_status])
     if args.codegen is not None:
         status = worst_status([status, write_code(paths, results, args.codegen, args.force)])
     return status
