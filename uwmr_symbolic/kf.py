@@ -88,6 +88,17 @@ def _prove_bound(c, exprs, pieces, zeros_of) -> tuple[bool, bool | None]:
 NEAR_ZERO = Fraction(1, 8)
 
 
+def _continued_at(exprs, pieces, point, value) -> bool:
+    """Both one-sided limits at a boundary equal value."""
+    for E, piece in zip(exprs, pieces):
+        for end, side in ((piece.lo, +1), (piece.hi, -1)):
+            if end == point:
+                v = one_sided_value(E, point, side)
+                if v is None or v in (sp.oo, -sp.oo) or exact_sign(v - value) != 0:
+                    return False
+    return True
+
+
 def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
     """Certify sup over s > 0 of a function given piecewise by ``exprs``
     (one expression per piece of the profile).
@@ -146,7 +157,10 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
         if not ok:
             continue
         if point is not None and point != sp.oo:
-            attained = True
+            # a one-sided limit at a piece end is a value only where the
+            # neighbouring piece (or the origin) continues it
+            attained = True if (piece.lo < point < piece.hi or point == 0 or
+                                _continued_at(exprs, pieces, point, value)) else None
         else:
             attained = False if strict else None
         where = f"at s = {point}" if point is not None else "approached as s -> oo"
