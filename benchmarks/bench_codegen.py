@@ -1,11 +1,14 @@
 """Speed of the generated controllers (part of `make bench`; not a test).
 
 C: ns per evaluation of the generated double variant, of a hand-written C
-version of the same law (the obvious formulas, no guards) and of CasADi's
-generated C (`casadi.Function.generate` of `uwmr_symbolic.codegen.casadi_function`),
-all compiled with the same `gcc -O2 -std=c99`, called on the same 1e5
-inputs, median of 21 passes.  Python: generated module vs `sympy.lambdify`
-of the law vs plain numpy, 1e6 inputs, median of 7.
+version of the same law (the obvious formulas, no guards, no input checks)
+and of CasADi's generated C (`casadi.Function.generate` of
+`uwmr_symbolic.codegen.casadi_function`), each in its own translation unit,
+all compiled with the same `gcc -O2 -std=c99`, called on the same 2e4
+inputs (moderate errors and references, as on a robot: the fast path), median
+of 101 passes, the three interleaved in every pass so that a load on the
+machine hits them alike.  Python: generated module vs `sympy.lambdify` of the
+law vs plain numpy, 1e6 inputs, median of 9 interleaved rounds.
 
     python benchmarks/bench_codegen.py [--quick]
 """
@@ -85,7 +88,7 @@ int main(int argc, char **argv)
 {{
     long n = atol(argv[1]), i;
     int reps = atoi(argv[2]), r, k;
-    double *x = malloc(sizeof(double) * 8 * n), t[3][64], sink = 0.0;
+    double *x = malloc(sizeof(double) * 8 * n), t[3][256], sink = 0.0;
     FILE *f = fopen(argv[3], "rb");
     casadi_int sz_arg, sz_res, sz_iw, sz_w;
     const double **arg;
@@ -188,15 +191,6 @@ def plain_numpy(stem):
     return control
 
 
-def median_time(fn, args, reps):
-    times = []
-    for _ in range(reps):
-        t0 = time.perf_counter()
-        fn(*args)
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
-
-
 def bench_python(stem, n, reps):
     design = load_design(ROOT / "designs" / f"{stem}.py")
     spec = importlib.util.spec_from_file_location(stem, ROOT / "generated" / stem / f"{stem}.py")
@@ -207,18 +201,24 @@ def bench_python(stem, n, reps):
     syms, (v, w) = law_expr(design)
     lam = sp.lambdify(syms, [v, w], "numpy")
     plain = plain_numpy(stem)
-    for f in (mod.control, plain):
-        f(*args)
+    fns = (mod.control, lam, plain)
+    times = [[], [], []]
     with np.errstate(all="ignore"):
-        t_lam = median_time(lam, args, reps)
-    return median_time(mod.control, args, reps), t_lam, median_time(plain, args, reps)
+        for f in fns:
+            f(*args)
+        for _ in range(reps):
+            for f, t in zip(fns, times):
+                t0 = time.perf_counter()
+                f(*args)
+                t.append(time.perf_counter() - t0)
+    return tuple(statistics.median(t) for t in times)
 
 
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="fewer inputs and repetitions")
     a = ap.parse_args()
-    n_c, reps_c, n_py, reps_py = (20_000, 5, 100_000, 3) if a.quick else (100_000, 21, 1_000_000, 7)
+    n_c, reps_c, n_py, reps_py = (20_000, 11, 100_000, 3) if a.quick else (20_000, 101, 1_000_000, 9)
     x = inputs(n_c)
     print(f"C, ns per evaluation (median of {reps_c}, {n_c} inputs, gcc {' '.join(FLAGS)}):")
     print(f"{'design':22s} {'generated':>10s} {'hand':>8s} {'casadi':>8s} {'gen/hand':>9s} {'gen/casadi':>10s}")

@@ -198,3 +198,78 @@ def test_reference_agrees_with_mpmath_50_digits(case):
         with mpmath.workdps(80):
             mid = mpmath.mpf(a.mid().str(60, radius=False))
             assert abs(mid - b) <= abs(b) * mpmath.mpf(10) ** -25, (e1, e2, a, b)   # Arb: 2**-90
+
+
+def fast_path_boundary_rows(cfg, nominal):
+    """Rows on both sides of every test of the C fast path (`c_backend.fast_lines`)
+    for one precision: |e1| + |e2| at 2 TINY and FAR, |e3| at CUT and e3_max,
+    lam vr at the smallest normal number, |vr| + |wr| + k1 + k2 at `big`, and a
+    grid of lam over every binade (q = lam vr H crosses q_lo and q_hi)."""
+    from uwmr_symbolic.codegen.c_backend import FLOAT
+    f = cfg.fast
+    tiny_normal = 2.0 ** -126 if cfg is FLOAT else 2.0 ** -1022
+    top = 127 if cfg is FLOAT else 1023
+    bottom = -149 if cfg is FLOAT else -1074
+    base = np.array([0.3, -0.7, 0.2, 0.5, 1.0, *nominal])
+    rows = []
+
+    def row(**kw):
+        r = base.copy()
+        for k, val in kw.items():
+            r["e1 e2 e3 vr wr k1 k2 lam".split().index(k)] = val
+        rows.append(r)
+    for fac in (1 - 2.0 ** -10, 1.0, 1 + 2.0 ** -10):
+        for sg in (1.0, -1.0):
+            for s in (2 * cfg.tiny * fac, cfg.far * fac):
+                row(e1=s / 2, e2=sg * s / 2)
+                row(e1=0.0, e2=sg * s)
+                row(e1=sg * s, e2=0.0)
+            for e in (cfg.sinc_cut * fac, f.e3_max * fac):
+                row(e3=sg * e)
+            row(vr=sg * tiny_normal * fac / nominal[2])
+            row(wr=sg * f.big * fac)
+            row(vr=sg * f.big * fac, lam=tiny_normal * 4)
+            row(k1=f.big * fac)
+            row(k2=f.big * fac)
+    for k in range(bottom, top, 3):
+        row(lam=2.0 ** k)
+        row(lam=2.0 ** k, vr=-0.5, e1=1e-3, e2=2e-3)
+    x = np.array(rows)
+    return x.astype(np.float32).astype(np.float64) if cfg is FLOAT else x
+
+
+def test_fast_path_boundaries_agree_with_exact_law(case):
+    """Both sides of each range test of the fast path: the same accuracy as
+    everywhere else (the fast path is the careful path without guards)."""
+    from uwmr_symbolic.codegen.c_backend import DOUBLE, FLOAT
+    design = ROOT / "designs" / f"{case.stem}.py"
+    xd = fast_path_boundary_rows(DOUBLE, case.nominal)
+    xf = fast_path_boundary_rows(FLOAT, case.nominal)
+    rd, rf = reference.table_parallel(design, xd), reference.table_parallel(design, xf)
+    v, w, st = case.lib.run(xd)
+    _check(case, xd, rd, v, w, st, "double", DOUBLE_TOL, "C double, fast-path boundaries")
+    v, w, st = case.lib.run(xf, f32=True)
+    _check(case, xf, rf, v.astype(float), w.astype(float), st, "float", FLOAT_TOL, "C float, fast-path boundaries")
+    v, w, st = case.py.control_status(*xd.T)
+    _check(case, xd, rd, v, w, st, "double", DOUBLE_TOL, "Python careful, fast-path boundaries")
+    # row by row, so that each row takes the Python fast path or not on its own
+    pv, pw = np.array([case.py.control(*r) for r in xd]).T
+    _check(case, xd, rd, pv, pw, st, "double", DOUBLE_TOL, "Python, fast-path boundaries")
+
+
+def test_python_fast_path_is_taken_and_exact(case):
+    """Moderate rows (no zeros, rho within the mid region) take the Python
+    fast path (checked), which agrees with the exact law and with the careful
+    path."""
+    if not hasattr(case.py, "_H"):
+        pytest.skip("no fast path for a non-radial f")
+    sl = slice(N_FLOAT // 2, N_FLOAT)
+    rows = case.x_float[sl]
+    keep = np.all(rows != 0, axis=1) & (rows[:, 0] ** 2 + rows[:, 1] ** 2 <= 0.99 * case.py._FAR2)
+    args = [np.ascontiguousarray(c) for c in rows[keep].T]
+    assert keep.sum() > 10_000 and case.py._fast(*args) is not None
+    v, w = case.py.control(*args)
+    cv, cw, _ = case.py.control_status(*args)
+    ref = {k: val[sl][keep] for k, val in case.ref_double.items()}
+    assert max(m.max() for m in reference.errors(ref, v, w)[:2]) <= DOUBLE_TOL
+    assert max(m.max() for m in reference.errors(ref, cv, cw)[:2]) <= DOUBLE_TOL

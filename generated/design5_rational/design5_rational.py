@@ -131,24 +131,52 @@ def _gterm_careful(e1, e2, lam, vr, sinc):
     return out
 
 
+def _normal(x):
+    """True when every element of x is a normal number or +-inf (inf is caught
+    by the final test); False for a zero, a subnormal or a NaN."""
+    lo, hi = numpy.min(x), numpy.max(x)
+    return bool(lo >= _DMIN or hi <= -_DMIN or numpy.min(numpy.abs(x)) >= _DMIN)
+
+
 def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
-    """The mid-region form; None when any element needs the careful path."""
-    with numpy.errstate(over="raise", under="raise", invalid="raise", divide="raise"):
-        try:
-            rho = e1 * e1 + e2 * e2
-            if not (numpy.min(rho) >= _TINY2 and numpy.max(rho) <= _FAR2):
-                if not (numpy.max(rho) <= _FAR2 and numpy.all((rho == 0.0) | (rho >= _TINY2))):
-                    return None
-            if numpy.min(k1) < 0.0 or numpy.min(k2) < 0.0 or numpy.min(lam) < 0.0:
-                return None
-            p = lam * vr * _sinc(e3) * e2 * _H(rho)
-            v = vr * numpy.cos(e3) + k1 * numpy.tanh(e1)
-            w = wr + p + k2 * numpy.tanh(e3)
-            if not numpy.isfinite(numpy.sum(v) + numpy.sum(w)):
-                return None
-            return v, w
-        except FloatingPointError:
+    """The law as plainly as numpy would write it, for the common case; None
+    when any element needs the careful path.  e1..wr have the broadcast shape.
+
+    Tests (reductions only): gains >= 0; TINY^2 <= rho <= FAR^2 (the
+    mid-region form; a NaN or inf in e1, e2 fails); lam vr normal; q = lam vr H
+    sinc normal (a zero e3 gives NaN and fails), so that only the last product
+    q e2 may underflow; v and w finite (any other NaN or inf input, or an
+    overflow, shows there: the sums of v and of w are finite).  Within these, the result is the careful path's
+    mid-region formula without its guards."""
+    if not (numpy.min(k1) >= 0.0 and numpy.min(k2) >= 0.0 and numpy.min(lam) >= 0.0):
+        return None
+    with numpy.errstate(all="ignore"):
+        rho = e1 * e1
+        rho += e2 * e2
+        if not (numpy.min(rho) >= _TINY2 and numpy.max(rho) <= _FAR2):
             return None
+        q = lam * vr
+        if not _normal(q):
+            return None
+        q *= _H(rho)
+        sinc = numpy.sin(e3)
+        sinc /= e3
+        q *= sinc
+        if not _normal(q):
+            return None
+        q *= e2
+        v = numpy.cos(e3)
+        v *= vr
+        t = numpy.tanh(e1)
+        t *= k1
+        v += t
+        w = wr + q
+        t = numpy.tanh(e3)
+        t *= k2
+        w += t
+        if not numpy.isfinite(numpy.sum(v) + numpy.sum(w)):
+            return None
+    return v, w
 
 
 def _careful(e1, e2, e3, vr, wr, k1, k2, lam):
@@ -196,11 +224,8 @@ def control_status(e1, e2, e3, vr, wr, k1, k2, lam):
 def control(e1, e2, e3, vr, wr, k1, k2, lam):
     """(v, w) of law (9), elementwise over broadcast numpy arrays."""
     args = [numpy.asarray(a, dtype=float) for a in (e1, e2, e3, vr, wr, k1, k2, lam)]
-    res = _fast(*args)
+    shape = numpy.broadcast_shapes(*(a.shape for a in args))
+    res = _fast(*[a if a.shape == shape else numpy.broadcast_to(a, shape) for a in args[:5]], *args[5:])
     if res is None:
         res = _careful(*args)
-    else:
-        shape = numpy.broadcast_shapes(*(a.shape for a in args))
-        if res[0].shape != shape or res[1].shape != shape:
-            res = (numpy.broadcast_to(res[0], shape).copy(), numpy.broadcast_to(res[1], shape).copy())
     return _out(res[0]), _out(res[1])

@@ -110,8 +110,9 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
     }
 }
 
-int uwmr_unsaturated_baseline_control(double e1, double e2, double e3, double vr, double wr,
-                                          const uwmr_unsaturated_baseline_gains *gains, double *v, double *w)
+/* The careful path: every input, every region, guarded products, status codes. */
+static int careful(double e1, double e2, double e3, double vr, double wr,
+                   const uwmr_unsaturated_baseline_gains *gains, double *v, double *w)
 {
     double k1, k2, lam, sinc, c3, t1, t3, vv, ww;
     if (v != NULL) {
@@ -157,6 +158,38 @@ int uwmr_unsaturated_baseline_control(double e1, double e2, double e3, double vr
     *v = vv;
     *w = ww;
     return UWMR_OK;
+}
+
+int uwmr_unsaturated_baseline_control(double e1, double e2, double e3, double vr, double wr,
+                                          const uwmr_unsaturated_baseline_gains *gains, double *v, double *w)
+{
+    /* Fast path: one range test, then the law as plainly as written by hand.
+     * The careful path (called from two places, so it is not inlined here)
+     * takes everything else and gives the same results within rounding. */
+    if (gains != NULL && v != NULL && w != NULL) {
+        const double k1 = gains->k1, k2 = gains->k2, lam = gains->lambda;
+        const double a1 = fabs(e1), a2 = fabs(e2), a3 = fabs(e3), s12 = a1 + a2;
+        const double kmin = k1 < k2 ? (k1 < lam ? k1 : lam) : (k2 < lam ? k2 : lam);
+        const double lv = lam * vr;
+        if ((s12 >= 2e-100) & (s12 <= 10000.0) & (a3 >= 0.000244140625) & (a3 <= 1048576.0) & (kmin >= 0.0)
+            & (fabs(lv) >= DBL_MIN) & (fabs(vr) + fabs(wr) + k1 + k2 <= 1.1235582092889474e+307)) {
+            double H;
+            {
+                H = 1.0;
+            }
+            {
+                const double q = lv * H;
+                if ((fabs(q) >= 1.1830521861667747e-271) & (fabs(q) <= 8.452712498170644e+270)) {
+                    const double sinc = sin(e3) / e3;
+                    *v = vr * cos(e3) + k1 * tanh(e1);
+                    *w = wr + (q * sinc) * e2 + k2 * tanh(e3);
+                    return UWMR_OK;
+                }
+            }
+        }
+        return careful(e1, e2, e3, vr, wr, gains, v, w);
+    }
+    return careful(e1, e2, e3, vr, wr, gains, v, w);
 }
 #endif /* UWMR_NO_DOUBLE */
 
@@ -254,8 +287,9 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
     }
 }
 
-int uwmr_unsaturated_baseline_control_f32(float e1, float e2, float e3, float vr, float wr,
-                                              const uwmr_unsaturated_baseline_gains_f32 *gains, float *v, float *w)
+/* The careful path: every input, every region, guarded products, status codes. */
+static int careful_f32(float e1, float e2, float e3, float vr, float wr,
+                       const uwmr_unsaturated_baseline_gains_f32 *gains, float *v, float *w)
 {
     float k1, k2, lam, sinc, c3, t1, t3, vv, ww;
     if (v != NULL) {
@@ -301,4 +335,36 @@ int uwmr_unsaturated_baseline_control_f32(float e1, float e2, float e3, float vr
     *v = vv;
     *w = ww;
     return UWMR_OK;
+}
+
+int uwmr_unsaturated_baseline_control_f32(float e1, float e2, float e3, float vr, float wr,
+                                              const uwmr_unsaturated_baseline_gains_f32 *gains, float *v, float *w)
+{
+    /* Fast path: one range test, then the law as plainly as written by hand.
+     * The careful path (called from two places, so it is not inlined here)
+     * takes everything else and gives the same results within rounding. */
+    if (gains != NULL && v != NULL && w != NULL) {
+        const float k1 = gains->k1, k2 = gains->k2, lam = gains->lambda;
+        const float a1 = fabsf(e1), a2 = fabsf(e2), a3 = fabsf(e3), s12 = a1 + a2;
+        const float kmin = k1 < k2 ? (k1 < lam ? k1 : lam) : (k2 < lam ? k2 : lam);
+        const float lv = lam * vr;
+        if ((s12 >= 2e-12F) & (s12 <= 10000.0F) & (a3 >= 0.015625F) & (a3 <= 1024.0F) & (kmin >= 0.0F)
+            & (fabsf(lv) >= FLT_MIN) & (fabsf(vr) + fabsf(wr) + k1 + k2 <= 4.2535296e+37F)) {
+            float H;
+            {
+                H = 1.0F;
+            }
+            {
+                const float q = lv * H;
+                if ((fabsf(q) >= 8.271806e-25F) & (fabsf(q) <= 1.2089258e+24F)) {
+                    const float sinc = sinf(e3) / e3;
+                    *v = vr * cosf(e3) + k1 * tanhf(e1);
+                    *w = wr + (q * sinc) * e2 + k2 * tanhf(e3);
+                    return UWMR_OK;
+                }
+            }
+        }
+        return careful_f32(e1, e2, e3, vr, wr, gains, v, w);
+    }
+    return careful_f32(e1, e2, e3, vr, wr, gains, v, w);
 }

@@ -31,6 +31,7 @@ class CConfig:
     tiny: float
     far: float
     sinc_cut: float
+    fast: "FastRange"
 
     @property
     def ctype(self) -> str:
@@ -51,8 +52,29 @@ class CConfig:
         return self.printer().literal(value)
 
 
-DOUBLE = CConfig("double", "", *THRESHOLDS["double"], sinc_cut=2.0 ** -12)
-FLOAT = CConfig("float", "_f32", *THRESHOLDS["float"], sinc_cut=2.0 ** -6)
+@dataclass(frozen=True)
+class FastRange:
+    """The one range test of the fast path (see `fast_lines`).
+
+    e3_max  |e3| above which the careful path is taken: below it |sin(e3)|
+            stays above smin (doubles: |x - k pi| > 2^-61 for every double,
+            Kahan/McDonald; floats in [2^-6, 2^10]: min |sin| = 2^-26.8, by
+            enumeration), so sinc >= smin / e3_max.
+    q_lo    lower bound of |lam vr H|: q_lo * smin / e3_max is still normal,
+            so no partial product underflows before the last factor e2.
+    q_hi    upper bound of |lam vr H|: q_hi * FAR is far below the type's max.
+    big     bound of |vr| + |wr| + k1 + k2: with |lam vr g sinc| <= q_hi FAR
+            neither v nor w can overflow."""
+    e3_max: float
+    q_lo: float
+    q_hi: float
+    big: float
+
+
+DOUBLE = CConfig("double", "", *THRESHOLDS["double"], sinc_cut=2.0 ** -12,
+                 fast=FastRange(e3_max=2.0 ** 20, q_lo=2.0 ** -900, q_hi=2.0 ** 900, big=2.0 ** 1020))
+FLOAT = CConfig("float", "_f32", *THRESHOLDS["float"], sinc_cut=2.0 ** -6,
+                fast=FastRange(e3_max=2.0 ** 10, q_lo=2.0 ** -80, q_hi=2.0 ** 80, big=2.0 ** 125))
 
 
 def c_identifier(stem: str) -> str:
@@ -155,13 +177,62 @@ def gterm_lines(model: LawModel, cfg: CConfig, names) -> list[str]:
     return out
 
 
+def fast_lines(model: LawModel, cfg: CConfig, names) -> list[str] | None:
+    """Body of the fast path, or None (no radial mid-region form).
+
+    One range test on the inputs, before any libm call: |e1| + |e2| within the
+    mid region [2 TINY, FAR] (so m = max(|e1|, |e2|) is in [TINY, FAR]),
+    CUT <= |e3| <= e3_max, gains >= 0, lam vr a normal number and
+    |vr| + |wr| + k1 + k2 <= big.  Every comparison is false for a NaN, and an
+    infinite input fails one of them, so the test also rejects non-finite
+    input.  Then H(rho) and q = lam vr H, with one more test
+    q_lo <= |q| <= q_hi, and the plain law: sin(e3)/e3, lam vr g sinc =
+    (q sinc) e2 where only the last product may underflow (an absolute error
+    below the smallest normal number times 2^-53) and nothing can overflow.
+    These are the careful path's mid-region formulas without its guards, which
+    this test makes unnecessary; anything else goes to the careful path."""
+    if not model.radial or not model.mid:
+        return None
+    t, fn, f = cfg.ctype, cfg.fn, cfg.fast
+    pr = cfg.printer(names)
+    decl = lambda n, c: f"const {t} {n} = {c};"   # noqa: E731
+    lit = cfg.lit
+    out = [f"const {t} k1 = gains->k1, k2 = gains->k2, lam = gains->lambda;",
+           f"const {t} a1 = fabs{fn}(e1), a2 = fabs{fn}(e2), a3 = fabs{fn}(e3), s12 = a1 + a2;",
+           f"const {t} kmin = k1 < k2 ? (k1 < lam ? k1 : lam) : (k2 < lam ? k2 : lam);",
+           f"const {t} lv = lam * vr;",
+           f"if ((s12 >= {lit(2 * cfg.tiny)}) & (s12 <= {lit(cfg.far)}) & (a3 >= {lit(cfg.sinc_cut)})"
+           f" & (a3 <= {lit(f.e3_max)}) & (kmin >= {lit(0)})",
+           f"    & (fabs{fn}(lv) >= {cfg.limit}_MIN) & (fabs{fn}(vr) + fabs{fn}(wr) + k1 + k2 <= {lit(f.big)})) {{"]
+    body = []
+    if len(model.mid) > 1 or any(br.expr.has(RHO) for br in model.mid):
+        body.append(f"const {t} rho = e1 * e1 + e2 * e2;")
+    body.append(f"{t} H;")
+
+    def h_body(br):
+        lines, h = cse_lines(br.expr, pr, decl)
+        return [*lines, f"H = {h};"]
+
+    body += _chain(model.mid, "rho", cfg, h_body)
+    body += ["{",
+             f"    const {t} q = lv * H;",
+             f"    if ((fabs{fn}(q) >= {lit(f.q_lo)}) & (fabs{fn}(q) <= {lit(f.q_hi)})) {{",
+             f"        const {t} sinc = sin{fn}(e3) / e3;",
+             f"        *v = vr * cos{fn}(e3) + k1 * tanh{fn}(e1);",
+             f"        *w = wr + (q * sinc) * e2 + k2 * tanh{fn}(e3);",
+             "        return UWMR_OK;",
+             "    }",
+             "}"]
+    return out + _indent(body, 4) + ["}"]
+
+
 def render(env, model: LawModel, context: dict) -> dict[str, str]:
     """{file name: text} for the C back-end."""
     ident = c_identifier(model.stem)
     names = {RHO: "rho", T: "tt", E1: "e1", E2: "e2"}
     variants = []
     for cfg in (DOUBLE, FLOAT):
-        variants.append(dict(cfg=cfg, body=gterm_lines(model, cfg, names),
+        variants.append(dict(cfg=cfg, body=gterm_lines(model, cfg, names), fast=fast_lines(model, cfg, names),
                              tiny=cfg.lit(cfg.tiny), far=cfg.lit(cfg.far), cut=cfg.lit(cfg.sinc_cut),
                              zero=cfg.lit(0), one=cfg.lit(1), two=cfg.lit(2), half=cfg.lit(sp.Rational(1, 2)), huge="HUGE_VALF" if cfg.precision == "float" else "HUGE_VAL", c6=cfg.lit(sp.Rational(1, 6)),
                              c120=cfg.lit(sp.Rational(1, 120))))
