@@ -134,38 +134,42 @@ def _normal(x):
 
 def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
     """The law as plainly as numpy would write it, for the common case; None
-    when any element needs the careful path.  e1..wr have the broadcast shape.
+    when any element needs the careful path.  e1..wr are arrays (ndim >= 1)
+    of the broadcast shape.
 
     Tests (reductions only): gains >= 0; TINY^2 <= rho <= FAR^2 (the
     mid-region form; a NaN or inf in e1, e2 fails); lam vr normal; q = lam vr H
     sinc normal (a zero e3 gives NaN and fails), so that only the last product
     q e2 may underflow; v and w finite (any other NaN or inf input, or an
-    overflow, shows there: the sums of v and of w are finite).  Within these, the result is the careful path's
-    mid-region formula without its guards."""
+    overflow, shows there: the sums of v and of w are finite).  Within these,
+    the result is the careful path's mid-region formula without its guards.
+    Three work arrays, reused with out= (v and w are two of them)."""
     if not (numpy.min(k1) >= 0.0 and numpy.min(k2) >= 0.0 and numpy.min(lam) >= 0.0):
         return None
     with numpy.errstate(all="ignore"):
-        rho = e1 * e1
-        rho += e2 * e2
+        rho = numpy.multiply(e1, e1)
+        a = numpy.multiply(e2, e2)
+        rho += a
         if not (numpy.min(rho) >= _TINY2 and numpy.max(rho) <= _FAR2):
             return None
-        q = lam * vr
+        q = numpy.multiply(vr, lam)
         if not _normal(q):
             return None
         q *= _H(rho)
-        sinc = numpy.sin(e3)
-        sinc /= e3
-        q *= sinc
+        numpy.sin(e3, out=a)
+        a /= e3
+        q *= a
         if not _normal(q):
             return None
         q *= e2
-        v = numpy.cos(e3)
+        v = numpy.cos(e3, out=a)
         v *= vr
-        t = numpy.tanh(e1)
+        t = numpy.tanh(e1, out=rho)
         t *= k1
         v += t
-        w = wr + q
-        t = numpy.tanh(e3)
+        w = q
+        w += wr
+        numpy.tanh(e3, out=t)
         t *= k2
         w += t
         if not numpy.isfinite(numpy.sum(v) + numpy.sum(w)):
@@ -219,7 +223,10 @@ def control(e1, e2, e3, vr, wr, k1, k2, lam):
     """(v, w) of law (9), elementwise over broadcast numpy arrays."""
     args = [numpy.asarray(a, dtype=float) for a in (e1, e2, e3, vr, wr, k1, k2, lam)]
     shape = numpy.broadcast_shapes(*(a.shape for a in args))
-    res = _fast(*[a if a.shape == shape else numpy.broadcast_to(a, shape) for a in args[:5]], *args[5:])
+    fast_shape = shape if shape != () else (1,)
+    res = _fast(*[a if a.shape == fast_shape else numpy.broadcast_to(a, fast_shape) for a in args[:5]], *args[5:])
     if res is None:
         res = _careful(*args)
+    elif shape == ():
+        res = res[0][0], res[1][0]
     return _out(res[0]), _out(res[1])

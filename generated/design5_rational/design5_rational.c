@@ -117,6 +117,15 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
     }
 }
 
+/* tanh(x) for the fast path: -t/(t + 2) with t = expm1(-2|x|), and the sign
+ * of x (glibc's formula for |x| < 1, within 3 ulp for every x; tanh(+-0) =
+ * +-0, 1 for large |x|): one libm call instead of tanh's two. */
+static double tanh_fast(double x)
+{
+    const double t = expm1(-2.0 * fabs(x));
+    return copysign(-t / (t + 2.0), x);
+}
+
 /* The careful path: every input, every region, guarded products, status codes. */
 static int careful(double e1, double e2, double e3, double vr, double wr,
                    const uwmr_design5_rational_gains *gains, double *v, double *w)
@@ -179,20 +188,18 @@ int uwmr_design5_rational_control(double e1, double e2, double e3, double vr, do
         const double kmin = k1 < k2 ? (k1 < lam ? k1 : lam) : (k2 < lam ? k2 : lam);
         const double lv = lam * vr;
         if ((s12 >= 2e-100) & (s12 <= 10000.0) & (a3 >= 0.000244140625) & (a3 <= 1048576.0) & (kmin >= 0.0)
-            & (fabs(lv) >= DBL_MIN) & (fabs(vr) + fabs(wr) + k1 + k2 <= 1.1235582092889474e+307)) {
+            & (fabs(lv) >= 7.939328826636877e-264) & (fabs(vr) + fabs(wr) + k1 + k2 + lam <= 1.598335257761788e+147)) {
             const double rho = e1 * e1 + e2 * e2;
             double H;
             {
                 H = 2.0/(((rho)*(rho)) + 2.0*rho + 1.0);
             }
             {
-                const double q = lv * H;
-                if ((fabs(q) >= 1.1830521861667747e-271) & (fabs(q) <= 8.452712498170644e+270)) {
-                    const double sinc = sin(e3) / e3;
-                    *v = vr * cos(e3) + k1 * tanh(e1);
-                    *w = wr + (q * sinc) * e2 + k2 * tanh(e3);
-                    return UWMR_OK;
-                }
+                const double q = lv * H;   /* 2.5e-17 <= |H| <= 4 here: q_lo <= |q| <= q_hi */
+                const double sinc = sin(e3) / e3;
+                *v = vr * cos(e3) + k1 * tanh_fast(e1);
+                *w = wr + (q * sinc) * e2 + k2 * tanh_fast(e3);
+                return UWMR_OK;
             }
         }
         return careful(e1, e2, e3, vr, wr, gains, v, w);
@@ -301,6 +308,15 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
     }
 }
 
+/* tanh(x) for the fast path: -t/(t + 2) with t = expm1(-2|x|), and the sign
+ * of x (glibc's formula for |x| < 1, within 3 ulp for every x; tanh(+-0) =
+ * +-0, 1 for large |x|): one libm call instead of tanh's two. */
+static float tanh_fast_f32(float x)
+{
+    const float t = expm1f(-2.0F * fabsf(x));
+    return copysignf(-t / (t + 2.0F), x);
+}
+
 /* The careful path: every input, every region, guarded products, status codes. */
 static int careful_f32(float e1, float e2, float e3, float vr, float wr,
                        const uwmr_design5_rational_gains_f32 *gains, float *v, float *w)
@@ -363,20 +379,18 @@ int uwmr_design5_rational_control_f32(float e1, float e2, float e3, float vr, fl
         const float kmin = k1 < k2 ? (k1 < lam ? k1 : lam) : (k2 < lam ? k2 : lam);
         const float lv = lam * vr;
         if ((s12 >= 2e-12F) & (s12 <= 10000.0F) & (a3 >= 0.015625F) & (a3 <= 1024.0F) & (kmin >= 0.0F)
-            & (fabsf(lv) >= FLT_MIN) & (fabsf(vr) + fabsf(wr) + k1 + k2 <= 4.2535296e+37F)) {
+            & (fabsf(lv) >= 9.313226e-10F) & (fabsf(vr) + fabsf(wr) + k1 + k2 + lam <= 4.3980465e+12F)) {
             const float rho = e1 * e1 + e2 * e2;
             float H;
             {
                 H = 2.0F/(((rho)*(rho)) + 2.0F*rho + 1.0F);
             }
             {
-                const float q = lv * H;
-                if ((fabsf(q) >= 8.271806e-25F) & (fabsf(q) <= 1.2089258e+24F)) {
-                    const float sinc = sinf(e3) / e3;
-                    *v = vr * cosf(e3) + k1 * tanhf(e1);
-                    *w = wr + (q * sinc) * e2 + k2 * tanhf(e3);
-                    return UWMR_OK;
-                }
+                const float q = lv * H;   /* 2.5e-17 <= |H| <= 4 here: q_lo <= |q| <= q_hi */
+                const float sinc = sinf(e3) / e3;
+                *v = vr * cosf(e3) + k1 * tanh_fast_f32(e1);
+                *w = wr + (q * sinc) * e2 + k2 * tanh_fast_f32(e3);
+                return UWMR_OK;
             }
         }
         return careful_f32(e1, e2, e3, vr, wr, gains, v, w);

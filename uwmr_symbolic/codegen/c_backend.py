@@ -5,12 +5,13 @@ The law's structure (regions, branches, guarded product) comes from
 template and differ by the `CConfig` below."""
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass
 
 import sympy as sp
 
-from .law import RHO, THRESHOLDS, LawModel
+from .law import RHO, THRESHOLDS, LawModel, mid_h_bounds
 from .printers import CPrinter, cse_lines
 from .. import e1 as E1, e2 as E2
 from ..univariate import T
@@ -64,17 +65,24 @@ class FastRange:
             so no partial product underflows before the last factor e2.
     q_hi    upper bound of |lam vr H|: q_hi * FAR is far below the type's max.
     big     bound of |vr| + |wr| + k1 + k2: with |lam vr g sinc| <= q_hi FAR
-            neither v nor w can overflow."""
+            neither v nor w can overflow.  (With proved bounds of H, lam
+            joins the sum and big is lowered to sqrt(upper bound of |lam vr|).)
+    lv_lo_max  the a-priori form of the q test (bounds on lam vr from proved
+            bounds of H) is used only when its lower bound on |lam vr| is at
+            most this; otherwise q is tested after H is computed."""
     e3_max: float
     q_lo: float
     q_hi: float
     big: float
+    lv_lo_max: float
 
 
 DOUBLE = CConfig("double", "", *THRESHOLDS["double"], sinc_cut=2.0 ** -12,
-                 fast=FastRange(e3_max=2.0 ** 20, q_lo=2.0 ** -900, q_hi=2.0 ** 900, big=2.0 ** 1020))
+                 fast=FastRange(e3_max=2.0 ** 20, q_lo=2.0 ** -930, q_hi=2.0 ** 980, big=2.0 ** 1020,
+                               lv_lo_max=2.0 ** -100))
 FLOAT = CConfig("float", "_f32", *THRESHOLDS["float"], sinc_cut=2.0 ** -6,
-                fast=FastRange(e3_max=2.0 ** 10, q_lo=2.0 ** -80, q_hi=2.0 ** 80, big=2.0 ** 125))
+                fast=FastRange(e3_max=2.0 ** 10, q_lo=2.0 ** -86, q_hi=2.0 ** 86, big=2.0 ** 125,
+                              lv_lo_max=2.0 ** -24))
 
 
 def c_identifier(stem: str) -> str:
@@ -185,44 +193,74 @@ def fast_lines(model: LawModel, cfg: CConfig, names) -> list[str] | None:
     CUT <= |e3| <= e3_max, gains >= 0, lam vr a normal number and
     |vr| + |wr| + k1 + k2 <= big.  Every comparison is false for a NaN, and an
     infinite input fails one of them, so the test also rejects non-finite
-    input.  Then H(rho) and q = lam vr H, with one more test
-    q_lo <= |q| <= q_hi, and the plain law: sin(e3)/e3, lam vr g sinc =
-    (q sinc) e2 where only the last product may underflow (an absolute error
-    below the smallest normal number times 2^-53) and nothing can overflow.
+    input.  q = lam vr H must lie in [q_lo, q_hi]: when H's range over the
+    fast region is proved (`law.mid_h_bounds`, widened by 2 for rounding) this
+    is a test of lam vr in the range test itself, so that everything is
+    decided before the first libm call; otherwise q is tested once H is
+    computed.  Then the plain law: sin(e3)/e3, lam vr g sinc = (q sinc) e2
+    where only the last product may underflow (an absolute error below the
+    smallest normal number times 2^-53) and nothing can overflow.
     These are the careful path's mid-region formulas without its guards, which
-    this test makes unnecessary; anything else goes to the careful path."""
+    this test makes unnecessary; anything else goes to the careful path.
+    tanh is `tanh_fast` (template): -t/(t + 2), t = expm1(-2|x|), with the
+    sign of x, which is glibc's own formula for |x| < 1 and accurate to 3 ulp
+    everywhere, with one libm call instead of two."""
     if not model.radial or not model.mid:
         return None
     t, fn, f = cfg.ctype, cfg.fn, cfg.fast
     pr = cfg.printer(names)
     decl = lambda n, c: f"const {t} {n} = {c};"   # noqa: E731
     lit = cfg.lit
+    tiny_normal = 2.0 ** (-126 if cfg.precision == "float" else -1022)
+    lv_test = f"(fabs{fn}(lv) >= {cfg.limit}_MIN)"
+    bounds = mid_h_bounds(model, cfg.tiny ** 2 / 2, 2 * cfg.far ** 2)
+    a_priori, big, gains_sum = False, f.big, "k1 + k2"
+    if bounds is not None:
+        h_lo, h_hi = bounds[0] / 2, bounds[1] * 2
+        lv_lo = 2.0 ** math.ceil(math.log2(max(tiny_normal, f.q_lo / h_lo)))
+        lv_hi = 2.0 ** math.floor(math.log2(f.q_hi / h_hi))
+        if lv_lo <= f.lv_lo_max:
+            a_priori = True
+            lv_test = f"(fabs{fn}(lv) >= {lit(lv_lo)})"
+            # |lam vr| <= lv_hi follows from lam + |vr| <= sqrt(lv_hi): lam joins the sum test
+            big = min(big, 2.0 ** math.floor(math.log2(lv_hi) / 2))
+            gains_sum = "k1 + k2 + lam"
     out = [f"const {t} k1 = gains->k1, k2 = gains->k2, lam = gains->lambda;",
            f"const {t} a1 = fabs{fn}(e1), a2 = fabs{fn}(e2), a3 = fabs{fn}(e3), s12 = a1 + a2;",
            f"const {t} kmin = k1 < k2 ? (k1 < lam ? k1 : lam) : (k2 < lam ? k2 : lam);",
            f"const {t} lv = lam * vr;",
            f"if ((s12 >= {lit(2 * cfg.tiny)}) & (s12 <= {lit(cfg.far)}) & (a3 >= {lit(cfg.sinc_cut)})"
            f" & (a3 <= {lit(f.e3_max)}) & (kmin >= {lit(0)})",
-           f"    & (fabs{fn}(lv) >= {cfg.limit}_MIN) & (fabs{fn}(vr) + fabs{fn}(wr) + k1 + k2 <= {lit(f.big)})) {{"]
+           f"    & {lv_test} & (fabs{fn}(vr) + fabs{fn}(wr) + {gains_sum} <= {lit(big)})) {{"]
     body = []
     if len(model.mid) > 1 or any(br.expr.has(RHO) for br in model.mid):
         body.append(f"const {t} rho = e1 * e1 + e2 * e2;")
     body.append(f"{t} H;")
 
+    tanh_call = re.compile(rf"\btanh{fn}\(")
+
     def h_body(br):
         lines, h = cse_lines(br.expr, pr, decl)
-        return [*lines, f"H = {h};"]
+        return [tanh_call.sub(f"tanh_fast{cfg.suffix}(", ln) for ln in [*lines, f"H = {h};"]]
 
     body += _chain(model.mid, "rho", cfg, h_body)
-    body += ["{",
-             f"    const {t} q = lv * H;",
-             f"    if ((fabs{fn}(q) >= {lit(f.q_lo)}) & (fabs{fn}(q) <= {lit(f.q_hi)})) {{",
-             f"        const {t} sinc = sin{fn}(e3) / e3;",
-             f"        *v = vr * cos{fn}(e3) + k1 * tanh{fn}(e1);",
-             f"        *w = wr + (q * sinc) * e2 + k2 * tanh{fn}(e3);",
-             "        return UWMR_OK;",
-             "    }",
-             "}"]
+    law = [f"const {t} sinc = sin{fn}(e3) / e3;",
+           f"*v = vr * cos{fn}(e3) + k1 * tanh_fast{cfg.suffix}(e1);",
+           f"*w = wr + (q * sinc) * e2 + k2 * tanh_fast{cfg.suffix}(e3);",
+           "return UWMR_OK;"]
+    if a_priori:
+        h_text = f"{h_lo:.3g} <= |H| <= {h_hi:.3g}"
+        body += ["{",
+                 f"    const {t} q = lv * H;   /* {h_text} here: q_lo <= |q| <= q_hi */",
+                 *_indent(law, 4),
+                 "}"]
+    else:
+        body += ["{",
+                 f"    const {t} q = lv * H;",
+                 f"    if ((fabs{fn}(q) >= {lit(f.q_lo)}) & (fabs{fn}(q) <= {lit(f.q_hi)})) {{",
+                 *_indent(law, 8),
+                 "    }",
+                 "}"]
     return out + _indent(body, 4) + ["}"]
 
 

@@ -243,3 +243,42 @@ def build_model(design, analysis, report=None) -> LawModel:
                 D, k = cand, lead[1]
         model.far.append(Branch(lo, hi, closed, _polish(D), k))
     return model
+
+
+def mid_h_bounds(model: LawModel, rho_lo: float, rho_hi: float, ratio: int = 16):
+    """(lo, hi) with lo <= |H(rho)| <= hi for every rho in [rho_lo, rho_hi],
+    H the mid-region form (all its branches), rigorously (interval
+    arithmetic on subintervals [x, ratio x]); None when no such bound with
+    lo > 0 and hi finite is found (H may vanish or be unbounded there).
+    The fast path uses it to decide, before any libm call, that the products
+    lam vr H stay within range."""
+    from ..interval import Interval, IntervalFunction, Undefined
+
+    if not model.radial or not model.mid:
+        return None
+    lo_all, hi_all = math.inf, 0.0
+    cuts = [Fraction(rho_lo)]
+    while cuts[-1] < Fraction(rho_hi):
+        cuts.append(min(cuts[-1] * ratio, Fraction(rho_hi)))
+    for br in model.mid:
+        fn = IntervalFunction(br.expr, [RHO], "range", 128)
+        # the branch's ends, widened outwards by 1e-25 (they may be irrational)
+        b_lo = Fraction(0) if br.lo == 0 else Fraction(str(sp.N(br.lo, 40))) * (1 - Fraction(1, 10 ** 25))
+        b_hi = None if br.hi == sp.oo else Fraction(str(sp.N(br.hi, 40))) * (1 + Fraction(1, 10 ** 25))
+        for a, b in zip(cuts, cuts[1:]):
+            a2, b2 = max(a, b_lo), b if b_hi is None else min(b, b_hi)
+            if a2 > b2:
+                continue
+            try:
+                box = fn(Interval.of(sp.Rational(a2.numerator, a2.denominator),
+                                     sp.Rational(b2.numerator, b2.denominator)))
+            except Undefined:
+                return None
+            if box.contains_zero() or not box.is_finite():
+                return None
+            lo, hi = box.lower_float(), box.upper_float()
+            mag_lo, mag_hi = (lo, hi) if lo > 0 else (-hi, -lo)
+            lo_all, hi_all = min(lo_all, mag_lo), max(hi_all, mag_hi)
+    if not (0 < lo_all <= hi_all < math.inf):
+        return None
+    return lo_all, hi_all

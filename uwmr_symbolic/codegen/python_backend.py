@@ -68,5 +68,8 @@ def render(env, model: LawModel, context: dict, config: PythonConfig = PythonCon
     tiny = None
     if model.tiny is not None:
         tiny = dict(a=double_literal(model.tiny[0]), j=model.tiny[1], text=sp.sstr(model.tiny[0]))
-    ctx.update(functions=functions, mid=mid, far=far, tiny_term=tiny)
+    h_const = None
+    if len(model.mid) == 1 and not model.mid[0].expr.free_symbols:
+        h_const = double_literal(model.mid[0].expr)
+    ctx.update(functions=functions, mid=mid, far=far, tiny_term=tiny, h_const=h_const)
     return {f"{model.stem}.py": env.get_template("python_module.py.j2").render(ctx)}
