@@ -1,10 +1,10 @@
 """Python back-end: `<stem>.py`, importing numpy only.
 
-The module has a fast path (the mid-region form of `law`, evaluated with
-numpy's floating-point errors raised, so that any overflow, underflow or
-invalid operation sends the call to the careful path) and a careful path that
-mirrors the C code element by element (regions, branches, guarded product,
-status codes)."""
+The module has a fast path (the plain mid-region form of `law`, in three
+reused work arrays, after a range test made of a few reductions; any array
+with an element outside the range goes to the careful path) and a careful
+path that mirrors the C code element by element (regions, branches, guarded
+product, status codes)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
