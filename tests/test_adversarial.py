@@ -39,3 +39,12 @@ def test_flipped_piecewise_conditions_still_radial():
     assert report["kf"]["upper"] is None
     assert all(v[p] == "proved" for p in ("P2", "P3", "P5", "P6", "P7", "P8"))
     assert code == 1
+
+
+def test_a_check_stuck_in_c_code_is_killed_and_reported_unknown():
+    run = run_cli([HERE / "blocks_in_c.py", "--timeout", "2", "--format", "json"], timeout=120)
+    assert run.elapsed < 60, run.describe()
+    assert run.returncode == 3, run.describe()
+    report = json.loads(run.stdout)
+    assert all(v["verdict"] == "unknown" for v in report["properties"].values())
+    assert "stopped after" in report["properties"]["P1"]["reason"]

@@ -13,12 +13,13 @@ import multiprocessing
 import os
 import sys
 import time
-from concurrent.futures import ProcessPoolExecutor, as_completed
-from concurrent.futures.process import BrokenProcessPool
+import multiprocessing.connection
 from pathlib import Path
 
 from .cache import ResultCache, design_key, source_hash
 from .report import design_fields, to_dict
+from .properties import PROPERTIES
+from .verdict import unknown
 from .verify import Report, load_with_limit, verify_loaded
 
 GLOB_CHARS = set("*?[")
@@ -88,59 +89,76 @@ class Progress:
             self.stream.flush()
 
 
-def _pool(workers: int) -> ProcessPoolExecutor:
-    methods = multiprocessing.get_all_start_methods()
-    # fork: the workers start with SymPy and the verifier already imported
-    ctx = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
-    return ProcessPoolExecutor(max_workers=workers, mp_context=ctx)
+HARD_GRACE = 10.0     # seconds past --timeout before a stuck check is killed
+
+
+def hard_limit(timeout: float) -> float:
+    """Wall-clock limit of one file's process: the verifier's own SIGALRM
+    limits cannot interrupt a long call inside C code (big-integer or Arb
+    arithmetic, say), so the parent kills the process after this long."""
+    return timeout + max(HARD_GRACE, 0.25 * timeout)
+
+
+def _timed_out_result(path: str, timeout: float) -> dict:
+    props = {p: unknown(f"the check of this file was stopped after {hard_limit(timeout):g} s "
+                        f"(--timeout {timeout:g} s)") for p in PROPERTIES}
+    return to_dict(Report(Path(path), None, props, None, seconds=hard_limit(timeout), timed_out=True))
+
+
+def _child(conn, path, timeout, cache_dir, use_cache):
+    try:
+        result = check_file(path, timeout, cache_dir, use_cache)
+    except Exception as exc:  # noqa: BLE001 - a verifier bug must not hide the other files
+        result = _internal_error(path, exc)
+    conn.send(result)
+    conn.close()
 
 
 def check_files(paths: list[str], timeout: float, use_cache: bool = True, jobs: int | None = None,
                 cache_dir: str | None = None, progress: Progress | None = None) -> list[dict]:
-    """Results for `paths`, in order.  One file (or jobs=1) runs in this
-    process; more run in min(jobs, files) worker processes."""
-    jobs = jobs or os.cpu_count() or 1
+    """Results for `paths`, in order.  Each file is checked in a process of
+    its own (forked: SymPy and the verifier are already imported), at most
+    `jobs` at a time; a process that outlives `hard_limit(timeout)` is killed
+    and its file reported as timed out, one that dies is reported unusable."""
+    jobs = max(1, min(jobs or os.cpu_count() or 1, len(paths) or 1))
     cache_dir = str(ResultCache(cache_dir).directory) if use_cache else None
     progress = progress or Progress(0)
     results: list[dict | None] = [None] * len(paths)
     if use_cache:
-        source_hash()      # computed once, inherited by forked workers
-    if len(paths) <= 1 or jobs <= 1:
-        for i, p in enumerate(paths):
-            try:
-                results[i] = check_file(p, timeout, cache_dir, use_cache)
-            except Exception as exc:  # noqa: BLE001 - a verifier bug must not hide the other files
-                results[i] = _internal_error(p, exc)
-            progress.step(p)
-        return results
+        source_hash()      # computed once, inherited by the forked children
+    methods = multiprocessing.get_all_start_methods()
+    ctx = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
     pending = list(range(len(paths)))
-    with _pool(min(jobs, len(paths))) as pool:
-        futures = {pool.submit(check_file, paths[i], timeout, cache_dir, use_cache): i for i in pending}
-        broken = []
-        for fut in as_completed(futures):
-            i = futures[fut]
-            try:
-                results[i] = fut.result()
-            except BrokenProcessPool:
-                broken.append(i)
+    active = {}            # connection -> (index, process, deadline)
+    while pending or active:
+        while pending and len(active) < jobs:
+            i = pending.pop(0)
+            recv, send = ctx.Pipe(duplex=False)
+            proc = ctx.Process(target=_child, args=(send, paths[i], timeout, cache_dir, use_cache))
+            proc.start()
+            send.close()
+            active[recv] = (i, proc, time.monotonic() + hard_limit(timeout))
+        nearest = min(deadline for _, _, deadline in active.values())
+        ready = multiprocessing.connection.wait(list(active), timeout=max(0.0, nearest - time.monotonic()))
+        now = time.monotonic()
+        for conn in list(active):
+            i, proc, deadline = active[conn]
+            if conn in ready:
+                try:
+                    results[i] = conn.recv()
+                except EOFError:
+                    results[i] = {"design": paths[i], "error": "the process checking this file died "
+                                                               "(does the file call os._exit or crash Python?)",
+                                  "exit_status": 2}
+            elif now >= deadline:
+                proc.kill()
+                results[i] = _timed_out_result(paths[i], timeout)
+            else:
                 continue
-            except Exception as exc:  # noqa: BLE001
-                results[i] = _internal_error(paths[i], exc)
+            proc.join()
+            conn.close()
+            del active[conn]
             progress.step(paths[i])
-    # A worker died (a design file that kills its process takes the pool with
-    # it): check those files again one at a time, each in its own process, so
-    # that only the culprit is reported.
-    for i in sorted(broken):
-        with _pool(1) as pool:
-            try:
-                results[i] = pool.submit(check_file, paths[i], timeout, cache_dir, use_cache).result()
-            except BrokenProcessPool:
-                results[i] = {"design": paths[i], "error": "the process checking this file died "
-                                                           "(does the file call os._exit or crash Python?)",
-                              "exit_status": 2}
-            except Exception as exc:  # noqa: BLE001
-                results[i] = _internal_error(paths[i], exc)
-        progress.step(paths[i])
     return results
 
 

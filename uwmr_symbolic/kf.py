@@ -48,6 +48,8 @@ def _candidates(expr, lo, hi):
     points found by SymPy, one-sided values at the ends (point None at oo)."""
     out = []
     crit = attempt(lambda: sp.solveset(sp.diff(expr, S), S, sp.Interval.open(lo, hi)), 3.0)
+    if isinstance(crit, sp.FiniteSet) and any(c.has(sp.CRootOf, sp.RootOf) for c in crit):
+        crit = None     # algebraic numbers without radicals: no closed form to offer
     if isinstance(crit, sp.FiniteSet):
         for c in crit:
             v = exact_value(expr, S, c)

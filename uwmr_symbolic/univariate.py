@@ -31,6 +31,7 @@ import sympy as sp
 
 from .interval import Interval, IntervalFunction, Undefined
 from .limits import NoLimit, limit_right
+from .timeouts import attempt
 from .verdict import Verdict, proved, refuted, unknown
 
 T = sp.Symbol("t", positive=True)       # t = 1/s on the unbounded part
@@ -160,12 +161,11 @@ def exact_sign(value) -> int | None:
             return -1
     except (Undefined, TypeError, ValueError):
         pass
-    try:
-        if sp.simplify(value) == 0:
-            return 0
-    except Exception:  # noqa: BLE001 - SymPy may fail in many ways
+    # a symbolic zero test, only for small constants: SymPy's simplify can
+    # spend minutes (minimal polynomials of nested radicals) on big ones
+    if sp.count_ops(value) > 60:
         return None
-    return None
+    return 0 if attempt(lambda: sp.simplify(value) == 0, 2.0, False) else None
 
 
 def _frac(x) -> Fraction:
@@ -510,6 +510,16 @@ def _monotone_tail(expr, var, R, want, strict, depth) -> bool:
 
 def prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
                zeros=(), budget=MAX_BOXES, strict=True, _depth=0) -> Verdict:
+    """See `_prove_sign`; an end point or a zero that interval arithmetic
+    cannot enclose (a SymPy RootOf, say) gives an 'unknown', never an error."""
+    try:
+        return _prove_sign(expr, var, lo, hi, want, lo_open, hi_open, zeros, budget, strict, _depth)
+    except (Undefined, TypeError, ValueError) as exc:
+        return unknown(f"cannot evaluate on ({lo}, {hi}): {exc}")
+
+
+def _prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
+                zeros=(), budget=MAX_BOXES, strict=True, _depth=0) -> Verdict:
     """Prove want*expr > 0 on the interval from lo to hi (hi may be oo),
     open or closed at each end, except at the exact points ``zeros`` where
     expr vanishes (they are excluded from the strict claim; the caller has
