@@ -199,6 +199,9 @@ def load_design(path) -> Design:
     if isinstance(f_source, bool) or not isinstance(f_source, sp.Expr):
         raise DesignError(f"`f` is a {type(f_source).__name__}, not a SymPy expression in e1, e2")
     f = _canonical_symbols(f_source)
+    # decimals in f (0.5, or 1/2 evaluated by Python) are read as the exact
+    # decimal they print as, like params and gains
+    f = f.xreplace({x: sp.Rational(str(x)) for x in f.atoms(sp.Float)})
     params = _parse_params(ns.get("params"), f)
     f = f.subs({s: params[s.name] for s in f.free_symbols if s.name in params})
     extra = sorted(s.name for s in f.free_symbols if s not in (E1, E2))
