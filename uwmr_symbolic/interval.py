@@ -732,7 +732,6 @@ class _Compiler:
         return f
 
     def _node(self, e):
-        cont = self.cont
         if e.is_Symbol:
             return operator.itemgetter(self.index[e])
         if e.is_Number:

@@ -13,10 +13,10 @@ from fractions import Fraction
 
 import sympy as sp
 
-from .limits import NoLimit, limit_right
+from .limits import NoLimit
 from .profile import S, float_of, limit_at_infinity, one_sided_value
 from .timeouts import attempt
-from .univariate import T, enclose_sup, exact_sign, exact_value, prepare, prove_sign, tail_form
+from .univariate import enclose_sup, exact_sign, exact_value, prepare, prove_sign
 
 REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
 

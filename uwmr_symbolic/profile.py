@@ -12,7 +12,6 @@ be missed.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from fractions import Fraction
 
 import sympy as sp
 
@@ -331,7 +330,3 @@ def same_value(a, b) -> bool | None:
 
 def float_of(v) -> float:
     return float(sp.N(v, 20)) if v not in (sp.oo, -sp.oo) else (float("inf") if v == sp.oo else float("-inf"))
-
-
-def frac_point(v) -> Fraction:
-    return Interval.point(v).lower_fraction()

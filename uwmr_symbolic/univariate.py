@@ -168,13 +168,6 @@ def exact_sign(value) -> int | None:
     return 0 if attempt(lambda: sp.simplify(value) == 0, 2.0, False) else None
 
 
-def _frac(x) -> Fraction:
-    if isinstance(x, Fraction):
-        return x
-    r = sp.Rational(x)
-    return Fraction(int(r.p), int(r.q))
-
-
 def rational_between(lo, hi) -> sp.Rational:
     """A simple exact rational strictly inside (lo, hi), lo < hi finite."""
     if isinstance(lo, sp.Rational) and isinstance(hi, sp.Rational):
@@ -367,18 +360,6 @@ def sign_near(expr, var, c, side, want) -> Fraction | None:
 
 # --------------------------------------------------------------------------
 # sign of E on a whole interval
-
-@dataclass
-class SignClaim:
-    """want * expr > 0 on the open interval (lo, hi), lo < hi, hi may be oo;
-    ``zeros`` are exact interior points where expr is known to vanish (the
-    claim is then weak there)."""
-    expr: sp.Expr
-    var: sp.Symbol
-    lo: sp.Expr
-    hi: sp.Expr
-    want: int = 1
-
 
 def _witness_check(expr, var, point, want, strict=True) -> bool:
     """True if want*expr(point) <= 0 (strict claim) or < 0 (weak), certified."""

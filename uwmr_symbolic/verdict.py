@@ -39,15 +39,3 @@ def refuted(reason: str, witness: Any, **details) -> Verdict:
 
 def unknown(reason: str, **details) -> Verdict:
     return Verdict(UNKNOWN, reason, None, details)
-
-
-def conjunction(parts: list[tuple[str, Verdict]], what: str) -> Verdict:
-    """Combine verdicts of sub-claims that must all hold: any refuted part
-    refutes the whole, all proved proves it, else unknown."""
-    for name, v in parts:
-        if v.refuted:
-            return Verdict(REFUTED, f"{name}: {v.reason}", v.witness, v.details)
-    for name, v in parts:
-        if not v.proved:
-            return Verdict(UNKNOWN, f"{name}: {v.reason}", None, v.details)
-    return Verdict(PROVED, what or "; ".join(v.reason for _, v in parts))

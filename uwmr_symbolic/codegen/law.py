@@ -35,7 +35,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from .. import e1 as E1, e2 as E2
+from .. import e2 as E2
 from ..profile import S
 from ..univariate import T, prepare, tail_form
 

@@ -20,7 +20,7 @@ term -- runs too, as "baseline_generated"."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
