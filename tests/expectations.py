@@ -148,8 +148,6 @@ EXPECTATIONS = {
 # closed form) and "attained".  Every other check of the design stays strict.
 # Remove an entry as soon as the verifier decides it: the test then insists.
 KNOWN_GAPS = {
-    # f is not radial: the verifier refutes P4 but does not prove 2-D properties
-    "tests/designs/r01_nonradial.py": {"P1", "P3", "P5", "P6", "P7", "P8", "kf", "kf_exact", "attained"},
     # sup of F' = (1 - cos u) u' is a lim sup at infinity (F' oscillates): the
     # enclosure is certified, the closed form 2 is not
     "tests/designs/r09_slope_zero.py": {"kf_exact", "attained"},

@@ -13,6 +13,7 @@ from fractions import Fraction
 
 import sympy as sp
 
+from .interval import Interval
 from .limits import NoLimit
 from .profile import S, float_of, limit_at_infinity, one_sided_value
 from .timeouts import attempt
@@ -41,6 +42,19 @@ class SupCertificate:
 
 
 KfCertificate = SupCertificate
+
+
+def scale(cert: SupCertificate, c) -> SupCertificate:
+    """The certificate of c * sup (c > 0 exact), enclosure rounded outward."""
+    if c == 1 or cert.upper is None:
+        return cert
+    lo = None if cert.lower is None else Interval.point(sp.Rational(cert.lower) * c).lower_fraction()
+    hi = Interval.point(sp.Rational(cert.upper) * c).upper_fraction()
+    exact = None if cert.exact is None else sp.nsimplify(cert.exact * c)
+    if exact is not None:
+        lo = hi = exact
+    return SupCertificate(lo, hi, exact, cert.attained, f"sqrt(r) = {c} times: {cert.reason}",
+                          cert.unbounded_witness)
 
 
 def _candidates(expr, lo, hi):

@@ -77,6 +77,30 @@ def verify_radial(f: sp.Expr, F: sp.Expr) -> Verdict:
     return unknown("could neither prove f radial nor find two points on a circle with different values")
 
 
+def elliptic_ratio(f, F):
+    """r != 1 with f(e1, e2) = F(sqrt(e1^2 + r e2^2)) proved as a symbolic
+    identity, or None.  r is proposed from the leading Taylor terms of f on
+    the two axes (a proposal only); the identity decides."""
+    t = sp.Symbol("t", positive=True)
+    try:
+        a = sp.series(f.subs({E1: t, E2: 0}), t, 0, 7).removeO()
+        b = sp.series(f.subs({E1: 0, E2: t}), t, 0, 7).removeO()
+    except Exception:  # noqa: BLE001
+        return None
+    for m in (1, 2, 3):
+        ca, cb = a.coeff(t, 2 * m), b.coeff(t, 2 * m)
+        if ca != 0 or cb != 0:
+            break
+    else:
+        return None
+    if ca == 0 or cb == 0 or not (cb / ca).is_positive:
+        return None
+    r = sp.nsimplify((cb / ca) ** sp.Rational(1, m))
+    if r == 1 or not r.is_positive:
+        return None
+    return r if _same_function(f, F.subs(S, sp.sqrt(E1 ** 2 + r * E2 ** 2))) else None
+
+
 def _zero(e) -> bool:
     try:
         return e == 0 or sp.expand(e) == 0 or sp.simplify(e) == 0

@@ -27,9 +27,10 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .design import Design
 from .interval import Interval, IntervalFunction, Undefined
-from .kf import KfCertificate, certify_kf, certify_sup
+from .kf import KfCertificate, certify_kf, certify_sup, scale
 from .limits import NoLimit, limit_right
-from .profile import (S, continuous_on, float_of, limit_at_infinity, one_sided_value, radial_profile,
+from .profile import (S, continuous_on, elliptic_ratio, float_of, limit_at_infinity, one_sided_value,
+                      radial_profile,
                       same_value, split_profile, verify_radial)
 from .univariate import T, X, enclose, exact_sign, exact_value, prepare, prove_sign, tail_form
 from .verdict import Verdict, proved, refuted, unknown
@@ -59,8 +60,26 @@ class Analysis:
         return verify_radial(self.f, self.F)
 
     @cached_property
+    def ratio(self):
+        """r with f(e1, e2) = F(sqrt(e1^2 + r e2^2)) proved: 1 for a radial f,
+        another r > 0 for an elliptic one (P4 then fails, but the other
+        properties still reduce to F), None when neither is shown."""
+        if self.p4.proved:
+            return sp.Integer(1)
+        return elliptic_ratio(self.f, self.F)
+
+    @property
+    def reduced(self) -> bool:
+        return self.ratio is not None
+
+    @property
+    def radius(self):
+        """The s of the reduction, in e1 and e2."""
+        return sp.sqrt(E1 ** 2 + self.ratio * E2 ** 2)
+
+    @cached_property
     def split(self):
-        if not self.p4.proved:
+        if not self.reduced:
             return None, unknown("f is not known to be radial")
         return split_profile(self.F)
 
@@ -151,7 +170,9 @@ class Analysis:
 
     @cached_property
     def kf(self) -> KfCertificate:
-        return certify_kf(self)
+        """kf = sqrt(r) sup|F'|: |df/de2| = r |e2| |F'(s)|/s <= sqrt(r) |F'(s)|,
+        with equality on e1 = 0."""
+        return scale(certify_kf(self), sp.sqrt(self.ratio))
 
 
 def _show(v):
@@ -190,7 +211,7 @@ def verify_p4(a: Analysis) -> Verdict:
 
 
 def _needs_profile(a: Analysis, name: str) -> Verdict | None:
-    if not a.p4.proved:
+    if not a.reduced:
         return _non_radial(a, name)
     if a.profile is None:
         return unknown(f"radial, but {a.split[1].reason}")
@@ -330,7 +351,7 @@ def verify_p6(a: Analysis) -> Verdict:
         if not all(v.proved for v in weak) or a._boundary_match(1).refuted:
             return unknown(f"k = {sup.show()}, but the sign of h is undecided: {p5.reason}")
     k = sup.exact if sup.exact is not None else round_up(sup.upper)
-    h = sp.simplify(a.derivative(a.F, 1) / (k * S)).subs(S, sp.sqrt(E1 ** 2 + E2 ** 2))
+    h = sp.simplify(a.derivative(a.F, 1) / (k * S)).subs(S, a.radius)
     smallest = f"sup F'(s)/s = {sup.show()}"
     return proved(f"k = {k} ({smallest}), h = F'(s)/(k s) in [0, 1]: h(e1, e2) = {h}",
                   k=str(k), k_float=float_of(k), h=str(h))
@@ -422,5 +443,20 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
                    "(P4 " + a.p4.status + ")")
 
 
-VERIFIERS = {"P1": verify_p1, "P2": verify_p2, "P3": verify_p3, "P4": verify_p4,
-             "P5": verify_p5, "P6": verify_p6, "P7": verify_p7, "P8": verify_p8}
+def _through_reduction(verify):
+    """Say so when a verdict rests on an elliptic reduction f = F(s),
+    s = sqrt(e1^2 + r e2^2), r != 1 (then df/de1 = F'(s) e1/s and
+    df/de2 = r F'(s) e2/s, and every argument above goes through with this s)."""
+    def run(a: Analysis) -> Verdict:
+        v = verify(a)
+        if a.reduced and a.ratio != 1 and not v.refuted:
+            v.reason = (f"with s = {a.radius} (f = F(s) is a symbolic identity; df/de1 = F'(s) e1/s, "
+                        f"df/de2 = {a.ratio} F'(s) e2/s): {v.reason}")
+        return v
+    run.__doc__ = verify.__doc__
+    return run
+
+
+VERIFIERS = {"P1": _through_reduction(verify_p1), "P2": verify_p2, "P3": _through_reduction(verify_p3),
+             "P4": verify_p4, "P5": _through_reduction(verify_p5), "P6": _through_reduction(verify_p6),
+             "P7": _through_reduction(verify_p7), "P8": _through_reduction(verify_p8)}

@@ -101,7 +101,7 @@ def verify_loaded(design: Design, timeout: float = DEFAULT_TIMEOUT, start: float
             timed_out = True
     props = {p: props[p] for p in PROPERTIES}
     kf = None
-    if analysis.p4.proved and analysis.profile is not None:
+    if analysis.reduced and analysis.profile is not None:
         try:
             with time_limit(max(deadline - time.monotonic(), 1.0)):
                 kf = analysis.kf    # sup |F'| over the pieces, also when P1 fails
