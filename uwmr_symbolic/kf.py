@@ -15,9 +15,9 @@ import sympy as sp
 
 from .interval import Interval
 from .limits import NoLimit
-from .profile import S, float_of, limit_at_infinity, one_sided_value
+from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
-from .univariate import enclose_sup, exact_sign, exact_value, prepare, prove_sign
+from .univariate import enclose_sup, exact_sign, exact_value, limit_at_infinity, prepare, prove_sign
 
 REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
 
@@ -75,7 +75,7 @@ def _candidates(expr, lo, hi):
             out.append((v, lo))
     if hi == sp.oo:
         try:
-            v = limit_at_infinity(expr)
+            v = limit_at_infinity(expr, S)
             if v not in (sp.oo, -sp.oo):
                 out.append((v, None))
         except NoLimit:
@@ -137,7 +137,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
                                       {"s": str(c), "limit": "oo"})
         if piece.hi == sp.oo:
             try:
-                if limit_at_infinity(E) == sp.oo:
+                if limit_at_infinity(E, S) == sp.oo:
                     return SupCertificate(None, None, None, None, f"{name} -> oo as s -> oo",
                                           {"s": "oo", "limit": "oo"})
             except NoLimit:

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from .interval import Interval, IntervalFunction, Undefined
+from .timeouts import attempt
 
 
 class NoLimit(Exception):
@@ -35,25 +36,36 @@ class Lim:
         return self.value in (sp.oo, -sp.oo)
 
 
-def sign_of(value: sp.Expr) -> int:
-    """Rigorous sign of an exact real constant (interval arithmetic)."""
-    if value == sp.oo:
-        return 1
-    if value == -sp.oo:
-        return -1
+def exact_sign(value) -> int | None:
+    """Sign of an exact real constant: interval arithmetic, or a symbolic
+    zero; None when neither decides."""
     if value == 0:
         return 0
     try:
         box = Interval.point(value)
-    except (Undefined, TypeError, ValueError) as exc:
-        raise NoLimit(f"cannot evaluate {value}: {exc}") from None
-    if box.is_positive():
+        if box.is_positive():
+            return 1
+        if box.is_negative():
+            return -1
+    except (Undefined, TypeError, ValueError):
+        pass
+    # a symbolic zero test, only for small constants: SymPy's simplify can
+    # spend minutes (minimal polynomials of nested radicals) on big ones
+    if sp.count_ops(value) > 60:
+        return None
+    return 0 if attempt(lambda: sp.simplify(value) == 0, 2.0, False) else None
+
+
+def sign_of(value: sp.Expr) -> int:
+    """`exact_sign`, extended to +-oo, raising NoLimit when undecided."""
+    if value == sp.oo:
         return 1
-    if box.is_negative():
+    if value == -sp.oo:
         return -1
-    if sp.simplify(value) == 0:
-        return 0
-    raise NoLimit(f"cannot decide the sign of {value}")
+    sgn = exact_sign(value)
+    if sgn is None:
+        raise NoLimit(f"cannot decide the sign of {value}")
+    return sgn
 
 
 def _eventual_sign(lim: Lim) -> int | None:

@@ -18,7 +18,7 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .interval import Interval, IntervalFunction, Undefined
 from .limits import NoLimit, limit_right
-from .univariate import T, X, exact_sign, exact_value, prepare, prove_sign, rational_between, tail_form
+from .univariate import X, exact_sign, exact_value, prepare, prove_sign, rational_between
 from .verdict import Verdict, proved, refuted, unknown
 
 S = sp.Symbol("s", nonnegative=True)     # the radius |(e1, e2)|
@@ -328,18 +328,6 @@ def one_sided_value(expr, c, side: int):
         return None
     except (ZeroDivisionError, TypeError, ValueError):
         return None
-
-
-def limit_at_infinity(expr):
-    """lim expr as s -> oo by the limit calculus on expr(1/t), t -> 0+, tried
-    on the plain substitution and on the normalised tail form; raises NoLimit."""
-    last = None
-    for form in (prepare(expr).subs(S, 1 / T), tail_form(expr, S)):
-        try:
-            return limit_right(form, T).value
-        except NoLimit as exc:
-            last = exc
-    raise last
 
 
 def same_value(a, b) -> bool | None:

@@ -29,10 +29,11 @@ from .design import Design
 from .interval import Interval, IntervalFunction, Undefined
 from .kf import KfCertificate, certify_kf, certify_sup, scale
 from .limits import NoLimit, limit_right
-from .profile import (S, continuous_on, elliptic_ratio, float_of, limit_at_infinity, one_sided_value,
+from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
                       radial_profile,
                       same_value, split_profile, verify_radial)
-from .univariate import T, X, enclose, exact_sign, exact_value, prepare, prove_sign, tail_form
+from .univariate import (T, X, enclose, exact_sign, exact_value, limit_at_infinity, prepare, prove_sign,
+                         tail_form, tail_start)
 from .verdict import Verdict, proved, refuted, unknown
 
 PROPERTIES = ("P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8")
@@ -270,7 +271,7 @@ def verify_p3(a: Analysis) -> Verdict:
         return refuted(f"f is not positive: {pos.reason}", pos.witness)
     last = a.profile.pieces[-1]
     try:
-        lim = limit_at_infinity(last.expr)
+        lim = limit_at_infinity(last.expr, S)
     except NoLimit as exc:
         growth = _grows_without_bound(a.derivative(last.expr, 1), last.lo)
         if growth is None:
@@ -291,7 +292,7 @@ def _grows_without_bound(dF, lo) -> str | None:
     """F -> oo from a lower bound c > 0 on F' (F >= F(R) + c (s - R)) or on
     s F' (F >= F(R) + c log(s/R)) over [R, oo), by interval arithmetic on the
     t-form; a description of the argument, or None."""
-    R = sp.Integer(max(4, int(2 * float(lo) + 4)))
+    R = tail_start(lo)
     for rate, what in ((dF, "F' >= {c} on [{R}, oo), so F grows at least linearly"),
                        (S * dF, "s F'(s) >= {c} on [{R}, oo), so F grows at least like log s")):
         try:

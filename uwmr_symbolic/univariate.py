@@ -30,8 +30,7 @@ from functools import lru_cache
 import sympy as sp
 
 from .interval import Interval, IntervalFunction, Undefined
-from .limits import NoLimit, limit_right
-from .timeouts import attempt
+from .limits import NoLimit, exact_sign, limit_right
 from .verdict import Verdict, proved, refuted, unknown
 
 T = sp.Symbol("t", positive=True)       # t = 1/s on the unbounded part
@@ -102,6 +101,23 @@ def _cancel_rational_part(term: sp.Expr) -> sp.Expr:
     return sp.cancel(sp.together(rest)) * sp.Mul(*funcs)
 
 
+def tail_start(lo) -> sp.Integer:
+    """Where the unbounded part [R, oo) of an interval starting at lo begins."""
+    return sp.Integer(max(4, int(2 * float(lo) + 4)))
+
+
+def limit_at_infinity(expr, var):
+    """lim expr as var -> oo by the limit calculus on expr(1/t), t -> 0+,
+    tried on the plain substitution and on the tail form; raises NoLimit."""
+    last = None
+    for form in (prepare(expr).subs(var, 1 / T), tail_form(expr, var)):
+        try:
+            return limit_right(form, T).value
+        except NoLimit as exc:
+            last = exc
+    raise last
+
+
 def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
     """expr(1/t) for t > 0, with radicals of rational functions brought over a
     common denominator so that powers of t cancel (sqrt(4/t**2 + 1) becomes
@@ -147,25 +163,6 @@ def exact_value(expr, var, point):
     if v.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or v.free_symbols or isinstance(v, sp.Piecewise):
         return None
     return v
-
-
-def exact_sign(value) -> int | None:
-    """Sign of an exact constant: interval arithmetic, or a symbolic zero."""
-    if value == 0:
-        return 0
-    try:
-        box = Interval.point(value)
-        if box.is_positive():
-            return 1
-        if box.is_negative():
-            return -1
-    except (Undefined, TypeError, ValueError):
-        pass
-    # a symbolic zero test, only for small constants: SymPy's simplify can
-    # spend minutes (minimal polynomials of nested radicals) on big ones
-    if sp.count_ops(value) > 60:
-        return None
-    return 0 if attempt(lambda: sp.simplify(value) == 0, 2.0, False) else None
 
 
 def rational_between(lo, hi) -> sp.Rational:
@@ -479,7 +476,7 @@ def _monotone_tail(expr, var, R, want, strict, depth) -> bool:
     except Undefined:
         pass
     try:
-        lim = limit_right(tail_form(expr, var), T).value
+        lim = limit_at_infinity(expr, var)
     except NoLimit:
         return False
     sgn = 1 if lim == sp.oo else (-1 if lim == -sp.oo else exact_sign(lim))
@@ -509,7 +506,7 @@ def _prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
     expr = prepare(sp.sympify(expr))
     points = sorted(set(zeros), key=lambda z: float(z))
     if hi == sp.oo:
-        R = sp.Integer(max(4, int(2 * float(lo) + 4)))
+        R = tail_start(lo)
         while points and float(points[-1]) >= float(R) - 1:
             R = 2 * R
         finite_parts = [lo, *points, R]
@@ -610,7 +607,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
     expr = prepare(sp.sympify(expr))
     parts = []   # (variable, expression, derivative) per region
     if hi == sp.oo:
-        R = sp.Integer(max(4, int(2 * float(lo) + 4)))
+        R = tail_start(lo)
         tail = tail_form(expr, var)
         parts.append(("s", expr, lo, R))
         try:
