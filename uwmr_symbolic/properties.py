@@ -19,6 +19,7 @@ witnesses (P2 exactly; values along rays via the limit calculus) and says
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from fractions import Fraction
 from functools import cached_property
 
@@ -168,6 +169,11 @@ class Analysis:
         else:
             parts.append(proved(f"F''(0+) = {_show(d2)} = lim F'(s)/s"))
         return _all(parts, "f is C^2: F'' continuous on each piece, no jumps, F''(0+) finite")
+
+    @cached_property
+    def p5(self) -> Verdict:
+        """P5, decided once: P6 needs it too."""
+        return verify_p5(self)
 
     @cached_property
     def kf(self) -> KfCertificate:
@@ -326,7 +332,7 @@ def verify_p6(a: Analysis) -> Verdict:
     early = _needs_profile(a, "P6")
     if early:
         return early
-    p5 = verify_p5(a)
+    p5 = a.p5
     if p5.refuted and p5.witness and "e1" in p5.witness and p5.witness.get("e2") == "0" \
             and p5.witness.get("e1") not in (None, "0"):
         s0 = sp.sympify(p5.witness["e1"])
@@ -451,13 +457,13 @@ def _through_reduction(verify):
     def run(a: Analysis) -> Verdict:
         v = verify(a)
         if a.reduced and a.ratio != 1 and not v.refuted:
-            v.reason = (f"with s = {a.radius} (f = F(s) is a symbolic identity; df/de1 = F'(s) e1/s, "
-                        f"df/de2 = {a.ratio} F'(s) e2/s): {v.reason}")
+            v = replace(v, reason=f"with s = {a.radius} (f = F(s) is a symbolic identity; df/de1 = "
+                                  f"F'(s) e1/s, df/de2 = {a.ratio} F'(s) e2/s): {v.reason}")
         return v
     run.__doc__ = verify.__doc__
     return run
 
 
 VERIFIERS = {"P1": _through_reduction(verify_p1), "P2": verify_p2, "P3": _through_reduction(verify_p3),
-             "P4": verify_p4, "P5": _through_reduction(verify_p5), "P6": _through_reduction(verify_p6),
+             "P4": verify_p4, "P5": _through_reduction(lambda a: a.p5), "P6": _through_reduction(verify_p6),
              "P7": _through_reduction(verify_p7), "P8": _through_reduction(verify_p8)}
