@@ -57,6 +57,13 @@ def _grid(n):
     return rows, math.ceil(n / rows)
 
 
+def _save(fig, title: str, out: Path):
+    fig.suptitle(title, fontsize=11)
+    fig.tight_layout()
+    fig.savefig(out, dpi=DPI)
+    plt.close(fig)
+
+
 def plot_path(sc, runs, out: Path, fig_no: int):
     rows, cols = _grid(len(runs))
     fig, axes = plt.subplots(rows, cols, figsize=(3.3 * cols, 3.3 * rows), sharex=True, sharey=True)
@@ -72,11 +79,7 @@ def plot_path(sc, runs, out: Path, fig_no: int):
     for ax in axes[:, 0]:
         ax.set_ylabel("y [m]")
     axes.flat[0].legend(fontsize=7, loc="best")
-    fig.suptitle(f"Fig. {fig_no} (simulated): {sc.name}, path in the plane "
-                 f"(100 Hz, 1 sample delay)", fontsize=11)
-    fig.tight_layout()
-    fig.savefig(out, dpi=DPI)
-    plt.close(fig)
+    _save(fig, f"Fig. {fig_no} (simulated): {sc.name}, path in the plane (100 Hz, 1 sample delay)", out)
 
 
 def plot_errors(sc, runs, out: Path, fig_no: int):
@@ -89,10 +92,7 @@ def plot_errors(sc, runs, out: Path, fig_no: int):
         ax.grid(alpha=0.3)
     axes[-1].set_xlabel("t [s]")
     axes[0].legend(fontsize=7, ncol=3, loc="upper right")
-    fig.suptitle(f"Fig. {fig_no} (simulated): {sc.name}, position and orientation errors", fontsize=11)
-    fig.tight_layout()
-    fig.savefig(out, dpi=DPI)
-    plt.close(fig)
+    _save(fig, f"Fig. {fig_no} (simulated): {sc.name}, position and orientation errors", out)
 
 
 def plot_inputs(sc, runs, out: Path, fig_no: int):
@@ -112,10 +112,7 @@ def plot_inputs(sc, runs, out: Path, fig_no: int):
     axes[1].text(0.0, g["Wmax"], f" +Wmax = {g['Wmax']:g} rad/s", ha="left", va="bottom", fontsize=8)
     axes[-1].set_xlabel("t [s]")
     axes[0].legend(fontsize=7, ncol=3, loc="lower right")
-    fig.suptitle(f"Fig. {fig_no} (simulated): {sc.name}, control inputs with the limits", fontsize=11)
-    fig.tight_layout()
-    fig.savefig(out, dpi=DPI)
-    plt.close(fig)
+    _save(fig, f"Fig. {fig_no} (simulated): {sc.name}, control inputs with the limits", out)
 
 
 def main(argv=None) -> int:
