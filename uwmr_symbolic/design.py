@@ -42,16 +42,26 @@ class Design:
         return self.path.stem
 
 
+def exact_float(x: sp.Float) -> sp.Rational:
+    """The exact rational a float stands for.  A double (a Python float, or a
+    SymPy Float of 53 bits or less) is read as its shortest round-trip decimal,
+    Python's ``repr`` (0.1 -> 1/10, 1/3.0 -> 3333333333333333/10**16): the
+    decimal a person reads, never a shorter one.  A SymPy Float of more than
+    53 bits is read as its exact binary value."""
+    if isinstance(x, float) or x._prec <= 53:
+        return sp.Rational(repr(float(x)))
+    return sp.Rational(x)
+
+
 def exact_number(value, what: str) -> sp.Expr:
-    """A number from a design file as an exact SymPy number.  Floats are read
-    as the decimal they print as (0.1 -> 1/10): 'decimal inputs taken as exact
-    rationals'."""
+    """A number from a design file as an exact SymPy number (floats: see
+    `exact_float`)."""
     if isinstance(value, bool):
         raise DesignError(f"{what} is a boolean, not a number")
     if isinstance(value, float):
         if value != value or value in (float("inf"), float("-inf")):
             raise DesignError(f"{what} is {value}, not a finite number")
-        return sp.Rational(repr(value))
+        return exact_float(value)
     if isinstance(value, (int, fractions.Fraction)):
         return sp.Rational(value)
     if isinstance(value, str):
@@ -60,9 +70,11 @@ def exact_number(value, what: str) -> sp.Expr:
         except (sp.SympifyError, SyntaxError, TypeError) as exc:
             raise DesignError(f"{what} = {value!r} is not a number") from exc
     if isinstance(value, sp.Float):
-        return sp.Rational(str(value))
+        if not value.is_finite:
+            raise DesignError(f"{what} is {value}, not a finite number")
+        return exact_float(value)
     if isinstance(value, sp.Basic) and getattr(value, "is_number", False) and not value.has(sp.I):
-        value = sp.nsimplify(value, rational=True) if value.has(sp.Float) else value
+        value = value.xreplace({x: exact_float(x) for x in value.atoms(sp.Float)})
         if value.is_real is False or value.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
             raise DesignError(f"{what} = {value} is not a finite real number")
         return value
@@ -199,9 +211,11 @@ def load_design(path) -> Design:
     if isinstance(f_source, bool) or not isinstance(f_source, sp.Expr):
         raise DesignError(f"`f` is a {type(f_source).__name__}, not a SymPy expression in e1, e2")
     f = _canonical_symbols(f_source)
-    # decimals in f (0.5, or 1/2 evaluated by Python) are read as the exact
-    # decimal they print as, like params and gains
-    f = f.xreplace({x: sp.Rational(str(x)) for x in f.atoms(sp.Float)})
+    # floats in f (0.5, or 1/3 evaluated by Python) are read by `exact_float`,
+    # like params and gains
+    if any(not x.is_finite for x in f.atoms(sp.Float)):
+        raise DesignError("f contains a non-finite float (nan or inf)")
+    f = f.xreplace({x: exact_float(x) for x in f.atoms(sp.Float)})
     params = _parse_params(ns.get("params"), f)
     f = f.subs({s: params[s.name] for s in f.free_symbols if s.name in params})
     extra = sorted(s.name for s in f.free_symbols if s not in (E1, E2))

@@ -50,7 +50,7 @@ def scale(cert: SupCertificate, c) -> SupCertificate:
         return cert
     lo = None if cert.lower is None else Interval.point(sp.Rational(cert.lower) * c).lower_fraction()
     hi = Interval.point(sp.Rational(cert.upper) * c).upper_fraction()
-    exact = None if cert.exact is None else sp.nsimplify(cert.exact * c)
+    exact = None if cert.exact is None else cert.exact * c
     if exact is not None:
         lo = hi = exact
     return SupCertificate(lo, hi, exact, cert.attained, f"sqrt(r) = {c} times: {cert.reason}",
@@ -67,8 +67,8 @@ def _candidates(expr, lo, hi):
     if isinstance(crit, sp.FiniteSet):
         for c in crit:
             v = exact_value(expr, S, c)
-            if v is not None:
-                out.append((attempt(lambda: sp.nsimplify(sp.radsimp(v)) if v.has(sp.Float) else sp.radsimp(v), 2.0, v), c))
+            if v is not None and not v.has(sp.Float):
+                out.append((attempt(lambda: sp.radsimp(v), 2.0, v), c))
     if lo != sp.oo:
         v = one_sided_value(expr, lo, +1)
         if v is not None and v not in (sp.oo, -sp.oo):
@@ -124,6 +124,8 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
     0 < xi < s, so sup F'' over [0, 1/8] bounds E there from above."""
     pieces = analysis.profile.pieces
     exprs = [prepare(e) for e in exprs]
+    if any(e.has(sp.nan, sp.zoo, sp.oo, -sp.oo) for e in exprs):
+        return SupCertificate(None, None, None, None, f"{name} has no finite formula on some piece")
     if all(not e.has(S) for e in exprs) and len(set(exprs)) == 1:
         c = exprs[0]
         return SupCertificate(c, c, c, True, f"{name} = {c} is constant")

@@ -85,6 +85,8 @@ _MONOTONE_AT_INF = {
 
 
 def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
+    if expr.has(sp.nan, sp.zoo):
+        raise NoLimit(f"{expr} has an undefined part")
     if expr == x:
         return Lim(sp.Integer(0), 1)
     if not expr.has(x):

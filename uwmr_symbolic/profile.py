@@ -18,7 +18,8 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .interval import Interval, IntervalFunction, Undefined
 from .limits import NoLimit, limit_right
-from .univariate import X, exact_sign, exact_value, prepare, prove_sign, rational_between
+from .timeouts import attempt
+from .univariate import X, exact_sign, exact_value, exact_zeros_in, prepare, prove_sign, rational_between
 from .verdict import Verdict, proved, refuted, unknown
 
 S = sp.Symbol("s", nonnegative=True)     # the radius |(e1, e2)|
@@ -44,11 +45,12 @@ def verify_radial(f: sp.Expr, F: sp.Expr) -> Verdict:
         return proved("f(e1, e2) = F(sqrt(e1^2 + e2^2)) is a symbolic identity, "
                       "so e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
     diff = f - F.subs(S, RHO)
-    for simplifier in (lambda e: e, sp.expand, sp.simplify, lambda e: sp.simplify(sp.expand(e))):
+    for simplifier in (sp.expand, sp.simplify, lambda e: sp.simplify(sp.expand(e))):
         try:
-            if simplifier(diff) == 0:
-                return proved("f(e1, e2) = F(sqrt(e1^2 + e2^2)) is a symbolic identity, "
-                              "so e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
+            if simplifier(diff) == 0 and numerically_zero(diff):
+                return proved("f(e1, e2) = F(sqrt(e1^2 + e2^2)) is a symbolic identity (SymPy's "
+                              "simplification, cross-checked in interval arithmetic), so "
+                              "e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
         except Exception:  # noqa: BLE001 - SymPy failure is just 'not shown'
             continue
     fn = IntervalFunction(f, [E1, E2], mode="range", prec=200)
@@ -95,17 +97,55 @@ def elliptic_ratio(f, F):
         return None
     if ca == 0 or cb == 0 or not (cb / ca).is_positive:
         return None
-    r = sp.nsimplify((cb / ca) ** sp.Rational(1, m))
-    if r == 1 or not r.is_positive:
+    r = sp.radsimp((cb / ca) ** sp.Rational(1, m))
+    if r == 1 or not r.is_positive or r.has(sp.Float):
         return None
     return r if _same_function(f, F.subs(S, sp.sqrt(E1 ** 2 + r * E2 ** 2))) else None
 
 
-def _zero(e) -> bool:
+#: exact points at which an identity found by SymPy's simplify is re-checked
+_CHECK_POINTS = [(sp.Rational(3, 7), sp.Rational(-5, 11)), (sp.Rational(-13, 3), sp.Rational(2, 9)),
+                 (sp.Rational(1, 1000), sp.Rational(7, 1000)), (sp.Rational(123, 4), sp.Rational(-77, 2)),
+                 (sp.Rational(-2, 5), 0), (0, sp.Rational(19, 17)), (sp.Rational(1001, 10), sp.Rational(3, 10)),
+                 (sp.Rational(-6, 13), sp.Rational(-9, 8))]
+
+
+def numerically_zero(e, prec=300) -> bool:
+    """No check point certifies e != 0 (Arb at `prec` bits), and at least
+    half of them give an enclosure of e, of width below 2^-200, around 0:
+    the independent cross-check that a SymPy simplification must pass."""
+    variables = sorted(e.free_symbols, key=lambda v: v.name)
+    if not variables:
+        return exact_sign(e) == 0
     try:
-        return e == 0 or sp.expand(e) == 0 or sp.simplify(e) == 0
-    except Exception:  # noqa: BLE001
+        fn = IntervalFunction(e, variables, mode="range", prec=prec)
+    except (Undefined, TypeError, ValueError):
         return False
+    tight = 0
+    for point in _CHECK_POINTS:
+        values = dict(zip((E1, E2), point))
+        args = [Interval.point(abs(values.get(v, point[0])) if v.is_nonnegative else values.get(v, point[0]),
+                               prec=prec) for v in variables]
+        try:
+            box = fn(*args)
+        except Undefined:
+            continue
+        if not box.contains_zero():
+            return False
+        tight += box.width() < 2.0 ** -200
+    return 2 * tight >= len(_CHECK_POINTS)
+
+
+def _zero(e) -> bool:
+    """e == 0 as an identity: SymPy's expand or simplify says so, and the
+    numeric cross-check `numerically_zero` agrees."""
+    if e == 0:
+        return True
+    try:
+        said_zero = sp.expand(e) == 0 or sp.simplify(e) == 0
+    except Exception:  # noqa: BLE001 - a SymPy failure is just 'not shown'
+        return False
+    return said_zero and numerically_zero(e)
 
 
 def _same_function(a, b) -> bool:
@@ -197,17 +237,17 @@ def split_profile(F: sp.Expr) -> tuple[Profile | None, Verdict]:
     points = set()
     for rel in rels:
         g = rel.lhs - rel.rhs
-        try:
-            sols = sp.solveset(sp.Eq(g, 0), S, sp.Interval.open(0, sp.oo))
-        except Exception:  # noqa: BLE001
-            return None, unknown(f"cannot locate where {rel} switches")
-        if not isinstance(sols, sp.FiniteSet):
-            return None, unknown(f"cannot locate where {rel} switches ({sols})")
-        for b in sols:
+        # SymPy only proposes the switching points: a missed one makes the
+        # proof below (each condition keeps its truth value between
+        # consecutive points) fail, so any other answer proposes none
+        sols = attempt(lambda: sp.solveset(sp.Eq(g, 0), S, sp.Interval.open(0, sp.oo)), 5.0)
+        for b in (sols.args if isinstance(sols, sp.FiniteSet) else ()):
             v = exact_value(g, S, b)
             if v is None or exact_sign(v) != 0:
                 return None, unknown(f"boundary candidate {b} of {rel} not confirmed")
-            points.add(sp.nsimplify(b) if b.has(sp.Float) else b)
+            if b.has(sp.Float):
+                return None, unknown(f"boundary candidate {b} of {rel} is not exact")
+            points.add(b)
     bounds = [sp.Integer(0), *sorted(points, key=lambda b: float(b)), sp.oo]
     pieces, at_point = [], {}
     for i in range(len(bounds) - 1):
@@ -284,36 +324,50 @@ def guards(expr: sp.Expr) -> list[tuple[sp.Expr, str]] | None:
             continue
         else:
             return None
-    return [(g, k) for g, k in dict.fromkeys(out) if g.has(S)]
+    checked = []
+    for g, kind in dict.fromkeys(out):
+        if g.has(S):
+            checked.append((g, kind))
+            continue
+        sgn = exact_sign(g)        # a constant guard must hold outright
+        if sgn is None or not {"nonzero": sgn != 0, "positive": sgn > 0, "nonnegative": sgn >= 0}[kind]:
+            return None
+    return checked
+
+
+def _guard_holds(g, kind, lo, hi, closed) -> bool:
+    """g is nonzero / positive / nonnegative on [lo, hi] (closed) or (lo, hi)."""
+    ends = dict(lo_open=not closed, hi_open=not closed or hi == sp.oo)
+    if kind == "nonnegative":
+        if prove_sign(g, S, lo, hi, want=1, strict=False, **ends).proved:
+            return True
+        # zeros inside the interval (a touching zero of a radicand): g > 0 between them
+        zeros = exact_zeros_in(g, S, lo, hi)
+        ends_ok = not closed or all(exact_sign(exact_value(g, S, c)) in (0, 1) for c in (lo, hi) if c != sp.oo)
+        return bool(zeros) and ends_ok and prove_sign(g, S, lo, hi, want=1, zeros=zeros).proved
+    wants = (1, -1) if kind == "nonzero" else (1,)
+    return any(prove_sign(g, S, lo, hi, want=w, **ends).proved for w in wants)
 
 
 def continuous_on(expr, lo, hi, closed=True) -> Verdict:
     """Prove expr continuous on [lo, hi] (closed=True, finite ends included)
-    or on the open (lo, hi): every guard holds there."""
+    or on the open (lo, hi): every guard holds there.  A guard that fails
+    is no refutation by itself (0/0 may be removable); expr is refuted only
+    where a guard has an exact zero at which expr has an infinite one-sided
+    limit."""
     gs = guards(expr)
     if gs is None:
         return unknown(f"cannot vouch for the continuity of {expr}")
     for g, kind in gs:
-        want_signs = [1, -1] if kind == "nonzero" else [1]
-        ok = False
-        last = None
-        for want in want_signs:
-            v = prove_sign(g, S, lo, hi, want=want, lo_open=not closed, hi_open=not closed or hi == sp.oo)
-            if v.proved:
-                ok = True
-                break
-            last = v
-        if not ok and kind == "nonnegative":
-            v = prove_sign(g, S, lo, hi, want=1, lo_open=True, hi_open=True)
-            ends_ok = all(exact_sign(exact_value(g, S, c)) in (0, 1) for c in (lo, hi) if c != sp.oo) \
-                if closed else True
-            ok = v.proved and ends_ok
-            last = v
-        if not ok:
-            where = f"[{lo}, {hi}]" if closed else f"({lo}, {hi})"
-            if last is not None and last.refuted:
-                return refuted(f"{g} violates '{kind}' at s = {last.witness} inside {where}", last.witness)
-            return unknown(f"cannot show {g} {kind} on {where}")
+        if _guard_holds(g, kind, lo, hi, closed):
+            continue
+        where = f"[{lo}, {hi}]" if closed else f"({lo}, {hi})"
+        for z in exact_zeros_in(g, S, lo, hi):
+            for side in (-1, 1):
+                if one_sided_value(expr, z, side) in (sp.oo, -sp.oo):
+                    return refuted(f"{expr} is unbounded as s -> {z}{'+' if side > 0 else '-'} "
+                                   f"({g} vanishes there)", z)
+        return unknown(f"cannot show {g} {kind} on {where}")
     return proved("continuous")
 
 
@@ -323,7 +377,7 @@ def one_sided_value(expr, c, side: int):
     is continuous up to c; the limit calculus otherwise."""
     try:
         lim = limit_right(prepare(expr).subs(S, c + side * X), X)
-        return lim.value
+        return None if lim.value.has(sp.nan, sp.zoo) else lim.value
     except NoLimit:
         return None
     except (ZeroDivisionError, TypeError, ValueError):
@@ -336,7 +390,9 @@ def same_value(a, b) -> bool | None:
         return None
     if a in (sp.oo, -sp.oo) or b in (sp.oo, -sp.oo):
         return a == b
-    sgn = exact_sign(sp.nsimplify(a - b) if (a - b).has(sp.Float) else a - b)
+    if (a - b).has(sp.Float):
+        return None
+    sgn = exact_sign(a - b)
     return None if sgn is None else sgn == 0
 
 

@@ -135,9 +135,28 @@ class Analysis:
     def d2F0(self):
         return one_sided_value(self.derivative(self.profile.pieces[0].expr, 2), 0, +1)
 
+    def _origin_value(self) -> Verdict:
+        """f(0, 0) = F(0) equals the limit F(0+): f is continuous at the origin."""
+        value = exact_value(self.profile.at_point[sp.Integer(0)], S, 0)
+        lim = one_sided_value(self.profile.pieces[0].expr, 0, +1)
+        same = same_value(value, lim)
+        if same:
+            return proved(f"f(0, 0) = F(0+) = {lim}")
+        if same is False:
+            return refuted(f"f is not continuous at the origin: f(0, 0) = {_show(value)} but "
+                           f"f(e) -> {_show(lim)} as e -> 0", {"e1": "0", "e2": "0", "f": _show(value),
+                                                                "limit": _show(lim)})
+        return unknown(f"cannot compare f(0, 0) = {_show(value)} with the limit F(0+) = {_show(lim)}")
+
     @cached_property
     def c0(self):
-        return self._piece_continuity(0), self._boundary_match(0)
+        return self._piece_continuity(0), self._boundary_match(0), self._origin_value()
+
+    @cached_property
+    def gradient_exists(self) -> Verdict:
+        """grad f exists everywhere: F continuous, F' without jumps, F'(0+) = 0."""
+        return _all([*self.c0, self._boundary_match(1), self._origin_gradient()],
+                    "F continuous, F' without jumps, F'(0+) = 0")
 
     @cached_property
     def c1(self) -> Verdict:
@@ -268,10 +287,6 @@ def verify_p3(a: Analysis) -> Verdict:
     early = _needs_profile(a, "P3")
     if early:
         return early
-    c0 = _all(list(a.c0), "")
-    if c0.refuted:
-        # a jump does not matter for positivity, but the pieces must be sound
-        pass
     pos = _positive_on_pieces(a, 0, "F(s) > 0")
     if pos.refuted:
         return refuted(f"f is not positive: {pos.reason}", pos.witness)
@@ -315,7 +330,7 @@ def verify_p5(a: Analysis) -> Verdict:
     early = _needs_profile(a, "P5")
     if early:
         return early
-    exists = _all([*a.c0, a._boundary_match(1), a._origin_gradient()], "")
+    exists = a.gradient_exists
     if exists.refuted:
         return refuted(f"df/de1 does not exist everywhere: {exists.reason}", exists.witness)
     pos = _positive_on_pieces(a, 1, "F'(s) > 0")
@@ -333,14 +348,17 @@ def verify_p6(a: Analysis) -> Verdict:
     if early:
         return early
     p5 = a.p5
-    if p5.refuted and p5.witness and "e1" in p5.witness and p5.witness.get("e2") == "0" \
-            and p5.witness.get("e1") not in (None, "0"):
-        s0 = sp.sympify(p5.witness["e1"])
-        val = exact_value(a.derivative(a.F, 1), S, s0)
-        if val is not None and exact_sign(val) == -1:
-            return refuted(f"h = F'(s)/(k s) < 0 at |e| = {s0} for every k > 0", p5.witness)
-    if p5.refuted and "does not exist" in p5.reason:
-        return refuted(f"df/de1 does not exist everywhere: {p5.reason}", p5.witness)
+    exists = a.gradient_exists
+    if exists.refuted:
+        return refuted(f"df/de1 does not exist everywhere: {exists.reason}", exists.witness)
+    if not p5.proved:
+        # h >= 0 needs F' >= 0; a point with F' < 0 refutes P6 for every k > 0
+        for p in a.profile.pieces:
+            v = prove_sign(a.derivative(p.expr, 1), S, p.lo, p.hi, want=1, strict=False)
+            if v.refuted:
+                return refuted(f"h = F'(s)/(k s) < 0 at |e| = {v.witness} for every k > 0", _at(v.witness))
+            if not v.proved:
+                return unknown(f"the sign of h = F'(s)/(k s) is undecided: {v.reason}")
     G = [sp.together(a.derivative(p.expr, 1) / S) if not p.expr.has(sp.Function) else
          a.derivative(p.expr, 1) / S for p in a.profile.pieces]
     g0 = one_sided_value(G[0], 0, +1)
@@ -352,11 +370,8 @@ def verify_p6(a: Analysis) -> Verdict:
         return refuted(f"no constant k bounds h = F'(s)/(k s) by 1: {sup.reason}", sup.unbounded_witness)
     if sup.upper is None:
         return unknown(f"no finite bound for F'(s)/s found: {sup.reason}")
-    if not p5.proved:
-        weak = [prove_sign(a.derivative(p.expr, 1), S, p.lo, p.hi, want=1, strict=False)
-                for p in a.profile.pieces]
-        if not all(v.proved for v in weak) or a._boundary_match(1).refuted:
-            return unknown(f"k = {sup.show()}, but the sign of h is undecided: {p5.reason}")
+    if not exists.proved:
+        return unknown(f"k = {sup.show()}, but {exists.reason}")
     k = sup.exact if sup.exact is not None else round_up(sup.upper)
     h = sp.simplify(a.derivative(a.F, 1) / (k * S)).subs(S, a.radius)
     smallest = f"sup F'(s)/s = {sup.show()}"

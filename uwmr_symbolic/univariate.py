@@ -372,10 +372,17 @@ def _witness_check(expr, var, point, want, strict=True) -> bool:
 def _exact_zero_in(expr, var, lo, hi):
     """An exact zero of expr in (lo, hi) found by SymPy and confirmed by exact
     substitution, or None."""
+    return next(iter(exact_zeros_in(expr, var, lo, hi)), None)
+
+
+def exact_zeros_in(expr, var, lo, hi) -> list:
+    """The zeros of expr in (lo, hi) that SymPy proposes and exact
+    substitution confirms (SymPy may miss some: a proposal, not a census)."""
     try:
         sols = sp.solveset(sp.Eq(expr, 0), var, sp.Interval.open(lo, hi))
     except Exception:  # noqa: BLE001
-        return None
+        return []
+    out = []
     for root in sorted(set(_set_candidates(sols)), key=sp.default_sort_key):
         if not root.is_number or root.has(sp.I):
             continue
@@ -388,8 +395,8 @@ def _exact_zero_in(expr, var, lo, hi):
             continue
         v = exact_value(expr, var, root)
         if v is not None and exact_sign(v) == 0:
-            return root
-    return None
+            out.append(root)
+    return sorted(out, key=lambda r: Interval.point(r).lower_fraction())
 
 
 def _set_candidates(sset, depth=0):
@@ -438,25 +445,30 @@ def _cover(expr, var, lo, hi, want, left_open, right_open, budget, strict=True) 
     fn = _compiled(expr, var, "range")
     queue = [(a, b)]
     evaluations = 0
+    stuck = None        # a spot no box could decide: keep looking for a witness elsewhere
     while queue:
         u, v = queue.pop()
         evaluations += 1
         if evaluations > budget:
-            return unknown(f"undecided near {var} = {float((u + v) / 2):.6g} after {budget} boxes")
+            return unknown(stuck or f"undecided near {var} = {float((u + v) / 2):.6g} after {budget} boxes")
         try:
             box = fn(Interval.of(u, v))
             if _accepts(box, want, strict):
                 continue
         except Undefined as exc:
             if float(v - u) < 1e-12:
-                return unknown(f"not defined near {var} = {float(u):.6g}: {exc}")
+                stuck = stuck or f"not defined near {var} = {float(u):.6g}: {exc}"
+                continue
         if float(v - u) < 1e-15:
-            return unknown(f"cannot decide the sign near {var} = {float(u):.6g}")
+            stuck = stuck or f"cannot decide the sign near {var} = {float(u):.6g}"
+            continue
         m = rational_between(u, v)
         if _witness_check(expr, var, m, want, strict):
             return refuted(f"fails at {var} = {m}", m)
         queue.append((m, v))
         queue.append((u, m))
+    if stuck:
+        return unknown(stuck)
     return proved("interval arithmetic on a finite cover")
 
 
@@ -496,6 +508,37 @@ def prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
         return unknown(f"cannot evaluate on ({lo}, {hi}): {exc}")
 
 
+def polynomial_sign(expr, var, lo, hi, want, lo_open=True, hi_open=True, strict=True) -> bool:
+    """want*expr > 0 (strict) or >= 0 on the interval from lo to hi, decided
+    exactly for a polynomial with rational coefficients and rational ends:
+    no factor of the square-free decomposition (for a weak claim: no factor
+    of odd multiplicity) has a real root inside (Sturm's count), and the
+    sign at one inner point is right.  False when not shown."""
+    if not all(isinstance(c, sp.Rational) for c in (lo, hi) if c != sp.oo):
+        return False
+    try:
+        poly = sp.Poly(expr, var)
+    except (sp.PolynomialError, sp.GeneratorsError):
+        return False
+    if not (poly.domain.is_ZZ or poly.domain.is_QQ) or poly.is_zero:
+        return False
+    coeff, factors = poly.sqf_list()
+    sign = 1 if coeff > 0 else -1
+    inner = rational_between(lo, hi) if hi != sp.oo else lo + 1
+    for p, mult in factors:
+        if p.degree() == 0:
+            continue
+        if not strict and mult % 2 == 0:
+            continue            # p**mult >= 0 never changes the sign
+        roots = p.count_roots(lo, None if hi == sp.oo else hi)
+        roots -= int(lo_open and p.eval(lo) == 0)
+        roots -= int(hi != sp.oo and hi_open and p.eval(hi) == 0)
+        if roots:
+            return False
+        sign *= 1 if p.eval(inner) > 0 else -1
+    return sign == want
+
+
 def _prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
                 zeros=(), budget=MAX_BOXES, strict=True, _depth=0) -> Verdict:
     """Prove want*expr > 0 on the interval from lo to hi (hi may be oo),
@@ -504,6 +547,8 @@ def _prove_sign(expr, var, lo, hi, want=1, lo_open=True, hi_open=True,
     checked expr = 0 there).  Returns a proved / refuted (witness: a point of
     the variable) / unknown verdict."""
     expr = prepare(sp.sympify(expr))
+    if not (strict and zeros) and polynomial_sign(expr, var, lo, hi, want, lo_open, hi_open, strict):
+        return proved("Sturm's theorem: no real root of the polynomial inside, right sign at one point")
     points = sorted(set(zeros), key=lambda z: float(z))
     if hi == sp.oo:
         R = tail_start(lo)

@@ -1,0 +1,174 @@
+"""Regression tests for false proofs, wrong refutations and crashes found by
+checking designs nobody here wrote (issue 9).  Every expected verdict is
+derived by hand in the comment beside it; "not refuted" is asserted where the
+truth is "holds" but the verifier may honestly say "unknown"."""
+import math
+import textwrap
+from fractions import Fraction
+
+import pytest
+import sympy as sp
+
+from uwmr_symbolic.profile import S, continuous_on
+from uwmr_symbolic.univariate import polynomial_sign, prove_sign
+from uwmr_symbolic.verify import verify_design
+
+HEADER = """\
+import math
+import sympy as sp
+from sympy import Piecewise, Eq, Max, Rational, log, sqrt, atan
+e1, e2 = sp.symbols("e1 e2", real=True)
+rho = e1**2 + e2**2
+"""
+
+
+def verify(tmp_path, body, timeout=60):
+    path = tmp_path / "design.py"
+    path.write_text(HEADER + textwrap.dedent(body))
+    report = verify_design(path, timeout=timeout)
+    assert report.error is None, report.error
+    return report, {p: v.status for p, v in report.properties.items()}
+
+
+def test_float_sum_is_read_to_the_last_digit(tmp_path):
+    # (0.1 + 0.2)/0.3 = 1.0000000000000002 in Python: f(0, 0) = 1 - 1.0000000000000002 < 0
+    report, v = verify(tmp_path, "f = sqrt(1 + rho) - (0.1 + 0.2)/0.3\n")
+    assert v["P2"] == "refuted" and v["P3"] == "refuted"
+    assert report.properties["P2"].witness["f"] == "-1/5000000000000000"
+
+
+def test_math_e_is_not_rounded_up_to_e(tmp_path):
+    # repr(math.e) = 2.718281828459045 < e, so f(0, 0) = log(2.718281828459045) - 1 < 0
+    _, v = verify(tmp_path, "f = log(math.e + rho) - 1\n")
+    assert v["P2"] == "refuted" and v["P3"] == "refuted"
+
+
+def test_kf_of_a_float_coefficient_is_its_round_trip_decimal(tmp_path):
+    # 1/3.0 is read as 0.3333333333333333; kf = that * sup 2s/(1+s^2) = 0.3333333333333333
+    report, v = verify(tmp_path, "f = log(1 + rho)/3.0\n")
+    assert all(s == "proved" for s in v.values())
+    third = Fraction("0.3333333333333333")
+    assert report.kf.exact == sp.Rational(third.numerator, third.denominator)
+    assert report.kf.lower <= third <= report.kf.upper
+
+
+def test_no_exact_value_is_guessed_for_an_elliptic_kf(tmp_path):
+    # f = log(1 + e1^2 + a^2 e2^2)/2 = F(sqrt(e1^2 + a^2 e2^2)), F(s) = log(1+s^2)/2:
+    # df/de2 = a^2 e2/(1 + e1^2 + a^2 e2^2), largest at e1 = 0, a e2 = 1: kf = a/2
+    # exactly, with a = 0.7071067811865476 (not sqrt(2)/2, whose kf would be sqrt(2)/4)
+    report, v = verify(tmp_path, """\
+        a = sp.Symbol("a", positive=True)
+        f = log(1 + e1**2 + (a*e2)**2)/2
+        params = {a: 0.7071067811865476}
+        """)
+    assert v["P4"] == "refuted" and v["P1"] == "proved"
+    assert report.kf.exact == sp.Rational(7071067811865476, 2 * 10 ** 16)
+    assert report.kf.exact != sp.sqrt(2) / 4
+
+
+def test_value_at_the_origin_is_compared_with_the_limit(tmp_path):
+    # f(0, 0) = 0 but f -> 1 as e -> 0: f is not continuous, so P1, P5, P6, P7 fail;
+    # f > 0 away from the origin and unbounded (P3), f(0, 0) = 0 (P2)
+    report, v = verify(tmp_path, "f = Piecewise((0, Eq(rho, 0)), (1 + log(1 + rho), True))\n")
+    assert v["P2"] == "proved" and v["P3"] == "proved" and v["P4"] == "proved"
+    for p in ("P1", "P5", "P6", "P7"):
+        assert v[p] == "refuted", (p, report.properties[p].reason)
+    assert report.properties["P1"].witness == {"e1": "0", "e2": "0", "f": "0", "limit": "1"}
+    assert v["P8"] != "refuted"     # df/de2 -> 0 as e2 -> 0 wherever it exists
+
+
+@pytest.mark.parametrize("body", [
+    "f = Piecewise((0, Eq(rho, 0)), (log(1 + rho), True))\n",
+    "f = Piecewise((log(1 + rho), rho > 0), (0, True))\n",
+    # log(1+x) >= x/(1+x) for x >= 0, so the Max is log(1 + rho): the boundary
+    # is transcendental but never switches
+    "f = Max(log(1 + rho), rho/(1 + rho))\n",
+])
+def test_piecewise_forms_of_log1p_rho_are_proved(tmp_path, body):
+    # all of them are log(1 + rho) (Jiang's design times 2): P1-P8 hold, kf = 1
+    report, v = verify(tmp_path, body)
+    assert all(s == "proved" for s in v.values()), v
+    assert report.kf.exact == 1
+
+
+def test_value_on_a_circle_is_compared_with_the_limits(tmp_path):
+    # f = 2 on |e| = 1 but log(2) on both sides: a jump
+    report, v = verify(tmp_path, "f = Piecewise((2, Eq(rho, 1)), (log(1 + rho), True))\n")
+    for p in ("P1", "P5", "P6", "P7"):
+        assert v[p] == "refuted", p
+    assert v["P3"] == "proved" and v["P2"] == "proved"
+
+
+def test_zero_to_the_power_rho_does_not_crash(tmp_path):
+    # 0**rho is 1 at the origin and 0 elsewhere: f(0, 0) = 1, f = rho elsewhere
+    report, v = verify(tmp_path, "f = 0**rho + rho\n")
+    assert v["P2"] == "refuted" and v["P1"] == "refuted"
+    assert report.properties["P1"].witness["f"] == "1"
+    assert v["P8"] != "refuted"     # df/de2 = 2 e2 -> 0 off the origin
+
+
+def test_a_touching_zero_of_a_radicand_is_no_singularity(tmp_path):
+    # F = log(1 + s^2 + |s^2 - 1|^3/4) - log(5/4), written with a 3/2 power of
+    # (s^2 - 1)^2: F' = 2s (1 + 3|u|u/4)/(...) > 0 (u = s^2 - 1 >= -1), F C^2,
+    # F' ~ 6/s at oo, F'/s bounded: every property holds
+    report, v = verify(tmp_path, "f = log(1 + rho + (rho**2 - 2*rho + 1)**Rational(3, 2)/4) - log(Rational(5, 4))\n",
+                       timeout=30)
+    assert not any(s == "refuted" for s in v.values()), {p: x.reason for p, x in report.properties.items()}
+
+
+def test_continuity_through_a_touching_zero_of_a_radicand():
+    assert continuous_on(((S ** 2 - 4) ** 2) ** sp.Rational(3, 2), 0, sp.oo, closed=False).proved
+    # 1/(s - 2) really is unbounded at s = 2
+    bad = continuous_on(1 / (S - 2), 0, sp.oo, closed=False)
+    assert bad.refuted and bad.witness == 2
+    # 1/((s - 2)^2 + 10^-30) has no zero: never refuted, proved by Sturm's count
+    assert continuous_on(1 / ((S - 2) ** 2 + sp.Rational(1, 10 ** 30)), 0, sp.oo, closed=False).proved
+
+
+def test_sign_of_h_refutes_p6_when_p5_fails(tmp_path):
+    # F = log(1 + s^2 (s - 6)^2): F' = 4 s (s - 6)(s - 3)/(1 + ...) < 0 on (3, 6), so
+    # h = F'/(k s) < 0 there for every k > 0; F(6) = 0 refutes P3
+    report, v = verify(tmp_path, "f = log(1 + rho*(sqrt(rho) - 6)**2)\n")
+    assert v["P3"] == "refuted" and v["P5"] == "refuted" and v["P6"] == "refuted"
+    s6 = sp.Rational(report.properties["P6"].witness["e1"])
+    assert 3 < s6 < 6
+
+
+def test_a_steep_atan_step_is_not_called_singular(tmp_path):
+    # 1 + ((100 s^2 - 10^4)^2 + 1)^2 > 0 everywhere: no singularity; f(0, 0) = atan(10^8 + 1)/1000
+    report, v = verify(tmp_path, "f = log(1 + rho) + atan((100*rho - 10**4)**2 + 1)/1000\n", timeout=8)
+    assert v["P2"] == "refuted"
+    for p in ("P1", "P3", "P7", "P8"):
+        assert v[p] != "refuted", (p, report.properties[p].reason)
+
+
+@pytest.mark.parametrize("expr, lo, hi, want, strict, expected", [
+    ((S - 2) ** 2, 0, sp.oo, 1, False, True),       # touching zero: weakly positive
+    ((S - 2) ** 2, 0, sp.oo, 1, True, False),       # ... but not strictly
+    ((S - 2) ** 2, 3, sp.oo, 1, True, True),
+    ((S - 2) ** 3, 0, sp.oo, 1, False, False),      # a sign change
+    (S ** 2 - 2, 0, 1, -1, True, True),
+    (S ** 2 - 2, 0, 2, -1, True, False),            # root sqrt(2) inside
+    (S * (S - 1), 0, 1, -1, True, True),            # roots only at the open ends
+    (S ** 4 + 1, 0, sp.oo, 1, True, True),
+])
+def test_polynomial_sign_by_sturm(expr, lo, hi, want, strict, expected):
+    assert polynomial_sign(expr, S, sp.sympify(lo), hi if hi == sp.oo else sp.sympify(hi), want,
+                           strict=strict) is expected
+
+
+def test_polynomial_sign_respects_closed_ends():
+    # s (s - 1) < 0 on (0, 1) but not on [0, 1]
+    assert not polynomial_sign(S * (S - 1), S, sp.Integer(0), sp.Integer(1), -1, lo_open=False)
+    assert not prove_sign(S * (S - 1), S, 0, 1, want=-1, lo_open=False).proved
+
+
+def test_identity_cross_check_separates_tiny_differences():
+    from uwmr_symbolic import e1, e2
+    from uwmr_symbolic.profile import numerically_zero
+    rho = e1 ** 2 + e2 ** 2
+    assert numerically_zero(sp.log(1 + ((e1 + e2) ** 2 + (e1 - e2) ** 2) / 8) - sp.log(1 + rho / 4))
+    # 10^-70 (e1 + 1): no SymPy simplification makes this zero, and neither may the check
+    assert not numerically_zero(sp.Rational(1, 10 ** 70) * (e1 + 1))
+    assert not numerically_zero(sp.sqrt(rho + sp.Rational(1, 10 ** 80)) - sp.sqrt(rho) - e2 * 0 + 0 * e1
+                                + sp.Rational(1, 10 ** 85))
