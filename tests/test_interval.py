@@ -1,6 +1,7 @@
 """Tests for uwmr_symbolic.interval: soundness against mpmath, tightness,
 extended arithmetic, Undefined cases, modes, and the compiled evaluator."""
 import math
+from fractions import Fraction
 import random
 import time
 from fractions import Fraction as F
@@ -507,3 +508,25 @@ def test_contains_is_exact_for_rationals():
     assert not r.contains(F(-1, 3) + F(1, 10**30))
     assert Interval.point(sp.pi).contains(Interval.point(sp.pi, prec=256))
     assert Interval.of(3, 4).contains(sp.pi) and not Interval.of(3, F(314, 100)).contains(sp.pi)
+
+
+@pytest.mark.parametrize("op", ["add", "add3", "sub", "mul", "div"])
+def test_every_operation_rounds_outward(op):
+    """Exact dyadic inputs whose exact result needs more than the working
+    precision: the enclosure must contain the exact rational result (an
+    endpoint rounded inward, e.g. the lower bound of a sum rounded up, fails)."""
+    x, y = sp.symbols("x y", real=True)
+    expr = {"add": x + y, "add3": x + y + 1, "sub": x - y, "mul": x * y, "div": x / y}[op]
+    exact = {"add": lambda a, b: a + b, "add3": lambda a, b: a + b + 1, "sub": lambda a, b: a - b,
+             "mul": lambda a, b: a * b, "div": lambda a, b: a / b}[op]
+    fn = IntervalFunction(expr, [x, y], mode="range", prec=64)
+    tiny = Fraction(1, 2 ** 200)
+    values = [Fraction(1), Fraction(-1), Fraction(3), 1 + Fraction(1, 2 ** 100), -(1 + Fraction(3, 2 ** 90))]
+    for a in values:
+        for b in [tiny, -tiny, 3 * tiny, 1 + Fraction(1, 2 ** 100), Fraction(3)]:
+            box = fn(Interval.point(a), Interval.point(b))
+            want = exact(a, b)
+            assert box.lower_fraction() <= want <= box.upper_fraction(), (op, a, b)
+            # and the enclosure is not trivially wide (inputs rounded to 64 bits)
+            scale = max(abs(a), abs(b), abs(want), abs(a) / abs(b), 1)
+            assert box.upper_fraction() - box.lower_fraction() <= scale * Fraction(1, 2 ** 50)

@@ -133,10 +133,6 @@ def _undef(e, why):
     return Undefined(f"{why}: {_short(e)}")
 
 
-def _add(a, b):
-    return (_lo(a[0] + b[0]), _hi(a[1] + b[1]))
-
-
 def _sub(a, b):
     return (_lo(a[0] - b[1]), _hi(a[1] - b[0]))
 
