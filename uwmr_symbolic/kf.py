@@ -17,7 +17,8 @@ from .interval import Interval
 from .limits import NoLimit
 from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
-from .univariate import enclose_sup, exact_sign, exact_value, limit_at_infinity, prepare, prove_sign
+from .univariate import (certified_inside, enclose_sup, exact_sign, exact_value, limit_at_infinity, prepare,
+                         prove_sign)
 
 REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
 
@@ -66,6 +67,8 @@ def _candidates(expr, lo, hi):
         crit = None     # algebraic numbers without radicals: no closed form to offer
     if isinstance(crit, sp.FiniteSet):
         for c in crit:
+            if not certified_inside(c, lo, hi):
+                continue     # SymPy's answer is a proposal: E(c) <= sup only for c in (lo, hi)
             v = exact_value(expr, S, c)
             if v is not None and not v.has(sp.Float):
                 out.append((attempt(lambda: sp.radsimp(v), 2.0, v), c))

@@ -19,7 +19,8 @@ from . import e1 as E1, e2 as E2
 from .interval import Interval, IntervalFunction, Undefined
 from .limits import NoLimit, limit_right
 from .timeouts import attempt
-from .univariate import X, exact_sign, exact_value, exact_zeros_in, prepare, prove_sign, rational_between
+from .univariate import (X, certified_inside, exact_sign, exact_value, exact_zeros_in, prepare, prove_sign,
+                         rational_between)
 from .verdict import Verdict, proved, refuted, unknown
 
 S = sp.Symbol("s", nonnegative=True)     # the radius |(e1, e2)|
@@ -242,6 +243,8 @@ def split_profile(F: sp.Expr) -> tuple[Profile | None, Verdict]:
         # consecutive points) fail, so any other answer proposes none
         sols = attempt(lambda: sp.solveset(sp.Eq(g, 0), S, sp.Interval.open(0, sp.oo)), 5.0)
         for b in (sols.args if isinstance(sols, sp.FiniteSet) else ()):
+            if not certified_inside(b, 0, sp.oo):
+                return None, unknown(f"boundary candidate {b} of {rel} is not a positive real")
             v = exact_value(g, S, b)
             if v is None or exact_sign(v) != 0:
                 return None, unknown(f"boundary candidate {b} of {rel} not confirmed")

@@ -165,6 +165,18 @@ def exact_value(expr, var, point):
     return v
 
 
+def certified_inside(c, lo, hi) -> bool:
+    """The exact real number c is certified to lie in the open (lo, hi)."""
+    try:
+        if c.has(sp.I):
+            return False
+        box = Interval.point(c)
+        return box.lower_fraction() > Interval.point(lo).upper_fraction() and (
+            hi == sp.oo or box.upper_fraction() < Interval.point(hi).lower_fraction())
+    except (TypeError, ValueError, Undefined):
+        return False
+
+
 def rational_between(lo, hi) -> sp.Rational:
     """A simple exact rational strictly inside (lo, hi), lo < hi finite."""
     if isinstance(lo, sp.Rational) and isinstance(hi, sp.Rational):
@@ -384,14 +396,7 @@ def exact_zeros_in(expr, var, lo, hi) -> list:
         return []
     out = []
     for root in sorted(set(_set_candidates(sols)), key=sp.default_sort_key):
-        if not root.is_number or root.has(sp.I):
-            continue
-        try:
-            box = Interval.point(root)
-            if not (box.lower_fraction() > _upper_fraction(lo) and
-                    (hi == sp.oo or box.upper_fraction() < _lower_fraction(hi))):
-                continue
-        except (Undefined, TypeError, ValueError):
+        if not root.is_number or not certified_inside(root, lo, hi):
             continue
         v = exact_value(expr, var, root)
         if v is not None and exact_sign(v) == 0:
@@ -604,14 +609,6 @@ class SupEnclosure:
     upper: Fraction | None
     at_infinity: bool
     near: float | None
-
-
-def _upper_fraction(x) -> Fraction:
-    return Interval.point(x).upper_fraction()
-
-
-def _lower_fraction(x) -> Fraction:
-    return Interval.point(x).lower_fraction()
 
 
 def _lo(box: Interval) -> Fraction | None:
