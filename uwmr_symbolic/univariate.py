@@ -665,6 +665,9 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
     else:
         parts.append(("s", expr, lo, hi))
     fns = {}
+    # the mean-value bound needs E' to enclose every slope: no jumps inside
+    smooth = {kind: not e.has(sp.Piecewise, sp.sign, sp.Heaviside, sp.floor, sp.ceiling, sp.frac)
+              for kind, e, _, _ in parts}
     for kind, e, _, _ in parts:
         v = var if kind == "s" else T
         fns[kind] = (_compiled(e, v, "range"), _compiled(prepare(sp.diff(e, v)), v, "range"))
@@ -688,7 +691,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
             up = _hi(box)
         except Undefined:
             pass
-        if not (kind == "t" and u == 0):
+        if not (kind == "t" and u == 0) and smooth[kind]:
             try:
                 mv = _mean_value_upper(fn, dfn, u, v)
                 if mv is not None and (up is None or mv < up):
@@ -705,7 +708,9 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
         if up is not None and lower is not None and \
                 up - lower <= Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 9)):
             near = float((u + v) / 2) if kind == "s" else None
-            return SupEnclosure(lower, up, at_infinity=(kind == "t" and u == 0), near=near)
+            # the heap orders by float(up): take the exact largest bound
+            upper = max(h[-1] for h in heap)
+            return SupEnclosure(lower, upper, at_infinity=(kind == "t" and u == 0), near=near)
         heapq.heappop(heap)
         m = rational_between(u, v)
         try:
