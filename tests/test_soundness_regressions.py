@@ -165,10 +165,20 @@ def test_polynomial_sign_respects_closed_ends():
 
 def test_identity_cross_check_separates_tiny_differences():
     from uwmr_symbolic import e1, e2
-    from uwmr_symbolic.profile import numerically_zero
+    from uwmr_symbolic.univariate import numerically_equal
     rho = e1 ** 2 + e2 ** 2
-    assert numerically_zero(sp.log(1 + ((e1 + e2) ** 2 + (e1 - e2) ** 2) / 8) - sp.log(1 + rho / 4))
+    assert numerically_equal(sp.log(1 + ((e1 + e2) ** 2 + (e1 - e2) ** 2) / 8), sp.log(1 + rho / 4))
     # 10^-70 (e1 + 1): no SymPy simplification makes this zero, and neither may the check
-    assert not numerically_zero(sp.Rational(1, 10 ** 70) * (e1 + 1))
-    assert not numerically_zero(sp.sqrt(rho + sp.Rational(1, 10 ** 80)) - sp.sqrt(rho) - e2 * 0 + 0 * e1
-                                + sp.Rational(1, 10 ** 85))
+    assert not numerically_equal(sp.Rational(1, 10 ** 70) * (e1 + 1), sp.Integer(0) * e1)
+    assert not numerically_equal(sp.sqrt(rho + sp.Rational(1, 10 ** 80)) + sp.Rational(1, 10 ** 85), sp.sqrt(rho))
+    assert numerically_equal(sp.exp(1000 * e1 ** 2) * 2, sp.exp(1000 * e1 ** 2) + sp.exp(1000 * e1 ** 2))
+
+
+def test_non_radial_only_far_out_is_refuted_on_p4(tmp_path):
+    # radial for |e| <= 50, not beyond: on the circle of radius 100, f(100, 0) > f(0, 100)
+    report, v = verify(tmp_path, "f = log(1 + rho) + Piecewise((0, rho <= 2500), ((rho - 2500)**3*e1**2/10**12, True))\n",
+                       timeout=30)
+    assert v["P4"] == "refuted"
+    w = report.properties["P4"].witness
+    assert {tuple(w["point_a"]), tuple(w["point_b"])} == {("100", "0"), ("0", "100")} or \
+        sp.Rational(w["point_a"][0]) ** 2 + sp.Rational(w["point_a"][1]) ** 2 >= 2500

@@ -14,7 +14,9 @@ Entries live in ``$UWMR_CACHE_DIR``, else ``$XDG_CACHE_HOME/uwmr-symbolic``,
 else ``~/.cache/uwmr-symbolic``; one file ``<sha256 of the key>.json`` each,
 written to a temporary file and renamed into place (atomic), so a reader sees
 either nothing or a whole entry.  An entry that does not parse, or whose
-stored key differs from the one asked for, is treated as missing."""
+stored key differs from the one asked for, is treated as missing.  A hit
+touches its entry; after each write the least recently used entries beyond
+`MAX_ENTRIES` are deleted, so results of old verifier versions do not pile up."""
 from __future__ import annotations
 
 import hashlib
@@ -31,6 +33,8 @@ from . import __version__
 
 #: Bump when the layout of an entry changes.
 CACHE_FORMAT = 1
+#: Entries kept (least recently used ones beyond this are evicted).
+MAX_ENTRIES = 2000
 PACKAGE_DIR = Path(__file__).resolve().parent
 
 
@@ -98,8 +102,9 @@ def digest(key: dict) -> str:
 
 
 class ResultCache:
-    def __init__(self, directory: Path | str | None = None):
+    def __init__(self, directory: Path | str | None = None, max_entries: int = MAX_ENTRIES):
         self.directory = Path(directory) if directory is not None else default_dir()
+        self.max_entries = max_entries
 
     def path_for(self, key: dict) -> Path:
         return self.directory / f"{digest(key)}.json"
@@ -112,7 +117,26 @@ class ResultCache:
             return None
         if not isinstance(entry, dict) or entry.get("key") != key or not isinstance(entry.get("result"), dict):
             return None
+        try:
+            os.utime(self.path_for(key))      # recently used: evicted last
+        except OSError:
+            pass
         return entry["result"]
+
+    def evict(self) -> int:
+        """Delete the least recently used entries beyond `max_entries`; how many."""
+        try:
+            entries = sorted(self.directory.glob("*.json"), key=lambda p: p.stat().st_mtime_ns, reverse=True)
+        except OSError:
+            return 0
+        removed = 0
+        for path in entries[self.max_entries:]:
+            try:
+                path.unlink()
+                removed += 1
+            except OSError:
+                pass
+        return removed
 
     def put(self, key: dict, result: dict) -> bool:
         """Store atomically; False (and no exception) when the cache is not writable."""
@@ -126,6 +150,7 @@ class ResultCache:
                 fh.flush()
                 os.fsync(fh.fileno())
             os.replace(tmp, target)
+            self.evict()
             return True
         except OSError:
             if tmp is not None:

@@ -19,8 +19,8 @@ from . import e1 as E1, e2 as E2
 from .interval import Interval, IntervalFunction, Undefined
 from .limits import NoLimit, limit_right
 from .timeouts import attempt
-from .univariate import (X, certified_inside, exact_sign, exact_value, exact_zeros_in, prepare, prove_sign,
-                         rational_between)
+from .univariate import (X, certified_inside, exact_sign, exact_value, exact_zeros_in, numerically_equal, prepare,
+                         prove_sign, rational_between)
 from .verdict import Verdict, proved, refuted, unknown
 
 S = sp.Symbol("s", nonnegative=True)     # the radius |(e1, e2)|
@@ -31,7 +31,8 @@ _UNIT_CIRCLE = [(sp.Integer(1), 0), (0, sp.Integer(1)), (-1, 0), (0, -1),
                 (sp.Rational(3, 5), sp.Rational(4, 5)), (sp.Rational(-3, 5), sp.Rational(4, 5)),
                 (sp.Rational(5, 13), sp.Rational(-12, 13)), (sp.Rational(-8, 17), sp.Rational(-15, 17)),
                 (sp.Rational(20, 29), sp.Rational(21, 29))]
-_RADII = [sp.Rational(1, 3), sp.Rational(1, 2), 1, sp.Rational(3, 2), 2, 3, 5, 10, 37]
+_RADII = [sp.Rational(1, 3), sp.Rational(1, 2), 1, sp.Rational(3, 2), 2, 3, 5, 10, 37,
+          sp.Rational(1, 100), 100, 10 ** 4, 10 ** 6]
 
 
 def radial_profile(f: sp.Expr) -> sp.Expr:
@@ -45,10 +46,11 @@ def verify_radial(f: sp.Expr, F: sp.Expr) -> Verdict:
     if _same_function(f, F.subs(S, RHO)):
         return proved("f(e1, e2) = F(sqrt(e1^2 + e2^2)) is a symbolic identity, "
                       "so e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
-    diff = f - F.subs(S, RHO)
+    radial = F.subs(S, RHO)
+    diff = f - radial
     for simplifier in (sp.expand, sp.simplify, lambda e: sp.simplify(sp.expand(e))):
         try:
-            if simplifier(diff) == 0 and numerically_zero(diff):
+            if simplifier(diff) == 0 and numerically_equal(f, radial):
                 return proved("f(e1, e2) = F(sqrt(e1^2 + e2^2)) is a symbolic identity (SymPy's "
                               "simplification, cross-checked in interval arithmetic), so "
                               "e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
@@ -104,49 +106,17 @@ def elliptic_ratio(f, F):
     return r if _same_function(f, F.subs(S, sp.sqrt(E1 ** 2 + r * E2 ** 2))) else None
 
 
-#: exact points at which an identity found by SymPy's simplify is re-checked
-_CHECK_POINTS = [(sp.Rational(3, 7), sp.Rational(-5, 11)), (sp.Rational(-13, 3), sp.Rational(2, 9)),
-                 (sp.Rational(1, 1000), sp.Rational(7, 1000)), (sp.Rational(123, 4), sp.Rational(-77, 2)),
-                 (sp.Rational(-2, 5), 0), (0, sp.Rational(19, 17)), (sp.Rational(1001, 10), sp.Rational(3, 10)),
-                 (sp.Rational(-6, 13), sp.Rational(-9, 8))]
-
-
-def numerically_zero(e, prec=300) -> bool:
-    """No check point certifies e != 0 (Arb at `prec` bits), and at least
-    half of them give an enclosure of e, of width below 2^-200, around 0:
-    the independent cross-check that a SymPy simplification must pass."""
-    variables = sorted(e.free_symbols, key=lambda v: v.name)
-    if not variables:
-        return exact_sign(e) == 0
-    try:
-        fn = IntervalFunction(e, variables, mode="range", prec=prec)
-    except (Undefined, TypeError, ValueError):
-        return False
-    tight = 0
-    for point in _CHECK_POINTS:
-        values = dict(zip((E1, E2), point))
-        args = [Interval.point(abs(values.get(v, point[0])) if v.is_nonnegative else values.get(v, point[0]),
-                               prec=prec) for v in variables]
-        try:
-            box = fn(*args)
-        except Undefined:
-            continue
-        if not box.contains_zero():
-            return False
-        tight += box.width() < 2.0 ** -200
-    return 2 * tight >= len(_CHECK_POINTS)
-
-
-def _zero(e) -> bool:
-    """e == 0 as an identity: SymPy's expand or simplify says so, and the
-    numeric cross-check `numerically_zero` agrees."""
+def _equal(a, b) -> bool:
+    """a == b as an identity: SymPy's expand or simplify says a - b = 0, and
+    the numeric cross-check `numerically_equal` agrees."""
+    e = a - b
     if e == 0:
         return True
     try:
         said_zero = sp.expand(e) == 0 or sp.simplify(e) == 0
     except Exception:  # noqa: BLE001 - a SymPy failure is just 'not shown'
         return False
-    return said_zero and numerically_zero(e)
+    return said_zero and numerically_equal(a, b)
 
 
 def _same_function(a, b) -> bool:
@@ -156,7 +126,7 @@ def _same_function(a, b) -> bool:
         return len(a.args) == len(b.args) and all(
             _same_function(ea, eb) and _same_condition(ca, cb)
             for (ea, ca), (eb, cb) in zip(a.args, b.args))
-    return _zero(a - b)
+    return _equal(a, b)
 
 
 def _canonical_relation(rel):
@@ -173,7 +143,7 @@ def _same_condition(a, b) -> bool:
         return True
     ka, kb = _canonical_relation(a), _canonical_relation(b)
     if ka is not None and kb is not None and ka[0] == kb[0]:
-        return _zero(ka[1] - kb[1])
+        return _equal(ka[1], kb[1])
     if isinstance(a, (sp.And, sp.Or)) and type(a) is type(b) and len(a.args) == len(b.args):
         return all(_same_condition(x, y) for x, y in zip(a.args, b.args))
     return False

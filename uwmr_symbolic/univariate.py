@@ -81,10 +81,59 @@ def _one_minus_tanh_squared(expr: sp.Expr) -> sp.Expr:
     return out if sp.count_ops(out) <= sp.count_ops(expr) + 12 else expr
 
 
+#: exact points at which a rewrite or a SymPy identity is re-checked (the
+#: i-th coordinate goes to the i-th variable in name order; absolute values
+#: for a nonnegative variable)
+_CHECK_POINTS = [(sp.Rational(3, 7), sp.Rational(-5, 11)), (sp.Rational(-13, 3), sp.Rational(2, 9)),
+                 (sp.Rational(1, 1000), sp.Rational(7, 1000)), (sp.Rational(123, 4), sp.Rational(-77, 2)),
+                 (sp.Rational(-2, 5), 0), (0, sp.Rational(19, 17)), (sp.Rational(1001, 10), sp.Rational(3, 10)),
+                 (sp.Rational(-6, 13), sp.Rational(-9, 8))]
+
+
+def numerically_equal(a, b, prec=300) -> bool:
+    """No check point separates a and b (Arb at `prec` bits), and at least
+    half of the points give enclosures of both narrower than 2^-200 of
+    their size: the independent cross-check that a SymPy simplification
+    or a rewrite must pass before it is used."""
+    variables = sorted((a - b).free_symbols | a.free_symbols | b.free_symbols, key=lambda v: v.name)
+    if len(variables) > 2:
+        return False
+    if not variables:
+        return exact_sign(a - b) == 0
+    try:
+        fa, fb = (IntervalFunction(x, variables, mode="range", prec=prec) for x in (a, b))
+    except (Undefined, TypeError, ValueError):
+        return False
+    tight = 0
+    for point in _CHECK_POINTS:
+        args = [Interval.point(abs(x) if v.is_nonnegative else x, prec=prec) for v, x in zip(variables, point)]
+        try:
+            ba, bb = fa(*args), fb(*args)
+        except Undefined:
+            continue
+        if not (ba.is_finite() and bb.is_finite()):
+            continue
+        lo = max(ba.lower_fraction(), bb.lower_fraction())
+        hi = min(ba.upper_fraction(), bb.upper_fraction())
+        if lo > hi:
+            return False        # disjoint enclosures: a != b at this point
+        size = max(abs(ba.lower_fraction()), abs(ba.upper_fraction()), 1)
+        tight += all(box.upper_fraction() - box.lower_fraction() < size / 2 ** 200 for box in (ba, bb))
+    return 2 * tight >= len(_CHECK_POINTS)
+
+
+def _checked_rewrite(expr, out):
+    """out if it passes the numeric cross-check against expr, else expr."""
+    if out == expr or numerically_equal(out, expr):
+        return out
+    return expr
+
+
 def prepare(expr: sp.Expr) -> sp.Expr:
     """A form of expr that interval arithmetic handles well (same function):
     tanh instead of sinh/cosh, cosh^-2 instead of 1 - tanh^2, and sums
-    regrouped on their transcendental factors (fewer cancelling terms)."""
+    regrouped on their transcendental factors (fewer cancelling terms).
+    Each rewrite is cross-checked (`numerically_zero`) before it is kept."""
     out = _one_minus_tanh_squared(_hyperbolic_to_tanh(expr))
     if isinstance(out, sp.Add) and out.has(sp.Function):
         syms = list(out.free_symbols)
@@ -92,7 +141,7 @@ def prepare(expr: sp.Expr) -> sp.Expr:
             grouped = _regroup(out, syms[0])
             if sp.count_ops(grouped) <= sp.count_ops(out):
                 out = grouped
-    return out
+    return _checked_rewrite(expr, out)
 
 
 def _cancel_rational_part(term: sp.Expr) -> sp.Expr:
@@ -136,7 +185,7 @@ def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
                   lambda n: sp.pi / 2 - sp.atan(sp.cancel(1 / n.args[0])))
     if not e.has(sp.Function, sp.Piecewise):
         e = sp.cancel(e)
-    return e
+    return _checked_rewrite(expr.subs(s, 1 / T), e)
 
 
 @lru_cache(maxsize=4096)
