@@ -189,8 +189,8 @@ def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
 
 
 @lru_cache(maxsize=4096)
-def _compiled(expr: sp.Expr, var: sp.Symbol, mode: str) -> IntervalFunction:
-    return IntervalFunction(expr, [var], mode=mode)
+def _compiled(expr: sp.Expr, var: sp.Symbol, mode: str, prec: int = 128) -> IntervalFunction:
+    return IntervalFunction(expr, [var], mode=mode, prec=prec)
 
 
 def enclose(expr, var, lo, hi, mode="range") -> Interval:
@@ -200,7 +200,7 @@ def enclose(expr, var, lo, hi, mode="range") -> Interval:
 
 def value_at(expr, var, point, prec=256) -> Interval:
     """Tight certified enclosure of expr at an exact point."""
-    return IntervalFunction(expr, [var], mode="range", prec=prec)(Interval.point(point))
+    return _compiled(expr, var, "range", prec)(Interval.point(point, prec))
 
 
 def exact_value(expr, var, point):
