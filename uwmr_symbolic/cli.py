@@ -263,5 +263,18 @@ def main(argv=None) -> int:
     return status
 
 
+def run() -> None:
+    """Console entry point: `main`, and a reader that closes the pipe early
+    (`uwmr-verify ... | head`) ends the command quietly with status 141, as
+    if killed by SIGPIPE."""
+    try:
+        status = main()
+        sys.stdout.flush()
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        status = 141
+    sys.exit(status)
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    run()

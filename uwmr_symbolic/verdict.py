@@ -2,9 +2,21 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from enum import Enum
 from typing import Any
 
-PROVED, REFUTED, UNKNOWN = "proved", "refuted", "unknown"
+
+class Status(str, Enum):
+    """A verdict's status; a str, so it prints and serialises as its value."""
+    PROVED = "proved"
+    REFUTED = "refuted"
+    UNKNOWN = "unknown"
+
+    def __str__(self) -> str:
+        return self.value
+
+
+PROVED, REFUTED, UNKNOWN = Status.PROVED, Status.REFUTED, Status.UNKNOWN
 
 
 @dataclass
@@ -15,7 +27,7 @@ class Verdict:
     whole domain), ``refuted`` (with a ``witness`` re-checked rigorously) or
     ``unknown`` (``reason`` says what was left undecided)."""
 
-    status: str
+    status: Status
     reason: str
     witness: Any = None
     details: dict = field(default_factory=dict)
