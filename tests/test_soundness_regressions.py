@@ -182,3 +182,22 @@ def test_non_radial_only_far_out_is_refuted_on_p4(tmp_path):
     w = report.properties["P4"].witness
     assert {tuple(w["point_a"]), tuple(w["point_b"])} == {("100", "0"), ("0", "100")} or \
         sp.Rational(w["point_a"][0]) ** 2 + sp.Rational(w["point_a"][1]) ** 2 >= 2500
+
+
+def test_a_vertical_tangent_at_a_boundary_is_no_derivative(tmp_path):
+    # F = log(1 + s^2) + (sign(s^2 - 1)|s^2 - 1|^(1/3) + 1)/10 is increasing and
+    # continuous, but F' -> +oo at s = 1 from both sides: df/de1 does not exist on
+    # |e| = 1 (P5, P6 fail), kf is infinite (P1); F > 0 off the origin (P3)
+    report, v = verify(tmp_path, "f = log(1 + rho) + (sp.sign(rho - 1)*sp.Abs(rho - 1)**Rational(1, 3) + 1)/10\n")
+    for p in ("P1", "P5", "P6", "P7"):
+        assert v[p] == "refuted", (p, report.properties[p].reason)
+    assert v["P3"] == "proved" and v["P8"] != "proved"
+    assert report.properties["P5"].witness["e1"] == "1"
+
+
+def test_limit_of_a_polynomial_keeps_its_side():
+    from uwmr_symbolic.limits import limit_right
+    x = sp.Symbol("x", positive=True)
+    assert limit_right(1 - (1 - x) ** 2, x).side == 1            # 2x - x^2 > 0 near 0+
+    assert limit_right((1 - x) ** 3 - 1, x).side == -1
+    assert limit_right((1 - (1 - x) ** 2) ** sp.Rational(1, 3), x).value == 0

@@ -104,7 +104,12 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
                 bounded.append(a)
         if bounded:
             return _with_bounded(limits, isinstance(expr, sp.Add))
-        return _add(limits) if isinstance(expr, sp.Add) else _mul(limits)
+        if isinstance(expr, sp.Mul):
+            return _mul(limits)
+        lim = _add(limits)
+        if lim.side is None and not lim.infinite and sign_of(lim.value) == 0:
+            lim = Lim(lim.value, _polynomial_side(expr, x))
+        return lim
     if isinstance(expr, sp.Pow):
         base, ex = expr.args
         if ex.has(x):
@@ -124,6 +129,19 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
 
 
 _NEAR = sp.Rational(1, 64)
+
+
+def _polynomial_side(expr, x) -> int | None:
+    """Sign of a polynomial p with rational coefficients and p(0) = 0 on
+    (0, eps): the sign of its lowest nonzero coefficient; None otherwise."""
+    try:
+        poly = sp.Poly(expr, x)
+    except (sp.PolynomialError, sp.GeneratorsError):
+        return None
+    if not (poly.domain.is_ZZ or poly.domain.is_QQ) or poly.is_zero:
+        return None
+    lowest = poly.terms()[-1][1]       # terms() lists the highest degree first
+    return 1 if lowest > 0 else -1
 
 
 def _bounded_near_zero(expr, x) -> bool:

@@ -111,13 +111,17 @@ class Analysis:
             b = right.lo
             lv = one_sided_value(self.derivative(left.expr, k), b, -1)
             rv = one_sided_value(self.derivative(right.expr, k), b, +1)
+            name = "F" + "′" * k
+            if lv in (sp.oo, -sp.oo) or rv in (sp.oo, -sp.oo):
+                return refuted(f"{name} is unbounded near s = {b} (|e| = {float_of(b):.6g}): left limit "
+                               f"{_show(lv)}, right limit {_show(rv)}",
+                               {**_at(b), "left": _show(lv), "right": _show(rv)})
             values = [lv, rv]
             if k == 0:
                 values.append(exact_value(self.profile.at_point[b], S, b))
             verdicts = [same_value(values[0], v) for v in values[1:]]
             if all(verdicts):
                 continue
-            name = "F" + "′" * k
             if False in verdicts:
                 return refuted(
                     f"{name} jumps at s = {b} (|e| = {float_of(b):.6g}): left limit {_show(lv)}, right limit "
@@ -250,11 +254,13 @@ def verify_p1(a: Analysis) -> Verdict:
     if early:
         return early
     c1 = a.c1
-    if not c1.proved:
+    if c1.refuted:
         return c1
     kf = a.kf
     if kf.unbounded_witness is not None:
         return refuted(f"kf is infinite: {kf.reason}", kf.unbounded_witness)
+    if not c1.proved:
+        return c1
     if kf.upper is None:
         return unknown(f"C^1 proved, but no finite bound on |df/de2| found: {kf.reason}")
     return proved(f"{c1.reason}; kf = sup|F'| in [{float(kf.lower):.9g}, {float(kf.upper):.9g}]")
@@ -290,6 +296,9 @@ def verify_p3(a: Analysis) -> Verdict:
     pos = _positive_on_pieces(a, 0, "F(s) > 0")
     if pos.refuted:
         return refuted(f"f is not positive: {pos.reason}", pos.witness)
+    defined = a.c0[0]       # F continuous, so defined, on every open piece
+    if not defined.proved:
+        return unknown(f"f may be undefined somewhere: {defined.reason}")
     last = a.profile.pieces[-1]
     try:
         lim = limit_at_infinity(last.expr, S)
