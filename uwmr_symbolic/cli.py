@@ -146,7 +146,24 @@ def load_references(specs) -> dict:
     return refs
 
 
-def run_simulations(results, args) -> int:
+class Reports:
+    """The verifier's `Report` of each design file, computed at most once per
+    command (with the command's --timeout) for --simulate and --codegen,
+    which need the report object that the batch workers do not return."""
+
+    def __init__(self, timeout: float):
+        self.timeout = timeout
+        self._reports = {}
+
+    def __call__(self, path):
+        from .verify import verify_design
+        key = str(path)
+        if key not in self._reports:
+            self._reports[key] = verify_design(path, timeout=self.timeout)
+        return self._reports[key]
+
+
+def run_simulations(results, args, reports: Reports) -> int:
     """--simulate: attach result["simulation"]; 1 if a check failed."""
     from .simulation import simulate_design
     refs = load_references(args.reference)
@@ -154,15 +171,15 @@ def run_simulations(results, args) -> int:
     for d in results:
         if d.get("error") is not None:
             continue
-        sim = simulate_design(d["design"], monte_carlo=args.monte_carlo, seed=args.seed,
-                              references=refs or None, delay=args.delay)
+        sim = simulate_design(d["design"], report=reports(d["design"]), monte_carlo=args.monte_carlo,
+                              seed=args.seed, references=refs or None, delay=args.delay)
         d["simulation"] = sim
         if not all(entry.get("ok", True) for entry in sim.values()):
             status = 1
     return status
 
 
-def write_code(paths, results, out, force) -> int:
+def write_code(paths, results, out, force, reports: Reports) -> int:
     """`--codegen`: generate each usable design; 1 if one was refused."""
     from .codegen import CodegenRefused, generate
     status = 0
@@ -172,7 +189,7 @@ def write_code(paths, results, out, force) -> int:
             continue
         target = None if out == "" else (Path(out) / path.stem if len(paths) > 1 else Path(out))
         try:
-            written = generate(path, target, force=force)
+            written = generate(path, target, force=force, report=reports(path))
         except CodegenRefused as exc:
             print(f"{path}: no code generated, the design is not verified ({len(exc.reasons)} "
                   f"reason(s): {exc.reasons[0]} ...); use --force for a NOT VERIFIED build",
@@ -214,9 +231,10 @@ def main(argv=None) -> int:
         if d.get("error") is not None:
             print(f"{d['design']}: {d['error']}", file=sys.stderr)
     sim_status = 0
+    reports = Reports(args.timeout)
     if simulate:
         try:
-            sim_status = run_simulations(results, args)
+            sim_status = run_simulations(results, args, reports)
         except UsageError as exc:
             print(f"uwmr-verify: {exc}", file=sys.stderr)
             return 2
@@ -259,7 +277,7 @@ def main(argv=None) -> int:
             return 2
     status = worst_status([*(d["exit_status"] for d in results), sim_status])
     if args.codegen is not None:
-        status = worst_status([status, write_code(paths, results, args.codegen, args.force)])
+        status = worst_status([status, write_code(paths, results, args.codegen, args.force, reports)])
     return status
 
 
