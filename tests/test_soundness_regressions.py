@@ -80,6 +80,8 @@ def test_value_at_the_origin_is_compared_with_the_limit(tmp_path):
 @pytest.mark.parametrize("body", [
     "f = Piecewise((0, Eq(rho, 0)), (log(1 + rho), True))\n",
     "f = Piecewise((log(1 + rho), rho > 0), (0, True))\n",
+    "f = Piecewise((0, sp.And(Eq(e1, 0), Eq(e2, 0))), (log(1 + rho), True))\n",
+    "f = Piecewise((log(1 + rho), sp.Ne(rho, 0)), (0, True))\n",
     # log(1+x) >= x/(1+x) for x >= 0, so the Max is log(1 + rho): the boundary
     # is transcendental but never switches
     "f = Max(log(1 + rho), rho/(1 + rho))\n",
@@ -201,3 +203,10 @@ def test_limit_of_a_polynomial_keeps_its_side():
     assert limit_right(1 - (1 - x) ** 2, x).side == 1            # 2x - x^2 > 0 near 0+
     assert limit_right((1 - x) ** 3 - 1, x).side == -1
     assert limit_right((1 - (1 - x) ** 2) ** sp.Rational(1, 3), x).value == 0
+
+
+def test_a_condition_on_one_axis_is_not_taken_for_the_origin(tmp_path):
+    # f = 0 on the whole line e1 = 0, log(1 + rho) elsewhere: not radial (f(0, 1) = 0 < f(1, 0))
+    report, v = verify(tmp_path, "f = Piecewise((0, Eq(e1, 0)), (log(1 + rho), True))\n")
+    assert v["P4"] == "refuted"
+    assert not any(s == "proved" for p, s in v.items() if p not in ("P2",)), v

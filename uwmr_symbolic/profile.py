@@ -138,9 +138,29 @@ def _canonical_relation(rel):
     return None
 
 
+def _zero_set(cond):
+    """g with cond <=> g = 0 over the reals, for an equation or a conjunction
+    of equations (a = 0 and b = 0 <=> a^2 + b^2 = 0; sqrt(h) = 0 <=> h = 0),
+    else None."""
+    if isinstance(cond, sp.Eq):
+        g = cond.lhs - cond.rhs
+        while isinstance(g, sp.Pow) and g.exp.is_positive:
+            g = g.base          # h**p = 0 <=> h = 0 for p > 0
+        return g
+    if isinstance(cond, sp.And):
+        parts = [_zero_set(c) for c in cond.args]
+        if all(p is not None and p.is_real for p in parts):
+            return sp.Add(*[p ** 2 for p in parts])
+    return None
+
+
 def _same_condition(a, b) -> bool:
     if a == b:
         return True
+    za, zb = _zero_set(a), _zero_set(b)
+    if za is not None and zb is not None:
+        za, zb = _zero_set(sp.Eq(za, 0)), _zero_set(sp.Eq(zb, 0))
+        return _equal(za, zb) or _equal(za, -zb)
     ka, kb = _canonical_relation(a), _canonical_relation(b)
     if ka is not None and kb is not None and ka[0] == kb[0]:
         return _equal(ka[1], kb[1])
