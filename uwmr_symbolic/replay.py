@@ -46,10 +46,8 @@ def replay(f, p4_proved: bool) -> dict:
     remainder = -LAM * (WR + LAM * VR * g * sinc + K2 * sp.tanh(E3)) * D
     generic_ok = sp.expand(Udot - eq19 - remainder) == 0
     # for this f: D vanishes identically when f is radial (P4)
-    s = sp.Symbol("s", positive=True)
     Fr = sp.Function("F")(sp.sqrt(E1 ** 2 + E2 ** 2))
     D_radial = sp.simplify(E1 * sp.diff(Fr, E2) - E2 * sp.diff(Fr, E1))
-    del s
     steps = {
         "closed_loop": {"ok": loop_ok,
                         "detail": "(8) with (9) substituted equals the closed loop (11)-(13) of SPEC.md"},
