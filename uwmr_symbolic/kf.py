@@ -58,11 +58,13 @@ def scale(cert: SupCertificate, c) -> SupCertificate:
                           cert.unbounded_witness)
 
 
-def _candidates(expr, lo, hi):
+def _candidates(expr, lo, hi, interior=True):
     """(value, point) candidates for the sup of expr on (lo, hi): critical
-    points found by SymPy, one-sided values at the ends (point None at oo)."""
+    points found by SymPy (only when `interior`: the best box of the branch
+    and bound was not the one at infinity), one-sided values at the ends
+    (point None at oo)."""
     out = []
-    crit = attempt(lambda: sp.solveset(sp.diff(expr, S), S, sp.Interval.open(lo, hi)), 3.0)
+    crit = attempt(lambda: sp.solveset(sp.diff(expr, S), S, sp.Interval.open(lo, hi)), 3.0) if interior else None
     if isinstance(crit, sp.FiniteSet) and any(c.has(sp.CRootOf, sp.RootOf) for c in crit):
         crit = None     # algebraic numbers without radicals: no closed form to offer
     if isinstance(crit, sp.FiniteSet):
@@ -169,7 +171,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
         return SupCertificate(lower, None, None, None, f"branch and bound found no finite bound for {name}")
     # exact candidates from the piece holding the supremum
     E, piece, enc = top
-    for value, point in _candidates(E, piece.lo, piece.hi):
+    for value, point in _candidates(E, piece.lo, piece.hi, interior=not enc.at_infinity):
         fv = float_of(value)
         if not (float(lower) - 1e-9 * abs(fv) - 1e-300 <= fv <= float(upper) + 1e-9 * abs(fv)):
             continue
