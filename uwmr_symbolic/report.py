@@ -81,6 +81,8 @@ def to_dict(r: Report) -> dict:
                            "witness": _jsonable(v.witness), **_jsonable(v.details)}
                        for p, v in r.properties.items()},
         "kf": {"exact": None if kf is None or kf.exact is None else str(kf.exact),
+               "exact_digits": None if kf is None or kf.exact is None or kf.exact.is_Integer
+               else str(sp.N(kf.exact, 20)),
                "lower": None if kf is None or kf.lower is None else Interval.point(kf.lower).lower_float(),
                "upper": None if kf is None or kf.upper is None else Interval.point(kf.upper).upper_float(),
                "attained": None if kf is None else kf.attained,
@@ -136,9 +138,11 @@ def render_text(r) -> str:
         lines.append(f"  kf: {'infinite' if kf.get('unbounded') else 'undecided'} — {kf['reason']}")
     else:
         att = {True: "attained", False: "approached at infinity, not attained", None: "attainment undecided"}
-        exact = f"{kf['exact']} = " if kf["exact"] is not None else ""
-        lines.append(f"  kf = {exact}{kf['upper']:.12g}  enclosure [{kf['lower']:.12g}, "
-                     f"{kf['upper']:.12g}]  ({att[kf['attained']]})")
+        if kf["exact"] is not None:
+            digits = f" = {kf['exact_digits']}..." if kf.get("exact_digits") else ""
+            lines.append(f"  kf = {kf['exact']}{digits}  ({att[kf['attained']]})")
+        else:
+            lines.append(f"  kf in [{kf['lower']:.12g}, {kf['upper']:.12g}]  ({att[kf['attained']]})")
     if d["gains"]:
         lines.append("")
         lines.append("  bound (10)     |V| bound  margin          |W| bound  margin          lam_max")
