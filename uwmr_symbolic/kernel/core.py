@@ -31,7 +31,7 @@ import sympy as sp
 from flint import arb
 
 from .arb import Iv, Undefined, evaluate
-from .parse import parse
+from .parse import ParseError, parse
 
 _TOKEN = object()
 RULES: dict = {}
@@ -86,6 +86,7 @@ class Theorem:
     def __post_init__(self):
         if self._token is not _TOKEN:
             raise KernelError("theorems are made only by kernel rules")
+        object.__setattr__(self, "_token", None)    # so dataclasses.replace cannot forge one
 
 
 def _s(e) -> str:
@@ -119,7 +120,10 @@ def rule(*assumes):
             for p in premises:
                 _need(isinstance(p, Theorem), f"{fn.__name__}: a premise is not a theorem")
             enc = {k: _encode(v) for k, v in data.items()}      # fails early on non-JSON data
-            data = {k: decode(_encode(v)) for k, v in data.items()}   # exactly what a checker sees
+            try:
+                data = {k: decode(v) for k, v in enc.items()}     # exactly what a checker sees
+            except ParseError as exc:
+                raise KernelError(f"{fn.__name__}: {exc}") from None
             out = fn(*premises, **data)
             claim, extra = out if isinstance(out, tuple) else (out, ())
             assumptions = frozenset(assumes).union(extra, *[p.assumptions for p in premises])
@@ -183,18 +187,21 @@ def _expr(e, var) -> sp.Expr:
     return e
 
 
-def _interval(var, lo, hi, lo_open, hi_open):
+def _interval(var, lo, hi, lo_open, hi_open, at_zero=False):
     """Checked interval: lo < hi, infinite ends open, and the variable's
-    SymPy assumptions (positive / nonnegative) hold on all of it."""
+    SymPy assumptions (positive / nonnegative) hold on all of it.  A rule
+    that only *evaluates* the expression tree (no diff, subs or simplify
+    relying on the assumption) may pass at_zero=True: a positive variable
+    may then have the closed end 0 too."""
     _need(isinstance(var, sp.Symbol), f"not a variable: {var}")
     lo, hi = _number(lo), _number(hi)
     _need(_lt(lo, hi), f"empty interval ({lo}, {hi})")
     _need((lo != -OO or lo_open) and (hi != OO or hi_open), "infinite ends are open")
     kind = next((k for k in _VAR_KINDS if var.assumptions0 == sp.Symbol("_", **{k: True}).assumptions0), None)
     _need(kind is not None, f"{var}: a variable is declared real, positive or nonnegative, nothing else")
-    if kind == "positive":
+    if kind == "positive" and not at_zero:
         _need(lo == 0 and lo_open or lo != -OO and _lt(0, lo), f"{var} > 0 assumed: interval must lie in (0, oo)")
-    elif kind == "nonnegative":
+    elif kind != "real":
         _need(lo == 0 or _lt(0, lo), f"{var} >= 0 assumed")
     return lo, hi
 
@@ -243,7 +250,7 @@ def sign_by_cover(*, expr, var, cuts, want, strict=True):
     so they tile [c0, cn] with no gap; range evaluation shows E defined on each."""
     _need(want in (1, -1), "want is +1 or -1")
     cuts = _cuts(var, cuts)
-    _interval(var, cuts[0], cuts[-1], False, False)
+    _interval(var, cuts[0], cuts[-1], False, False, at_zero=True)
     e = _expr(expr, var)
     for a, b in zip(cuts, cuts[1:]):
         try:
@@ -255,34 +262,37 @@ def sign_by_cover(*, expr, var, cuts, want, strict=True):
 
 
 @rule("arb", "sympy-core", "sympy-diff")
-def sign_by_taylor(*, expr, var, c, side, width, order):
+def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
     """Taylor with the Lagrange remainder, one-sided.  Premises: E(c) = E'(c)
     = ... = E^(m-1)(c) = 0 exactly (SymPy's automatic evaluation gives the
-    literal 0, confirmed by an Arb enclosure containing 0); E, ..., E^(m) are
-    all defined (hence continuous) on the closed box B = [c, c+w] (side +1)
-    or [c-w, c] (side -1); E^(m) has a strict sign sigma on B.  Then for x
-    in B, x != c: E(x) = E^(m)(xi) (x-c)^m / m! with xi between c and x, so
-    E has the sign sigma*side^m on (c, c+w] resp. [c-w, c)."""
+    literal 0, confirmed by an Arb enclosure containing 0); E, ..., E^(m)
+    (each `sympy.diff(E, x, k)`) are all defined, hence continuous, on the
+    closed box B = [c, c+w] (side +1) or [c-w, c] (side -1); E^(m) has one
+    strict sign sigma on every closed sub-box of B (cut at the optional exact
+    increasing `cuts` from one end of B to the other).  Then for x in B,
+    x != c: E(x) = E^(m)(xi) (x-c)^m / m! with xi between c and x, so E has
+    the sign sigma*side^m on (c, c+w] resp. [c-w, c)."""
     _need(side in (1, -1), "side is +1 or -1")
     _need(isinstance(order, int) and 1 <= order <= 12, "order m is 1..12")
     c, w = _number(c), _number(width)
     _need(_lt(0, w), "width > 0")
     a, b = (c, c + w) if side > 0 else (c - w, c)
     _interval(var, a, b, side > 0, side < 0)
+    cuts = _cuts(var, cuts if cuts is not None else [a, b])
+    _need(cuts[0] == a and cuts[-1] == b, "the cuts must run from one end of the box to the other")
     e = _expr(expr, var)
-    derivs = [e]
-    for _ in range(order):
-        derivs.append(sp.diff(derivs[-1], var))
-    for k, d in enumerate(derivs):
+    for k in range(order + 1):
+        d = sp.diff(e, var, k)
         try:
-            box = evaluate(d, var, a, b)
+            evaluate(d, var, a, b)
+            boxes = [evaluate(d, var, u, v) for u, v in zip(cuts, cuts[1:])] if k == order else []
         except Undefined as exc:
             raise KernelError(f"derivative {k} not defined on [{a}, {b}]: {exc}") from None
         if k < order:
             at_c = d.subs(var, c)
             _need(at_c == 0, f"derivative {k} at {c} is {at_c}, not exactly 0")
             _need(evaluate(d, var, c, c, bits=256).hull().contains(0), "Arb disagrees with exact 0")
-    sigma = 1 if box.positive() else -1 if box.negative() else 0
+    sigma = 1 if all(v.positive() for v in boxes) else -1 if all(v.negative() for v in boxes) else 0
     _need(sigma != 0, f"derivative {order} has no strict sign on [{a}, {b}]")
     return _sign_claim(e, var, a, b, side > 0, side < 0, sigma * side ** order, True)
 
@@ -295,9 +305,10 @@ def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
     root in the interior of I), then the sign of p on I is that of p at one
     inner point x0 where no q_i vanishes."""
     _need(want in (1, -1), "want is +1 or -1")
-    lo, hi = _interval(var, lo, hi, lo_open, hi_open)
+    lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     _need(all(v in (OO, -OO) or v.is_Rational for v in (lo, hi)), "Sturm needs rational ends")
     e = _expr(expr, var)
+    _need(e.is_polynomial(var), f"not a polynomial: {e}")
     try:
         poly = sp.Poly(e, var)
     except sp.PolynomialError:
@@ -460,6 +471,25 @@ def join(left, right):
     return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, l.strict and r.strict)
 
 
+@rule("arb", "sympy-core")
+def join_at_zero(left, right):
+    """Same E, variable and sign on <a, m) and (m, b>, and E(m) = 0:
+    exactly (SymPy's evaluation gives the literal 0) with E defined at m
+    (Arb evaluates it, enclosing 0).  Then want*E >= 0 on <a, b> (weak)."""
+    _is_sign(left)
+    _is_sign(right)
+    l, r = left.claim, right.claim
+    _need((l.expr, l.var, l.want) == (r.expr, r.var, r.want), "different claims")
+    _need(l.hi == r.lo, "not adjacent")
+    e, var, m = l.e(), l.x(), parse(l.hi)
+    _need(e.subs(var, m) == 0, f"E({m}) is not exactly 0")
+    try:
+        _need(evaluate(e, var, m, m, bits=256).hull().contains(0), "Arb disagrees with exact 0")
+    except Undefined as exc:
+        raise KernelError(f"E undefined at {m}: {exc}") from None
+    return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, False)
+
+
 @rule("arb")
 def weaken(thm, *, lo, hi, lo_open, hi_open, strict):
     """A sign on I gives the same sign on any J contained in I, and a
@@ -468,7 +498,7 @@ def weaken(thm, *, lo, hi, lo_open, hi_open, strict):
     c = thm.claim
     var = c.x()
     a, b = c.ends()
-    lo, hi = _interval(var, lo, hi, lo_open, hi_open)
+    lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     _need(_lt(a, lo) or (lo == a and (lo_open or not c.lo_open)), "J starts outside I")
     _need(_lt(hi, b) or (hi == b and (hi_open or not c.hi_open)), "J ends outside I")
     _need(c.strict or not strict, "a weak sign does not give a strict one")
@@ -627,7 +657,7 @@ def sup_upper_by_cover(*, expr, var, cuts, bound):
     increasing exact cut points, the Arb range enclosure of E lies below
     the enclosure of the exact constant U."""
     cuts = _cuts(var, cuts)
-    _interval(var, cuts[0], cuts[-1], False, False)
+    _interval(var, cuts[0], cuts[-1], False, False, at_zero=True)
     e, u = _expr(expr, var), _number(bound)
     _need(u not in (OO, -OO), "finite bound")
     ub = evaluate(u, bits=256)
@@ -655,7 +685,7 @@ def sup_upper_by_sign(thm, *, expr, bound):
 def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
     """sup_I E >= L: the exact point p lies in I and E(p) >= L, either
     exactly (E(p) - L evaluates to the literal 0) or by Arb enclosures."""
-    lo, hi = _interval(var, lo, hi, lo_open, hi_open)
+    lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     e, p, L = _expr(expr, var), _number(point), _number(bound)
     _need(_lt(lo, p) or (p == lo and not lo_open), "point before I")
     _need(_lt(p, hi) or (p == hi and not hi_open), "point after I")

@@ -29,9 +29,8 @@ def _check(node):
         if not isinstance(node.value, (int, str)) or isinstance(node.value, bool):
             raise ParseError(f"literal not allowed: {node.value!r}")
         return
-    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub) \
-            and isinstance(node.operand, ast.Constant) and type(node.operand.value) is int:
-        return
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        return _check(node.operand)
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
         _check(node.func)
         for a in node.args:
