@@ -131,12 +131,13 @@ def test_sign_by_taylor():
     rejects(K.sign_by_taylor, expr=sp.cos(x), var=x, c=ZERO, side=1, width=Q(1, 2), order=1)
     # E''' = cos x changes sign on [0, 4]
     rejects(K.sign_by_taylor, expr=x - sp.sin(x), var=x, c=ZERO, side=1, width=sp.Integer(4), order=3)
-    # sub-boxes for E^(m): (s**2 + 1)**-1 ... its natural enclosure on [1, 5/4] is too wide
+    # sub-boxes for E^(m): its natural enclosure on all of [1, 5/4] is too wide
     D = Q(1, 2) - s / (s ** 2 + 1)
     rejects(K.sign_by_taylor, expr=D, var=s, c=sp.Integer(1), side=1, width=Q(1, 4), order=2)
-    K.sign_by_taylor(expr=D, var=s, c=sp.Integer(1), side=1, width=Q(1, 4), order=2, cuts=[1, Q(9, 8), Q(5, 4)])
+    cuts = [1 + Q(k, 32) for k in range(9)]
+    K.sign_by_taylor(expr=D, var=s, c=sp.Integer(1), side=1, width=Q(1, 4), order=2, cuts=cuts)
     rejects(K.sign_by_taylor, expr=D, var=s, c=sp.Integer(1), side=1, width=Q(1, 4), order=2,
-            cuts=[1, Q(9, 8), Q(6, 4)])                                   # cuts must end at c + w
+            cuts=cuts[:-1])                                               # cuts must end at c + w
     # E = x*log(x) is not defined at 0
     rejects(K.sign_by_taylor, expr=s * sp.log(s) + s, var=s, c=ZERO, side=1, width=Q(1, 4), order=1)
 
@@ -330,9 +331,10 @@ def prove_kf_half():
     one = sp.Integer(1)
     head = K.weaken(K.sign_by_cover(expr=D, var=s, cuts=[ZERO] + [Q(k, 32) for k in range(1, 25)], want=1),
                     lo=ZERO, hi=Q(3, 4), lo_open=True, hi_open=False, strict=True)
-    left = K.sign_by_taylor(expr=D, var=s, c=one, side=-1, width=Q(1, 4), order=2)
+    left = K.sign_by_taylor(expr=D, var=s, c=one, side=-1, width=Q(1, 4), order=2,
+                            cuts=[Q(3, 4) + Q(k, 32) for k in range(9)])
     right = K.sign_by_taylor(expr=D, var=s, c=one, side=1, width=Q(1, 4), order=2,
-                             cuts=[one, Q(9, 8), Q(5, 4)])
+                             cuts=[one + Q(k, 32) for k in range(9)])
     mid = K.sign_by_cover(expr=D, var=s, cuts=[Q(5, 4) + Q(k, 64) for k in range(0, 177)], want=1)
     Dt = Q(1, 2) - t / (t ** 2 + 1)
     tail_t = K.weaken(K.sign_by_cover(expr=Dt, var=t, cuts=[ZERO, Q(1, 8), Q(1, 4)], want=1),

@@ -43,8 +43,10 @@ class KernelError(ValueError):
 
 
 def _need(cond, msg):
+    """Raise KernelError(msg) unless cond; msg may be a function making the
+    text (so that printing large expressions costs nothing on success)."""
     if not cond:
-        raise KernelError(msg)
+        raise KernelError(msg() if callable(msg) else msg)
 
 
 @dataclass(frozen=True)
@@ -118,7 +120,7 @@ def rule(*assumes):
         @functools.wraps(fn)
         def apply(*premises, **data):
             for p in premises:
-                _need(isinstance(p, Theorem), f"{fn.__name__}: a premise is not a theorem")
+                _need(isinstance(p, Theorem), lambda: f"{fn.__name__}: a premise is not a theorem")
             enc = {k: _encode(v) for k, v in data.items()}      # fails early on non-JSON data
             try:
                 data = {k: decode(v) for k, v in enc.items()}     # exactly what a checker sees
@@ -139,7 +141,7 @@ def rule(*assumes):
 def _number(c) -> sp.Expr:
     """An exact real constant (no Float, no symbol) or oo."""
     c = sp.sympify(c)
-    _need(c in (OO, -OO) or (c.is_number and not c.has(sp.Float)), f"not an exact number: {c}")
+    _need(c in (OO, -OO) or (c.is_number and not c.has(sp.Float)), lambda: f"not an exact number: {c}")
     if c not in (OO, -OO):
         try:
             evaluate(c)
@@ -182,8 +184,8 @@ def _const_sign(c) -> int:
 
 def _expr(e, var) -> sp.Expr:
     e = sp.sympify(e)
-    _need(not e.has(sp.Float), f"floats are not exact: {e}")
-    _need(e.free_symbols <= {var}, f"{e} has symbols other than {var}")
+    _need(not e.has(sp.Float), lambda: f"floats are not exact: {e}")
+    _need(e.free_symbols <= {var}, lambda: f"{e} has symbols other than {var}")
     return e
 
 
@@ -193,16 +195,16 @@ def _interval(var, lo, hi, lo_open, hi_open, at_zero=False):
     that only *evaluates* the expression tree (no diff, subs or simplify
     relying on the assumption) may pass at_zero=True: a positive variable
     may then have the closed end 0 too."""
-    _need(isinstance(var, sp.Symbol), f"not a variable: {var}")
+    _need(isinstance(var, sp.Symbol), lambda: f"not a variable: {var}")
     lo, hi = _number(lo), _number(hi)
-    _need(_lt(lo, hi), f"empty interval ({lo}, {hi})")
+    _need(_lt(lo, hi), lambda: f"empty interval ({lo}, {hi})")
     _need((lo != -OO or lo_open) and (hi != OO or hi_open), "infinite ends are open")
     kind = next((k for k in _VAR_KINDS if var.assumptions0 == sp.Symbol("_", **{k: True}).assumptions0), None)
-    _need(kind is not None, f"{var}: a variable is declared real, positive or nonnegative, nothing else")
+    _need(kind is not None, lambda: f"{var}: a variable is declared real, positive or nonnegative, nothing else")
     if kind == "positive" and not at_zero:
-        _need(lo == 0 and lo_open or lo != -OO and _lt(0, lo), f"{var} > 0 assumed: interval must lie in (0, oo)")
+        _need(lo == 0 and lo_open or lo != -OO and _lt(0, lo), lambda: f"{var} > 0 assumed: interval must lie in (0, oo)")
     elif kind != "real":
-        _need(lo == 0 or _lt(0, lo), f"{var} >= 0 assumed")
+        _need(lo == 0 or _lt(0, lo), lambda: f"{var} >= 0 assumed")
     return lo, hi
 
 
@@ -215,7 +217,7 @@ def _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict) -> Claim:
 
 
 def _is_sign(t: Theorem, var=None):
-    _need(t.claim.kind == "sign", f"premise is a {t.claim.kind} theorem, not a sign theorem")
+    _need(t.claim.kind == "sign", lambda: f"premise is a {t.claim.kind} theorem, not a sign theorem")
     if var is not None:
         _need(t.claim.var == _s(var), "premise about another variable")
 
@@ -236,7 +238,7 @@ def _cuts(var, cuts):
     cuts = [_number(c) for c in cuts]
     _need(all(c not in (OO, -OO) for c in cuts), "cut points are finite")
     for a, b in zip(cuts, cuts[1:]):
-        _need(_lt(a, b), f"cut points not increasing: {a}, {b}")
+        _need(_lt(a, b), lambda: f"cut points not increasing: {a}, {b}")
     return cuts
 
 
@@ -257,7 +259,7 @@ def sign_by_cover(*, expr, var, cuts, want, strict=True):
             v = evaluate(e, var, a, b)
         except Undefined as exc:
             raise KernelError(f"{e} not evaluable on [{a}, {b}]: {exc}") from None
-        _need(_box_ok(v, want, strict), f"sign not shown on [{a}, {b}]: {v}")
+        _need(_box_ok(v, want, strict), lambda: f"sign not shown on [{a}, {b}]: {v}")
     return _sign_claim(e, var, cuts[0], cuts[-1], False, False, want, strict)
 
 
@@ -266,7 +268,7 @@ def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
     """Taylor with the Lagrange remainder, one-sided.  Premises: E(c) = E'(c)
     = ... = E^(m-1)(c) = 0 exactly (SymPy's automatic evaluation gives the
     literal 0, confirmed by an Arb enclosure containing 0); E, ..., E^(m)
-    (each `sympy.diff(E, x, k)`) are all defined, hence continuous, on the
+    (`sympy.diff` applied k times) are all defined, hence continuous, on the
     closed box B = [c, c+w] (side +1) or [c-w, c] (side -1); E^(m) has one
     strict sign sigma on every closed sub-box of B (cut at the optional exact
     increasing `cuts` from one end of B to the other).  Then for x in B,
@@ -281,19 +283,20 @@ def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
     cuts = _cuts(var, cuts if cuts is not None else [a, b])
     _need(cuts[0] == a and cuts[-1] == b, "the cuts must run from one end of the box to the other")
     e = _expr(expr, var)
+    d = e
     for k in range(order + 1):
-        d = sp.diff(e, var, k)
+        d = sp.diff(d, var) if k else e
         try:
-            evaluate(d, var, a, b)
-            boxes = [evaluate(d, var, u, v) for u, v in zip(cuts, cuts[1:])] if k == order else []
+            boxes = [evaluate(d, var, u, v) for u, v in zip(cuts, cuts[1:])] if k == order \
+                else [evaluate(d, var, a, b)]
         except Undefined as exc:
             raise KernelError(f"derivative {k} not defined on [{a}, {b}]: {exc}") from None
         if k < order:
             at_c = d.subs(var, c)
-            _need(at_c == 0, f"derivative {k} at {c} is {at_c}, not exactly 0")
+            _need(at_c == 0, lambda: f"derivative {k} at {c} is {at_c}, not exactly 0")
             _need(evaluate(d, var, c, c, bits=256).hull().contains(0), "Arb disagrees with exact 0")
     sigma = 1 if all(v.positive() for v in boxes) else -1 if all(v.negative() for v in boxes) else 0
-    _need(sigma != 0, f"derivative {order} has no strict sign on [{a}, {b}]")
+    _need(sigma != 0, lambda: f"derivative {order} has no strict sign on [{a}, {b}]")
     return _sign_claim(e, var, a, b, side > 0, side < 0, sigma * side ** order, True)
 
 
@@ -308,7 +311,7 @@ def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
     lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     _need(all(v in (OO, -OO) or v.is_Rational for v in (lo, hi)), "Sturm needs rational ends")
     e = _expr(expr, var)
-    _need(e.is_polynomial(var), f"not a polynomial: {e}")
+    _need(e.is_polynomial(var), lambda: f"not a polynomial: {e}")
     try:
         poly = sp.Poly(e, var)
     except sp.PolynomialError:
@@ -326,7 +329,7 @@ def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
             continue
         else:
             n -= at_ends
-        _need(n == 0, f"factor {q.as_expr()} has a root in the interval")
+        _need(n == 0, lambda: f"factor {q.as_expr()} has a root in the interval")
     # one inner point avoiding every root
     base = lo if lo != -OO else (hi - 1 if hi != OO else sp.Integer(0))
     step = (hi - lo) if lo != -OO and hi != OO else sp.Integer(1)
@@ -337,7 +340,7 @@ def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
     else:
         raise KernelError("no inner point found")
     _need(_lt(lo, x0) and _lt(x0, hi), "inner point outside")
-    _need(sp.sign(poly.eval(x0)) == want, f"p({x0}) has the wrong sign")
+    _need(sp.sign(poly.eval(x0)) == want, lambda: f"p({x0}) has the wrong sign")
     return _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict)
 
 
@@ -370,19 +373,19 @@ def sign_of_product(*premises, expr):
             sign, strict = sign * p.claim.want, strict and p.claim.strict
             used.add(p.claim.expr)
             continue
-        _need(f.is_Pow and f.exp.is_Rational, f"no premise for factor {f}")
+        _need(f.is_Pow and f.exp.is_Rational, lambda: f"no premise for factor {f}")
         p = by_expr.get(_s(f.base))
-        _need(p is not None, f"no premise for factor {f} nor its base")
+        _need(p is not None, lambda: f"no premise for factor {f} nor its base")
         used.add(p.claim.expr)
         n = f.exp
         if n.is_Integer:
-            _need(n > 0 or p.claim.strict, f"{f}: a negative power needs a strict sign of its base")
+            _need(n > 0 or p.claim.strict, lambda: f"{f}: a negative power needs a strict sign of its base")
             if n % 2 == 0 and not p.claim.strict:
                 strict = False          # b**(2k) >= 0 whatever the sign of b
             else:
                 sign, strict = sign * p.claim.want ** int(n % 2), strict and p.claim.strict
         else:
-            _need(p.claim.want > 0 and (p.claim.strict or n > 0), f"{f}: needs base > 0 (>= 0 if r > 0)")
+            _need(p.claim.want > 0 and (p.claim.strict or n > 0), lambda: f"{f}: needs base > 0 (>= 0 if r > 0)")
             strict = strict and p.claim.strict
     _need(used == set(by_expr), "a premise matches no factor")
     c = premises[0].claim
@@ -402,17 +405,17 @@ def sign_of_sum(*premises, expr, want):
         _need(p.claim.want == want, "a premise has the other sign")
     var = premises[0].claim.x()
     e = _expr(expr, var)
-    _need(e.is_Add, f"not a sum: {e}")
+    _need(e.is_Add, lambda: f"not a sum: {e}")
     by_expr = {p.claim.expr: p for p in premises}
     used, strict = set(), False
     for t in e.args:
         if not t.has(var):
             s = _const_sign(t)
-            _need(s in (0, want), f"constant term {t} has the wrong sign")
+            _need(s in (0, want), lambda: f"constant term {t} has the wrong sign")
             strict = strict or s == want
             continue
         p = by_expr.get(_s(t))
-        _need(p is not None, f"no premise for term {t}")
+        _need(p is not None, lambda: f"no premise for term {t}")
         used.add(_s(t))
         strict = strict or p.claim.strict
     _need(used == set(by_expr), "a premise matches no term")
@@ -438,7 +441,7 @@ def sign_through_increasing(*premises, expr):
     c = premises[0].claim
     var = c.x()
     e = _expr(expr, var)
-    _need(isinstance(e, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.log)) and len(e.args) == 1, f"not G(Y): {e}")
+    _need(isinstance(e, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.log)) and len(e.args) == 1, lambda: f"not G(Y): {e}")
     y = e.args[0]
     lo, hi = c.ends()
     if isinstance(e, _ODD_INCREASING):
@@ -467,7 +470,7 @@ def join(left, right):
     l, r = left.claim, right.claim
     _need((l.expr, l.var, l.want) == (r.expr, r.var, r.want), "different claims")
     _need(l.hi == r.lo, "not adjacent")
-    _need(not (l.hi_open and r.lo_open), f"shared end point {l.hi} is covered by neither")
+    _need(not (l.hi_open and r.lo_open), lambda: f"shared end point {l.hi} is covered by neither")
     return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, l.strict and r.strict)
 
 
@@ -482,7 +485,7 @@ def join_at_zero(left, right):
     _need((l.expr, l.var, l.want) == (r.expr, r.var, r.want), "different claims")
     _need(l.hi == r.lo, "not adjacent")
     e, var, m = l.e(), l.x(), parse(l.hi)
-    _need(e.subs(var, m) == 0, f"E({m}) is not exactly 0")
+    _need(e.subs(var, m) == 0, lambda: f"E({m}) is not exactly 0")
     try:
         _need(evaluate(e, var, m, m, bits=256).hull().contains(0), "Arb disagrees with exact 0")
     except Undefined as exc:
@@ -587,7 +590,7 @@ def sign_on_tail(tail, ident, *, expr, var, R):
     ia, ib = ic.ends()
     _need((ia == 0 or _lt(ia, 0)) and (_lt(1 / R, ib) or (ib == 1 / R and not ic.hi_open)),
           "the identity must hold on (0, 1/R]")
-    _need(defined_for_positive(e, var), f"{e} not shown defined for all {var} > 0")
+    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
     _need(defined_for_positive(e.subs(var, 1 / t), t), "E(1/t) not shown defined for t > 0")
     _interval(var, R, OO, False, True)
     return _sign_claim(e, var, R, OO, False, True, tc.want, tc.strict)
@@ -614,8 +617,8 @@ def _cross_check(d, var, lo, hi):
             v = evaluate(d, var, p, p, bits=CROSS_CHECK_BITS).hull()
         except Undefined:
             continue
-        _need(v.contains(0), f"the identity fails at {var} = {p}: lhs - rhs = {v}")
-        _need(bool(v.rad() < arb(2) ** -250), f"cross-check at {var} = {p} not precise enough")
+        _need(v.contains(0), lambda: f"the identity fails at {var} = {p}: lhs - rhs = {v}")
+        _need(bool(v.rad() < arb(2) ** -250), lambda: f"cross-check at {var} = {p} not precise enough")
         ok += 1
     _need(ok >= 3, "fewer than 3 points to cross-check the identity")
 
@@ -666,7 +669,7 @@ def sup_upper_by_cover(*, expr, var, cuts, bound):
             v = evaluate(e, var, a, b)
         except Undefined as exc:
             raise KernelError(f"{e} not evaluable on [{a}, {b}]: {exc}") from None
-        _need(bool(v.hi <= ub.lo), f"E <= {u} not shown on [{a}, {b}]")
+        _need(bool(v.hi <= ub.lo), lambda: f"E <= {u} not shown on [{a}, {b}]")
     return Claim("sup_upper", _s(e), _s(var), _s(cuts[0]), _s(cuts[-1]), False, False, other=_s(u))
 
 
@@ -694,5 +697,5 @@ def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
     except Undefined as exc:
         raise KernelError(f"E undefined at {p}: {exc}") from None
     if sp.sympify(e.subs(var, p) - L) != 0:
-        _need(bool(v.lo >= evaluate(L, bits=256).hi), f"E({p}) >= {L} not shown")
+        _need(bool(v.lo >= evaluate(L, bits=256).hi), lambda: f"E({p}) >= {L} not shown")
     return Claim("sup_lower", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(L))

@@ -1,0 +1,146 @@
+"""Small soundness fuzz (KERNEL_FUZZ_SCALE=n runs n times as many cases) of the kernel's evaluating rules (fixed seed): random
+expressions, random intervals; whenever a rule accepts a sign claim, the
+claim is checked independently at many points in 40-digit mpmath (and, for
+Sturm, against SymPy's exact real roots).  A single false acceptance fails."""
+import os
+import random
+
+import mpmath
+import pytest
+import sympy as sp
+
+from uwmr_symbolic.kernel import KernelError, Undefined, evaluate, rules as K
+
+x = sp.Symbol("x", real=True)
+Q = sp.Rational
+SCALE = int(os.environ.get("KERNEL_FUZZ_SCALE", "1"))     # longer runs: KERNEL_FUZZ_SCALE=20
+
+
+def random_expr(rng, depth):
+    if depth == 0 or rng.random() < 0.25:
+        return x if rng.random() < 0.6 else Q(rng.randint(-5, 5), rng.randint(1, 4))
+    op = rng.choice(["add", "add", "mul", "mul", "div", "exp", "log", "sqrt", "sin", "cos",
+                     "tanh", "atan", "abs", "pow", "cosh", "erf"])
+    a = random_expr(rng, depth - 1)
+    if op in ("add", "mul", "div"):
+        b = random_expr(rng, depth - 1)
+        return a + b if op == "add" else a * b if op == "mul" else a / b
+    if op == "pow":
+        return a ** rng.choice([2, 3, -1, Q(1, 2), Q(3, 2), Q(-1, 3)])
+    return {"exp": sp.exp, "log": sp.log, "sqrt": sp.sqrt, "sin": sp.sin, "cos": sp.cos,
+            "tanh": sp.tanh, "atan": sp.atan, "abs": sp.Abs, "cosh": sp.cosh, "erf": sp.erf}[op](a)
+
+
+def holds(e, lo, hi, want, strict, n=60):
+    """The sign claim at n + 1 points of [lo, hi], 40 digits."""
+    mpmath.mp.dps = 40
+    f = sp.lambdify(x, e, "mpmath")
+    for k in range(n + 1):
+        p = mpmath.mpf(lo.p) / lo.q + (mpmath.mpf(hi.p) / hi.q - mpmath.mpf(lo.p) / lo.q) * k / n
+        try:
+            v = f(p)
+        except (ZeroDivisionError, ValueError):
+            return False
+        if isinstance(v, mpmath.mpc):
+            if v.imag != 0:
+                return False
+            v = v.real
+        if not mpmath.isfinite(v) or not (want * v > 0 if strict else want * v >= -mpmath.mpf(10) ** -30):
+            return False
+    return True
+
+
+def random_interval(rng):
+    a = Q(rng.randint(-12, 8), rng.randint(1, 4))
+    return a, a + Q(rng.randint(1, 12), rng.randint(1, 4))
+
+
+def test_evaluator_encloses_random_expressions():
+    rng = random.Random(20261123)
+    mpmath.mp.dps = 40
+    checked = 0
+    for _ in range(150 * SCALE):
+        e = random_expr(rng, 3)
+        if not e.has(x):
+            continue
+        lo, hi = random_interval(rng)
+        try:
+            box = evaluate(e, x, lo, hi)
+        except Undefined:
+            continue
+        f = sp.lambdify(x, e, "mpmath")
+        for k in range(41):
+            v = f(mpmath.mpf(lo.p) / lo.q + (mpmath.mpf(hi.p) / hi.q - mpmath.mpf(lo.p) / lo.q) * k / 40)
+            assert not isinstance(v, mpmath.mpc) or v.imag == 0, (e, lo, hi)
+            v = v.real if isinstance(v, mpmath.mpc) else v
+            assert float(box.lo.lower()) - 1e-12 * abs(v) <= float(v) <= float(box.hi.upper()) + 1e-12 * abs(v), (e, lo, hi)
+        checked += 1
+    assert checked > 50
+
+
+def test_cover_never_accepts_a_false_sign():
+    rng = random.Random(7)
+    accepted = 0
+    for _ in range(160 * SCALE):
+        e = random_expr(rng, 3)
+        if not e.has(x):
+            continue
+        lo, hi = random_interval(rng)
+        n = rng.choice([1, 4, 16])
+        cuts = [lo + (hi - lo) * Q(k, n) for k in range(n + 1)]
+        for want in (1, -1):
+            for strict in (True, False):
+                try:
+                    K.sign_by_cover(expr=e, var=x, cuts=cuts, want=want, strict=strict)
+                except KernelError:
+                    continue
+                accepted += 1
+                assert holds(e, lo, hi, want, strict), (e, lo, hi, want, strict)
+    assert accepted > 20
+
+
+def test_taylor_never_accepts_a_false_sign():
+    rng = random.Random(11)
+    accepted = 0
+    for _ in range(50 * SCALE):
+        c = Q(rng.randint(-4, 4), rng.randint(1, 3))
+        m = rng.randint(1, 3)
+        e = (x - c) ** m * random_expr(rng, 2) + (x - c) ** (m + 1) * Q(rng.randint(-3, 3))
+        for order in (1, 2, 3, 4):
+            for side in (1, -1):
+                w = Q(1, rng.choice([2, 4, 8]))
+                try:
+                    thm = K.sign_by_taylor(expr=e, var=x, c=c, side=side, width=w, order=order)
+                except KernelError:
+                    continue
+                accepted += 1
+                a, b = (c + w / 1000, c + w) if side > 0 else (c - w, c - w / 1000)
+                assert holds(e, a, b, thm.claim.want, True), (e, c, side, order)
+                assert not holds(e, a, b, -thm.claim.want, False, n=8), (e, c, side, order)
+    assert accepted > 10
+
+
+def test_sturm_agrees_with_exact_roots():
+    rng = random.Random(3)
+    accepted = 0
+    for _ in range(60 * SCALE):
+        roots = [Q(rng.randint(-6, 6), rng.randint(1, 2)) for _ in range(rng.randint(1, 4))]
+        p = sp.expand(sp.Mul(*[(x - r) for r in roots]) * rng.choice([1, -1]) * (x ** 2 + rng.randint(0, 2)))
+        lo, hi = random_interval(rng)
+        lo_open, hi_open = rng.random() < 0.5, rng.random() < 0.5
+        for want in (1, -1):
+            for strict in (True, False):
+                try:
+                    K.sign_by_sturm(expr=p, var=x, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open,
+                                    want=want, strict=strict)
+                except KernelError:
+                    continue
+                accepted += 1
+                inside = [r for r in sp.real_roots(sp.Poly(p, x))
+                          if (lo < r or (r == lo and not lo_open)) and (r < hi or (r == hi and not hi_open))]
+                if strict:
+                    assert not inside, (p, lo, hi, lo_open, hi_open)
+                a = lo + (hi - lo) / 1000 if lo_open else lo
+                b = hi - (hi - lo) / 1000 if hi_open else hi
+                assert holds(p, a, b, want, strict), (p, lo, hi, want, strict)
+    assert accepted > 15
