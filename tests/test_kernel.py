@@ -260,6 +260,40 @@ def test_sign_on_tail():
     rejects(K.sign_on_tail, pos5, ident5, expr=E5, var=s, R=sp.Integer(4))
 
 
+def test_sign_by_substitution():
+    u = sp.Symbol("u", positive=True)
+    half = Q(1, 2)
+    outer = K.sign_by_taylor(expr=u - sp.sin(u), var=u, c=ZERO, side=1, width=half, order=3)   # (0, 1/2]
+    low = sturm(x ** 2, x, 0, half, lo_open=True)                       # u - 0 > 0
+    high = sturm(half - x ** 2, x, 0, half, lo_open=True, strict=False)  # 1/2 - u >= 0
+    thm = K.sign_by_substitution(outer, low, high, inner=x ** 2)
+    assert parse(thm.claim.expr) == x ** 2 - sp.sin(x ** 2) and thm.claim.want == 1 and thm.claim.strict
+    rejects(K.sign_by_substitution, outer, low, inner=x ** 2)                          # upper end unbounded
+    rejects(K.sign_by_substitution, outer, high, low, inner=x ** 2)                    # order: a, then b
+    rejects(K.sign_by_substitution, outer, sturm(x ** 2, x, 0, half, strict=False),     # u = 0 at x = 0
+            sturm(half - x ** 2, x, 0, half, strict=False), inner=x ** 2)
+    rejects(K.sign_by_substitution, outer, low, high, inner=2 * x ** 2)
+    wide = sturm(1 - x ** 2, x, 0, 1, lo_open=True, strict=False)                     # u up to 1 > 1/2
+    rejects(K.sign_by_substitution, outer, sturm(x ** 2, x, 0, 1, lo_open=True), wide, inner=x ** 2)
+
+
+def test_sign_by_monotone():
+    E = 1 - 1 / s
+    dE = K.sign_of_product(sturm(s, s, 2, sp.oo, hi_open=True), expr=sp.diff(E, s))   # s**-2 > 0
+    thm = K.sign_by_monotone(dE, expr=E, var=s, R=sp.Integer(2))
+    assert (thm.claim.lo, thm.claim.hi, thm.claim.want, thm.claim.strict) == ("Integer(2)", "oo", 1, True)
+    rejects(K.sign_by_monotone, dE, expr=E, var=s, R=sp.Integer(3))                  # premise on [2, oo)
+    assert K.sign_by_monotone(dE, expr=E + 1, var=s, R=sp.Integer(2)).claim.want == 1  # same derivative
+    rejects(K.sign_by_monotone, dE, expr=E - 1, var=s, R=sp.Integer(2))              # -1/s < 0
+    rejects(K.sign_by_monotone, dE, expr=E * 2, var=s, R=sp.Integer(2))              # another derivative
+    F = 1 / s - Q(1, 4)                     # F(2) > 0 but F decreases: F(8) < 0
+    dF = K.sign_of_product(sturm(s, s, 2, sp.oo, hi_open=True), expr=sp.diff(F, s))
+    rejects(K.sign_by_monotone, dF, expr=F, var=s, R=sp.Integer(2))
+    G = sp.log(s - 1) + 1                   # true on [2, oo), but log(s - 1) is not defined for all s > 0
+    dG = K.sign_of_product(sturm(s - 1, s, 2, sp.oo, hi_open=True), expr=sp.diff(G, s))
+    rejects(K.sign_by_monotone, dG, expr=G, var=s, R=sp.Integer(2))
+
+
 def test_identity():
     exact = K.identity(lhs=s / (s ** 2 + 1), rhs=1 / (s + 1 / s), var=s, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
     assert "sympy-simplify" not in exact.assumptions and "sympy-polys" in exact.assumptions

@@ -596,6 +596,57 @@ def sign_on_tail(tail, ident, *, expr, var, R):
     return _sign_claim(e, var, R, OO, False, True, tc.want, tc.strict)
 
 
+@rule("sympy-core")
+def sign_by_substitution(outer, *bounds, inner):
+    """G(u(x)) from G(U) on J = <a, b> (premise `outer`, in the variable U)
+    and u(x) in J for x in I: premises u - a > 0 (>= 0 if J is closed at a)
+    and b - u > 0 (>= 0 if closed at b) on I, one for each finite end of J
+    (at least one, which also shows u defined on I).  Then G(u(x)) is
+    defined and has G's sign on I; the claim's E is G.subs(U, u)."""
+    _is_sign(outer)
+    g = outer.claim
+    G, U = g.e(), g.x()
+    a, b = g.ends()
+    needed = [(u_end, op, side) for u_end, op, side in ((a, g.lo_open, 1), (b, g.hi_open, -1))
+              if u_end not in (OO, -OO)]
+    _need(needed and len(bounds) == len(needed), "one bound premise per finite end of J")
+    for p in bounds:
+        _is_sign(p)
+        _same_interval(p.claim, bounds[0].claim)
+    c = bounds[0].claim
+    var = c.x()
+    u = _expr(inner, var)
+    for (u_end, op, side), p in zip(needed, bounds):
+        _need(p.claim.expr == _s(side * (u - u_end)) and p.claim.want == 1 and (p.claim.strict or not op),
+              lambda: f"premise must show {'u - ' + str(u_end) if side > 0 else str(u_end) + ' - u'} "
+                      f"{'>' if op else '>='} 0")
+    lo, hi = c.ends()
+    return _sign_claim(G.subs(U, u), var, lo, hi, c.lo_open, c.hi_open, g.want, g.strict)
+
+
+@rule("arb", "sympy-core", "sympy-diff")
+def sign_by_monotone(deriv, *, expr, var, R):
+    """Mean value theorem on [R, oo), R > 0: want*E(R) > 0 (Arb at the exact
+    point R) and want*E' >= 0 on [R, oo) (premise about sympy.diff(E)), E
+    defined for every x > 0 (`defined_for_positive`) => for x >= R,
+    want*E(x) = want*E(R) + want*E'(xi)(x - R) > 0."""
+    _is_sign(deriv)
+    R = _number(R)
+    _need(R != OO and _lt(0, R), "R > 0")
+    e = _expr(expr, var)
+    d = deriv.claim
+    _need((d.expr, d.var, d.lo, d.lo_open, d.hi) == (_s(sp.diff(e, var)), _s(var), _s(R), False, "oo"),
+          "premise must be a sign of E' on [R, oo)")
+    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    try:
+        at_r = evaluate(e, var, R, R, bits=256)
+    except Undefined as exc:
+        raise KernelError(f"E undefined at {R}: {exc}") from None
+    _need(at_r.positive() if d.want > 0 else at_r.negative(), "E(R) has not the sign of E'")
+    _interval(var, R, OO, False, True)
+    return _sign_claim(e, var, R, OO, False, True, d.want, True)
+
+
 CROSS_CHECK_BITS = 320
 
 
