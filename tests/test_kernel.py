@@ -522,6 +522,16 @@ def test_certificate_does_not_execute_code():
         check_certificate(cert)
 
 
+def test_strings_are_never_sympified():
+    rejects(K.sign_by_cover, expr="x**2 + 1", var=x, cuts=[0, 1], want=1)
+    rejects(K.sign_by_cover, expr=x ** 2 + 1, var=x, cuts=[0, "__import__('os').getpid()"], want=1)
+    rejects(K.sign_by_cover, expr=x ** 2 + 1, var=x, cuts=[0, 1], want=1, strict="yes")
+    cert = demo_certificate()
+    node(cert, "sign_by_cover")["data"]["cuts"][0] = "__import__('os').getpid()"
+    with pytest.raises(CertificateError, match="expected a SymPy object"):
+        check_certificate(cert)
+
+
 def test_certificate_is_not_mutated_by_the_rules():
     cert = demo_certificate()
     before = copy.deepcopy(cert)

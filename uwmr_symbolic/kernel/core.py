@@ -92,7 +92,7 @@ class Theorem:
 
 
 def _s(e) -> str:
-    return sp.srepr(sp.sympify(e))
+    return sp.srepr(_sym(e))
 
 
 def _encode(v):
@@ -138,9 +138,17 @@ def rule(*assumes):
 
 # ---------------------------------------------------------------- helpers
 
+def _sym(v) -> sp.Basic:
+    """A SymPy object or a Python int, never a string (sympify would eval it)."""
+    if isinstance(v, sp.Basic):
+        return v
+    _need(type(v) is int, lambda: f"expected a SymPy object or an int, got {type(v).__name__}")
+    return sp.Integer(v)
+
+
 def _number(c) -> sp.Expr:
     """An exact real constant (no Float, no symbol) or oo."""
-    c = sp.sympify(c)
+    c = _sym(c)
     _need(c in (OO, -OO) or (c.is_number and not c.has(sp.Float)), lambda: f"not an exact number: {c}")
     if c not in (OO, -OO):
         try:
@@ -152,7 +160,7 @@ def _number(c) -> sp.Expr:
 
 def _lt(a, b) -> bool:
     """a < b, certified (exactly for rationals and oo, else by Arb)."""
-    a, b = sp.sympify(a), sp.sympify(b)
+    a, b = _sym(a), _sym(b)
     if a == b:
         return False
     if a == -OO or b == OO:
@@ -183,7 +191,8 @@ def _const_sign(c) -> int:
 
 
 def _expr(e, var) -> sp.Expr:
-    e = sp.sympify(e)
+    _need(isinstance(var, sp.Symbol), lambda: f"not a variable: {var!r}")
+    e = _sym(e)
     _need(not e.has(sp.Float), lambda: f"floats are not exact: {e}")
     _need(e.free_symbols <= {var}, lambda: f"{e} has symbols other than {var}")
     return e
@@ -195,7 +204,8 @@ def _interval(var, lo, hi, lo_open, hi_open, at_zero=False):
     that only *evaluates* the expression tree (no diff, subs or simplify
     relying on the assumption) may pass at_zero=True: a positive variable
     may then have the closed end 0 too."""
-    _need(isinstance(var, sp.Symbol), lambda: f"not a variable: {var}")
+    _need(isinstance(var, sp.Symbol), lambda: f"not a variable: {var!r}")
+    _need(isinstance(lo_open, bool) and isinstance(hi_open, bool), "open/closed flags are booleans")
     lo, hi = _number(lo), _number(hi)
     _need(_lt(lo, hi), lambda: f"empty interval ({lo}, {hi})")
     _need((lo != -OO or lo_open) and (hi != OO or hi_open), "infinite ends are open")
@@ -234,7 +244,7 @@ def _box_ok(v: Iv, want, strict) -> bool:
 
 
 def _cuts(var, cuts):
-    _need(len(cuts) >= 2, "a cover needs at least two cut points")
+    _need(isinstance(cuts, list) and len(cuts) >= 2, "a cover needs a list of at least two cut points")
     cuts = [_number(c) for c in cuts]
     _need(all(c not in (OO, -OO) for c in cuts), "cut points are finite")
     for a, b in zip(cuts, cuts[1:]):
@@ -250,7 +260,7 @@ def sign_by_cover(*, expr, var, cuts, want, strict=True):
     c0 < c1 < ... < cn are exact and, for each i, the Arb range enclosure of
     E over [ci, c(i+1)] has that sign.  The closed boxes share their ends,
     so they tile [c0, cn] with no gap; range evaluation shows E defined on each."""
-    _need(want in (1, -1), "want is +1 or -1")
+    _need(want in (1, -1) and isinstance(strict, bool), "want is +1 or -1, strict a boolean")
     cuts = _cuts(var, cuts)
     _interval(var, cuts[0], cuts[-1], False, False, at_zero=True)
     e = _expr(expr, var)
@@ -307,7 +317,7 @@ def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
     q_i has a root in I (Sturm count; weak claim: no q_i of odd m_i has a
     root in the interior of I), then the sign of p on I is that of p at one
     inner point x0 where no q_i vanishes."""
-    _need(want in (1, -1), "want is +1 or -1")
+    _need(want in (1, -1) and isinstance(strict, bool), "want is +1 or -1, strict a boolean")
     lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     _need(all(v in (OO, -OO) or v.is_Rational for v in (lo, hi)), "Sturm needs rational ends")
     e = _expr(expr, var)
@@ -555,7 +565,7 @@ def defined_for_positive(e, x) -> bool:
         if isinstance(u, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.sin, sp.cos, sp.Abs)):
             return defined(u.args[0])
         return False
-    return defined(sp.sympify(e))
+    return defined(_sym(e))
 
 
 def _number_ok(u):
