@@ -398,6 +398,57 @@ def test_demo_kf_is_one_half():
     assert [b.claim for b in back] == [upper.claim, lower.claim]
 
 
+def prove_kf_design2():
+    """Design 2, F(s) = sqrt(1 + s**2) - 1: kf = sup |F'| = 1, approached as
+    s -> oo, not attained: |F'| <= 1 on (0, oo) and sup F' >= lim F' = 1."""
+    E = sp.diff(sp.sqrt(1 + s ** 2) - 1, s)                 # s/sqrt(s**2 + 1)
+    one, two, half = sp.Integer(1), sp.Integer(2), Q(1, 2)
+    D = 1 - E
+    head = K.weaken(K.sign_by_cover(expr=D, var=s, cuts=[Q(k, 16) for k in range(33)], want=1),
+                    lo=ZERO, hi=two, lo_open=True, hi_open=False, strict=True)
+    Dt = 1 - 1 / sp.sqrt(t ** 2 + 1)
+    tail_t = K.sign_by_taylor(expr=Dt, var=t, c=ZERO, side=1, width=half, order=2,
+                              cuts=[Q(k, 16) for k in range(9)])
+    ident = K.identity(lhs=Dt, rhs=D.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    below_one = K.join(head, K.sign_on_tail(tail_t, ident, expr=D, var=s, R=two))
+    up = K.sup_upper_by_sign(below_one, expr=E, bound=one)
+    pos = K.sign_of_product(sturm(s, s, 0, sp.oo, True, True), sturm(s ** 2 + 1, s, 0, sp.oo, True, True), expr=E)
+    down = K.sup_upper_by_sign(K.sign_of_sum(pos, expr=1 + E, want=1), expr=-E, bound=one)
+    kf_upper = K.sup_upper_of_abs(up, down)
+    Et = 1 / sp.sqrt(t ** 2 + 1)
+    ident_e = K.identity(lhs=Et, rhs=E.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    kf_lower = K.sup_lower_by_limit(ident_e, expr=E, var=s, width=half, bound=one, lo=ZERO, lo_open=True)
+    return kf_upper, kf_lower
+
+
+def test_demo_kf_design2_approached_at_infinity():
+    upper, lower = prove_kf_design2()
+    assert parse(upper.claim.expr) == sp.Abs(s / sp.sqrt(s ** 2 + 1)) and upper.claim.other == "Integer(1)"
+    assert lower.claim.kind == "sup_lower" and lower.claim.other == "Integer(1)"
+    assert "sympy-simplify" in upper.assumptions           # the tail identity has a radical
+    back = check_certificate(json.dumps(to_certificate([upper, lower])))
+    assert [b.claim for b in back] == [upper.claim, lower.claim]
+
+
+def test_sup_lower_by_limit_and_scaling():
+    E = s / sp.sqrt(s ** 2 + 1)
+    Et = 1 / sp.sqrt(t ** 2 + 1)
+    ident = K.identity(lhs=Et, rhs=E.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    half = Q(1, 2)
+    rejects(K.sup_lower_by_limit, ident, expr=E, var=s, width=half, bound=Q(101, 100), lo=ZERO, lo_open=True)
+    rejects(K.sup_lower_by_limit, ident, expr=2 * E, var=s, width=half, bound=sp.Integer(2), lo=ZERO, lo_open=True)
+    # E_t = 1/t is not defined at t = 0 (1/t -> oo has no finite limit)
+    ident2 = K.identity(lhs=1 / t, rhs=s.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    rejects(K.sup_lower_by_limit, ident2, expr=s, var=s, width=half, bound=sp.Integer(5), lo=ZERO, lo_open=True)
+    low = K.sup_lower_by_limit(ident, expr=E, var=s, width=half, bound=sp.Integer(1), lo=ZERO, lo_open=True)
+    scaled = K.sup_scaled(low, factor=sp.sqrt(2))
+    assert parse(scaled.claim.other) == sp.sqrt(2) and parse(scaled.claim.expr) == sp.sqrt(2) * E
+    rejects(K.sup_scaled, low, factor=-sp.sqrt(2))
+    rejects(K.sup_scaled, ident, factor=sp.Integer(2))
+    up = K.sup_upper_by_cover(expr=E, var=s, cuts=[0, 1, 2], bound=sp.Integer(2))
+    rejects(K.sup_upper_of_abs, up, up)                                   # second premise must be about -E
+
+
 # ------------------------------------------------------------------ certificates
 
 def demo_certificate():

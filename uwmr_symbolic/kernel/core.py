@@ -14,7 +14,8 @@ Claim semantics (I: an interval of the real line, ends exact):
 * identity:   for every x in I at which both sides are defined, lhs = rhs;
 * value_sign: the exact real constant E has sign want (-1, 0 or 1);
 * sup_upper:  E is defined on I and E(x) <= bound there (so sup_I E <= bound);
-* sup_lower:  E is defined at some x in I with E(x) >= bound (sup_I E >= bound).
+* sup_lower:  sup of E over the points of I where it is defined is >= bound
+              (for every eps > 0 some x in I has E(x) > bound - eps).
 
 Assumptions a theorem rests on are named strings: "arb" (python-flint's
 outward rounding), "sympy-core" (automatic evaluation, substitution, srepr),
@@ -23,6 +24,7 @@ outward rounding), "sympy-core" (automatic evaluation, substitution, srepr),
 """
 from __future__ import annotations
 
+import dataclasses
 import functools
 import json
 from dataclasses import dataclass, field
@@ -760,3 +762,57 @@ def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
     if sp.sympify(e.subs(var, p) - L) != 0:
         _need(bool(v.lo >= evaluate(L, bits=256).hi), lambda: f"E({p}) >= {L} not shown")
     return Claim("sup_lower", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(L))
+
+
+@rule("arb", "sympy-core")
+def sup_lower_by_limit(ident, *, expr, var, width, bound, lo, lo_open):
+    """sup over <lo, oo) of E >= c where c = lim E(s) as s -> oo: premise
+    E_t(t) = E(1/t) on a t-interval containing (0, w]; E_t defined (hence
+    continuous) on the closed [0, w] (Arb range evaluation); E_t(0) - c is
+    the literal 0 (Arb agrees); E defined for all s > 0 and lo >= 0.  Then
+    E(1/t) = E_t(t) -> c as t -> 0+, and 1/t lies in <lo, oo) for small t."""
+    _need(ident.claim.kind == "identity", "premise must be an identity")
+    ic = ident.claim
+    t = ic.x()
+    _need(t != var, "the tail variable must differ from the variable")
+    e, w, c = _expr(expr, var), _number(width), _number(bound)
+    lo = _number(lo)
+    _need(_lt(0, w) and w != OO and c not in (OO, -OO), "finite w > 0 and bound")
+    _need(ic.other == _s(e.subs(var, 1 / t)), "the identity must read E_t(t) = E(1/t)")
+    ia, ib = ic.ends()
+    _need((ia == 0 or _lt(ia, 0)) and (_lt(w, ib) or (ib == w and not ic.hi_open)),
+          "the identity must hold on (0, w]")
+    et = ic.e()
+    try:
+        evaluate(et, t, 0, w)
+        at0 = evaluate(et - c, t, 0, 0, bits=256)
+    except Undefined as exc:
+        raise KernelError(f"E_t not defined on [0, {w}]: {exc}") from None
+    _need(et.subs(t, 0) - c == 0 and at0.hull().contains(0), lambda: f"E_t(0) is not exactly {c}")
+    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    _interval(var, lo, OO, lo_open, True)
+    _need(lo == 0 or _lt(0, lo), "lo >= 0")
+    return Claim("sup_lower", _s(e), _s(var), _s(lo), "oo", lo_open, True, other=_s(c))
+
+
+@rule()
+def sup_upper_of_abs(up, down):
+    """E <= U and -E <= U on I give |E| <= U on I."""
+    a, b = up.claim, down.claim
+    _need(a.kind == b.kind == "sup_upper", "premises must be sup_upper theorems")
+    _need((a.var, a.lo, a.hi, a.lo_open, a.hi_open, a.other) == (b.var, b.lo, b.hi, b.lo_open, b.hi_open, b.other),
+          "premises on different intervals or bounds")
+    e = a.e()
+    _need(b.expr == _s(-e), "second premise must be about -E")
+    return dataclasses.replace(a, expr=_s(sp.Abs(e)))
+
+
+@rule("arb", "sympy-core")
+def sup_scaled(thm, *, factor):
+    """For an exact constant k > 0: E <= U gives k*E <= k*U; sup E >= L
+    gives sup k*E >= k*L (same interval)."""
+    c = thm.claim
+    _need(c.kind in ("sup_upper", "sup_lower"), "premise must be a sup theorem")
+    k = _number(factor)
+    _need(k not in (OO, -OO) and _const_sign(k) == 1, "factor must be a positive constant")
+    return dataclasses.replace(c, expr=_s(k * c.e()), other=_s(k * parse(c.other)))
