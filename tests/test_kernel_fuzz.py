@@ -144,3 +144,73 @@ def test_sturm_agrees_with_exact_roots():
                 b = hi - (hi - lo) / 1000 if hi_open else hi
                 assert holds(p, a, b, want, strict), (p, lo, hi, want, strict)
     assert accepted > 15
+
+
+def structural_proof(e, lo, hi, lo_open, hi_open, rng, depth=0):
+    """A tiny prover that proposes kernel steps the way `_sign_near` does
+    (Sturm, product, sum, monotone functions, log, cover) and lets the
+    kernel decide; returns a theorem or None."""
+    iv = dict(lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open)
+    attempts = []
+    if e.is_polynomial(x):
+        attempts += [lambda w=w, st=st: K.sign_by_sturm(expr=e, var=x, want=w, strict=st, **iv)
+                     for w in (1, -1) for st in (True, False)]
+    if depth < 3:
+        def sub(u):
+            return structural_proof(u, lo, hi, lo_open, hi_open, rng, depth + 1)
+        if e.is_Mul:
+            attempts.append(lambda: K.sign_of_product(*[p for p in map(sub, [f.base if f.is_Pow else f for f in e.args
+                                                                          if f.has(x)])], expr=e))
+        if e.is_Pow:
+            attempts.append(lambda: K.sign_of_product(sub(e.base), expr=e))
+        if e.is_Add:
+            attempts += [lambda w=w: K.sign_of_sum(*[sub(a) for a in e.args if a.has(x)], expr=e, want=w)
+                         for w in (1, -1)]
+        if isinstance(e, (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf, sp.exp, sp.cosh)):
+            attempts.append(lambda: K.sign_through_increasing(sub(e.args[0]), expr=e))
+        if isinstance(e, sp.log):
+            attempts.append(lambda: K.sign_through_increasing(sub(e.args[0] - 1), expr=e))
+            attempts.append(lambda: K.sign_through_increasing(sub(e.args[0] - 1), sub(e.args[0]), expr=e))
+    for attempt in attempts:
+        try:
+            thm = attempt()
+        except (KernelError, TypeError):    # TypeError: a None premise
+            continue
+        return thm
+    if not (lo_open or hi_open):
+        for w in (1, -1):
+            try:
+                return K.sign_by_cover(expr=e, var=x, cuts=[lo + (hi - lo) * Q(k, 8) for k in range(9)], want=w)
+            except KernelError:
+                pass
+    return None
+
+
+def test_composed_rules_never_accept_a_false_sign():
+    rng = random.Random(5)
+    proved = 0
+    for _ in range(120 * SCALE):
+        e = random_expr(rng, 3)
+        if not e.has(x):
+            continue
+        lo, hi = random_interval(rng)
+        lo_open, hi_open = rng.random() < 0.3, rng.random() < 0.3
+        thm = structural_proof(e, lo, hi, lo_open, hi_open, rng)
+        if thm is None:
+            continue
+        proved += 1
+        c = thm.claim
+        a = lo + (hi - lo) / 1000 if lo_open else lo
+        b = hi - (hi - lo) / 1000 if hi_open else hi
+        assert holds(e, a, b, c.want, c.strict), (e, lo, hi, c)
+        # the halves joined, and a weakened piece, say the same
+        m = (lo + hi) / 2
+        left = structural_proof(e, lo, m, lo_open, False, rng)
+        right = structural_proof(e, m, hi, True, hi_open, rng)
+        if left is not None and right is not None:
+            try:
+                j = K.join(left, right)
+            except KernelError:
+                continue
+            assert holds(e, a, b, j.claim.want, j.claim.strict), (e, lo, hi, j.claim)
+    assert proved > 30
