@@ -588,3 +588,15 @@ def test_certificate_is_not_mutated_by_the_rules():
     before = copy.deepcopy(cert)
     check_certificate(cert)
     assert cert == before
+
+
+def test_malformed_steps_are_rejected_not_crashes():
+    for edit in (lambda n: n["data"].update(expr={"$": "Add(" * 400 + "Integer(1)" + ")" * 400}),
+                 lambda n: n["data"].update(expr={"$": "Symbol(1)"}),
+                 lambda n: n["data"].update(expr={"no dollar": 1}),
+                 lambda n: n["data"].update(cuts=None),
+                 lambda n: n["data"].pop("var")):
+        cert = demo_certificate()
+        edit(node(cert, "sign_by_cover"))
+        with pytest.raises(CertificateError):
+            check_certificate(cert)
