@@ -294,6 +294,26 @@ def test_sign_by_monotone():
     rejects(K.sign_by_monotone, dG, expr=G, var=s, R=sp.Integer(2))
 
 
+def test_sign_by_rewrite():
+    L = (s ** 2 + 2 * s + 1) / (s + 1)
+    R = sturm(s + 1, s, 0, sp.oo, True, True)
+    ident = K.identity(lhs=L, rhs=s + 1, var=s, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    assert parse(K.sign_by_rewrite(R, ident).claim.expr) == L
+    # (s**2 - 1)/(s - 1) = s + 1 where both are defined, but it is undefined at s = 1
+    L1 = (s ** 2 - 1) / (s - 1)
+    ident1 = K.identity(lhs=L1, rhs=s + 1, var=s, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    rejects(K.sign_by_rewrite, R, ident1)
+    Lx = (x ** 2 - 1) / (x - 1)
+    Rx = sturm(x + 1, x, 0, 2)
+    identx = K.identity(lhs=Lx, rhs=x + 1, var=x, lo=ZERO, hi=sp.Integer(2), lo_open=False, hi_open=False)
+    rejects(K.sign_by_rewrite, Rx, identx, cuts=[0, 1, 2])
+    rejects(K.sign_by_rewrite, Rx, identx)
+    Lok = (x ** 2 + 2 * x + 1) / (x + 1)
+    identok = K.identity(lhs=Lok, rhs=x + 1, var=x, lo=ZERO, hi=sp.Integer(2), lo_open=False, hi_open=False)
+    assert K.sign_by_rewrite(Rx, identok, cuts=[0, 1, 2]).claim.want == 1
+    rejects(K.sign_by_rewrite, sturm(x + 1, x, 0, 3), identok, cuts=[0, 3])   # identity only on [0, 2]
+
+
 def test_identity():
     exact = K.identity(lhs=s / (s ** 2 + 1), rhs=1 / (s + 1 / s), var=s, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
     assert "sympy-simplify" not in exact.assumptions and "sympy-polys" in exact.assumptions

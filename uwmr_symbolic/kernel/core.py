@@ -514,10 +514,43 @@ def weaken(thm, *, lo, hi, lo_open, hi_open, strict):
     var = c.x()
     a, b = c.ends()
     lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
-    _need(_lt(a, lo) or (lo == a and (lo_open or not c.lo_open)), "J starts outside I")
-    _need(_lt(hi, b) or (hi == b and (hi_open or not c.hi_open)), "J ends outside I")
+    _need(_within(c, lo, hi, lo_open, hi_open), "J is not inside I")
     _need(c.strict or not strict, "a weak sign does not give a strict one")
     return _sign_claim(c.e(), var, lo, hi, lo_open, hi_open, c.want, strict)
+
+
+def _within(c: Claim, lo, hi, lo_open, hi_open) -> bool:
+    """<lo, hi> is contained in the interval of claim c."""
+    a, b = c.ends()
+    return ((_lt(a, lo) or (lo == a and (lo_open or not c.lo_open)))
+            and (_lt(hi, b) or (hi == b and (hi_open or not c.hi_open))))
+
+
+@rule("arb", "sympy-core")
+def sign_by_rewrite(thm, ident, *, cuts=None):
+    """A sign of R on I, an identity L = R (where both are defined) on an
+    interval containing I, and L defined on all of I give the sign of L on
+    I.  L defined: either I lies in (0, oo) and `defined_for_positive(L)`,
+    or I is closed and finite and L evaluates (Arb, range) on every closed
+    box of the exact cuts tiling I.  (Covers `prepare`, tail forms, regrouping.)"""
+    _is_sign(thm)
+    _need(ident.claim.kind == "identity", "second premise must be an identity")
+    c, ic = thm.claim, ident.claim
+    _need(ic.var == c.var and ic.other == c.expr, "the identity must read L = R for the R of the sign")
+    lo, hi = c.ends()
+    _need(_within(ic, lo, hi, c.lo_open, c.hi_open), "the identity does not hold on all of I")
+    var, lhs = c.x(), ic.e()
+    if cuts is None:
+        _need((_lt(0, lo) or (lo == 0 and c.lo_open)) and defined_for_positive(lhs, var), "L not shown defined on I")
+    else:
+        cuts = _cuts(var, cuts)
+        _need(not (c.lo_open or c.hi_open) and cuts[0] == lo and cuts[-1] == hi, "cuts must tile the closed I")
+        for u, v in zip(cuts, cuts[1:]):
+            try:
+                evaluate(lhs, var, u, v)
+            except Undefined as exc:
+                raise KernelError(f"L undefined on [{u}, {v}]: {exc}") from None
+    return dataclasses.replace(c, expr=ic.expr)
 
 
 def defined_for_positive(e, x) -> bool:
