@@ -1,7 +1,8 @@
-"""Small soundness fuzz (KERNEL_FUZZ_SCALE=n runs n times as many cases) of the kernel's evaluating rules (fixed seed): random
-expressions, random intervals; whenever a rule accepts a sign claim, the
-claim is checked independently at many points in 40-digit mpmath (and, for
-Sturm, against SymPy's exact real roots).  A single false acceptance fails."""
+"""Small soundness fuzz of the kernel's evaluating rules (fixed seeds):
+random expressions, random intervals; whenever a rule accepts a sign claim,
+the claim is checked independently at many points in 40-digit mpmath (and,
+for Sturm, against SymPy's exact real roots).  A single false acceptance
+fails.  KERNEL_FUZZ_SCALE=n runs n times as many cases."""
 import os
 import random
 
