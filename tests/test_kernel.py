@@ -1,0 +1,622 @@
+"""The trusted kernel (uwmr_symbolic/kernel): every rule accepts a true claim
+and rejects a false or ill-formed one; the evaluator encloses ranges and
+refuses what is undefined; tampered certificates are rejected."""
+import copy
+import dataclasses
+import json
+from fractions import Fraction
+
+import mpmath
+import pytest
+import sympy as sp
+
+from uwmr_symbolic.kernel import (RULES, VERSION, CertificateError, KernelError, Theorem, Undefined,
+                                  check_certificate, evaluate, rules as K, to_certificate)
+from uwmr_symbolic.kernel.certificate import SCHEMA
+from uwmr_symbolic.kernel.core import _cross_check
+from uwmr_symbolic.kernel.parse import ParseError, parse
+
+x = sp.Symbol("x", real=True)
+s = sp.Symbol("s", positive=True)
+t = sp.Symbol("t", positive=True)
+Q = sp.Rational
+ZERO = sp.Integer(0)
+
+
+def rejects(fn, *args, **kw):
+    with pytest.raises(KernelError):
+        fn(*args, **kw)
+
+
+def sturm(e, var, lo, hi, lo_open=False, hi_open=False, want=1, strict=True):
+    return K.sign_by_sturm(expr=e, var=var, lo=sp.sympify(lo), hi=sp.sympify(hi),
+                           lo_open=lo_open, hi_open=hi_open, want=want, strict=strict)
+
+
+# ------------------------------------------------------------------ evaluator
+
+@pytest.mark.parametrize("e, lo, hi", [
+    (x ** 2 - x + 1, -2, 3), (sp.sin(3 * x) * sp.exp(-x), -1, 2), (sp.sqrt(1 + x ** 2) - sp.Abs(x), -3, 1),
+    (sp.tanh(x) + sp.atan(x) - sp.asinh(x) + sp.erf(x) * sp.cosh(x), -2, 2),
+    (sp.log(2 + sp.cos(x)) / (1 + x ** 4), -1, 5), (x ** Q(5, 3) + x ** Q(-1, 2), Q(1, 10), 4),
+    (sp.sinh(x) ** 3 - 1 / (x + 5), -2, 1),
+])
+def test_evaluator_encloses_the_range(e, lo, hi):
+    box = evaluate(e, x, lo, hi)
+    f = sp.lambdify(x, e, "mpmath")
+    mpmath.mp.dps = 30
+    for k in range(201):
+        v = f(mpmath.mpf(lo) + (mpmath.mpf(hi) - lo) * k / 200)
+        assert float(box.lo.lower()) <= float(v) <= float(box.hi.upper())
+
+
+@pytest.mark.parametrize("e, lo, hi", [
+    (sp.log(x), 0, 1), (sp.sqrt(x), -Q(1, 10 ** 30), 1), (x ** Q(1, 3), -1, 1), (1 / x, -1, 1),
+    (x ** Q(-1, 2), 0, 1), (sp.log(x - 1), 1, 2), (sp.gamma(x), 1, 2), (sp.Float(0.5) * x, 0, 1),
+    (sp.Piecewise((x, x > 0), (0, True)), -1, 1), (sp.sqrt(x - 2), 0, 1), (sp.I * x, 0, 1),
+])
+def test_evaluator_refuses_undefined_or_unsupported(e, lo, hi):
+    with pytest.raises(Undefined):
+        evaluate(e, x, lo, hi)
+
+
+def test_evaluator_domain_edges_are_not_clipped():
+    assert evaluate(sp.sqrt(s), s, 0, Q(1, 8)).lo.is_zero()        # touching 0 from above is fine
+    assert evaluate(x ** 2, x, -1, 2).nonnegative()                   # even powers are >= 0
+    assert evaluate(sp.Abs(x) - 1, x, -1, 2).lo.lower() >= -1
+    assert evaluate(sp.cosh(x), x, -1, 2).lo.lower() >= 1
+    assert evaluate(sp.log(x), x, Q(1, 10 ** 30), 1).hi.upper() >= 0
+
+
+# ------------------------------------------------------------------ theorems
+
+def test_theorems_only_from_rules():
+    thm = K.value_sign(value=sp.Integer(2))
+    with pytest.raises(KernelError):
+        Theorem(thm.claim, "made up", (), "{}", frozenset())
+    with pytest.raises(KernelError):
+        dataclasses.replace(thm, claim=dataclasses.replace(thm.claim, want=-1))
+    with pytest.raises(KernelError):
+        K.join(thm.claim, thm.claim)      # claims are not theorems
+
+
+def test_variables_and_expressions_are_checked():
+    n = sp.Symbol("n", integer=True)
+    z = sp.Symbol("z")
+    rejects(K.sign_by_cover, expr=n ** 2 + 1, var=n, cuts=[0, 1], want=1)
+    rejects(K.sign_by_cover, expr=z ** 2 + 1, var=z, cuts=[0, 1], want=1)
+    rejects(K.sign_by_cover, expr=x + s, var=x, cuts=[0, 1], want=1)
+    rejects(K.sign_by_cover, expr=x + sp.Float(1.5), var=x, cuts=[0, 1], want=1)
+    rejects(K.sign_by_taylor, expr=sp.sin(s), var=s, c=ZERO, side=-1, width=Q(1, 2), order=1)  # s > 0
+
+
+def test_parse_reads_srepr_only():
+    assert parse(sp.srepr(sp.sqrt(2) * sp.exp(-s) + sp.pi)) == sp.sqrt(2) * sp.exp(-s) + sp.pi
+    for bad in ["__import__('os').system('true')", "Symbol('x', integer=True)", "Integer(1).__class__",
+                "Float('1.5')", "[1, 2]", "lambda: 1"]:
+        with pytest.raises(ParseError):
+            parse(bad)
+
+
+# ------------------------------------------------------------------ rules
+
+def test_sign_by_cover():
+    thm = K.sign_by_cover(expr=x ** 2 - x + 1, var=x, cuts=[Q(k, 8) for k in range(-16, 25)], want=1)
+    assert (thm.claim.lo, thm.claim.hi, thm.claim.strict) == ("Integer(-2)", "Integer(3)", True)
+    rejects(K.sign_by_cover, expr=x ** 2 - 2, var=x, cuts=[0, 1, 2, 3], want=1)     # x**2 - 2 < 0 at 0
+    rejects(K.sign_by_cover, expr=x ** 2 - x + 1, var=x, cuts=[-2, 0], want=-1)
+    rejects(K.sign_by_cover, expr=x ** 2 + 1, var=x, cuts=[0, 2, 1, 3], want=1)     # not increasing
+    rejects(K.sign_by_cover, expr=x ** 2 + 1, var=x, cuts=[0], want=1)
+    rejects(K.sign_by_cover, expr=1 / x, var=x, cuts=[-1, 1], want=1)               # undefined at 0
+    # weak: x**2 >= 0 across 0; strictly it fails
+    K.sign_by_cover(expr=x ** 2, var=x, cuts=[-1, 0, 1], want=1, strict=False)
+    rejects(K.sign_by_cover, expr=x ** 2, var=x, cuts=[-1, 0, 1], want=1, strict=True)
+
+
+def test_sign_by_cover_one_step_below_the_zero():
+    c0 = Q(3, 8)
+    step = Q(1, 2 ** 60)
+    K.sign_by_cover(expr=x - c0, var=x, cuts=[c0 + step, 1], want=1)
+    rejects(K.sign_by_cover, expr=x - c0, var=x, cuts=[c0, 1], want=1)
+    rejects(K.sign_by_cover, expr=x - c0, var=x, cuts=[c0 - step, 1], want=1, strict=False)
+
+
+def test_sign_by_taylor():
+    thm = K.sign_by_taylor(expr=x - sp.sin(x), var=x, c=ZERO, side=1, width=Q(1, 2), order=3)
+    assert (thm.claim.want, thm.claim.lo_open, thm.claim.hi_open) == (1, True, False)
+    left = K.sign_by_taylor(expr=x - sp.sin(x), var=x, c=ZERO, side=-1, width=Q(1, 2), order=3)
+    assert left.claim.want == -1 and left.claim.hi_open and "sympy-diff" in left.assumptions
+    # E'' (0) = 2: the lower derivatives do not vanish
+    rejects(K.sign_by_taylor, expr=x - sp.sin(x) + x ** 2, var=x, c=ZERO, side=1, width=Q(1, 2), order=3)
+    rejects(K.sign_by_taylor, expr=sp.cos(x), var=x, c=ZERO, side=1, width=Q(1, 2), order=1)
+    # E''' = cos x changes sign on [0, 4]
+    rejects(K.sign_by_taylor, expr=x - sp.sin(x), var=x, c=ZERO, side=1, width=sp.Integer(4), order=3)
+    # sub-boxes for E^(m): its natural enclosure on all of [1, 5/4] is too wide
+    D = Q(1, 2) - s / (s ** 2 + 1)
+    rejects(K.sign_by_taylor, expr=D, var=s, c=sp.Integer(1), side=1, width=Q(1, 4), order=2)
+    cuts = [1 + Q(k, 32) for k in range(9)]
+    K.sign_by_taylor(expr=D, var=s, c=sp.Integer(1), side=1, width=Q(1, 4), order=2, cuts=cuts)
+    rejects(K.sign_by_taylor, expr=D, var=s, c=sp.Integer(1), side=1, width=Q(1, 4), order=2,
+            cuts=cuts[:-1])                                               # cuts must end at c + w
+    # E = x*log(x) is not defined at 0
+    rejects(K.sign_by_taylor, expr=s * sp.log(s) + s, var=s, c=ZERO, side=1, width=Q(1, 4), order=1)
+
+
+def test_sign_by_sturm():
+    assert sturm(x ** 2 - 2, x, Q(3, 2), sp.oo, hi_open=True).claim.want == 1
+    sturm(x ** 2 - 2, x, -1, 1, want=-1)
+    rejects(sturm, x ** 2 - 2, x, 1, 2)                                  # sqrt(2) inside
+    sturm(x - 1, x, 1, 2, lo_open=True)
+    rejects(sturm, x - 1, x, 1, 2)                                       # closed end is a root
+    sturm((x - 1) ** 2, x, 0, 3, strict=False)
+    rejects(sturm, (x - 1) ** 2, x, 0, 3)
+    sturm(x * (x - 1), x, 1, 2, strict=False)                            # roots at the ends only
+    rejects(sturm, x * (x - 1), x, 0, 2, strict=False)                   # a sign change inside
+    sturm((x ** 2 - 2 * x + 1) * (x ** 2 + 1), x, -sp.oo, sp.oo, True, True, strict=False)
+    rejects(sturm, 1 / x, x, 1, 2)
+    rejects(sturm, (x ** 2 - 1) / (x - 1), x, 2, 3)
+    rejects(sturm, sp.sqrt(2) * x, x, 1, 2)
+    rejects(sturm, x ** 2 + 1, x, 0, 1, want=-1)
+
+
+def test_sign_of_product():
+    num = sturm(s, s, 1, 2)
+    den = sturm(s ** 2 + 1, s, 1, 2)
+    thm = K.sign_of_product(num, den, expr=s / (s ** 2 + 1))
+    assert (thm.claim.want, thm.claim.strict) == (1, True)
+    assert K.sign_of_product(num, den, expr=-3 * s / (s ** 2 + 1)).claim.want == -1
+    assert K.sign_of_product(den, expr=(s ** 2 + 1) ** Q(-3, 2)).claim.want == 1
+    rejects(K.sign_of_product, num, expr=s / (s ** 2 + 1))                       # a factor uncovered
+    rejects(K.sign_of_product, num, sturm(s ** 2 + 1, s, 1, 3), expr=s / (s ** 2 + 1))  # other interval
+    weak = sturm(x - 1, x, 1, 2, strict=False)
+    rejects(K.sign_of_product, weak, expr=1 / (x - 1))                           # 1/0 at x = 1
+    rejects(K.sign_of_product, sturm(x - 1, x, 1, 2, want=1, lo_open=True), expr=(x - 1) * sp.Integer(0) + 1)
+    neg = sturm(x - 3, x, 1, 2, want=-1)
+    assert K.sign_of_product(neg, expr=(x - 3) ** 2).claim.want == 1
+    assert K.sign_of_product(neg, expr=(x - 3) ** 3).claim.want == -1
+    rejects(K.sign_of_product, neg, expr=sp.sqrt(x - 3))                         # real power of a negative
+
+
+def test_sign_of_sum():
+    sq = sturm(x ** 2, x, -1, 1, strict=False)
+    thm = K.sign_of_sum(sq, expr=x ** 2 + 1, want=1)
+    assert thm.claim.strict
+    assert not K.sign_of_sum(sq, sturm(x ** 4, x, -1, 1, strict=False), expr=x ** 2 + x ** 4, want=1).claim.strict
+    rejects(K.sign_of_sum, sq, expr=x ** 2 - 1, want=1)                          # constant -1
+    rejects(K.sign_of_sum, sq, expr=x ** 2 + x + 1, want=1)                      # x uncovered
+    rejects(K.sign_of_sum, sturm(x - 2, x, -1, 1, want=-1), expr=x ** 2 + x - 2, want=1)
+
+
+def test_sign_through_increasing():
+    y = sturm(x - 1, x, 1, 2, lo_open=True)
+    for G in (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf):
+        assert K.sign_through_increasing(y, expr=G(x - 1)).claim.want == 1
+    assert K.sign_through_increasing(y, expr=sp.exp(x - 1)).claim.want == 1
+    rejects(K.sign_through_increasing, y, expr=sp.tanh(x - 2))
+    rejects(K.sign_through_increasing, y, expr=sp.cos(x - 1))
+    big = sturm(x - 1, x, 2, 3)
+    assert K.sign_through_increasing(big, expr=sp.log(x)).claim.want == 1
+    below = sturm(x - 1, x, Q(1, 2), Q(2, 3), want=-1)
+    rejects(K.sign_through_increasing, below, expr=sp.log(x))                    # needs x > 0
+    pos = sturm(x, x, Q(1, 2), Q(2, 3))
+    assert K.sign_through_increasing(below, pos, expr=sp.log(x)).claim.want == -1
+    rejects(K.sign_through_increasing, below, below, expr=sp.log(x))
+
+
+def test_join_and_weaken():
+    a = sturm(x + 1, x, 0, 1, lo_open=True)
+    b = sturm(x + 1, x, 1, 2)
+    j = K.join(a, b)
+    assert (j.claim.lo, j.claim.hi, j.claim.lo_open, j.claim.hi_open) == ("Integer(0)", "Integer(2)", True, False)
+    rejects(K.join, a, sturm(x + 1, x, 2, 3))                                   # a gap (1, 2)
+    rejects(K.join, sturm(x + 1, x, 0, 1, hi_open=True), sturm(x + 1, x, 1, 2, lo_open=True))  # 1 uncovered
+    rejects(K.join, a, sturm(x + 2, x, 1, 2))
+    rejects(K.join, a, sturm(x - 3, x, 1, 2, want=-1))
+    w = K.weaken(j, lo=Q(1, 2), hi=sp.Integer(2), lo_open=False, hi_open=True, strict=False)
+    assert not w.claim.strict and w.claim.lo == "Rational(1, 2)"
+    rejects(K.weaken, j, lo=ZERO, hi=sp.Integer(2), lo_open=False, hi_open=False, strict=True)  # 0 not in I
+    rejects(K.weaken, j, lo=Q(1, 2), hi=sp.Integer(3), lo_open=False, hi_open=False, strict=True)
+    rejects(K.weaken, w, lo=Q(1, 2), hi=sp.Integer(1), lo_open=False, hi_open=False, strict=True)
+
+
+def test_join_at_zero():
+    e = (x - 1) ** 2 * (x + 1)
+    left = sturm(e, x, 0, 1, hi_open=True)
+    right = sturm(e, x, 1, 2, lo_open=True)
+    j = K.join_at_zero(left, right)
+    assert not j.claim.strict and not j.claim.lo_open and not j.claim.hi_open
+    f = x ** 2 - 2 * x + 2                                                       # f(1) = 1
+    rejects(K.join_at_zero, sturm(f, x, 0, 1, hi_open=True), sturm(f, x, 1, 2, lo_open=True))
+    # (x - 1) * sqrt(x - 2): SymPy evaluates it to 0 at x = 1, but it is not real there
+    g = (x - 1) * sp.sqrt(x - 2)
+    assert g.subs(x, 1) == 0
+    with pytest.raises(Undefined):
+        evaluate(g, x, 1, 1)
+
+
+def tail_parts(E, Et, R, w=None):
+    """sign_on_tail premises for E > 0 with E_t > 0 proved by Taylor at t = 0."""
+    tail_t = K.sign_by_taylor(expr=Et, var=t, c=ZERO, side=1, width=1 / R, order=1)
+    ident = K.identity(lhs=Et, rhs=E.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    return tail_t, ident
+
+
+def test_sign_on_tail():
+    E = s / (s ** 2 + 1)
+    Et = t / (t ** 2 + 1)
+    tail_t, ident = tail_parts(E, Et, sp.Integer(4))
+    thm = K.sign_on_tail(tail_t, ident, expr=E, var=s, R=sp.Integer(4))
+    assert (thm.claim.lo, thm.claim.hi, thm.claim.lo_open) == ("Integer(4)", "oo", False)
+    rejects(K.sign_on_tail, tail_t, ident, expr=E, var=s, R=sp.Integer(2))          # t-range (0, 1/4] only
+    rejects(K.sign_on_tail, ident, tail_t, expr=E, var=s, R=sp.Integer(4))
+    rejects(K.sign_on_tail, tail_t, ident, expr=2 * E, var=s, R=sp.Integer(4))      # identity is about E
+    # E = (s**2 - 25)/(s - 5) has E(1/t) = (1 + 5t)/t where both are defined, E_t > 0 on (0, 1/4],
+    # but E is undefined at s = 5: the tail rule must not claim E > 0 on [4, oo)
+    E5 = (s ** 2 - 25) / (s - 5)
+    Et5 = (1 + 5 * t) / t
+    ident5 = K.identity(lhs=Et5, rhs=E5.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    pos5 = K.sign_of_product(sturm(1 + 5 * t, t, 0, Q(1, 4), lo_open=True), sturm(t, t, 0, Q(1, 4), lo_open=True),
+                             expr=Et5)
+    rejects(K.sign_on_tail, pos5, ident5, expr=E5, var=s, R=sp.Integer(4))
+
+
+def test_sign_by_substitution():
+    u = sp.Symbol("u", positive=True)
+    half = Q(1, 2)
+    outer = K.sign_by_taylor(expr=u - sp.sin(u), var=u, c=ZERO, side=1, width=half, order=3)   # (0, 1/2]
+    low = sturm(x ** 2, x, 0, half, lo_open=True)                       # u - 0 > 0
+    high = sturm(half - x ** 2, x, 0, half, lo_open=True, strict=False)  # 1/2 - u >= 0
+    thm = K.sign_by_substitution(outer, low, high, inner=x ** 2)
+    assert parse(thm.claim.expr) == x ** 2 - sp.sin(x ** 2) and thm.claim.want == 1 and thm.claim.strict
+    rejects(K.sign_by_substitution, outer, low, inner=x ** 2)                          # upper end unbounded
+    rejects(K.sign_by_substitution, outer, high, low, inner=x ** 2)                    # order: a, then b
+    rejects(K.sign_by_substitution, outer, sturm(x ** 2, x, 0, half, strict=False),     # u = 0 at x = 0
+            sturm(half - x ** 2, x, 0, half, strict=False), inner=x ** 2)
+    rejects(K.sign_by_substitution, outer, low, high, inner=2 * x ** 2)
+    wide = sturm(1 - x ** 2, x, 0, 1, lo_open=True, strict=False)                     # u up to 1 > 1/2
+    rejects(K.sign_by_substitution, outer, sturm(x ** 2, x, 0, 1, lo_open=True), wide, inner=x ** 2)
+
+
+def test_sign_by_monotone():
+    E = 1 - 1 / s
+    dE = K.sign_of_product(sturm(s, s, 2, sp.oo, hi_open=True), expr=sp.diff(E, s))   # s**-2 > 0
+    thm = K.sign_by_monotone(dE, expr=E, var=s, R=sp.Integer(2))
+    assert (thm.claim.lo, thm.claim.hi, thm.claim.want, thm.claim.strict) == ("Integer(2)", "oo", 1, True)
+    rejects(K.sign_by_monotone, dE, expr=E, var=s, R=sp.Integer(3))                  # premise on [2, oo)
+    assert K.sign_by_monotone(dE, expr=E + 1, var=s, R=sp.Integer(2)).claim.want == 1  # same derivative
+    rejects(K.sign_by_monotone, dE, expr=E - 1, var=s, R=sp.Integer(2))              # -1/s < 0
+    rejects(K.sign_by_monotone, dE, expr=E * 2, var=s, R=sp.Integer(2))              # another derivative
+    F = 1 / s - Q(1, 4)                     # F(2) > 0 but F decreases: F(8) < 0
+    dF = K.sign_of_product(sturm(s, s, 2, sp.oo, hi_open=True), expr=sp.diff(F, s))
+    rejects(K.sign_by_monotone, dF, expr=F, var=s, R=sp.Integer(2))
+    G = sp.log(s - 1) + 1                   # true on [2, oo), but log(s - 1) is not defined for all s > 0
+    dG = K.sign_of_product(sturm(s - 1, s, 2, sp.oo, hi_open=True), expr=sp.diff(G, s))
+    rejects(K.sign_by_monotone, dG, expr=G, var=s, R=sp.Integer(2))
+
+
+def test_sign_by_rewrite():
+    L = (s ** 2 + 2 * s + 1) / (s + 1)
+    R = sturm(s + 1, s, 0, sp.oo, True, True)
+    ident = K.identity(lhs=L, rhs=s + 1, var=s, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    assert parse(K.sign_by_rewrite(R, ident).claim.expr) == L
+    # (s**2 - 1)/(s - 1) = s + 1 where both are defined, but it is undefined at s = 1
+    L1 = (s ** 2 - 1) / (s - 1)
+    ident1 = K.identity(lhs=L1, rhs=s + 1, var=s, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    rejects(K.sign_by_rewrite, R, ident1)
+    Lx = (x ** 2 - 1) / (x - 1)
+    Rx = sturm(x + 1, x, 0, 2)
+    identx = K.identity(lhs=Lx, rhs=x + 1, var=x, lo=ZERO, hi=sp.Integer(2), lo_open=False, hi_open=False)
+    rejects(K.sign_by_rewrite, Rx, identx, cuts=[0, 1, 2])
+    rejects(K.sign_by_rewrite, Rx, identx)
+    Lok = (x ** 2 + 2 * x + 1) / (x + 1)
+    identok = K.identity(lhs=Lok, rhs=x + 1, var=x, lo=ZERO, hi=sp.Integer(2), lo_open=False, hi_open=False)
+    assert K.sign_by_rewrite(Rx, identok, cuts=[0, 1, 2]).claim.want == 1
+    rejects(K.sign_by_rewrite, sturm(x + 1, x, 0, 3), identok, cuts=[0, 3])   # identity only on [0, 2]
+
+
+def test_identity():
+    exact = K.identity(lhs=s / (s ** 2 + 1), rhs=1 / (s + 1 / s), var=s, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    assert "sympy-simplify" not in exact.assumptions and "sympy-polys" in exact.assumptions
+    rejects(K.identity, lhs=s / (s ** 2 + 1), rhs=1 / (s + 2 / s), var=s, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    rejects(K.identity, lhs=s / (s ** 2 + 1), rhs=1 / (s + 1 / s) + Q(1, 10 ** 60), var=s, lo=ZERO, hi=sp.oo,
+            lo_open=True, hi_open=True)
+    trig = K.identity(lhs=sp.sin(x) ** 2 + sp.cos(x) ** 2, rhs=sp.Integer(1), var=x, lo=-sp.oo, hi=sp.oo,
+                      lo_open=True, hi_open=True)
+    assert "sympy-simplify" in trig.assumptions
+    rejects(K.identity, lhs=sp.sin(x) ** 2 + sp.cos(x) ** 2 + Q(1, 10 ** 60), rhs=sp.Integer(1), var=x,
+            lo=-sp.oo, hi=sp.oo, lo_open=True, hi_open=True)
+
+
+def test_cross_check_sees_1e_minus_60():
+    _cross_check(sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1, x, sp.Integer(0), sp.Integer(1))
+    with pytest.raises(KernelError):
+        _cross_check(sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1 + sp.exp(x) / 10 ** 60, x, sp.Integer(0), sp.Integer(1))
+    with pytest.raises(KernelError):                                      # nowhere evaluable
+        _cross_check(sp.log(x) - sp.log(x) + sp.sqrt(x), x, sp.Integer(-2), sp.Integer(-1))
+
+
+def test_value_sign():
+    assert K.value_sign(value=sp.sqrt(2) - 1).claim.want == 1
+    assert K.value_sign(value=sp.pi - Q(355, 113)).claim.want == -1
+    assert K.value_sign(value=sp.sqrt(2) ** 2 - 2).claim.want == 0
+    rejects(K.value_sign, value=x)
+    rejects(K.value_sign, value=sp.Float(0.1))
+    rejects(K.value_sign, value=sp.log(-1))
+
+
+def test_sup_rules():
+    E = s / (s ** 2 + 1)
+    cuts = [ZERO] + [Q(k, 16) for k in range(1, 65)]
+    up = K.sup_upper_by_cover(expr=E, var=s, cuts=cuts, bound=Q(3, 5))
+    assert up.claim.kind == "sup_upper" and up.claim.other == "Rational(3, 5)"
+    rejects(K.sup_upper_by_cover, expr=E, var=s, cuts=cuts, bound=Q(49, 100))   # E(1) = 1/2
+    low = K.sup_lower_by_point(expr=E, var=s, point=sp.Integer(1), bound=Q(1, 2), lo=ZERO, hi=sp.oo,
+                               lo_open=True, hi_open=True)
+    assert low.claim.kind == "sup_lower"
+    rejects(K.sup_lower_by_point, expr=E, var=s, point=sp.Integer(1), bound=Q(1, 2) + Q(1, 10 ** 30),
+            lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    rejects(K.sup_lower_by_point, expr=E, var=s, point=sp.Integer(5), bound=ZERO,
+            lo=ZERO, hi=sp.Integer(4), lo_open=True, hi_open=False)
+    # sup (2x - x**2) <= 1 from 1 - (2x - x**2) = (x - 1)**2 >= 0
+    g = 2 * x - x ** 2
+    sq = sturm(1 - g, x, -sp.oo, sp.oo, True, True, strict=False)
+    assert K.sup_upper_by_sign(sq, expr=g, bound=sp.Integer(1)).claim.other == "Integer(1)"
+    rejects(K.sup_upper_by_sign, sq, expr=g, bound=sp.Integer(2))
+
+
+# ------------------------------------------------------------------ the wiring demo
+
+def prove_dF_positive():
+    """F(s) = log(1 + s**2)/2: F'(s) > 0 on (0, oo) entirely through kernel
+    rules, as `univariate.prove_sign` would: Taylor at 0, a cover, s = 1/t."""
+    E = sp.diff(sp.log(1 + s ** 2) / 2, s)
+    near = K.sign_by_taylor(expr=E, var=s, c=ZERO, side=1, width=Q(1, 4), order=1)
+    mid = K.sign_by_cover(expr=E, var=s, cuts=[Q(1, 4), 1, 2, 4], want=1)
+    tail_t, ident = tail_parts(E, t / (t ** 2 + 1), sp.Integer(4))
+    tail = K.sign_on_tail(tail_t, ident, expr=E, var=s, R=sp.Integer(4))
+    return K.join(K.join(near, mid), tail)
+
+
+def prove_kf_half():
+    """kf = sup F' = 1/2 exactly (as `kf.certify_sup` would): 1/2 - F' >= 0
+    on (0, oo) with a touching zero at s = 1, and F'(1) = 1/2."""
+    E = sp.diff(sp.log(1 + s ** 2) / 2, s)
+    D = Q(1, 2) - E
+    one = sp.Integer(1)
+    head = K.weaken(K.sign_by_cover(expr=D, var=s, cuts=[ZERO] + [Q(k, 32) for k in range(1, 25)], want=1),
+                    lo=ZERO, hi=Q(3, 4), lo_open=True, hi_open=False, strict=True)
+    left = K.sign_by_taylor(expr=D, var=s, c=one, side=-1, width=Q(1, 4), order=2,
+                            cuts=[Q(3, 4) + Q(k, 32) for k in range(9)])
+    right = K.sign_by_taylor(expr=D, var=s, c=one, side=1, width=Q(1, 4), order=2,
+                             cuts=[one + Q(k, 32) for k in range(9)])
+    mid = K.sign_by_cover(expr=D, var=s, cuts=[Q(5, 4) + Q(k, 64) for k in range(0, 177)], want=1)
+    Dt = Q(1, 2) - t / (t ** 2 + 1)
+    tail_t = K.weaken(K.sign_by_cover(expr=Dt, var=t, cuts=[ZERO, Q(1, 8), Q(1, 4)], want=1),
+                      lo=ZERO, hi=Q(1, 4), lo_open=True, hi_open=False, strict=True)
+    ident = K.identity(lhs=Dt, rhs=D.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    tail = K.sign_on_tail(tail_t, ident, expr=D, var=s, R=sp.Integer(4))
+    whole = K.join(K.join(K.join(head, K.join_at_zero(left, right)), mid), tail)
+    upper = K.sup_upper_by_sign(whole, expr=E, bound=Q(1, 2))
+    lower = K.sup_lower_by_point(expr=E, var=s, point=one, bound=Q(1, 2), lo=ZERO, hi=sp.oo,
+                                 lo_open=True, hi_open=True)
+    return upper, lower
+
+
+def test_demo_dF_positive_on_0_oo():
+    thm = prove_dF_positive()
+    c = thm.claim
+    assert (c.kind, c.lo, c.hi, c.lo_open, c.hi_open, c.want, c.strict) == ("sign", "Integer(0)", "oo", True, True, 1, True)
+    assert parse(c.expr) == s / (s ** 2 + 1)
+    assert thm.assumptions == {"arb", "sympy-core", "sympy-diff", "sympy-polys"}
+
+
+def test_demo_kf_is_one_half():
+    upper, lower = prove_kf_half()
+    assert upper.claim.other == lower.claim.other == "Rational(1, 2)"
+    assert (upper.claim.lo, upper.claim.hi) == ("Integer(0)", "oo")
+    back = check_certificate(json.dumps(to_certificate([upper, lower])))
+    assert [b.claim for b in back] == [upper.claim, lower.claim]
+
+
+def prove_kf_design2():
+    """Design 2, F(s) = sqrt(1 + s**2) - 1: kf = sup |F'| = 1, approached as
+    s -> oo, not attained: |F'| <= 1 on (0, oo) and sup F' >= lim F' = 1."""
+    E = sp.diff(sp.sqrt(1 + s ** 2) - 1, s)                 # s/sqrt(s**2 + 1)
+    one, two, half = sp.Integer(1), sp.Integer(2), Q(1, 2)
+    D = 1 - E
+    head = K.weaken(K.sign_by_cover(expr=D, var=s, cuts=[Q(k, 16) for k in range(33)], want=1),
+                    lo=ZERO, hi=two, lo_open=True, hi_open=False, strict=True)
+    Dt = 1 - 1 / sp.sqrt(t ** 2 + 1)
+    tail_t = K.sign_by_taylor(expr=Dt, var=t, c=ZERO, side=1, width=half, order=2,
+                              cuts=[Q(k, 16) for k in range(9)])
+    ident = K.identity(lhs=Dt, rhs=D.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    below_one = K.join(head, K.sign_on_tail(tail_t, ident, expr=D, var=s, R=two))
+    up = K.sup_upper_by_sign(below_one, expr=E, bound=one)
+    pos = K.sign_of_product(sturm(s, s, 0, sp.oo, True, True), sturm(s ** 2 + 1, s, 0, sp.oo, True, True), expr=E)
+    down = K.sup_upper_by_sign(K.sign_of_sum(pos, expr=1 + E, want=1), expr=-E, bound=one)
+    kf_upper = K.sup_upper_of_abs(up, down)
+    Et = 1 / sp.sqrt(t ** 2 + 1)
+    ident_e = K.identity(lhs=Et, rhs=E.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    kf_lower = K.sup_lower_by_limit(ident_e, expr=E, var=s, width=half, bound=one, lo=ZERO, lo_open=True)
+    return kf_upper, kf_lower
+
+
+def test_demo_kf_design2_approached_at_infinity():
+    upper, lower = prove_kf_design2()
+    assert parse(upper.claim.expr) == sp.Abs(s / sp.sqrt(s ** 2 + 1)) and upper.claim.other == "Integer(1)"
+    assert lower.claim.kind == "sup_lower" and lower.claim.other == "Integer(1)"
+    assert "sympy-simplify" in upper.assumptions           # the tail identity has a radical
+    back = check_certificate(json.dumps(to_certificate([upper, lower])))
+    assert [b.claim for b in back] == [upper.claim, lower.claim]
+
+
+def test_sup_lower_by_limit_and_scaling():
+    E = s / sp.sqrt(s ** 2 + 1)
+    Et = 1 / sp.sqrt(t ** 2 + 1)
+    ident = K.identity(lhs=Et, rhs=E.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    half = Q(1, 2)
+    rejects(K.sup_lower_by_limit, ident, expr=E, var=s, width=half, bound=Q(101, 100), lo=ZERO, lo_open=True)
+    rejects(K.sup_lower_by_limit, ident, expr=2 * E, var=s, width=half, bound=sp.Integer(2), lo=ZERO, lo_open=True)
+    # E_t = 1/t is not defined at t = 0 (1/t -> oo has no finite limit)
+    ident2 = K.identity(lhs=1 / t, rhs=s.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    rejects(K.sup_lower_by_limit, ident2, expr=s, var=s, width=half, bound=sp.Integer(5), lo=ZERO, lo_open=True)
+    low = K.sup_lower_by_limit(ident, expr=E, var=s, width=half, bound=sp.Integer(1), lo=ZERO, lo_open=True)
+    scaled = K.sup_scaled(low, factor=sp.sqrt(2))
+    assert parse(scaled.claim.other) == sp.sqrt(2) and parse(scaled.claim.expr) == sp.sqrt(2) * E
+    rejects(K.sup_scaled, low, factor=-sp.sqrt(2))
+    rejects(K.sup_scaled, ident, factor=sp.Integer(2))
+    up = K.sup_upper_by_cover(expr=E, var=s, cuts=[0, 1, 2], bound=sp.Integer(2))
+    rejects(K.sup_upper_of_abs, up, up)                                   # second premise must be about -E
+
+
+# ------------------------------------------------------------------ certificates
+
+def demo_certificate():
+    return json.loads(json.dumps(to_certificate([prove_dF_positive()])))
+
+
+def node(cert, rule, k=0):
+    return [n for n in cert["theorems"] if n["rule"] == rule][k]
+
+
+def test_certificate_round_trip():
+    thm = prove_dF_positive()
+    text = json.dumps(to_certificate([thm]), indent=1)
+    back = check_certificate(text)
+    assert [b.claim for b in back] == [thm.claim]
+    cert = json.loads(text)
+    assert cert["version"] == 1 and cert["assumptions"] == sorted(thm.assumptions)
+    assert {n["rule"] for n in cert["theorems"]} == {"sign_by_taylor", "sign_by_cover", "identity",
+                                                     "sign_on_tail", "join"}
+
+
+def test_schema_matches_the_kernel():
+    schema = json.loads(SCHEMA.read_text())
+    assert set(schema["$defs"]["theorem"]["properties"]["rule"]["enum"]) == set(RULES)
+    assert set(schema["$defs"]["claim"]["required"]) == set(K.Claim.__dataclass_fields__)
+    assert schema["properties"]["version"]["const"] == VERSION
+
+
+def test_certificate_validates_against_the_schema():
+    jsonschema = pytest.importorskip("jsonschema")      # not a dependency: runs where installed
+    jsonschema.validate(demo_certificate(), json.loads(SCHEMA.read_text()))
+
+
+def tampered(edit):
+    cert = demo_certificate()
+    edit(cert)
+    with pytest.raises(CertificateError) as err:
+        check_certificate(cert)
+    return str(err.value)
+
+
+def test_tampered_cut_point_onto_a_zero():
+    # the cover [1/4, 1, 2, 4] of s/(s**2 + 1) > 0 with its first cut moved
+    # onto the zero at s = 0: the box [0, 1] no longer has a strict sign
+    def edit(cert):
+        n = node(cert, "sign_by_cover")
+        n["data"]["cuts"][0] = {"$": "Integer(0)"}
+        n["claim"]["lo"] = "Integer(0)"
+    msg = tampered(edit)
+    assert "does not check" in msg
+
+
+def test_tampered_dyadic_cut_point():
+    c0 = Q(3, 8)
+    thm = K.sign_by_cover(expr=x - c0, var=x, cuts=[c0 + Q(1, 2 ** 60), 1], want=1)
+    cert = json.loads(json.dumps(to_certificate([thm])))
+    check_certificate(cert)
+    cert["theorems"][0]["data"]["cuts"][0] = {"$": "Rational(3, 8)"}
+    cert["theorems"][0]["claim"]["lo"] = "Rational(3, 8)"
+    with pytest.raises(CertificateError, match="sign not shown"):
+        check_certificate(cert)
+
+
+def test_tampered_cover_with_a_gap():
+    def edit(cert):
+        n = node(cert, "sign_by_cover")
+        n["data"]["cuts"][0] = {"$": "Rational(3, 8)"}
+        n["claim"]["lo"] = "Rational(3, 8)"
+    assert "not adjacent" in tampered(edit)
+
+
+def test_tampered_wrong_sign_claimed():
+    def edit(cert):
+        cert["theorems"][-1]["claim"]["want"] = -1
+    assert "claims" in tampered(edit)
+
+    def edit_cover(cert):
+        n = node(cert, "sign_by_cover")
+        n["data"]["want"] = -1
+        n["claim"]["want"] = -1
+    assert "sign not shown" in tampered(edit_cover)
+
+
+def test_tampered_identity_off_by_1e_60():
+    def edit(cert):
+        n = node(cert, "identity")
+        rhs = parse(n["data"]["rhs"]["$"]) + Q(1, 10 ** 60)
+        n["data"]["rhs"] = {"$": sp.srepr(rhs)}
+        n["claim"]["other"] = sp.srepr(rhs)
+    assert "differ" in tampered(edit)
+
+
+def test_tampered_taylor_order():
+    def edit(cert):
+        node(cert, "sign_by_taylor")["data"]["order"] = 2
+    assert "not exactly 0" in tampered(edit)
+
+
+def test_tampered_version_and_shape():
+    def edit(cert):
+        cert["version"] = 0
+    assert "version 0 is not supported" in tampered(edit)
+    assert "not supported" in tampered(lambda c: c.update(version=2))
+    assert "format" in tampered(lambda c: c.update(format="something else"))
+    assert "unknown rule" in tampered(lambda c: c["theorems"][0].update(rule="trust_me"))
+    assert "earlier" in tampered(lambda c: c["theorems"][0].update(premises=[3]))
+    assert "rests on" in tampered(lambda c: c["assumptions"].remove("sympy-diff"))
+    with pytest.raises(CertificateError):
+        check_certificate("{not json")
+
+
+def test_tampered_claim_only():
+    def edit(cert):
+        node(cert, "sign_by_cover")["claim"]["hi"] = "Integer(5)"
+    assert "claims" in tampered(edit)
+
+
+def test_certificate_does_not_execute_code():
+    cert = demo_certificate()
+    node(cert, "sign_by_cover")["data"]["expr"] = {"$": "__import__('os').system('false')"}
+    with pytest.raises(CertificateError, match="not allowed"):
+        check_certificate(cert)
+
+
+def test_strings_are_never_sympified():
+    rejects(K.sign_by_cover, expr="x**2 + 1", var=x, cuts=[0, 1], want=1)
+    rejects(K.sign_by_cover, expr=x ** 2 + 1, var=x, cuts=[0, "__import__('os').getpid()"], want=1)
+    rejects(K.sign_by_cover, expr=x ** 2 + 1, var=x, cuts=[0, 1], want=1, strict="yes")
+    cert = demo_certificate()
+    node(cert, "sign_by_cover")["data"]["cuts"][0] = "__import__('os').getpid()"
+    with pytest.raises(CertificateError, match="expected a SymPy object"):
+        check_certificate(cert)
+
+
+def test_certificate_is_not_mutated_by_the_rules():
+    cert = demo_certificate()
+    before = copy.deepcopy(cert)
+    check_certificate(cert)
+    assert cert == before
+
+
+def test_malformed_steps_are_rejected_not_crashes():
+    for edit in (lambda n: n["data"].update(expr={"$": "Add(" * 400 + "Integer(1)" + ")" * 400}),
+                 lambda n: n["data"].update(expr={"$": "Symbol(1)"}),
+                 lambda n: n["data"].update(expr={"no dollar": 1}),
+                 lambda n: n["data"].update(cuts=None),
+                 lambda n: n["data"].pop("var")):
+        cert = demo_certificate()
+        edit(node(cert, "sign_by_cover"))
+        with pytest.raises(CertificateError):
+            check_certificate(cert)

@@ -1,0 +1,218 @@
+"""The kernel's own interval evaluator: SymPy expressions on python-flint Arb.
+
+An interval is a pair of Arb balls ``Iv(lo, hi)`` meaning: every value x of
+the set satisfies  lower(lo) <= x <= upper(hi)  (lower/upper: the ends of a
+ball).  Arb rounds outward, so each operation below keeps this invariant:
+
+* x + y: [lo1 + lo2, hi1 + hi2];  -x: [-hi, -lo];
+* x * y: min and max of the four corner products (Arb's min/max of balls);
+* 1/x only if 0 < lower(x) or upper(x) < 0 is *certified*;
+* an increasing function g: [g(lo), g(hi)] (g(ball) contains g of every point
+  of the ball, in particular of its lower end); decreasing: swapped;
+* anything else (sin, cos): g of the hull ball, which contains g of every
+  point in between.
+
+"Range" semantics: ``evaluate(e, x, lo, hi)`` encloses {e(x) : lo <= x <= hi}
+and raises `Undefined` unless e is defined (real, finite) at *every* point of
+[lo, hi]: log needs lower(arg) > 0, x**r (r not an integer) needs lower >= 0
+(> 0 for r < 0), 1/x needs 0 excluded.  Nothing is clipped: sqrt of an
+interval straddling 0 is undefined, not sqrt of its non-negative part.
+Every supported function is continuous on the interior of its domain, so a
+successful evaluation also shows that e is continuous on [lo, hi].
+
+No extended arithmetic at infinity or at t = 0 of s = 1/t: the tail of
+[R, oo) is handled by the `sign_on_tail` rule from theorems about a
+rewritten t-form (see docs/kernel.md).
+"""
+from __future__ import annotations
+
+from contextlib import contextmanager
+
+import flint
+import sympy as sp
+from flint import arb, fmpq
+
+
+class Undefined(ArithmeticError):
+    """The expression is (or may be) undefined somewhere on the box, or uses
+    something this evaluator does not support."""
+
+
+@contextmanager
+def precision(bits: int):
+    old = flint.ctx.prec
+    flint.ctx.prec = bits
+    try:
+        yield
+    finally:
+        flint.ctx.prec = old
+
+
+class Iv:
+    """lower(lo) <= x <= upper(hi) for every value x of the set."""
+    __slots__ = ("lo", "hi")
+
+    def __init__(self, lo: arb, hi: arb):
+        if not (lo.is_finite() and hi.is_finite()):
+            raise Undefined("not finite")
+        self.lo, self.hi = lo, hi
+
+    # certified comparisons with 0 ----------------------------------------
+    def positive(self) -> bool:
+        return bool(self.lo > 0)
+
+    def negative(self) -> bool:
+        return bool(self.hi < 0)
+
+    def nonnegative(self) -> bool:
+        return bool(self.lo >= 0)
+
+    def nonpositive(self) -> bool:
+        return bool(self.hi <= 0)
+
+    def hull(self) -> arb:
+        return arb.union(self.lo, self.hi)
+
+    def __repr__(self):
+        return f"Iv({self.lo}, {self.hi})"
+
+
+def _point(b: arb) -> Iv:
+    return Iv(b, b)
+
+
+def _add(x: Iv, y: Iv) -> Iv:
+    return Iv(x.lo + y.lo, x.hi + y.hi)
+
+
+def _mul(x: Iv, y: Iv) -> Iv:
+    p = [x.lo * y.lo, x.lo * y.hi, x.hi * y.lo, x.hi * y.hi]
+    lo, hi = p[0], p[0]
+    for q in p[1:]:
+        lo, hi = lo.min(q), hi.max(q)
+    return Iv(lo, hi)
+
+
+def _inv(x: Iv) -> Iv:
+    if not (x.positive() or x.negative()):
+        raise Undefined("division by an interval that may contain 0")
+    return Iv(1 / x.hi, 1 / x.lo)
+
+
+def _increasing(g, x: Iv) -> Iv:
+    return Iv(g(x.lo), g(x.hi))
+
+
+def _abs_like(x: Iv, g) -> Iv:
+    """g even with g increasing on [0, oo): |x|, x**(2k), cosh."""
+    if x.nonnegative():
+        return Iv(g(x.lo), g(x.hi))
+    if x.nonpositive():
+        return Iv(g(-x.hi), g(-x.lo))
+    return Iv(g(arb(0)), g(-x.lo).max(g(x.hi)))
+
+
+def _pow(x: Iv, e: sp.Rational) -> Iv:
+    if e.is_Integer:
+        n = int(e)
+        if n == 0:
+            return _point(arb(1))
+        if n < 0:
+            return _inv(_pow(x, -e))
+        if n % 2 == 0:
+            return _abs_like(x, lambda b: b ** n)
+        return _increasing(lambda b: b ** n, x)
+    r = arb(fmpq(int(e.p), int(e.q)))
+    if e < 0:
+        if not x.positive():
+            raise Undefined(f"x**({e}) needs x > 0")
+        return _inv(_pow(x, -e))
+    if not x.nonnegative():
+        raise Undefined(f"x**({e}) needs x >= 0")
+
+    def g(b: arb) -> arb:           # b**r for a ball b >= 0, increasing
+        if b.is_zero():
+            return arb(0)
+        if b > 0:
+            return (r * b.log()).exp()
+        u = b.upper()               # the set is >= 0: [0, upper(b)**r] holds b**r
+        if not u > 0:
+            raise Undefined("power of a ball that cannot be bounded")
+        return arb.union(arb(0), (r * u.log()).exp())
+    return _increasing(g, x)
+
+
+def _log(x: Iv) -> Iv:
+    if not x.positive():
+        raise Undefined("log of an interval that may contain values <= 0")
+    return _increasing(arb.log, x)
+
+
+_INCREASING = {sp.exp: arb.exp, sp.tanh: arb.tanh, sp.atan: arb.atan,
+               sp.asinh: arb.asinh, sp.sinh: arb.sinh, sp.erf: arb.erf}
+_BOUNDED = {sp.sin: arb.sin, sp.cos: arb.cos}
+
+
+def _constant(e: sp.Expr) -> arb:
+    if e.is_Integer:
+        return arb(int(e))
+    if e.is_Rational:
+        return arb(fmpq(int(e.p), int(e.q)))
+    if e is sp.pi:
+        return arb.pi()
+    if e is sp.E:
+        return arb.const_e()
+    raise Undefined(f"unsupported constant {e}")
+
+
+def _eval(e: sp.Expr, env: dict) -> Iv:
+    if e in env:
+        return env[e]
+    if e.is_Symbol:
+        raise Undefined(f"free symbol {e}")
+    if e.is_Number or e.is_NumberSymbol:
+        if isinstance(e, sp.Float) or not e.is_real or not e.is_finite:
+            raise Undefined(f"not an exact real constant: {e}")
+        return _point(_constant(e))
+    if e.is_Add:
+        acc = _eval(e.args[0], env)
+        for a in e.args[1:]:
+            acc = _add(acc, _eval(a, env))
+        return acc
+    if e.is_Mul:
+        acc = _eval(e.args[0], env)
+        for a in e.args[1:]:
+            acc = _mul(acc, _eval(a, env))
+        return acc
+    if e.is_Pow:
+        if not e.exp.is_Rational:
+            if e.base is sp.E:
+                return _increasing(arb.exp, _eval(e.exp, env))
+            raise Undefined(f"only rational exponents: {e}")
+        return _pow(_eval(e.base, env), e.exp)
+    f = type(e)
+    if len(e.args) != 1:
+        raise Undefined(f"unsupported: {f.__name__}")
+    if f is sp.log:
+        return _log(_eval(e.args[0], env))
+    if f in _INCREASING:
+        return _increasing(_INCREASING[f], _eval(e.args[0], env))
+    if f in _BOUNDED:
+        b = _BOUNDED[f](_eval(e.args[0], env).hull())
+        return Iv(b, b)
+    if f is sp.cosh:
+        return _abs_like(_eval(e.args[0], env), arb.cosh)
+    if f is sp.Abs:
+        return _abs_like(_eval(e.args[0], env), lambda b: b)
+    raise Undefined(f"unsupported function {f.__name__}")
+
+
+def evaluate(e: sp.Expr, var: sp.Symbol | None = None, lo=None, hi=None, bits: int = 128) -> Iv:
+    """Enclosure of {e(x) : lo <= x <= hi} (lo, hi exact SymPy numbers with
+    lo <= hi), or of the constant e when var is None.  Raises `Undefined`."""
+    with precision(bits):
+        env = {}
+        if var is not None:
+            a, b = evaluate(sp.sympify(lo), bits=bits), evaluate(sp.sympify(hi), bits=bits)
+            env[var] = Iv(a.lo, b.hi)
+        return _eval(sp.sympify(e), env)

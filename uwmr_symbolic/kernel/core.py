@@ -1,0 +1,851 @@
+"""Theorems and the rules that alone can make them (LCF style).
+
+A `Theorem` holds a `Claim` (canonical, JSON-able) plus the rule that made
+it, its premises and the rule's data.  Its constructor demands a
+module-private token: outside this module, the only way to obtain a Theorem
+is to call one of the rule functions below, each of which re-checks its
+premises and raises `KernelError` when one fails.  (Python cannot make the
+token truly secret; the convention is that nothing outside `kernel/` touches
+names starting with an underscore.)
+
+Claim semantics (I: an interval of the real line, ends exact):
+* sign:       for every x in I, E(x) is defined (real, finite) and
+              want*E(x) > 0 (strict) or >= 0 (weak);
+* identity:   for every x in I at which both sides are defined, lhs = rhs;
+* value_sign: the exact real constant E has sign want (-1, 0 or 1);
+* sup_upper:  E is defined on I and E(x) <= bound there (so sup_I E <= bound);
+* sup_lower:  sup of E over the points of I where it is defined is >= bound
+              (for every eps > 0 some x in I has E(x) > bound - eps).
+
+Assumptions a theorem rests on are named strings: "arb" (python-flint's
+outward rounding), "sympy-core" (automatic evaluation, substitution, srepr),
+"sympy-diff" (symbolic derivatives), "sympy-polys" (cancel, Sturm counts),
+"sympy-simplify" (an identity that only `simplify` could show).
+"""
+from __future__ import annotations
+
+import dataclasses
+import functools
+import json
+from dataclasses import dataclass, field
+
+import sympy as sp
+from flint import arb
+
+from .arb import Iv, Undefined, evaluate
+from .parse import ParseError, parse
+
+_TOKEN = object()
+RULES: dict = {}
+OO = sp.oo
+
+
+class KernelError(ValueError):
+    """A rule's premise does not hold: no theorem is made."""
+
+
+def _need(cond, msg):
+    """Raise KernelError(msg) unless cond; msg may be a function making the
+    text (so that printing large expressions costs nothing on success)."""
+    if not cond:
+        raise KernelError(msg() if callable(msg) else msg)
+
+
+@dataclass(frozen=True)
+class Claim:
+    kind: str
+    expr: str                   # srepr of E (identity: lhs)
+    var: str = ""               # srepr of the variable ("" for constants)
+    lo: str = ""                # srepr of the exact ends; hi may be "oo"
+    hi: str = ""
+    lo_open: bool = False
+    hi_open: bool = False
+    want: int = 0
+    strict: bool = False
+    other: str = ""             # identity: rhs; sup_*: the bound
+
+    def to_json(self) -> dict:
+        return {k: getattr(self, k) for k in self.__dataclass_fields__}
+
+    # parsed views
+    def e(self):
+        return parse(self.expr)
+
+    def x(self):
+        return parse(self.var)
+
+    def ends(self):
+        return parse(self.lo), parse(self.hi)
+
+
+@dataclass(frozen=True)
+class Theorem:
+    claim: Claim
+    rule: str
+    premises: tuple
+    data: str                   # JSON of the rule's arguments
+    assumptions: frozenset
+    _token: object = field(default=None, repr=False, compare=False)
+
+    def __post_init__(self):
+        if self._token is not _TOKEN:
+            raise KernelError("theorems are made only by kernel rules")
+        object.__setattr__(self, "_token", None)    # so dataclasses.replace cannot forge one
+
+
+def _s(e) -> str:
+    return sp.srepr(_sym(e))
+
+
+def _encode(v):
+    if isinstance(v, sp.Basic):
+        return {"$": sp.srepr(v)}
+    if isinstance(v, (list, tuple)):
+        return [_encode(u) for u in v]
+    if v is None or isinstance(v, (bool, int, str)):
+        return v
+    raise KernelError(f"rule data must be SymPy objects, numbers, strings or lists: {v!r}")
+
+
+def decode(v):
+    if isinstance(v, dict):
+        return parse(v["$"])
+    if isinstance(v, list):
+        return [decode(u) for u in v]
+    return v
+
+
+def rule(*assumes):
+    """Register a rule: ``fn(*premises, **data)`` returns a Claim (or a
+    (Claim, extra assumptions) pair) after checking everything."""
+    def deco(fn):
+        @functools.wraps(fn)
+        def apply(*premises, **data):
+            for p in premises:
+                _need(isinstance(p, Theorem), lambda: f"{fn.__name__}: a premise is not a theorem")
+            enc = {k: _encode(v) for k, v in data.items()}      # fails early on non-JSON data
+            try:
+                data = {k: decode(v) for k, v in enc.items()}     # exactly what a checker sees
+            except ParseError as exc:
+                raise KernelError(f"{fn.__name__}: {exc}") from None
+            out = fn(*premises, **data)
+            claim, extra = out if isinstance(out, tuple) else (out, ())
+            assumptions = frozenset(assumes).union(extra, *[p.assumptions for p in premises])
+            return Theorem(claim, fn.__name__, tuple(premises), json.dumps(enc, sort_keys=True),
+                           assumptions, _token=_TOKEN)
+        RULES[fn.__name__] = apply
+        return apply
+    return deco
+
+
+# ---------------------------------------------------------------- helpers
+
+def _sym(v) -> sp.Basic:
+    """A SymPy object or a Python int, never a string (sympify would eval it)."""
+    if isinstance(v, sp.Basic):
+        return v
+    _need(type(v) is int, lambda: f"expected a SymPy object or an int, got {type(v).__name__}")
+    return sp.Integer(v)
+
+
+def _number(c) -> sp.Expr:
+    """An exact real constant (no Float, no symbol) or oo."""
+    c = _sym(c)
+    _need(c in (OO, -OO) or (c.is_number and not c.has(sp.Float)), lambda: f"not an exact number: {c}")
+    if c not in (OO, -OO):
+        try:
+            evaluate(c)
+        except Undefined as exc:
+            raise KernelError(f"not a real constant: {c} ({exc})") from None
+    return c
+
+
+def _lt(a, b) -> bool:
+    """a < b, certified (exactly for rationals and oo, else by Arb)."""
+    a, b = _sym(a), _sym(b)
+    if a == b:
+        return False
+    if a == -OO or b == OO:
+        return True
+    if a == OO or b == -OO:
+        return False
+    if a.is_Rational and b.is_Rational:
+        return bool(a < b)
+    try:
+        d = evaluate(b - a, bits=256)
+    except Undefined:
+        return False
+    return d.positive()
+
+
+def _const_sign(c) -> int:
+    """The sign of an exact constant: exactly 0, or an Arb enclosure that
+    excludes 0; KernelError otherwise."""
+    c = _number(c)
+    if c == 0:
+        return 0
+    v = evaluate(c, bits=256)
+    if v.positive():
+        return 1
+    if v.negative():
+        return -1
+    raise KernelError(f"sign of {c} not decided")
+
+
+def _expr(e, var) -> sp.Expr:
+    _need(isinstance(var, sp.Symbol), lambda: f"not a variable: {var!r}")
+    e = _sym(e)
+    _need(not e.has(sp.Float), lambda: f"floats are not exact: {e}")
+    _need(e.free_symbols <= {var}, lambda: f"{e} has symbols other than {var}")
+    return e
+
+
+def _interval(var, lo, hi, lo_open, hi_open, at_zero=False):
+    """Checked interval: lo < hi, infinite ends open, and the variable's
+    SymPy assumptions (positive / nonnegative) hold on all of it.  A rule
+    that only *evaluates* the expression tree (no diff, subs or simplify
+    relying on the assumption) may pass at_zero=True: a positive variable
+    may then have the closed end 0 too."""
+    _need(isinstance(var, sp.Symbol), lambda: f"not a variable: {var!r}")
+    _need(isinstance(lo_open, bool) and isinstance(hi_open, bool), "open/closed flags are booleans")
+    lo, hi = _number(lo), _number(hi)
+    _need(_lt(lo, hi), lambda: f"empty interval ({lo}, {hi})")
+    _need((lo != -OO or lo_open) and (hi != OO or hi_open), "infinite ends are open")
+    kind = next((k for k in _VAR_KINDS if var.assumptions0 == sp.Symbol("_", **{k: True}).assumptions0), None)
+    _need(kind is not None, lambda: f"{var}: a variable is declared real, positive or nonnegative, nothing else")
+    if kind == "positive" and not at_zero:
+        _need(lo == 0 and lo_open or lo != -OO and _lt(0, lo), lambda: f"{var} > 0 assumed: interval must lie in (0, oo)")
+    elif kind != "real":
+        _need(lo == 0 or _lt(0, lo), lambda: f"{var} >= 0 assumed")
+    return lo, hi
+
+
+_VAR_KINDS = ("real", "positive", "nonnegative")
+
+
+def _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict) -> Claim:
+    return Claim("sign", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open),
+                 int(want), bool(strict))
+
+
+def _is_sign(t: Theorem, var=None):
+    _need(t.claim.kind == "sign", lambda: f"premise is a {t.claim.kind} theorem, not a sign theorem")
+    if var is not None:
+        _need(t.claim.var == _s(var), "premise about another variable")
+
+
+def _same_interval(a: Claim, b: Claim):
+    _need((a.var, a.lo, a.hi, a.lo_open, a.hi_open) == (b.var, b.lo, b.hi, b.lo_open, b.hi_open),
+          "premises on different intervals")
+
+
+def _box_ok(v: Iv, want, strict) -> bool:
+    if strict:
+        return v.positive() if want > 0 else v.negative()
+    return v.nonnegative() if want > 0 else v.nonpositive()
+
+
+def _cuts(var, cuts):
+    _need(isinstance(cuts, list) and len(cuts) >= 2, "a cover needs a list of at least two cut points")
+    cuts = [_number(c) for c in cuts]
+    _need(all(c not in (OO, -OO) for c in cuts), "cut points are finite")
+    for a, b in zip(cuts, cuts[1:]):
+        _need(_lt(a, b), lambda: f"cut points not increasing: {a}, {b}")
+    return cuts
+
+
+# ------------------------------------------------------------------ rules
+
+@rule("arb", "sympy-core")
+def sign_by_cover(*, expr, var, cuts, want, strict=True):
+    """want*E > 0 (>= 0 if not strict) on the closed [c0, cn], where
+    c0 < c1 < ... < cn are exact and, for each i, the Arb range enclosure of
+    E over [ci, c(i+1)] has that sign.  The closed boxes share their ends,
+    so they tile [c0, cn] with no gap; range evaluation shows E defined on each."""
+    _need(want in (1, -1) and isinstance(strict, bool), "want is +1 or -1, strict a boolean")
+    cuts = _cuts(var, cuts)
+    _interval(var, cuts[0], cuts[-1], False, False, at_zero=True)
+    e = _expr(expr, var)
+    for a, b in zip(cuts, cuts[1:]):
+        try:
+            v = evaluate(e, var, a, b)
+        except Undefined as exc:
+            raise KernelError(f"{e} not evaluable on [{a}, {b}]: {exc}") from None
+        _need(_box_ok(v, want, strict), lambda: f"sign not shown on [{a}, {b}]: {v}")
+    return _sign_claim(e, var, cuts[0], cuts[-1], False, False, want, strict)
+
+
+@rule("arb", "sympy-core", "sympy-diff")
+def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
+    """Taylor with the Lagrange remainder, one-sided.  Premises: E(c) = E'(c)
+    = ... = E^(m-1)(c) = 0 exactly (SymPy's automatic evaluation gives the
+    literal 0, confirmed by an Arb enclosure containing 0); E, ..., E^(m)
+    (`sympy.diff` applied k times) are all defined, hence continuous, on the
+    closed box B = [c, c+w] (side +1) or [c-w, c] (side -1); E^(m) has one
+    strict sign sigma on every closed sub-box of B (cut at the optional exact
+    increasing `cuts` from one end of B to the other).  Then for x in B,
+    x != c: E(x) = E^(m)(xi) (x-c)^m / m! with xi between c and x, so E has
+    the sign sigma*side^m on (c, c+w] resp. [c-w, c)."""
+    _need(side in (1, -1), "side is +1 or -1")
+    _need(isinstance(order, int) and 1 <= order <= 12, "order m is 1..12")
+    c, w = _number(c), _number(width)
+    _need(_lt(0, w), "width > 0")
+    a, b = (c, c + w) if side > 0 else (c - w, c)
+    _interval(var, a, b, side > 0, side < 0)
+    cuts = _cuts(var, cuts if cuts is not None else [a, b])
+    _need(cuts[0] == a and cuts[-1] == b, "the cuts must run from one end of the box to the other")
+    e = _expr(expr, var)
+    d = e
+    for k in range(order + 1):
+        d = sp.diff(d, var) if k else e
+        try:
+            boxes = [evaluate(d, var, u, v) for u, v in zip(cuts, cuts[1:])] if k == order \
+                else [evaluate(d, var, a, b)]
+        except Undefined as exc:
+            raise KernelError(f"derivative {k} not defined on [{a}, {b}]: {exc}") from None
+        if k < order:
+            at_c = d.subs(var, c)
+            _need(at_c == 0, lambda: f"derivative {k} at {c} is {at_c}, not exactly 0")
+            _need(evaluate(d, var, c, c, bits=256).hull().contains(0), "Arb disagrees with exact 0")
+    sigma = 1 if all(v.positive() for v in boxes) else -1 if all(v.negative() for v in boxes) else 0
+    _need(sigma != 0, lambda: f"derivative {order} has no strict sign on [{a}, {b}]")
+    return _sign_claim(e, var, a, b, side > 0, side < 0, sigma * side ** order, True)
+
+
+@rule("sympy-polys")
+def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
+    """A polynomial p with rational coefficients, rational (or infinite)
+    ends.  With p = a * prod q_i^(m_i) its square-free factorization: if no
+    q_i has a root in I (Sturm count; weak claim: no q_i of odd m_i has a
+    root in the interior of I), then the sign of p on I is that of p at one
+    inner point x0 where no q_i vanishes."""
+    _need(want in (1, -1) and isinstance(strict, bool), "want is +1 or -1, strict a boolean")
+    lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
+    _need(all(v in (OO, -OO) or v.is_Rational for v in (lo, hi)), "Sturm needs rational ends")
+    e = _expr(expr, var)
+    _need(e.is_polynomial(var), lambda: f"not a polynomial: {e}")
+    try:
+        poly = sp.Poly(e, var)
+    except sp.PolynomialError:
+        raise KernelError(f"not a polynomial: {e}") from None
+    _need(poly.domain.is_ZZ or poly.domain.is_QQ, "coefficients are not rational")
+    _need(not poly.is_zero, "the zero polynomial")
+    coeff, factors = poly.sqf_list()
+    lo_f, hi_f = (None if lo == -OO else lo), (None if hi == OO else hi)
+    for q, m in factors:
+        n = q.count_roots(lo_f, hi_f)           # roots in the closed [lo, hi]
+        at_ends = sum(1 for v in (lo_f, hi_f) if v is not None and q.eval(v) == 0)
+        if strict:
+            n -= sum(1 for v, op in ((lo_f, lo_open), (hi_f, hi_open)) if v is not None and op and q.eval(v) == 0)
+        elif m % 2 == 0:
+            continue
+        else:
+            n -= at_ends
+        _need(n == 0, lambda: f"factor {q.as_expr()} has a root in the interval")
+    # one inner point avoiding every root
+    base = lo if lo != -OO else (hi - 1 if hi != OO else sp.Integer(0))
+    step = (hi - lo) if lo != -OO and hi != OO else sp.Integer(1)
+    for k in range(1, 60):
+        x0 = base + step / (k + 1) if lo != -OO else base - sp.Integer(k)
+        if all(q.eval(x0) != 0 for q, _ in factors):
+            break
+    else:
+        raise KernelError("no inner point found")
+    _need(_lt(lo, x0) and _lt(x0, hi), "inner point outside")
+    _need(sp.sign(poly.eval(x0)) == want, lambda: f"p({x0}) has the wrong sign")
+    return _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict)
+
+
+@rule("arb", "sympy-core")
+def sign_of_product(*premises, expr):
+    """E = c * f1 * ... * fk (SymPy Mul or Pow).  Each non-constant factor f
+    is covered by a premise on the common interval I: about f itself (sign
+    s_f), or, for f = b**n (integer n), about b (sign s_b^n; n < 0 needs b
+    strict; even n: any sign theorem gives >= 0), or, for f = b**r (r not an
+    integer), b > 0 (gives f > 0) or b >= 0 with r > 0 (gives f >= 0).
+    Constant factors have an exact nonzero sign.  E then has the product
+    sign; strict iff every premise used is strict."""
+    _need(premises, "no premises")
+    for p in premises:
+        _is_sign(p)
+        _same_interval(p.claim, premises[0].claim)
+    var = premises[0].claim.x()
+    e = _expr(expr, var)
+    factors = sp.Mul.make_args(e)
+    by_expr = {p.claim.expr: p for p in premises}
+    used, sign, strict = set(), 1, True
+    for f in factors:
+        if not f.has(var):
+            s = _const_sign(f)
+            _need(s != 0, "a zero factor")
+            sign *= s
+            continue
+        p = by_expr.get(_s(f))
+        if p is not None:
+            sign, strict = sign * p.claim.want, strict and p.claim.strict
+            used.add(p.claim.expr)
+            continue
+        _need(f.is_Pow and f.exp.is_Rational, lambda: f"no premise for factor {f}")
+        p = by_expr.get(_s(f.base))
+        _need(p is not None, lambda: f"no premise for factor {f} nor its base")
+        used.add(p.claim.expr)
+        n = f.exp
+        if n.is_Integer:
+            _need(n > 0 or p.claim.strict, lambda: f"{f}: a negative power needs a strict sign of its base")
+            if n % 2 == 0 and not p.claim.strict:
+                strict = False          # b**(2k) >= 0 whatever the sign of b
+            else:
+                sign, strict = sign * p.claim.want ** int(n % 2), strict and p.claim.strict
+        else:
+            _need(p.claim.want > 0 and (p.claim.strict or n > 0), lambda: f"{f}: needs base > 0 (>= 0 if r > 0)")
+            strict = strict and p.claim.strict
+    _need(used == set(by_expr), "a premise matches no factor")
+    c = premises[0].claim
+    lo, hi = c.ends()
+    return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, sign, strict)
+
+
+@rule("arb", "sympy-core")
+def sign_of_sum(*premises, expr, want):
+    """E = t1 + ... + tk.  Every non-constant term has a premise (same
+    interval I) with sign want, every constant term has sign want or is 0
+    (exact / Arb); E has sign want, strictly if some term does strictly."""
+    _need(premises and want in (1, -1), "premises and want = +-1 needed")
+    for p in premises:
+        _is_sign(p)
+        _same_interval(p.claim, premises[0].claim)
+        _need(p.claim.want == want, "a premise has the other sign")
+    var = premises[0].claim.x()
+    e = _expr(expr, var)
+    _need(e.is_Add, lambda: f"not a sum: {e}")
+    by_expr = {p.claim.expr: p for p in premises}
+    used, strict = set(), False
+    for t in e.args:
+        if not t.has(var):
+            s = _const_sign(t)
+            _need(s in (0, want), lambda: f"constant term {t} has the wrong sign")
+            strict = strict or s == want
+            continue
+        p = by_expr.get(_s(t))
+        _need(p is not None, lambda: f"no premise for term {t}")
+        used.add(_s(t))
+        strict = strict or p.claim.strict
+    _need(used == set(by_expr), "a premise matches no term")
+    c = premises[0].claim
+    lo, hi = c.ends()
+    return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, want, strict)
+
+
+_ODD_INCREASING = (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf)
+
+
+@rule("sympy-core")
+def sign_through_increasing(*premises, expr):
+    """G(Y) with G odd, strictly increasing, G(0) = 0 (tanh, atan, asinh,
+    sinh, erf): the sign (and strictness) of Y on I.  exp(Y), cosh(Y): > 0
+    wherever Y is defined (any sign theorem about Y on I shows that).
+    log(Y): from Y - 1 > 0 (>= 0) on I, log Y > 0 (>= 0); from Y - 1 < 0
+    (<= 0) and a second premise Y > 0, log Y < 0 (<= 0)."""
+    _need(premises, "no premise")
+    for p in premises:
+        _is_sign(p)
+        _same_interval(p.claim, premises[0].claim)
+    c = premises[0].claim
+    var = c.x()
+    e = _expr(expr, var)
+    _need(isinstance(e, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.log)) and len(e.args) == 1, lambda: f"not G(Y): {e}")
+    y = e.args[0]
+    lo, hi = c.ends()
+    if isinstance(e, _ODD_INCREASING):
+        _need(len(premises) == 1 and c.expr == _s(y), "premise must be about the argument")
+        return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, c.want, c.strict)
+    if isinstance(e, (sp.exp, sp.cosh)):
+        _need(len(premises) == 1 and c.expr == _s(y), "premise must be about the argument")
+        return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, 1, True)
+    _need(c.expr == _s(y - 1), "first premise must be about Y - 1")
+    if c.want > 0:
+        _need(len(premises) == 1, "one premise for log Y > 0")
+    else:
+        _need(len(premises) == 2, "log Y < 0 needs Y > 0 too")
+        q = premises[1].claim
+        _need(q.expr == _s(y) and q.want > 0 and q.strict, "second premise must be Y > 0")
+    return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, c.want, c.strict)
+
+
+@rule()
+def join(left, right):
+    """Same E, variable and sign on I1 = <a, m> and I2 = <m, b> (m the same
+    exact point, closed in at least one): E has the sign on <a, b>; strict
+    iff both are."""
+    _is_sign(left)
+    _is_sign(right)
+    l, r = left.claim, right.claim
+    _need((l.expr, l.var, l.want) == (r.expr, r.var, r.want), "different claims")
+    _need(l.hi == r.lo, "not adjacent")
+    _need(not (l.hi_open and r.lo_open), lambda: f"shared end point {l.hi} is covered by neither")
+    return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, l.strict and r.strict)
+
+
+@rule("arb", "sympy-core")
+def join_at_zero(left, right):
+    """Same E, variable and sign on <a, m) and (m, b>, and E(m) = 0:
+    exactly (SymPy's evaluation gives the literal 0) with E defined at m
+    (Arb evaluates it, enclosing 0).  Then want*E >= 0 on <a, b> (weak)."""
+    _is_sign(left)
+    _is_sign(right)
+    l, r = left.claim, right.claim
+    _need((l.expr, l.var, l.want) == (r.expr, r.var, r.want), "different claims")
+    _need(l.hi == r.lo, "not adjacent")
+    e, var, m = l.e(), l.x(), parse(l.hi)
+    _need(e.subs(var, m) == 0, lambda: f"E({m}) is not exactly 0")
+    try:
+        _need(evaluate(e, var, m, m, bits=256).hull().contains(0), "Arb disagrees with exact 0")
+    except Undefined as exc:
+        raise KernelError(f"E undefined at {m}: {exc}") from None
+    return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, False)
+
+
+@rule("arb")
+def weaken(thm, *, lo, hi, lo_open, hi_open, strict):
+    """A sign on I gives the same sign on any J contained in I, and a
+    strict sign gives the weak one."""
+    _is_sign(thm)
+    c = thm.claim
+    var = c.x()
+    a, b = c.ends()
+    lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
+    _need(_within(c, lo, hi, lo_open, hi_open), "J is not inside I")
+    _need(c.strict or not strict, "a weak sign does not give a strict one")
+    return _sign_claim(c.e(), var, lo, hi, lo_open, hi_open, c.want, strict)
+
+
+def _within(c: Claim, lo, hi, lo_open, hi_open) -> bool:
+    """<lo, hi> is contained in the interval of claim c."""
+    a, b = c.ends()
+    return ((_lt(a, lo) or (lo == a and (lo_open or not c.lo_open)))
+            and (_lt(hi, b) or (hi == b and (hi_open or not c.hi_open))))
+
+
+@rule("arb", "sympy-core")
+def sign_by_rewrite(thm, ident, *, cuts=None):
+    """A sign of R on I, an identity L = R (where both are defined) on an
+    interval containing I, and L defined on all of I give the sign of L on
+    I.  L defined: either I lies in (0, oo) and `defined_for_positive(L)`,
+    or I is closed and finite and L evaluates (Arb, range) on every closed
+    box of the exact cuts tiling I.  (Covers `prepare`, tail forms, regrouping.)"""
+    _is_sign(thm)
+    _need(ident.claim.kind == "identity", "second premise must be an identity")
+    c, ic = thm.claim, ident.claim
+    _need(ic.var == c.var and ic.other == c.expr, "the identity must read L = R for the R of the sign")
+    lo, hi = c.ends()
+    _need(_within(ic, lo, hi, c.lo_open, c.hi_open), "the identity does not hold on all of I")
+    var, lhs = c.x(), ic.e()
+    if cuts is None:
+        _need((_lt(0, lo) or (lo == 0 and c.lo_open)) and defined_for_positive(lhs, var), "L not shown defined on I")
+    else:
+        cuts = _cuts(var, cuts)
+        _need(not (c.lo_open or c.hi_open) and cuts[0] == lo and cuts[-1] == hi, "cuts must tile the closed I")
+        for u, v in zip(cuts, cuts[1:]):
+            try:
+                evaluate(lhs, var, u, v)
+            except Undefined as exc:
+                raise KernelError(f"L undefined on [{u}, {v}]: {exc}") from None
+    return dataclasses.replace(c, expr=ic.expr)
+
+
+def defined_for_positive(e, x) -> bool:
+    """Syntactic sufficient check that e is defined (real, finite) at every
+    x > 0: a denominator, a log's argument or a real power's base must be
+    built from x, positive constants, +, *, exp, cosh, powers of such."""
+    def pos(u):
+        if u == x:
+            return True
+        if not u.has(x):
+            try:
+                return _const_sign(u) > 0
+            except KernelError:
+                return False
+        if u.is_Add:
+            return all(pos(a) or nonneg(a) for a in u.args) and any(pos(a) for a in u.args)
+        if u.is_Mul:
+            return all(pos(a) for a in u.args)
+        if u.is_Pow:
+            return u.exp.is_Rational and pos(u.base)
+        if isinstance(u, (sp.exp, sp.cosh)):
+            return defined(u.args[0])
+        return False
+
+    def nonneg(u):
+        if pos(u):
+            return True
+        if u.is_Pow and u.exp.is_Integer and u.exp > 0 and u.exp % 2 == 0:
+            return defined(u.base)
+        if isinstance(u, sp.Abs):
+            return defined(u.args[0])
+        return (u.is_Add or u.is_Mul) and all(nonneg(a) for a in u.args)
+
+    def defined(u):
+        if u == x or not u.has(x):
+            return u == x or _number_ok(u)
+        if u.is_Add or u.is_Mul:
+            return all(defined(a) for a in u.args)
+        if u.is_Pow:
+            if not u.exp.is_Rational:
+                return False
+            if u.exp.is_Integer and u.exp >= 0:
+                return defined(u.base)
+            return pos(u.base)
+        if isinstance(u, sp.log):
+            return pos(u.args[0])
+        if isinstance(u, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.sin, sp.cos, sp.Abs)):
+            return defined(u.args[0])
+        return False
+    return defined(_sym(e))
+
+
+def _number_ok(u):
+    try:
+        _number(u)
+        return True
+    except KernelError:
+        return False
+
+
+@rule("sympy-core")
+def sign_on_tail(tail, ident, *, expr, var, R):
+    """s = 1/t on [R, oo), R > 0.  Premises: (1) a sign theorem about E_t on
+    (0, 1/R] in a variable t; (2) an identity theorem E_t(t) = E(1/t) on
+    a t-interval containing (0, 1/R], where the right side is literally
+    E.subs(s, 1/t); and the kernel's own check that E is defined for every
+    s > 0 (`defined_for_positive`, also for E(1/t) at every t > 0).  For s
+    >= R, t = 1/s lies in (0, 1/R], both sides are defined there, so E(s) =
+    E_t(t) has the sign: claim on [R, oo)."""
+    _is_sign(tail)
+    _need(ident.claim.kind == "identity", "second premise must be an identity")
+    R = _number(R)
+    _need(_lt(0, R) and R != OO, "R > 0")
+    e = _expr(expr, var)
+    tc, ic = tail.claim, ident.claim
+    t = tc.x()
+    _need(t != var and isinstance(t, sp.Symbol), "the tail variable must differ from the variable")
+    _need((tc.lo, tc.lo_open, tc.hi, tc.hi_open) == (_s(0), True, _s(1 / R), False),
+          "the tail theorem must be about (0, 1/R]")
+    _need(ic.var == tc.var and ic.expr == tc.expr and ic.other == _s(e.subs(var, 1 / t)),
+          "the identity must read E_t(t) = E(1/t)")
+    ia, ib = ic.ends()
+    _need((ia == 0 or _lt(ia, 0)) and (_lt(1 / R, ib) or (ib == 1 / R and not ic.hi_open)),
+          "the identity must hold on (0, 1/R]")
+    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    _need(defined_for_positive(e.subs(var, 1 / t), t), "E(1/t) not shown defined for t > 0")
+    _interval(var, R, OO, False, True)
+    return _sign_claim(e, var, R, OO, False, True, tc.want, tc.strict)
+
+
+@rule("sympy-core")
+def sign_by_substitution(outer, *bounds, inner):
+    """G(u(x)) from G(U) on J = <a, b> (premise `outer`, in the variable U)
+    and u(x) in J for x in I: premises u - a > 0 (>= 0 if J is closed at a)
+    and b - u > 0 (>= 0 if closed at b) on I, one for each finite end of J
+    (at least one, which also shows u defined on I).  Then G(u(x)) is
+    defined and has G's sign on I; the claim's E is G.subs(U, u)."""
+    _is_sign(outer)
+    g = outer.claim
+    G, U = g.e(), g.x()
+    a, b = g.ends()
+    needed = [(u_end, op, side) for u_end, op, side in ((a, g.lo_open, 1), (b, g.hi_open, -1))
+              if u_end not in (OO, -OO)]
+    _need(needed and len(bounds) == len(needed), "one bound premise per finite end of J")
+    for p in bounds:
+        _is_sign(p)
+        _same_interval(p.claim, bounds[0].claim)
+    c = bounds[0].claim
+    var = c.x()
+    u = _expr(inner, var)
+    for (u_end, op, side), p in zip(needed, bounds):
+        _need(p.claim.expr == _s(side * (u - u_end)) and p.claim.want == 1 and (p.claim.strict or not op),
+              lambda: f"premise must show {'u - ' + str(u_end) if side > 0 else str(u_end) + ' - u'} "
+                      f"{'>' if op else '>='} 0")
+    lo, hi = c.ends()
+    return _sign_claim(G.subs(U, u), var, lo, hi, c.lo_open, c.hi_open, g.want, g.strict)
+
+
+@rule("arb", "sympy-core", "sympy-diff")
+def sign_by_monotone(deriv, *, expr, var, R):
+    """Mean value theorem on [R, oo), R > 0: want*E(R) > 0 (Arb at the exact
+    point R) and want*E' >= 0 on [R, oo) (premise about sympy.diff(E)), E
+    defined for every x > 0 (`defined_for_positive`) => for x >= R,
+    want*E(x) = want*E(R) + want*E'(xi)(x - R) > 0."""
+    _is_sign(deriv)
+    R = _number(R)
+    _need(R != OO and _lt(0, R), "R > 0")
+    e = _expr(expr, var)
+    d = deriv.claim
+    _need((d.expr, d.var, d.lo, d.lo_open, d.hi) == (_s(sp.diff(e, var)), _s(var), _s(R), False, "oo"),
+          "premise must be a sign of E' on [R, oo)")
+    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    try:
+        at_r = evaluate(e, var, R, R, bits=256)
+    except Undefined as exc:
+        raise KernelError(f"E undefined at {R}: {exc}") from None
+    _need(at_r.positive() if d.want > 0 else at_r.negative(), "E(R) has not the sign of E'")
+    _interval(var, R, OO, False, True)
+    return _sign_claim(e, var, R, OO, False, True, d.want, True)
+
+
+CROSS_CHECK_BITS = 320
+
+
+def _cross_check(d, var, lo, hi):
+    """d(x) = lhs - rhs encloses 0 at fixed rational points of I, with
+    radius < 2^-250, at 320 bits; at least 3 points must be evaluable."""
+    if lo == -OO and hi == OO:
+        pts = [sp.Rational(k, 3) for k in range(-4, 5)]
+    elif hi == OO:
+        pts = [lo + sp.Rational(k, 3) for k in range(1, 10)]
+    elif lo == -OO:
+        pts = [hi - sp.Rational(k, 3) for k in range(1, 10)]
+    else:
+        pts = [lo + (hi - lo) * sp.Rational(k, 10) for k in range(1, 10)]
+    ok = 0
+    for p in pts:
+        _need(p.is_Rational, "cross-check needs rational ends")
+        try:
+            v = evaluate(d, var, p, p, bits=CROSS_CHECK_BITS).hull()
+        except Undefined:
+            continue
+        _need(v.contains(0), lambda: f"the identity fails at {var} = {p}: lhs - rhs = {v}")
+        _need(bool(v.rad() < arb(2) ** -250), lambda: f"cross-check at {var} = {p} not precise enough")
+        ok += 1
+    _need(ok >= 3, "fewer than 3 points to cross-check the identity")
+
+
+@rule("sympy-core")
+def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
+    """lhs = rhs wherever both are defined on I.  Exact when lhs - rhs is a
+    rational function with rational coefficients: sympy.cancel gives 0
+    (polynomial arithmetic over Q).  Otherwise SymPy's simplify must give 0
+    AND lhs - rhs must enclose 0 at fixed rational points of I in 320-bit
+    Arb; the theorem then rests on "sympy-simplify"."""
+    lo, hi = _interval(var, lo, hi, lo_open, hi_open)
+    l, r = _expr(lhs, var), _expr(rhs, var)
+    d = l - r
+    claim = Claim("identity", _s(l), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(r))
+    rational = d.is_rational_function(var) and all(
+        a.is_Rational for a in d.atoms(sp.Number)) and not d.atoms(sp.NumberSymbol) and all(
+        p.exp.is_Integer for p in d.atoms(sp.Pow))
+    if rational:
+        _need(sp.cancel(sp.together(d)) == 0, "the rational functions differ")
+        return claim, ("sympy-polys",)
+    _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
+    _cross_check(d, var, lo, hi)
+    return claim, ("sympy-simplify", "arb")
+
+
+@rule("arb", "sympy-core")
+def value_sign(*, value):
+    """The sign of an exact real constant: 0 when SymPy's automatic
+    evaluation gives the literal 0, else +-1 when its Arb enclosure excludes 0."""
+    v = _number(value)
+    _need(v not in (OO, -OO), "a finite constant")
+    return Claim("value_sign", _s(v), want=_const_sign(v), strict=True)
+
+
+@rule("arb", "sympy-core")
+def sup_upper_by_cover(*, expr, var, cuts, bound):
+    """E <= U on the closed [c0, cn]: on every closed box [ci, c(i+1)] of
+    increasing exact cut points, the Arb range enclosure of E lies below
+    the enclosure of the exact constant U."""
+    cuts = _cuts(var, cuts)
+    _interval(var, cuts[0], cuts[-1], False, False, at_zero=True)
+    e, u = _expr(expr, var), _number(bound)
+    _need(u not in (OO, -OO), "finite bound")
+    ub = evaluate(u, bits=256)
+    for a, b in zip(cuts, cuts[1:]):
+        try:
+            v = evaluate(e, var, a, b)
+        except Undefined as exc:
+            raise KernelError(f"{e} not evaluable on [{a}, {b}]: {exc}") from None
+        _need(bool(v.hi <= ub.lo), lambda: f"E <= {u} not shown on [{a}, {b}]")
+    return Claim("sup_upper", _s(e), _s(var), _s(cuts[0]), _s(cuts[-1]), False, False, other=_s(u))
+
+
+@rule()
+def sup_upper_by_sign(thm, *, expr, bound):
+    """From U - E >= 0 (or > 0) on I: E <= U on I (E defined there because
+    U - E is)."""
+    _is_sign(thm)
+    c = thm.claim
+    e, u = _expr(expr, c.x()), _number(bound)
+    _need(c.want == 1 and c.expr == _s(u - e), "premise must be U - E >= 0")
+    return Claim("sup_upper", _s(e), c.var, c.lo, c.hi, c.lo_open, c.hi_open, other=_s(u))
+
+
+@rule("arb", "sympy-core")
+def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
+    """sup_I E >= L: the exact point p lies in I and E(p) >= L, either
+    exactly (E(p) - L evaluates to the literal 0) or by Arb enclosures."""
+    lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
+    e, p, L = _expr(expr, var), _number(point), _number(bound)
+    _need(_lt(lo, p) or (p == lo and not lo_open), "point before I")
+    _need(_lt(p, hi) or (p == hi and not hi_open), "point after I")
+    try:
+        v = evaluate(e, var, p, p, bits=256)       # also: E defined at p
+    except Undefined as exc:
+        raise KernelError(f"E undefined at {p}: {exc}") from None
+    if sp.sympify(e.subs(var, p) - L) != 0:
+        _need(bool(v.lo >= evaluate(L, bits=256).hi), lambda: f"E({p}) >= {L} not shown")
+    return Claim("sup_lower", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(L))
+
+
+@rule("arb", "sympy-core")
+def sup_lower_by_limit(ident, *, expr, var, width, bound, lo, lo_open):
+    """sup over <lo, oo) of E >= c where c = lim E(s) as s -> oo: premise
+    E_t(t) = E(1/t) on a t-interval containing (0, w]; E_t defined (hence
+    continuous) on the closed [0, w] (Arb range evaluation); E_t(0) - c is
+    the literal 0 (Arb agrees); E defined for all s > 0 and lo >= 0.  Then
+    E(1/t) = E_t(t) -> c as t -> 0+, and 1/t lies in <lo, oo) for small t."""
+    _need(ident.claim.kind == "identity", "premise must be an identity")
+    ic = ident.claim
+    t = ic.x()
+    _need(t != var, "the tail variable must differ from the variable")
+    e, w, c = _expr(expr, var), _number(width), _number(bound)
+    lo = _number(lo)
+    _need(_lt(0, w) and w != OO and c not in (OO, -OO), "finite w > 0 and bound")
+    _need(ic.other == _s(e.subs(var, 1 / t)), "the identity must read E_t(t) = E(1/t)")
+    ia, ib = ic.ends()
+    _need((ia == 0 or _lt(ia, 0)) and (_lt(w, ib) or (ib == w and not ic.hi_open)),
+          "the identity must hold on (0, w]")
+    et = ic.e()
+    try:
+        evaluate(et, t, 0, w)
+        at0 = evaluate(et - c, t, 0, 0, bits=256)
+    except Undefined as exc:
+        raise KernelError(f"E_t not defined on [0, {w}]: {exc}") from None
+    _need(et.subs(t, 0) - c == 0 and at0.hull().contains(0), lambda: f"E_t(0) is not exactly {c}")
+    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    _interval(var, lo, OO, lo_open, True)
+    _need(lo == 0 or _lt(0, lo), "lo >= 0")
+    return Claim("sup_lower", _s(e), _s(var), _s(lo), "oo", lo_open, True, other=_s(c))
+
+
+@rule()
+def sup_upper_of_abs(up, down):
+    """E <= U and -E <= U on I give |E| <= U on I."""
+    a, b = up.claim, down.claim
+    _need(a.kind == b.kind == "sup_upper", "premises must be sup_upper theorems")
+    _need((a.var, a.lo, a.hi, a.lo_open, a.hi_open, a.other) == (b.var, b.lo, b.hi, b.lo_open, b.hi_open, b.other),
+          "premises on different intervals or bounds")
+    e = a.e()
+    _need(b.expr == _s(-e), "second premise must be about -E")
+    return dataclasses.replace(a, expr=_s(sp.Abs(e)))
+
+
+@rule("arb", "sympy-core")
+def sup_scaled(thm, *, factor):
+    """For an exact constant k > 0: E <= U gives k*E <= k*U; sup E >= L
+    gives sup k*E >= k*L (same interval)."""
+    c = thm.claim
+    _need(c.kind in ("sup_upper", "sup_lower"), "premise must be a sup theorem")
+    k = _number(factor)
+    _need(k not in (OO, -OO) and _const_sign(k) == 1, "factor must be a positive constant")
+    return dataclasses.replace(c, expr=_s(k * c.e()), other=_s(k * parse(c.other)))
