@@ -210,3 +210,13 @@ def test_a_condition_on_one_axis_is_not_taken_for_the_origin(tmp_path):
     report, v = verify(tmp_path, "f = Piecewise((0, Eq(e1, 0)), (log(1 + rho), True))\n")
     assert v["P4"] == "refuted"
     assert not any(s == "proved" for p, s in v.items() if p not in ("P2",)), v
+
+
+def test_an_irrational_exact_sup_scales_for_an_elliptic_design(tmp_path):
+    # f = asinh(e1^2/3 + e2^2) = F(sqrt(e1^2 + 3 e2^2)), F(s) = asinh(s^2/3): sup F' = sqrt(6)/3,
+    # kf = sqrt(3) sqrt(6)/3 = sqrt(2) (df/de2 = 2 e2/sqrt(1 + e2^4) on e1 = 0, largest at e2 = 1)
+    report, v = verify(tmp_path, "f = sp.asinh(e1**2/3 + e2**2)\n")
+    assert v["P4"] == "refuted" and v["P1"] == "proved"
+    assert report.kf.exact == sp.sqrt(2)
+    # sqrt(2) = 1.41421356237309504880...
+    assert Fraction("1.414213562373095048") < report.kf.lower <= report.kf.upper < Fraction("1.414213562373095049")

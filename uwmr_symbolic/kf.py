@@ -25,8 +25,9 @@ REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
 
 @dataclass
 class SupCertificate:
-    """sup of a function of s over [0, oo) in [lower, upper]; `exact` when
-    proved; `attained` True/False when proved, else None."""
+    """sup of a function of s over [0, oo) in [lower, upper] (Fractions,
+    rounded outward); `exact` (a SymPy number) when proved; `attained`
+    True/False when proved, else None."""
     lower: Fraction | None
     upper: Fraction | None        # None: no finite bound
     exact: sp.Expr | None
@@ -45,17 +46,22 @@ class SupCertificate:
 KfCertificate = SupCertificate
 
 
+def exact_certificate(value, attained, reason) -> SupCertificate:
+    """The certificate of a proved exact supremum `value`."""
+    box = Interval.point(value)
+    return SupCertificate(box.lower_fraction(), box.upper_fraction(), value, attained, reason)
+
+
 def scale(cert: SupCertificate, c) -> SupCertificate:
     """The certificate of c * sup (c > 0 exact), enclosure rounded outward."""
     if c == 1 or cert.upper is None:
         return cert
+    reason = f"sqrt(r) = {c} times: {cert.reason}"
+    if cert.exact is not None:
+        return exact_certificate(cert.exact * c, cert.attained, reason)
     lo = None if cert.lower is None else Interval.point(sp.Rational(cert.lower) * c).lower_fraction()
     hi = Interval.point(sp.Rational(cert.upper) * c).upper_fraction()
-    exact = None if cert.exact is None else cert.exact * c
-    if exact is not None:
-        lo = hi = exact
-    return SupCertificate(lo, hi, exact, cert.attained, f"sqrt(r) = {c} times: {cert.reason}",
-                          cert.unbounded_witness)
+    return SupCertificate(lo, hi, None, cert.attained, reason, cert.unbounded_witness)
 
 
 def _candidates(expr, lo, hi, interior=True):
@@ -133,7 +139,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
         return SupCertificate(None, None, None, None, f"{name} has no finite formula on some piece")
     if all(not e.has(S) for e in exprs) and len(set(exprs)) == 1:
         c = exprs[0]
-        return SupCertificate(c, c, c, True, f"{name} = {c} is constant")
+        return exact_certificate(c, True, f"{name} = {c} is constant")
     # unboundedness: a one-sided limit of +oo is a proof
     for E, piece in zip(exprs, pieces):
         ends = [(piece.lo, +1)] + ([(piece.hi, -1)] if piece.hi != sp.oo else [])
@@ -187,7 +193,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
         else:
             attained = False if strict else None
         where = f"at s = {point}" if point is not None else "approached as s -> oo"
-        return SupCertificate(value, value, value, attained,
+        return exact_certificate(value, attained,
                               f"sup {name} = {value} {where}, proved by {value} - {name} >= 0 on [0, oo)")
     return SupCertificate(lower, upper, None, None,
                           f"interval branch and bound: sup {name} in [{float(lower):.10g}, {float(upper):.10g}]")
