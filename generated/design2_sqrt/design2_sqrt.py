@@ -37,7 +37,7 @@ def _H0(rho):
     return (1.0/numpy.sqrt(rho + 1.0))
 
 def _D0(tt):
-    return (1.0/numpy.sqrt(((tt)*(tt)) + 1.0))
+    return (1.0/numpy.sqrt((tt*tt) + 1.0))
 
 
 def _sinc(e3):

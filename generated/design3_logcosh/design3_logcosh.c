@@ -93,7 +93,7 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
             const double tt = im * ir;   /* t = 1/s */
             {
                 /* F'(1/t) = D(t) */
-                const double x0 = sqrt(((tt)*(tt)) + 4.0);
+                const double x0 = sqrt((tt*tt) + 4.0);
                 const double D = -4.0*tanh(1.0 - x0/tt)/x0;
                 const double p1 = lam * vr;
                 const double p2 = p1 * sinc;
@@ -287,7 +287,7 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
             const float tt = im * ir;   /* t = 1/s */
             {
                 /* F'(1/t) = D(t) */
-                const float x0 = sqrtf(((tt)*(tt)) + 4.0F);
+                const float x0 = sqrtf((tt*tt) + 4.0F);
                 const float D = -4.0F*tanhf(1.0F - x0/tt)/x0;
                 const float p1 = lam * vr;
                 const float p2 = p1 * sinc;

@@ -41,7 +41,7 @@ def _H0(rho):
     return 4.0*numpy.tanh(x0/(x1 + 1.0))/x1
 
 def _D0(tt):
-    x0 = numpy.sqrt(((tt)*(tt)) + 4.0)
+    x0 = numpy.sqrt((tt*tt) + 4.0)
     return -4.0*numpy.tanh(1.0 - x0/tt)/x0
 
 

@@ -55,7 +55,7 @@ def render(env, model: LawModel, context: dict, config: PythonConfig = PythonCon
                cut=double_literal(config.sinc_cut))
     if not model.radial:
         functions += _function("_g_general", "e1, e2", model.general, pr)
-        ctx.update(functions=functions)
+        ctx.update(functions=functions, needs_scipy=any("scipy." in ln for ln in functions))
         return {f"{model.stem}.py": env.get_template("python_module.py.j2").render(ctx)}
     mid = []
     for i, (br, cond) in enumerate(zip(model.mid, _masks(model.mid, "rho"))):
@@ -71,5 +71,6 @@ def render(env, model: LawModel, context: dict, config: PythonConfig = PythonCon
     h_const = None
     if len(model.mid) == 1 and not model.mid[0].expr.free_symbols:
         h_const = double_literal(model.mid[0].expr)
-    ctx.update(functions=functions, mid=mid, far=far, tiny_term=tiny, h_const=h_const)
+    ctx.update(functions=functions, mid=mid, far=far, tiny_term=tiny, h_const=h_const,
+               needs_scipy=any("scipy." in ln for ln in functions))
     return {f"{model.stem}.py": env.get_template("python_module.py.j2").render(ctx)}
