@@ -8,7 +8,7 @@ what an optimiser wants: smooth, cheap, exact in the range where a robot's
 errors live; below TINY (rho < TINY^2) the leading term of F' at 0 is used,
 as in C.  The overflow-safe far region of the C and Python code is not
 reproduced: the function is validated (and documented) for
-max(|e1|, |e2|) <= FAR = 1e4 and |e3|, |vr|, |wr|, gains <= 1e3; beyond,
+max(|e1|, |e2|) <= FAR (the model's double threshold, at most 1e4) and |e3|, |vr|, |wr|, gains <= 1e3; beyond,
 rho or H(rho) may overflow.  A function CasADi lacks (gamma, ...) raises
 NotImplementedError naming it."""
 from __future__ import annotations
@@ -19,7 +19,7 @@ import casadi as ca
 import sympy as sp
 from sympy.codegen.cfunctions import expm1, log1p
 
-from .law import RHO, THRESHOLDS, LawModel
+from .law import RHO, LawModel
 from .. import e1 as E1, e2 as E2
 
 
@@ -103,7 +103,7 @@ def casadi_function(model: LawModel, config: CasadiConfig = CasadiConfig()) -> c
             # F'(s) ~ a s^j near 0: H = a rho^((j-1)/2) where rho underflows (0/0 otherwise)
             a, j = model.tiny
             small = e2 * float(a) * rho ** ((j - 1) // 2)
-            g = ca.if_else(rho < THRESHOLDS["double"][0] ** 2, small, g)
+            g = ca.if_else(rho < model.thresholds["double"][0] ** 2, small, g)
     else:
         g = to_casadi(model.general, env)
     z = e3 * e3

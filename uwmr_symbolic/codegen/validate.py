@@ -87,8 +87,7 @@ def switch_points(model: LawModel, precision: str) -> list[float]:
     """Values of m = max(|e1|, |e2|) at which the generated code changes
     form: TINY, FAR and the Piecewise boundaries (rho = m^2 on the axis,
     t = 1/m), each with its neighbours x (1 +- 2^-10)."""
-    from .law import THRESHOLDS
-    tiny, far = THRESHOLDS[precision]
+    tiny, far = model.thresholds[precision]
     pts = [tiny, far, 2 * tiny]
     for br in model.mid:
         if br.hi_float not in (0.0, math.inf):
@@ -224,7 +223,6 @@ def validate(design, model: LawModel, files: dict, kf: float | None, n_random: i
     """Check every artifact of one design (see the module doc); raises
     ValidationFailed (one line) or returns what was checked."""
     from .harness import build_library
-    from .law import THRESHOLDS
     t0 = time.perf_counter()
     stem = model.stem
     law = reference.Law.of(design)
@@ -284,7 +282,7 @@ def validate(design, model: LawModel, files: dict, kf: float | None, n_random: i
             fn = None      # no CasADi function exists for this design (casadi_function raises the same)
             res.targets.append(Target(f"CasADi: not available ({exc})", "double"))
     if casadi and fn is not None:
-        xc = _casadi_rows(xd, THRESHOLDS["double"][1])
+        xc = _casadi_rows(xd, model.thresholds["double"][1])
         rc = _table(law, xc, cache)
         out = fn.map(len(xc))(*[xc[:, i][None, :] for i in range(8)])
         v, w = np.asarray(out[0]).ravel(), np.asarray(out[1]).ravel()
