@@ -34,10 +34,10 @@ _DMIN = 2.2250738585072014e-308
 _DMAX = 1.7976931348623157e+308
 
 def _H0(rho):
-    return (1.0/((rho + 1.0)))
+    return (1.0/(rho + 1.0))
 
 def _D0(tt):
-    return (1.0/(((tt*tt) + 1.0)))
+    return (1.0/((tt*tt) + 1.0))
 
 
 def _sinc(e3):

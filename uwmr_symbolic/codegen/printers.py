@@ -72,7 +72,7 @@ def _power(printer, expr, sqrt, one):
     else:
         return None
     prod = "*".join(factors)
-    if abs(p) == 1 and q == 2:           # one call: already one unit
+    if abs(p) == 1:                      # one call or one parenthesised base: already one unit
         return prod if p > 0 else f"({one}/{prod})"
     return f"({prod})" if p > 0 else f"({one}/({prod}))"
 

@@ -241,7 +241,7 @@ def validate(design, model: LawModel, files: dict, kf: float | None, n_random: i
         try:
             lib = build_library(tmp, stem, tmp)
         except RuntimeError as exc:
-            first = next((ln for ln in str(exc).splitlines() if "error" in ln), str(exc).splitlines()[-1])
+            first = next((ln for ln in str(exc).splitlines() if "error:" in ln), str(exc).splitlines()[-1])
             raise ValidationFailed(f"{stem}: C: the strict build fails: {first.strip()}") from None
         for target, precision, x, ref in (("C double", "double", xd, rd), ("C float", "float", xf, rf)):
             v, w, st = lib.run(x, f32=precision == "float")
