@@ -218,7 +218,7 @@ def _casadi_rows(x, far):
     return x[keep]
 
 
-def validate(design, model: LawModel, files: dict, kf: float | None, n_random: int = 600,
+def validate(design, model: LawModel, files: dict, kf: float | None, n_random: int = 2000,
              seed: int = 0, casadi=True) -> Result:
     """Check every artifact of one design (see the module doc); raises
     ValidationFailed (one line) or returns what was checked."""
