@@ -134,14 +134,15 @@ def _cancels_at_zero(a, total) -> bool:
 
 
 def use_log1p(expr: sp.Expr) -> sp.Expr:
-    """log(c + X) -> log(c) + log1p(X/c) for a constant c > 0 and exp(X) - 1
-    -> expm1(X): the same function, accurate when X is small (log(1 + rho)
-    loses every digit of rho below 1e-16)."""
+    """log(1 + X) -> log1p(X) and c exp(X) - c -> c expm1(X): the same
+    function, accurate when X is small (log(1 + rho) loses every digit of rho
+    below 1e-16).  (log(c + X) with c != 1 is left alone: it cancels only
+    where c + X ~ 1, and log c + log1p(X/c) would cancel there too.)"""
     def fix(node):
         if isinstance(node, sp.log) and isinstance(node.args[0], sp.Add):
             c, rest = node.args[0].as_coeff_Add()
-            if c.is_positive and rest != 0:
-                return (sp.log(c) if c != 1 else 0) + log1p(sp.expand(rest / c))
+            if c == 1 and rest != 0:
+                return log1p(rest)
         if isinstance(node, sp.Add):
             c, rest = node.as_coeff_Add()
             if c == -1 and isinstance(rest, sp.exp):

@@ -90,6 +90,18 @@ def _arb_fn(expr: sp.Expr):
     if type(expr) in names:
         (f,), name = args, names[type(expr)]
         return lambda a, b: getattr(f(a, b), name)()
+    if isinstance(expr, (sp.Min, sp.Max)):
+        name = "min" if isinstance(expr, sp.Min) else "max"
+
+        def minmax(a, b, fs=args):
+            out = fs[0](a, b)
+            for f in fs[1:]:
+                out = getattr(out, name)(f(a, b))
+            return out
+        return minmax
+    if isinstance(expr, sp.sign):
+        (f,) = args
+        return lambda a, b: f(a, b).sgn()
     if isinstance(expr, sp.Piecewise):
         branches = [(_arb_fn(v), _arb_cond(c)) for v, c in expr.args]
 
