@@ -1,7 +1,7 @@
 """The committed generated C and Python against the exact law.
 
 * C compiled with -std=c99 -Wall -Wextra -Werror -pedantic -Wdouble-promotion
-  (loaded with ctypes) and again with -fsanitize=address,undefined;
+  (loaded with ctypes) and again with -fsanitize=address,undefined,float-divide-by-zero;
 * agreement with the law evaluated in high precision (Arb, adaptive; the
   reference itself is cross-checked against mpmath at 50 digits) at >= 1e5
   random points over many magnitudes and on the issue's extreme grid, for
@@ -155,10 +155,11 @@ def test_safe_stop_on_nonfinite_and_negative_gains(case, f32):
 
 
 def test_sanitizers_and_null_pointers(case, tmp_path):
-    """-fsanitize=address,undefined: no report on the grids and a random
+    """-fsanitize=address,undefined,float-divide-by-zero: no report on the grids and a random
     sample, the same results as the optimised build, NULL handled."""
     exe = build_executable(case.src, case.stem, tmp_path,
-                           extra=("-O1", "-g", "-fsanitize=address,undefined", "-fno-sanitize-recover=all"))
+                           extra=("-O1", "-g", "-fsanitize=address,undefined,float-divide-by-zero",
+                                  "-fno-sanitize-recover=all"))
     env = {"ASAN_OPTIONS": "detect_leaks=1:abort_on_error=0", "UBSAN_OPTIONS": "print_stacktrace=1"}
     for f32, x in ((False, case.x_double[::7]), (True, case.x_float[::7])):
         v, w, st, res = run_executable(exe, x, tmp_path, f32=f32, env=env)

@@ -4,7 +4,9 @@ compositions of log(1 + u), asinh, sqrt(1 + u) - 1, atan, tanh, erf,
 log cosh(sqrt(1 + u) - 1) over c rho and c rho^2), keeps those whose P1-P8
 the verifier proves, and generates their code: `generate` must write it,
 i.e. C double, C float (strict build), Python and CasADi pass the
-translation validation against the exact law (`codegen.validate`).
+translation validation against the exact law (`codegen.validate`), and the
+C built with -fsanitize=address,undefined,float-divide-by-zero runs the
+validation sample without a report.
 
 A fixed-seed profile of UWMR_FUZZ_EXAMPLES examples (default 4) runs in the
 test suite; `make fuzz-codegen` runs 40 (UWMR_FUZZ_EXAMPLES) and prints how many designs were
@@ -16,13 +18,16 @@ import os
 import shutil
 import sys
 
+import numpy as np
 import pytest
 import sympy as sp
 
 hypothesis = pytest.importorskip("hypothesis")
 from hypothesis import HealthCheck, given, settings, strategies as st  # noqa: E402
 
-from uwmr_symbolic.codegen import CodegenInvalid, generate  # noqa: E402
+from uwmr_symbolic.codegen import CodegenInvalid, build, generate  # noqa: E402
+from uwmr_symbolic.codegen.harness import build_executable, run_executable  # noqa: E402
+from uwmr_symbolic.codegen.validate import sample_inputs  # noqa: E402
 from uwmr_symbolic.verify import verify_design  # noqa: E402
 
 EXAMPLES = int(os.environ.get("UWMR_FUZZ_EXAMPLES", "3"))
@@ -94,3 +99,13 @@ def test_proved_random_designs_generate_validated_code(G, tmp_path_factory):
         pytest.fail(f"G(rho) = {G}: a proved design whose code fails validation: {exc.reasons[0]}")
     COUNTS["generated"] += 1
     assert len(written) == 3
+    # the sanitizer build on the validation sample: no report, the status codes of the strict build
+    model, _ = build(path, report=report)
+    exe = build_executable(tmp / "out", "fuzz_design", tmp,
+                           extra=("-O1", "-g", "-fsanitize=address,undefined,float-divide-by-zero",
+                                  "-fno-sanitize-recover=all"))
+    for f32 in (False, True):
+        x = sample_inputs(model, "float" if f32 else "double", (0.25, 0.7, 0.1), n_random=200)
+        v, w, st, res = run_executable(exe, x, tmp, f32=f32, env={"ASAN_OPTIONS": "detect_leaks=1"})
+        assert res.returncode == 0 and "runtime error" not in res.stderr, f"G(rho) = {G}: {res.stderr[-2000:]}"
+        assert np.isin(st, [0, 4]).all()
