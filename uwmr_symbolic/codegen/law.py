@@ -177,9 +177,11 @@ def split_logs(expr: sp.Expr, var=T) -> sp.Expr:
             sign = 1 if isinstance(node, sp.asinh) else -1
             return sp.log(x) + sp.log(1 + sp.sqrt(1 + sign * x ** -2))
         return node
+    def expand(node):
+        split = sp.expand_log(sp.log(sp.factor_terms(sp.together(node.args[0]))), force=True)
+        return node if split.has(sp.I) else split      # a negative factor: keep the log whole
     out = sp.bottom_up(expr, hyper)
-    out = out.replace(lambda e: isinstance(e, sp.log) and e.has(var),
-                      lambda e: sp.expand_log(sp.log(sp.factor_terms(sp.together(e.args[0]))), force=True))
+    out = out.replace(lambda e: isinstance(e, sp.log) and e.has(var), expand)
     return out.subs(sp.log(var), LT)
 
 
