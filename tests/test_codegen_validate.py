@@ -85,3 +85,14 @@ def test_cli_exits_1_with_one_line_and_writes_nothing(tmp_path, monkeypatch, cap
     lines = [ln for ln in err.splitlines() if "validation" in ln]
     assert len(lines) == 1 and "design1_jiang: C double: error" in lines[0], err
     assert "Traceback" not in err and not out.exists()
+
+
+def test_code_that_cannot_be_checked_is_not_written(report, tmp_path, monkeypatch):
+    from uwmr_symbolic.codegen import harness
+
+    def broken(*args, **kwargs):
+        raise OSError("cannot load the shared library")
+    monkeypatch.setattr(harness, "build_library", broken)
+    with pytest.raises(CodegenInvalid, match="design1_jiang: the validation could not run: OSError: cannot load"):
+        generate(D1, tmp_path / "d1", report=report)
+    assert list(tmp_path.iterdir()) == []

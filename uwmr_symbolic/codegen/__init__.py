@@ -173,6 +173,9 @@ def validate_build(design_path, model, files, report=None):
         return validate(design, model, files, kf)
     except ValidationFailed as exc:
         raise CodegenInvalid(exc.line) from None
+    except Exception as exc:  # noqa: BLE001 - code that could not be checked is not written
+        first = (str(exc).splitlines() or [""])[0]
+        raise CodegenInvalid(f"{model.stem}: the validation could not run: {type(exc).__name__}: {first}") from None
 
 
 def generate(design_path, out_dir=None, force=False, report=None, validate=True) -> list[Path]:
