@@ -112,3 +112,10 @@ def test_float_overflow_below_the_far_threshold(tmp_path):
     """log(1 + rho^5)/10: rho^5 overflowed float for |e| > 6.9e3, below FAR = 1e4."""
     rows_f = _law_rows([(0.0, 1e4), (0.0, 8e3), (7e3, 7e3), (0.0, 5e3), (0.0, 1e-5)])
     _check_all(ROOT / "designs_codegen/c7_rho5.py", tmp_path, _law_rows([(0.0, 1e4), (1e-40, 1e-39)]), rows_f)
+
+
+def test_series_at_zero_with_a_relative_next_term_of_order_s(tmp_path):
+    """s - log(1 + s): no tiny region was built, 0/0 at rho = 0 (found after the seven)."""
+    pairs = [(0.0, 1e-300), (1e-200, -1e-200), (0.0, 5e-324), (1e-20, 0.0)]
+    rows = np.concatenate([_law_rows(pairs), _law_rows(pairs, lam=1e300, vr=1e300)])
+    _check_all(ROOT / "designs_codegen/c8_s_minus_log.py", tmp_path, rows, _law_rows([(0.0, 1e-40), (1e-13, 1e-13)]))

@@ -8,7 +8,7 @@ one of three regions of m = max(|e1|, |e2|), each with a form that neither
 overflows nor cancels there:
 
 * tiny   (0 < m < TINY): F'(s) is replaced by the leading term a s**j of its
-  series at 0 (the next term is below 1e-20 relative there), s**j = m**j r**j
+  series at 0 (the next term is below 2^-60 (float 2^-30) relative there), s**j = m**j r**j
   with r = sqrt(1 + q**2), q = min/m, and e2/s = (e2/m)/r;
 * mid    (TINY <= m <= FAR): g = e2 H(rho) with rho = e1**2 + e2**2 and
   H(rho) = F'(s)/s written in rho (no square root of rho for smooth F);
@@ -312,8 +312,9 @@ def build_model(design, analysis, report=None) -> LawModel:
     tiny_ok = lead is not None and float(pieces[0].hi) > 2 * max(th[0] for th in model.thresholds.values()) * 2
     if tiny_ok:
         a, j = lead
-        worst = max(_next_ratio(dF0, S, a, j, math.sqrt(2) * th[0]) for th in model.thresholds.values())
-        tiny_ok = worst < 1e-20 and j >= 0
+        # the next term of the series is below 2^-60 (double) / 2^-30 (float) of the leading one
+        tiny_ok = j >= 0 and all(_next_ratio(dF0, S, a, j, math.sqrt(2) * th[0]) < SERIES_REL[prec]
+                                 for prec, th in model.thresholds.items())
     if tiny_ok:
         model.tiny = (a, j)
     else:
@@ -345,6 +346,7 @@ def build_model(design, analysis, report=None) -> LawModel:
     return model
 
 
+SERIES_REL = {"double": 2.0 ** -60, "float": 2.0 ** -30}
 FORMAT = {"double": (2.2250738585072014e-308, 1.7976931348623157e308, 53),
           "float": (1.1754943508222875e-38, 3.4028234663852886e38, 24)}
 
