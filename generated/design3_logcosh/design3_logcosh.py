@@ -43,8 +43,9 @@ def _H0(rho):
     return 4.0*numpy.tanh(x0/(x1 + 1.0))/x1
 
 def _D0(tt):
+    st = numpy.minimum(1.0 / tt, 1.7976931348623157e+308)
     x0 = numpy.sqrt((tt*tt) + 4.0)
-    return -4.0*numpy.tanh(1.0 - x0/tt)/x0
+    return 4.0*numpy.tanh(st*x0 - 1.0)/x0
 
 
 def _sinc(e3):

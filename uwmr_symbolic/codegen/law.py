@@ -43,6 +43,10 @@ from ..univariate import T, prepare, tail_form
 RHO = sp.Symbol("rho", positive=True)
 #: log t = -log s on the tail, computed from the scaled norm as -(log m + log1p(q**2)/2)
 LT = sp.Symbol("lt", negative=True)
+#: 1/t = s on the tail, computed as min(1/t, largest finite number): beyond the
+#: range (s up to sqrt(2) times it) a saturated tanh(1/t), x/cosh(x)**2, ... keeps
+#: its limit instead of inf/inf (the validation checks s near that end)
+ST = sp.Symbol("st", positive=True)
 
 #: Region switches on m = max(|e1|, |e2|), per precision.  TINY keeps
 #: rho >= TINY**2 a normal number; FAR keeps every mid-region form far from
@@ -196,7 +200,7 @@ def _t_power(expr) -> int:
 
 
 def _polish_tail(expr: sp.Expr) -> sp.Expr:
-    return use_log1p(stabilize(split_logs(prepare(expr))))
+    return use_log1p(stabilize(split_logs(prepare(expr)))).xreplace({1 / T: ST})
 
 
 def plain(expr: sp.Expr) -> sp.Expr:

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .law import LT, RHO, THRESHOLDS, LawModel
+from .law import LT, RHO, ST, THRESHOLDS, LawModel
 from .printers import PyPrinter, cse_lines, double_literal
 from .. import e1 as E1, e2 as E2
 from ..univariate import T
@@ -30,6 +30,8 @@ class PythonConfig:
 
 def _function(name, arg, expr, printer):
     lines, value = cse_lines(expr, printer, lambda n, c: f"{n} = {c}")
+    if expr.has(ST):     # s = 1/t kept finite, as in C
+        lines.insert(0, "st = numpy.minimum(1.0 / tt, 1.7976931348623157e+308)")
     first = arg.split(",")[0]
     tail = f" + 0.0 * {first}" if not expr.free_symbols else ""   # keep the array shape
     return [f"def {name}({arg}):", *[f"    {ln}" for ln in lines], f"    return {value}{tail}"]
@@ -49,7 +51,7 @@ def _masks(branches, var):
 def render(env, model: LawModel, context: dict, config: PythonConfig | None = None) -> dict[str, str]:
     if config is None:
         config = PythonConfig(*model.thresholds["double"])
-    pr = PyPrinter({RHO: "rho", T: "tt", LT: "lt", E1: "e1", E2: "e2"})
+    pr = PyPrinter({RHO: "rho", T: "tt", LT: "lt", ST: "st", E1: "e1", E2: "e2"})
     functions = []
     ctx = dict(context, cfg=config, radial=model.radial,
                tiny_lit=double_literal(config.tiny), far_lit=double_literal(config.far),
