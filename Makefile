@@ -4,7 +4,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test bench clean generate embedded paper figures
+.PHONY: demo test bench clean generate embedded paper figures fuzz-codegen
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -23,6 +23,12 @@ test: $(STAMP)
 # CI: `make generate && git diff --exit-code generated/` fails when stale.
 generate: $(STAMP)
 	$(BIN)/python -m uwmr_symbolic.codegen --force designs/*.py
+
+# Random proved radial designs through generation and validation (longer than the
+# fixed-seed profile of `make test`); prints designs tried / proved / generated.
+fuzz-codegen: $(STAMP)
+	UWMR_FUZZ_EXAMPLES=$${UWMR_FUZZ_EXAMPLES:-40} UWMR_FUZZ_TIMEOUT=20 UWMR_FUZZ_VERBOSE=1 \
+	  $(BIN)/python -m pytest -q -s -p no:cacheprovider tests/test_codegen_fuzz.py
 
 # Cortex-M4F build of the float variants; installs the toolchain when missing.
 embedded: $(STAMP)

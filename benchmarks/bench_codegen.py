@@ -10,7 +10,11 @@ of 101 passes, the three interleaved in every pass so that a load on the
 machine hits them alike.  Python: generated module vs `sympy.lambdify` of the
 law vs plain numpy, 1e6 inputs, median of 9 interleaved rounds.
 
-    python benchmarks/bench_codegen.py [--quick]
+Generation: wall time of the translation validation (`codegen.validate`)
+and of the whole `build` + validation, per design of designs/,
+tests/designs/ and tests/designs_codegen/ (verification excluded).
+
+    python benchmarks/bench_codegen.py [--quick] [--validation-only]
 """
 from __future__ import annotations
 
@@ -214,10 +218,44 @@ def bench_python(stem, n, reps):
     return tuple(statistics.median(t) for t in times)
 
 
+def bench_validation():
+    """Seconds per design for build (render) and for the validation."""
+    from uwmr_symbolic.codegen import CodegenInvalid, CodegenRefused, build, validate_build
+    from uwmr_symbolic.verify import verify_design
+    paths = sorted((ROOT / "designs").glob("*.py")) + sorted((ROOT / "tests/designs").glob("v*.py")) \
+        + sorted((ROOT / "tests/designs_codegen").glob("*.py"))
+    print("Generation with validation, seconds per design (verification excluded):")
+    print(f"{'design':22s} {'render':>7s} {'validate':>9s}  result")
+    worst = 0.0
+    for path in paths:
+        rep = verify_design(path)
+        t0 = time.perf_counter()
+        try:
+            model, files = build(path, force=True, report=rep)
+        except CodegenRefused as exc:
+            print(f"{path.stem:22s} refused: {exc}")
+            continue
+        t1 = time.perf_counter()
+        try:
+            res = validate_build(path, model, files, rep)
+            result = "ok, " + ", ".join(f"{t.name} {t.rows}" for t in res.targets if t.rows)
+        except CodegenInvalid as exc:
+            result = "REFUSED" + (" (NOT VERIFIED, --force writes it)" if not model.verified else "") \
+                + ": " + exc.reasons[0][:80]
+        t2 = time.perf_counter()
+        worst = max(worst, t2 - t1)
+        print(f"{path.stem:22s} {t1 - t0:7.2f} {t2 - t1:9.2f}  {result}")
+    print(f"slowest validation: {worst:.2f} s (goal <= 5 s)\n")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="fewer inputs and repetitions")
+    ap.add_argument("--validation-only", action="store_true", help="only the generation/validation times")
     a = ap.parse_args()
+    bench_validation()
+    if a.validation_only:
+        return
     n_c, reps_c, n_py, reps_py = (20_000, 11, 100_000, 3) if a.quick else (20_000, 101, 1_000_000, 9)
     x = inputs(n_c)
     print(f"C, ns per evaluation (median of {reps_c}, {n_c} inputs, gcc {' '.join(FLAGS)}):")

@@ -1,7 +1,7 @@
 """The committed generated C and Python against the exact law.
 
 * C compiled with -std=c99 -Wall -Wextra -Werror -pedantic -Wdouble-promotion
-  (loaded with ctypes) and again with -fsanitize=address,undefined;
+  (loaded with ctypes) and again with -fsanitize=address,undefined,float-divide-by-zero;
 * agreement with the law evaluated in high precision (Arb, adaptive; the
   reference itself is cross-checked against mpmath at 50 digits) at >= 1e5
   random points over many magnitudes and on the issue's extreme grid, for
@@ -20,7 +20,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from uwmr_symbolic.codegen import reference
+from uwmr_symbolic.codegen import reference, validate
 from uwmr_symbolic.codegen.harness import build_executable, build_library, run_executable
 from uwmr_symbolic.design import load_design
 
@@ -95,27 +95,11 @@ def case(request, tmp_path_factory):
 
 
 def _check(case, x, ref, v, w, st, precision, tol, what):
-    ev, ew, over = reference.errors(ref, v, w, precision)
-    valid = (st != ERR_NONFINITE) & (st != ERR_GAIN)
-    assert np.all(valid), f"{what}: finite non-negative inputs refused"
-    assert np.all(st[over] == ERR_RANGE), f"{what}: an overflowing result not reported"
-    assert np.all(st[~over] == OK), f"{what}: range error where the exact result is finite: {x[~over & (st != OK)][:3]}"
-    assert np.all((v[st != OK] == 0) & (w[st != OK] == 0)), f"{what}: no safe stop on a range error"
-    worst = max(ev.max(), ew.max())
-    i = int(np.argmax(np.maximum(ev, ew)))
-    assert worst <= tol, f"{what}: relative error {worst:.3g} at {x[i].tolist()}"
-    if case.stem in VERIFIED:
-        kf = case.py.KF
-        a = np.abs(x)
-        info = np.finfo(np.float32 if precision == "float" else np.float64)
-        eps, sub = info.eps, info.smallest_subnormal * 8      # rounding, also in the subnormal range
-        with np.errstate(over="ignore"):
-            bv = (a[:, 3] + a[:, 5]) * (1 + 4 * eps) + sub
-            bw = (a[:, 4] + a[:, 7] * a[:, 3] * kf + a[:, 6]) * (1 + 4 * eps) + sub
-        ok = st == OK
-        assert np.all(np.abs(v[ok]) <= bv[ok]), f"{what}: |v| above bound (10)"
-        assert np.all(np.abs(w[ok]) <= bw[ok]), f"{what}: |w| above bound (10)"
-    return worst
+    """The generator's own validation check (`validate.check`): statuses,
+    safe stop, error <= tol of the scale, bound (10) for verified designs."""
+    assert tol == validate.TOL[precision]
+    kf = case.py.KF if case.stem in VERIFIED else None
+    return validate.check(case.stem, what, x, ref, v, w, st, precision, kf)
 
 
 def test_c_double_agrees_with_exact_law(case):
@@ -171,10 +155,11 @@ def test_safe_stop_on_nonfinite_and_negative_gains(case, f32):
 
 
 def test_sanitizers_and_null_pointers(case, tmp_path):
-    """-fsanitize=address,undefined: no report on the grids and a random
+    """-fsanitize=address,undefined,float-divide-by-zero: no report on the grids and a random
     sample, the same results as the optimised build, NULL handled."""
     exe = build_executable(case.src, case.stem, tmp_path,
-                           extra=("-O1", "-g", "-fsanitize=address,undefined", "-fno-sanitize-recover=all"))
+                           extra=("-O1", "-g", "-fsanitize=address,undefined,float-divide-by-zero",
+                                  "-fno-sanitize-recover=all"))
     env = {"ASAN_OPTIONS": "detect_leaks=1:abort_on_error=0", "UBSAN_OPTIONS": "print_stacktrace=1"}
     for f32, x in ((False, case.x_double[::7]), (True, case.x_float[::7])):
         v, w, st, res = run_executable(exe, x, tmp_path, f32=f32, env=env)

@@ -181,7 +181,7 @@ def run_simulations(results, args, reports: Reports) -> int:
 
 def write_code(paths, results, out, force, reports: Reports) -> int:
     """`--codegen`: generate each usable design; 1 if one was refused."""
-    from .codegen import CodegenRefused, generate
+    from .codegen import CodegenInvalid, CodegenRefused, generate
     status = 0
     usable = {d["design"] for d in results if d.get("error") is None}
     for path in map(Path, paths):
@@ -190,6 +190,11 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
         target = None if out == "" else (Path(out) / path.stem if len(paths) > 1 else Path(out))
         try:
             written = generate(path, target, force=force, report=reports(path))
+        except CodegenInvalid as exc:
+            print(f"{path}: no code generated, the generated code failed its validation: {exc.reasons[0]}",
+                  file=sys.stderr)
+            status = 1
+            continue
         except CodegenRefused as exc:
             print(f"{path}: no code generated, the design is not verified ({len(exc.reasons)} "
                   f"reason(s): {exc.reasons[0]} ...); use --force for a NOT VERIFIED build",

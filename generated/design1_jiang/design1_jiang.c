@@ -46,7 +46,7 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
     if (m >= 1e-100 && m <= 10000.0) {
         const double rho = e1 * e1 + e2 * e2;
         {
-            const double H = (1.0/((rho + 1.0)));
+            const double H = (1.0/(rho + 1.0));
             const double p1 = lam * vr;
             const double p2 = p1 * sinc;
             const double p3 = p2 * e2;
@@ -87,7 +87,7 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
             const double tt = im * ir;   /* t = 1/s */
             {
                 /* F'(1/t) = t^1 D(t) */
-                const double D = (1.0/((((tt)*(tt)) + 1.0)));
+                const double D = (1.0/((tt*tt) + 1.0));
                 const double p1 = lam * vr;
                 const double p2 = p1 * sinc;
                 const double p3 = p2 * e2;
@@ -182,7 +182,7 @@ int uwmr_design1_jiang_control(double e1, double e2, double e3, double vr, doubl
             const double rho = e1 * e1 + e2 * e2;
             double H;
             {
-                H = (1.0/((rho + 1.0)));
+                H = (1.0/(rho + 1.0));
             }
             {
                 const double q = lv * H;   /* 2.5e-09 <= |H| <= 2 here: q_lo <= |q| <= q_hi */
@@ -233,7 +233,7 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
     if (m >= 1e-12F && m <= 10000.0F) {
         const float rho = e1 * e1 + e2 * e2;
         {
-            const float H = (1.0F/((rho + 1.0F)));
+            const float H = (1.0F/(rho + 1.0F));
             const float p1 = lam * vr;
             const float p2 = p1 * sinc;
             const float p3 = p2 * e2;
@@ -274,7 +274,7 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
             const float tt = im * ir;   /* t = 1/s */
             {
                 /* F'(1/t) = t^1 D(t) */
-                const float D = (1.0F/((((tt)*(tt)) + 1.0F)));
+                const float D = (1.0F/((tt*tt) + 1.0F));
                 const float p1 = lam * vr;
                 const float p2 = p1 * sinc;
                 const float p3 = p2 * e2;
@@ -369,7 +369,7 @@ int uwmr_design1_jiang_control_f32(float e1, float e2, float e3, float vr, float
             const float rho = e1 * e1 + e2 * e2;
             float H;
             {
-                H = (1.0F/((rho + 1.0F)));
+                H = (1.0F/(rho + 1.0F));
             }
             {
                 const float q = lv * H;   /* 2.5e-09 <= |H| <= 2 here: q_lo <= |q| <= q_hi */

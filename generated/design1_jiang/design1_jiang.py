@@ -16,6 +16,8 @@ arrays (broadcast together).  An element with a NaN or infinite input, a
 negative gain, or an overflowing result gets v = w = 0 (a safe stop);
 `control_status` also returns the status codes (0 ok, 2 non-finite input,
 3 negative gain, 4 overflow), as the C functions do.  Needs numpy only.
+Checked against the exact law before it was written (see the C header):
+errors <= 1e-12 of the scale, bound (10), status 0 wherever the law is finite.
 """
 import numpy
 
@@ -34,10 +36,10 @@ _DMIN = 2.2250738585072014e-308
 _DMAX = 1.7976931348623157e+308
 
 def _H0(rho):
-    return (1.0/((rho + 1.0)))
+    return (1.0/(rho + 1.0))
 
 def _D0(tt):
-    return (1.0/((((tt)*(tt)) + 1.0)))
+    return (1.0/((tt*tt) + 1.0))
 
 
 def _sinc(e3):

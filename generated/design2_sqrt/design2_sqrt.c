@@ -87,7 +87,7 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
             const double tt = im * ir;   /* t = 1/s */
             {
                 /* F'(1/t) = D(t) */
-                const double D = (1.0/sqrt(((tt)*(tt)) + 1.0));
+                const double D = (1.0/sqrt((tt*tt) + 1.0));
                 const double p1 = lam * vr;
                 const double p2 = p1 * sinc;
                 const double p3 = p2 * e2;
@@ -272,7 +272,7 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
             const float tt = im * ir;   /* t = 1/s */
             {
                 /* F'(1/t) = D(t) */
-                const float D = (1.0F/sqrtf(((tt)*(tt)) + 1.0F));
+                const float D = (1.0F/sqrtf((tt*tt) + 1.0F));
                 const float p1 = lam * vr;
                 const float p2 = p1 * sinc;
                 const float p3 = p2 * e2;

@@ -91,10 +91,11 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
         {
             const double im = 1.0 / m;   /* e2/s = e2 im ir, as separate factors */
             const double tt = im * ir;   /* t = 1/s */
+            const double st = fmin(1.0 / tt, DBL_MAX);   /* s = 1/t, kept finite */
             {
                 /* F'(1/t) = D(t) */
-                const double x0 = sqrt(((tt)*(tt)) + 4.0);
-                const double D = -4.0*tanh(1.0 - x0/tt)/x0;
+                const double x0 = sqrt((tt*tt) + 4.0);
+                const double D = 4.0*tanh(st*x0 - 1.0)/x0;
                 const double p1 = lam * vr;
                 const double p2 = p1 * sinc;
                 const double p3 = p2 * e2;
@@ -285,10 +286,11 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
         {
             const float im = 1.0F / m;   /* e2/s = e2 im ir, as separate factors */
             const float tt = im * ir;   /* t = 1/s */
+            const float st = fminf(1.0F / tt, FLT_MAX);   /* s = 1/t, kept finite */
             {
                 /* F'(1/t) = D(t) */
-                const float x0 = sqrtf(((tt)*(tt)) + 4.0F);
-                const float D = -4.0F*tanhf(1.0F - x0/tt)/x0;
+                const float x0 = sqrtf((tt*tt) + 4.0F);
+                const float D = 4.0F*tanhf(st*x0 - 1.0F)/x0;
                 const float p1 = lam * vr;
                 const float p2 = p1 * sinc;
                 const float p3 = p2 * e2;

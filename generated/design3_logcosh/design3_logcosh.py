@@ -16,6 +16,8 @@ arrays (broadcast together).  An element with a NaN or infinite input, a
 negative gain, or an overflowing result gets v = w = 0 (a safe stop);
 `control_status` also returns the status codes (0 ok, 2 non-finite input,
 3 negative gain, 4 overflow), as the C functions do.  Needs numpy only.
+Checked against the exact law before it was written (see the C header):
+errors <= 1e-12 of the scale, bound (10), status 0 wherever the law is finite.
 """
 import numpy
 
@@ -41,8 +43,9 @@ def _H0(rho):
     return 4.0*numpy.tanh(x0/(x1 + 1.0))/x1
 
 def _D0(tt):
-    x0 = numpy.sqrt(((tt)*(tt)) + 4.0)
-    return -4.0*numpy.tanh(1.0 - x0/tt)/x0
+    st = numpy.minimum(1.0 / tt, 1.7976931348623157e+308)
+    x0 = numpy.sqrt((tt*tt) + 4.0)
+    return 4.0*numpy.tanh(st*x0 - 1.0)/x0
 
 
 def _sinc(e3):

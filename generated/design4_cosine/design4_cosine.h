@@ -39,9 +39,9 @@ extern "C" {
  *   UWMR_ERR_NONFINITE  an input (or a gain) is NaN or +-inf
  *   UWMR_ERR_GAIN       a gain is negative (the law needs k1, k2, lambda >= 0)
  *   UWMR_ERR_RANGE      v or w would overflow the floating-point type
- * Every finite input is accepted (|e1|, |e2|, |e3| up to the largest finite
- * value, subnormals included); the results are then finite and obey bound
- * (10): |v| <= |vr| + k1, |w| <= |wr| + lambda |vr| KF + k2.
+ * NOT VERIFIED: generated with --force.  The validation against the exact
+ * law was run, but with --force its failures do not stop generation, and
+ * bound (10) is not checked: no accuracy is promised.
  * No dynamic memory, no mutable global state; reentrant.  libm may set errno
  * on an underflow inside the computation.
  */

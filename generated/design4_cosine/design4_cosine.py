@@ -28,6 +28,7 @@ arrays (broadcast together).  An element with a NaN or infinite input, a
 negative gain, or an overflowing result gets v = w = 0 (a safe stop);
 `control_status` also returns the status codes (0 ok, 2 non-finite input,
 3 negative gain, 4 overflow), as the C functions do.  Needs numpy only.
+NOT VERIFIED (--force): no accuracy is promised.
 """
 import numpy
 
@@ -53,7 +54,7 @@ def _H1(rho):
     return (1.0/numpy.sqrt(rho + 1.0))
 
 def _D0(tt):
-    return (1.0/numpy.sqrt(((tt)*(tt)) + 1.0))
+    return (1.0/numpy.sqrt((tt*tt) + 1.0))
 
 
 def _sinc(e3):

@@ -52,7 +52,7 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
     if (m >= 1e-100 && m <= 10000.0) {
         const double rho = e1 * e1 + e2 * e2;
         {
-            const double H = 2.0/(((rho)*(rho)) + 2.0*rho + 1.0);
+            const double H = 2.0/((rho*rho) + 2.0*rho + 1.0);
             const double p1 = lam * vr;
             const double p2 = p1 * sinc;
             const double p3 = p2 * e2;
@@ -93,7 +93,7 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
             const double tt = im * ir;   /* t = 1/s */
             {
                 /* F'(1/t) = t^3 D(t) */
-                const double D = 2.0/(((tt)*(tt)*(tt)*(tt)) + 2.0*((tt)*(tt)) + 1.0);
+                const double D = 2.0/((tt*tt*tt*tt) + 2.0*(tt*tt) + 1.0);
                 const double p1 = lam * vr;
                 const double p2 = p1 * sinc;
                 const double p3 = p2 * e2;
@@ -192,7 +192,7 @@ int uwmr_design5_rational_control(double e1, double e2, double e3, double vr, do
             const double rho = e1 * e1 + e2 * e2;
             double H;
             {
-                H = 2.0/(((rho)*(rho)) + 2.0*rho + 1.0);
+                H = 2.0/((rho*rho) + 2.0*rho + 1.0);
             }
             {
                 const double q = lv * H;   /* 2.5e-17 <= |H| <= 4 here: q_lo <= |q| <= q_hi */
@@ -243,7 +243,7 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
     if (m >= 1e-12F && m <= 10000.0F) {
         const float rho = e1 * e1 + e2 * e2;
         {
-            const float H = 2.0F/(((rho)*(rho)) + 2.0F*rho + 1.0F);
+            const float H = 2.0F/((rho*rho) + 2.0F*rho + 1.0F);
             const float p1 = lam * vr;
             const float p2 = p1 * sinc;
             const float p3 = p2 * e2;
@@ -284,7 +284,7 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
             const float tt = im * ir;   /* t = 1/s */
             {
                 /* F'(1/t) = t^3 D(t) */
-                const float D = 2.0F/(((tt)*(tt)*(tt)*(tt)) + 2.0F*((tt)*(tt)) + 1.0F);
+                const float D = 2.0F/((tt*tt*tt*tt) + 2.0F*(tt*tt) + 1.0F);
                 const float p1 = lam * vr;
                 const float p2 = p1 * sinc;
                 const float p3 = p2 * e2;
@@ -383,7 +383,7 @@ int uwmr_design5_rational_control_f32(float e1, float e2, float e3, float vr, fl
             const float rho = e1 * e1 + e2 * e2;
             float H;
             {
-                H = 2.0F/(((rho)*(rho)) + 2.0F*rho + 1.0F);
+                H = 2.0F/((rho*rho) + 2.0F*rho + 1.0F);
             }
             {
                 const float q = lv * H;   /* 2.5e-17 <= |H| <= 4 here: q_lo <= |q| <= q_hi */

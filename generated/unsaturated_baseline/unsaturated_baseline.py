@@ -21,6 +21,7 @@ arrays (broadcast together).  An element with a NaN or infinite input, a
 negative gain, or an overflowing result gets v = w = 0 (a safe stop);
 `control_status` also returns the status codes (0 ok, 2 non-finite input,
 3 negative gain, 4 overflow), as the C functions do.  Needs numpy only.
+NOT VERIFIED (--force): no accuracy is promised.
 """
 import numpy
 

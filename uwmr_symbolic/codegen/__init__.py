@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 import os
 import shutil
+import sys
 import tempfile
 import textwrap
 from fractions import Fraction
@@ -26,9 +27,9 @@ from .. import __version__
 from ..properties import PROPERTIES, Analysis
 from . import c_backend, python_backend
 from .law import LawModel, build_model
-from .printers import double_literal
+from .printers import Unsupported, double_literal
 
-__all__ = ["generate", "casadi_function", "CodegenRefused", "build", "not_verified_reasons"]
+__all__ = ["generate", "casadi_function", "CodegenRefused", "CodegenInvalid", "build", "not_verified_reasons"]
 
 TEMPLATES = Path(__file__).parent / "templates"
 
@@ -39,6 +40,16 @@ class CodegenRefused(Exception):
     def __init__(self, reasons: list[str]):
         self.reasons = list(reasons)
         super().__init__("code generation refused, design not verified: " + "; ".join(self.reasons))
+
+
+class CodegenInvalid(CodegenRefused):
+    """The generated code could not be printed faithfully or failed its
+    validation against the exact law (`validate`); `reasons[0]` is one line
+    naming the design, the target, the input and both values."""
+
+    def __init__(self, reason: str):
+        self.reasons = [reason]
+        Exception.__init__(self, "code generation refused: " + reason)
 
 
 def _env() -> jinja2.Environment:
@@ -143,21 +154,57 @@ def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, st
     env = _env()
     ctx = _context(design, model)
     files = {}
-    files.update(python_backend.render(env, model, ctx))
-    files.update(c_backend.render(env, model, ctx))
+    try:
+        files.update(python_backend.render(env, model, ctx))
+        files.update(c_backend.render(env, model, ctx))
+    except Unsupported as exc:
+        raise CodegenInvalid(f"{model.stem}: {exc}") from None
     return model, files
 
 
-def generate(design_path, out_dir=None, force=False, report=None) -> list[Path]:
+def validate_build(design_path, model, files, report=None):
+    """Run the translation validation (`validate.validate`) on rendered files;
+    raises CodegenInvalid with its one-line reason."""
+    from ..design import load_design
+    from .validate import ValidationFailed, validate
+    design = report.design if report is not None and report.design is not None else load_design(design_path)
+    kf = _kf_upper_double(model.kf_upper) if model.verified else None
+    try:
+        return validate(design, model, files, kf)
+    except ValidationFailed as exc:
+        raise CodegenInvalid(exc.line) from None
+    except Exception as exc:  # noqa: BLE001 - code that could not be checked is not written
+        first = (str(exc).splitlines() or [""])[0]
+        raise CodegenInvalid(f"{model.stem}: the validation could not run: {type(exc).__name__}: {first}") from None
+
+
+def generate(design_path, out_dir=None, force=False, report=None, validate=True) -> list[Path]:
     """Write <stem>.py, <stem>.h, <stem>.c into out_dir (default generated/<stem>/).
 
     Refuses (raises CodegenRefused(reasons)) unless P1..P8 are all proved;
     with force=True every file starts with a NOT VERIFIED: <reasons> banner.
     `report` (from `verify.verify_design`) avoids verifying again.  Files are
     rendered in memory and written to a temporary directory first, then moved
-    into place: a failure leaves out_dir as it was."""
+    into place: a failure leaves out_dir as it was.  Before anything is
+    written, every artifact is checked against the exact law
+    (`validate.validate`); a failure raises CodegenInvalid (a CodegenRefused)
+    with a one-line reason and writes nothing.  `validate=False` skips the
+    check (tests of the writing machinery only)."""
     design_path = Path(design_path)
+    if report is None:
+        from ..verify import verify_design
+        report = verify_design(design_path)
     model, files = build(design_path, force=force, report=report)
+    if validate:
+        try:
+            validate_build(design_path, model, files, report)
+        except CodegenInvalid as exc:
+            if model.verified:
+                raise
+            # a NOT VERIFIED design (force=True): nothing was proved, every file says so;
+            # the disagreement is reported, the files are still written
+            print(f"warning: {exc.reasons[0]} (NOT VERIFIED design, written because of --force)",
+                  file=sys.stderr)
     out = Path(out_dir) if out_dir is not None else Path("generated") / model.stem
     out.parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))

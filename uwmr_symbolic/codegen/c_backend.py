@@ -5,13 +5,14 @@ The law's structure (regions, branches, guarded product) comes from
 template and differ by the `CConfig` below."""
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 from dataclasses import dataclass
 
 import sympy as sp
 
-from .law import RHO, THRESHOLDS, LawModel, mid_h_bounds
+from .law import LT, RHO, ST, THRESHOLDS, LawModel, mid_h_bounds
 from .printers import CPrinter, cse_lines
 from .. import e1 as E1, e2 as E2
 from ..univariate import T
@@ -169,8 +170,13 @@ def gterm_lines(model: LawModel, cfg: CConfig, names) -> list[str]:
                  "}"]
     rest.append("{")
     far = [f"const {t} im = {cfg.lit(1)} / m;   /* e2/s = e2 im ir, as separate factors */"]
-    if len(model.far) > 1 or any(br.expr.has(T) for br in model.far):
+    if len(model.far) > 1 or any(br.expr.has(T, ST) for br in model.far):
         far.append(f"const {t} tt = im * ir;   /* t = 1/s */")
+    if any(br.expr.has(ST) for br in model.far):
+        far.append(f"const {t} st = fmin{cfg.fn}({cfg.lit(1)} / tt, {cfg.limit}_MAX);   /* s = 1/t, kept finite */")
+    if any(br.expr.has(LT) for br in model.far):
+        far.append(f"const {t} lt = -(log{cfg.fn}(m) + {cfg.lit(sp.Rational(1, 2))} * log1p{cfg.fn}(q * q));"
+                   "   /* log t = -log s, s = m r */")
 
     def far_body(br):
         lines, d = cse_lines(br.expr, pr, decl)
@@ -267,9 +273,11 @@ def fast_lines(model: LawModel, cfg: CConfig, names) -> list[str] | None:
 def render(env, model: LawModel, context: dict) -> dict[str, str]:
     """{file name: text} for the C back-end."""
     ident = c_identifier(model.stem)
-    names = {RHO: "rho", T: "tt", E1: "e1", E2: "e2"}
+    names = {RHO: "rho", T: "tt", LT: "lt", ST: "st", E1: "e1", E2: "e2"}
     variants = []
-    for cfg in (DOUBLE, FLOAT):
+    for base in (DOUBLE, FLOAT):
+        cfg = dataclasses.replace(base, tiny=model.thresholds[base.precision][0],
+                                  far=model.thresholds[base.precision][1])
         variants.append(dict(cfg=cfg, body=gterm_lines(model, cfg, names), fast=fast_lines(model, cfg, names),
                              tiny=cfg.lit(cfg.tiny), far=cfg.lit(cfg.far), cut=cfg.lit(cfg.sinc_cut),
                              zero=cfg.lit(0), one=cfg.lit(1), two=cfg.lit(2), half=cfg.lit(sp.Rational(1, 2)), huge="HUGE_VALF" if cfg.precision == "float" else "HUGE_VAL", c6=cfg.lit(sp.Rational(1, 6)),

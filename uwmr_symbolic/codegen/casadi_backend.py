@@ -5,14 +5,19 @@
 For a radial design it uses the mid-region form g = e2 H(rho) of `law`
 (with `if_else` for Piecewise branches and for sin(e3)/e3 at 0), which is
 what an optimiser wants: smooth, cheap, exact in the range where a robot's
-errors live.  The overflow-safe regions of the C and Python code are not
-reproduced: for |e1|, |e2| beyond about 1e150 rho overflows."""
+errors live; below TINY (rho < TINY^2) the leading term of F' at 0 is used,
+as in C.  The overflow-safe far region of the C and Python code is not
+reproduced: the function is validated (and documented) for
+max(|e1|, |e2|) <= FAR (the model's double threshold, at most 1e4) and |e3|, |vr|, |wr|, gains <= 1e3; beyond,
+rho or H(rho) may overflow.  A function CasADi lacks (gamma, ...) raises
+NotImplementedError naming it."""
 from __future__ import annotations
 
 from dataclasses import dataclass
 
 import casadi as ca
 import sympy as sp
+from sympy.codegen.cfunctions import expm1, log1p
 
 from .law import RHO, LawModel
 from .. import e1 as E1, e2 as E2
@@ -28,7 +33,9 @@ class CasadiConfig:
 
 _UNARY = {sp.sin: ca.sin, sp.cos: ca.cos, sp.tan: ca.tan, sp.tanh: ca.tanh, sp.sinh: ca.sinh,
           sp.cosh: ca.cosh, sp.exp: ca.exp, sp.log: ca.log, sp.atan: ca.atan, sp.asin: ca.asin,
-          sp.acos: ca.acos, sp.asinh: ca.asinh, sp.acosh: ca.acosh, sp.atanh: ca.atanh, sp.Abs: ca.fabs}
+          sp.acos: ca.acos, sp.asinh: ca.asinh, sp.acosh: ca.acosh, sp.atanh: ca.atanh, sp.Abs: ca.fabs,
+          sp.erf: ca.erf, sp.erfc: lambda x: 1 - ca.erf(x), log1p: ca.log1p, expm1: ca.expm1,
+          sp.sign: ca.sign}
 
 
 def to_casadi(expr: sp.Expr, env: dict):
@@ -37,6 +44,12 @@ def to_casadi(expr: sp.Expr, env: dict):
         return env[expr]
     if expr.is_Number or isinstance(expr, sp.NumberSymbol):
         return ca.SX(float(expr))
+    if isinstance(expr, (sp.Min, sp.Max)):
+        fn = ca.fmin if isinstance(expr, sp.Min) else ca.fmax
+        out = to_casadi(expr.args[0], env)
+        for a in expr.args[1:]:
+            out = fn(out, to_casadi(a, env))
+        return out
     if isinstance(expr, sp.Add):
         out = 0
         for a in expr.args:
@@ -86,6 +99,11 @@ def casadi_function(model: LawModel, config: CasadiConfig = CasadiConfig()) -> c
             cond = rho <= float(br.hi) if br.hi_closed else rho < float(br.hi)
             H = ca.if_else(cond, to_casadi(br.expr, env), H)
         g = e2 * H
+        if model.tiny is not None and model.tiny[1] % 2 == 1:
+            # F'(s) ~ a s^j near 0: H = a rho^((j-1)/2) where rho underflows (0/0 otherwise)
+            a, j = model.tiny
+            small = e2 * float(a) * rho ** ((j - 1) // 2)
+            g = ca.if_else(rho < model.thresholds["double"][0] ** 2, small, g)
     else:
         g = to_casadi(model.general, env)
     z = e3 * e3

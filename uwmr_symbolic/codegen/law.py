@@ -8,7 +8,7 @@ one of three regions of m = max(|e1|, |e2|), each with a form that neither
 overflows nor cancels there:
 
 * tiny   (0 < m < TINY): F'(s) is replaced by the leading term a s**j of its
-  series at 0 (the next term is below 1e-20 relative there), s**j = m**j r**j
+  series at 0 (the next term is below 2^-60 (float 2^-30) relative there), s**j = m**j r**j
   with r = sqrt(1 + q**2), q = min/m, and e2/s = (e2/m)/r;
 * mid    (TINY <= m <= FAR): g = e2 H(rho) with rho = e1**2 + e2**2 and
   H(rho) = F'(s)/s written in rho (no square root of rho for smooth F);
@@ -34,12 +34,19 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 
 import sympy as sp
+from sympy.codegen.cfunctions import expm1, log1p
 
 from .. import e2 as E2
 from ..profile import S
 from ..univariate import T, prepare, tail_form
 
 RHO = sp.Symbol("rho", positive=True)
+#: log t = -log s on the tail, computed from the scaled norm as -(log m + log1p(q**2)/2)
+LT = sp.Symbol("lt", negative=True)
+#: 1/t = s on the tail, computed as min(1/t, largest finite number): beyond the
+#: range (s up to sqrt(2) times it) a saturated tanh(1/t), x/cosh(x)**2, ... keeps
+#: its limit instead of inf/inf (the validation checks s near that end)
+ST = sp.Symbol("st", positive=True)
 
 #: Region switches on m = max(|e1|, |e2|), per precision.  TINY keeps
 #: rho >= TINY**2 a normal number; FAR keeps every mid-region form far from
@@ -81,6 +88,7 @@ class LawModel:
     far: list = field(default_factory=list)        # Branches in t, F'(1/t) = t**k D(t)
     general: sp.Expr | None = None         # non-radial: df/de2 in e1, e2
     notes: list = field(default_factory=list)      # numerical choices, for the banner
+    thresholds: dict = field(default_factory=lambda: dict(THRESHOLDS))   # precision -> (TINY, FAR)
 
     @property
     def verified(self) -> bool:
@@ -91,9 +99,14 @@ class LawModel:
 # rewriting
 
 def stabilize(expr: sp.Expr) -> sp.Expr:
-    """Rewrite every c sqrt(P) - Q with c, Q > 0 (by SymPy's assumptions,
-    variables being positive) as (c**2 P - Q**2)/(c sqrt(P) + Q): the same
-    function, without the cancellation when c sqrt(P) ~ Q."""
+    """Rewrite every sum a + b of one square-root term a and a rest b of the
+    opposite sign (by SymPy's assumptions, variables being positive; b free
+    of square roots) as (a**2 - b**2)/(a - b): the same function, without the
+    cancellation when |a| ~ |b| (sqrt(4 rho + 1) - 1 -> 4 rho/(sqrt(4 rho + 1) + 1),
+    2 rho + 2 - 2 sqrt(rho + 1) -> (4 rho**2 + 4 rho)/(2 rho + 2 + 2 sqrt(rho + 1)))."""
+    def has_root(e):
+        return any(isinstance(p, sp.Pow) and p.exp == sp.Rational(1, 2) for p in sp.preorder_traversal(e))
+
     def fix(node):
         if not isinstance(node, sp.Add):
             return node
@@ -102,19 +115,99 @@ def stabilize(expr: sp.Expr) -> sp.Expr:
         if len(roots) != 1:
             return node
         a = roots[0]
-        q = -(node - a)
-        if not (a.is_positive and q.is_positive) or q.has(sp.Pow) and any(
-                isinstance(p, sp.Pow) and p.exp == sp.Rational(1, 2) for p in sp.preorder_traversal(q)):
+        b = node - a
+        if has_root(b) or not ((a.is_positive and b.is_negative) or (a.is_negative and b.is_positive)):
             return node
-        num = sp.expand(a ** 2 - q ** 2)
+        if a.is_negative and not _cancels_at_zero(a, node):
+            return node       # -sqrt(P) + Q: only where the two cancel (as rho -> 0 or t -> 0)
+        num = sp.expand(a ** 2 - b ** 2)
         if num == 0:
             return node
-        return num / (a + q)
+        return num / (a - b)
+    return sp.bottom_up(expr, fix)
+
+
+def _cancels_at_zero(a, total) -> bool:
+    """Does the sum `total` (one of whose terms is a) vanish to a higher order
+    than a as its variable tends to 0+?"""
+    syms = list(total.free_symbols)
+    if len(syms) != 1:
+        return False
+    la, lt = _leading(a, syms[0]), _leading(total, syms[0])
+    return la is not None and lt is not None and lt[1] > la[1]
+
+
+def use_log1p(expr: sp.Expr) -> sp.Expr:
+    """log(1 + X) -> log1p(X) and c exp(X) - c -> c expm1(X): the same
+    function, accurate when X is small (log(1 + rho) loses every digit of rho
+    below 1e-16).  (log(c + X) with c != 1 is left alone: it cancels only
+    where c + X ~ 1, and log c + log1p(X/c) would cancel there too.)"""
+    def fix(node):
+        if isinstance(node, sp.log) and isinstance(node.args[0], sp.Add):
+            c, rest = node.args[0].as_coeff_Add()
+            if c == 1 and rest != 0:
+                return log1p(rest)
+        if isinstance(node, sp.Add):
+            c, rest = node.as_coeff_Add()
+            if c == -1 and isinstance(rest, sp.exp):
+                return expm1(rest.args[0])
+            if c.is_negative and isinstance(rest, sp.Mul):
+                k, ex = rest.as_coeff_Mul()
+                if isinstance(ex, sp.exp) and k == -c:
+                    return k * expm1(ex.args[0])
+        return node
     return sp.bottom_up(expr, fix)
 
 
 def _polish(expr: sp.Expr) -> sp.Expr:
-    return stabilize(prepare(expr))
+    return use_log1p(stabilize(prepare(expr)))
+
+
+def _to_infinity(x, var) -> bool:
+    lead = _leading(x, var)
+    return lead is not None and lead[1] < 0 and lead[0].is_positive
+
+
+def split_logs(expr: sp.Expr, var=T) -> sp.Expr:
+    """Tail forms without t**k overflowing or underflowing inside a
+    logarithm: asinh(X) and acosh(X) with X -> +oo as t -> 0+ become
+    log(X) + log(1 + sqrt(1 +- 1/X**2)); every log is expanded over its
+    products, quotients and powers (log((t**2 + 1)/t**2) -> log(t**2 + 1) - 2 log t)
+    and log t becomes the symbol LT, which the back-ends compute from the
+    scaled norm.  The same function for t > 0."""
+    def hyper(node):
+        if isinstance(node, (sp.asinh, sp.acosh)) and node.args[0].has(var) and _to_infinity(node.args[0], var):
+            x = node.args[0]
+            sign = 1 if isinstance(node, sp.asinh) else -1
+            return sp.log(x) + sp.log(1 + sp.sqrt(1 + sign * x ** -2))
+        return node
+    def expand(node):
+        split = sp.expand_log(sp.log(sp.factor_terms(sp.together(node.args[0]))), force=True)
+        return node if split.has(sp.I) else split      # a negative factor: keep the log whole
+    out = sp.bottom_up(expr, hyper)
+    out = out.replace(lambda e: isinstance(e, sp.log) and e.has(var), expand)
+    return out.subs(sp.log(var), LT)
+
+
+def _t_power(expr) -> int:
+    """The integer power of T among the factors of a product (0 if none)."""
+    j = 0
+    for f in sp.Mul.make_args(expr):
+        base, ex = f.as_base_exp()
+        if base == T and ex.is_Integer:
+            j += int(ex)
+    return j
+
+
+def _polish_tail(expr: sp.Expr) -> sp.Expr:
+    return use_log1p(stabilize(split_logs(prepare(expr)))).xreplace({1 / T: ST})
+
+
+def plain(expr: sp.Expr) -> sp.Expr:
+    """expr with log1p/expm1 written as log(1 + x)/exp(x) - 1 (the same
+    function, for the interval evaluator)."""
+    return expr.replace(lambda e: isinstance(e, log1p), lambda e: sp.log(1 + e.args[0])).replace(
+        lambda e: isinstance(e, expm1), lambda e: sp.exp(e.args[0]) - 1)
 
 
 def _leading(expr: sp.Expr, var: sp.Symbol, at_zero=True):
@@ -205,19 +298,6 @@ def build_model(design, analysis, report=None) -> LawModel:
     pieces = profile.pieces
     at_point = profile.at_point
 
-    # tiny region: leading term of F' on the first piece
-    dF0 = prepare(sp.diff(pieces[0].expr, S))
-    lead = _leading(dF0, S)
-    tiny_ok = lead is not None and float(pieces[0].hi) > 2 * THRESHOLDS["double"][0] * 2
-    if tiny_ok:
-        a, j = lead
-        worst = max(_next_ratio(dF0, S, a, j, math.sqrt(2) * THRESHOLDS[p][0]) for p in THRESHOLDS)
-        tiny_ok = worst < 1e-20 and j >= 0
-    if tiny_ok:
-        model.tiny = (a, j)
-    else:
-        model.notes.append("no usable series of F' at 0: the mid-region form is used down to s = 0")
-
     # mid region: H(rho) = F'(s)/s in rho
     tiny, far = THRESHOLDS["double"]
     for lo, hi, closed, p in _branches(pieces, at_point, lambda b: b ** 2, reverse=False):
@@ -228,7 +308,24 @@ def build_model(design, analysis, report=None) -> LawModel:
         H = _polish(sp.cancel(H) if not H.has(sp.Function) else H)
         model.mid.append(Branch(lo, hi, closed, H))
 
+    model.thresholds = derive_thresholds(model.mid)
+
+    # tiny region: leading term of F' on the first piece
+    dF0 = prepare(sp.diff(pieces[0].expr, S))
+    lead = _leading(dF0, S)
+    tiny_ok = lead is not None and float(pieces[0].hi) > 2 * max(th[0] for th in model.thresholds.values()) * 2
+    if tiny_ok:
+        a, j = lead
+        # the next term of the series is below 2^-60 (double) / 2^-30 (float) of the leading one
+        tiny_ok = j >= 0 and all(_next_ratio(dF0, S, a, j, math.sqrt(2) * th[0]) < SERIES_REL[prec]
+                                 for prec, th in model.thresholds.items())
+    if tiny_ok:
+        model.tiny = (a, j)
+    else:
+        model.notes.append("no usable series of F' at 0: the mid-region form is used down to s = 0")
+
     # far region: F'(1/t) = t**k D(t)
+    far = min(th[1] for th in model.thresholds.values())
     for lo, hi, closed, p in _branches(
             pieces, at_point, lambda b: sp.Integer(0) if b == sp.oo else (sp.oo if b == 0 else 1 / b), reverse=True):
         if float(lo) > 1 / far:
@@ -241,8 +338,83 @@ def build_model(design, analysis, report=None) -> LawModel:
             cand = sp.cancel(D / T ** lead[1]) if not D.has(sp.Function) else sp.simplify(D / T ** lead[1])
             if not cand.has(sp.zoo, sp.nan) and cand.subs(T, 0).is_finite and cand.subs(T, 0) != 0:
                 D, k = cand, lead[1]
-        model.far.append(Branch(lo, hi, closed, _polish(D), k))
+        D = _polish_tail(D)
+        if k == 0:
+            # no series at t = 0 (log t in D): still split off a factor t**j of the
+            # numerator or denominator, so that D itself does not underflow with t
+            num, den = sp.fraction(sp.factor_terms(D))
+            j = _t_power(num) - _t_power(den)
+            if j != 0:
+                D, k = D / T ** j, j
+        model.far.append(Branch(lo, hi, closed, D, k))
     return model
+
+
+SERIES_REL = {"double": 2.0 ** -60, "float": 2.0 ** -30}
+FORMAT = {"double": (2.2250738585072014e-308, 1.7976931348623157e308, 53),
+          "float": (1.1754943508222875e-38, 3.4028234663852886e38, 24)}
+
+
+def _magnitude_risks(expr, rho_lo, rho_hi, fmt):
+    """(overflow, underflow) risk of evaluating expr in the format over
+    [rho_lo, rho_hi], by interval arithmetic on every subexpression: some
+    subexpression may exceed max/2^10, or a factor on a multiplicative path
+    from the root (through products, powers and function values, not into
+    the terms of a sum, where a small term is harmless) may fall below
+    16 min_normal without being zero."""
+    from ..interval import Interval, IntervalFunction, Undefined
+    small, big, bits = fmt
+    box = Interval.of(sp.Rational(rho_lo), sp.Rational(rho_hi))
+    over = under = False
+
+    def walk(node, on_path):
+        nonlocal over, under
+        if not node.has(RHO) or node.is_Atom:
+            return
+        try:
+            val = IntervalFunction(plain(node), [RHO], "range", 64)(box)
+        except (Undefined, ValueError, TypeError, NotImplementedError, ZeroDivisionError):
+            return
+        if not val.is_finite() or max(abs(val.lower_float()), abs(val.upper_float())) > big / 2 ** 10:
+            over = True
+        if on_path and not val.contains_zero() and min(abs(val.lower_float()), abs(val.upper_float())) < small * 16:
+            under = True
+        for a in node.args:
+            walk(a, on_path and not isinstance(node, sp.Add))
+    walk(expr, True)
+    return over, under
+
+
+def derive_thresholds(mid) -> dict:
+    """Per precision, (TINY, FAR) for the mid-region forms: the defaults of
+    THRESHOLDS, TINY raised and FAR lowered by powers of ten until interval
+    arithmetic shows that no subexpression of H overflows, and no factor of
+    H underflows, for rho in [TINY^2, 2 FAR^2] (log(1 + rho^5)/10: rho^5
+    overflows float above rho ~ 5e7, so FAR_float = 1e3)."""
+    out = {}
+    for prec, (tiny, far) in THRESHOLDS.items():
+        fmt = FORMAT[prec]
+        lo_k, hi_k = 2 * round(math.log10(tiny)), 2 * round(math.log10(far))
+        bad_low, bad_high = None, None
+        for k in range(lo_k, hi_k + 1):     # decades [10^k, 10^(k+1)] of rho (the last one to 2 FAR^2)
+            a, b = 10.0 ** k, (10.0 ** (k + 1) if k < hi_k else 2 * far ** 2)
+            risky = False
+            for br in mid:
+                blo, bhi = br.lo_float, br.hi_float
+                if bhi < a or blo > b:
+                    continue
+                over, under = _magnitude_risks(br.expr, max(a, blo), min(b, bhi), fmt)
+                risky = risky or over or under
+            if risky and k < 0:
+                bad_low = k
+            if risky and k >= 0 and bad_high is None:
+                bad_high = k
+        if bad_low is not None:
+            tiny = 10.0 ** math.ceil((bad_low + 1) / 2)
+        if bad_high is not None:
+            far = 10.0 ** math.floor((bad_high - math.log10(2)) / 2)
+        out[prec] = (tiny, far)
+    return out
 
 
 def mid_h_bounds(model: LawModel, rho_lo: float, rho_hi: float, ratio: int = 16):
@@ -261,7 +433,7 @@ def mid_h_bounds(model: LawModel, rho_lo: float, rho_hi: float, ratio: int = 16)
     while cuts[-1] < Fraction(rho_hi):
         cuts.append(min(cuts[-1] * ratio, Fraction(rho_hi)))
     for br in model.mid:
-        fn = IntervalFunction(br.expr, [RHO], "range", 128)
+        fn = IntervalFunction(plain(br.expr), [RHO], "range", 128)
         # the branch's ends, widened outwards by 1e-25 (they may be irrational)
         b_lo = Fraction(0) if br.lo == 0 else Fraction(str(sp.N(br.lo, 40))) * (1 - Fraction(1, 10 ** 25))
         b_hi = None if br.hi == sp.oo else Fraction(str(sp.N(br.hi, 40))) * (1 + Fraction(1, 10 ** 25))

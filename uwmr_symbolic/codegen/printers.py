@@ -1,9 +1,16 @@
 """Small SymPy printers for the back-ends.
 
-Numbers are printed as correctly rounded literals of the target type (no
-`M_PI`, which C99 does not define, and no `1.0/3.0` evaluated at run time);
-integer powers become products and half-integer powers square roots, so the
-float variant never calls `pow` or promotes to double."""
+Every constant subexpression (pi/2, log(2), 2/sqrt(pi), 1/3 ...) is printed
+as one correctly rounded literal of the target type -- never a `M_*` macro,
+which C99 does not define, and never an expression evaluated at run time;
+float literals carry the `F` suffix.  Integer powers become products and
+half-integer powers products with one square root, so the float variant
+never calls `pow` or promotes to double.  Every power is printed as one
+parenthesised unit or one call, so it binds like an atom wherever it is
+used (a power of a sum inside a product or a quotient keeps its meaning).
+
+A function that a target cannot evaluate raises `Unsupported` (the
+generator refuses the design with that message; nothing is written)."""
 from __future__ import annotations
 
 import numpy as np
@@ -15,19 +22,59 @@ from sympy.printing.numpy import NumPyPrinter
 MAX_PRODUCT_POWER = 8
 
 
+class Unsupported(ValueError):
+    """An expression a back-end cannot print faithfully."""
+
+
+def _value(expr) -> float:
+    """The double nearest to the real constant expr (evaluated to 40 digits)."""
+    val = sp.N(expr, 40)
+    if not val.is_real or not val.is_finite:
+        raise Unsupported(f"the constant {sp.sstr(expr)} is not a finite real number")
+    return float(val)
+
+
 def double_literal(value) -> str:
-    x = float(sp.N(value, 40))
+    x = _value(value)
     text = repr(x)
-    if "e" not in text and "." not in text and "inf" not in text:
+    if "e" not in text and "." not in text:
         text += ".0"
     return text
 
 
 def float_literal(value) -> str:
-    text = str(np.float32(float(sp.N(value, 40))))     # shortest round-trip form
-    if "e" not in text and "." not in text and "inf" not in text:
+    x = np.float32(_value(value))
+    if not np.isfinite(x):
+        raise Unsupported(f"the constant {sp.sstr(value)} is beyond the float range")
+    text = str(x)      # shortest round-trip form
+    if "e" not in text and "." not in text:
         text += ".0"
     return text + "F"
+
+
+def _is_constant(expr) -> bool:
+    return isinstance(expr, sp.Expr) and not expr.free_symbols and expr.is_number \
+        and not isinstance(expr, sp.Piecewise)
+
+
+def _power(printer, expr, sqrt, one):
+    """The common power rules of both printers; None for a general power."""
+    base, exp = expr.as_base_exp()
+    arg = printer._print(base)
+    b = arg if base.is_Symbol else f"({arg})"
+    if not exp.is_Rational:
+        return None
+    p, q = int(exp.p), int(exp.q)
+    if q == 1 and 0 < abs(p) <= MAX_PRODUCT_POWER:
+        factors = [b] * abs(p)
+    elif q == 2 and abs(p) <= 2 * MAX_PRODUCT_POWER + 1:
+        factors = [b] * (abs(p) // 2) + [f"{sqrt}({arg})"]
+    else:
+        return None
+    prod = "*".join(factors)
+    if abs(p) == 1:                      # one call or one parenthesised base: already one unit
+        return prod if p > 0 else f"({one}/{prod})"
+    return f"({prod})" if p > 0 else f"({one}/({prod}))"
 
 
 class CPrinter(C99CodePrinter):
@@ -36,11 +83,17 @@ class CPrinter(C99CodePrinter):
     def __init__(self, precision: str = "double", names=None):
         settings = {"type_aliases": {real: float32}} if precision == "float" else {}
         super().__init__(settings)
+        self.math_macros = {}          # never M_PI_2, M_LN2, M_2_SQRTPI ...
         self.precision = precision
         self.names = names or {}
         self.literal = float_literal if precision == "float" else double_literal
         self.sfx = "f" if precision == "float" else ""
 
+    def _print(self, expr, **kwargs):
+        if _is_constant(expr):
+            return self.literal(expr)
+        return super()._print(expr, **kwargs)
+
     def _print_Symbol(self, expr):
         return self.names.get(expr, expr.name)
 
@@ -49,41 +102,47 @@ class CPrinter(C99CodePrinter):
 
     _print_Rational = _print_Integer
     _print_Float = _print_Integer
-
-    def _print_NumberSymbol(self, expr):
-        return self.literal(expr)
-
-    _print_Pi = _print_NumberSymbol
-    _print_Exp1 = _print_NumberSymbol
-    _print_EulerGamma = _print_NumberSymbol
-    _print_GoldenRatio = _print_NumberSymbol
-    _print_Catalan = _print_NumberSymbol
+    _print_NumberSymbol = _print_Integer
 
     def _print_Pow(self, expr):
+        out = _power(self, expr, f"sqrt{self.sfx}", self.literal(1))
+        if out is not None:
+            return out
         base, exp = expr.as_base_exp()
-        one = self.literal(1)
-        b = self.parenthesize(base, 1000)   # always safe to repeat
-        if exp == sp.Rational(1, 2):
-            return f"sqrt{self.sfx}({self._print(base)})"
-        if exp == -sp.Rational(1, 2):
-            return f"({one}/sqrt{self.sfx}({self._print(base)}))"
-        if exp.is_Integer and 0 < abs(int(exp)) <= MAX_PRODUCT_POWER:
-            prod = "*".join([b] * abs(int(exp)))
-            return f"({prod})" if exp > 0 else f"({one}/({prod}))"
-        if exp.is_Rational and exp.q == 2 and abs(exp.p) <= 2 * MAX_PRODUCT_POWER + 1:
-            whole = sp.Pow(base, int(exp.p) // 2) if exp > 0 else sp.Pow(base, -((-int(exp.p)) // 2))
-            return f"({self._print(whole)}*sqrt{self.sfx}({self._print(base)}))" if exp > 0 else \
-                f"({one}/({self._print(sp.Pow(base, (-int(exp.p)) // 2))}*sqrt{self.sfx}({self._print(base)})))"
         return f"pow{self.sfx}({self._print(base)}, {self._print(exp)})"
+
+    def _print_sign(self, expr):
+        zero, one = self.literal(0), self.literal(1)
+        a = self._print(expr.args[0])
+        return f"(({a}) > {zero} ? {one} : (({a}) < {zero} ? -{one} : {zero}))"
+
+    def _print_Function(self, expr):
+        if expr.func.__name__ in self.known_functions:
+            return super()._print_Function(expr)
+        raise Unsupported(f"C: no C99 function for {expr.func.__name__}")
+
+    def emptyPrinter(self, expr):
+        raise Unsupported(f"C: cannot print {type(expr).__name__}")
+
+
+_SCIPY = {"erf": "erf", "erfc": "erfc", "gamma": "gamma", "erfi": "erfi"}
 
 
 class PyPrinter(NumPyPrinter):
-    """NumPy printer with float literals (no `1/3` in the generated module)."""
+    """NumPy printer with float literals (no `1/3` in the generated module);
+    special functions from scipy.special (vectorised)."""
 
     def __init__(self, names=None):
         super().__init__({"fully_qualified_modules": True})
         self.names = names or {}
 
+    def _print(self, expr, **kwargs):
+        if expr is sp.nan:           # numpy.select's default (never selected: the last condition is True)
+            return "numpy.nan"
+        if _is_constant(expr):
+            return double_literal(expr)
+        return super()._print(expr, **kwargs)
+
     def _print_Symbol(self, expr):
         return self.names.get(expr, expr.name)
 
@@ -92,24 +151,52 @@ class PyPrinter(NumPyPrinter):
 
     _print_Rational = _print_Integer
     _print_Float = _print_Integer
-
-    def _print_NumberSymbol(self, expr):
-        return double_literal(expr)
-
-    _print_Pi = _print_NumberSymbol
-    _print_Exp1 = _print_NumberSymbol
+    _print_NumberSymbol = _print_Integer
 
     def _print_Pow(self, expr, rational=False):
+        out = _power(self, expr, "numpy.sqrt", "1.0")
+        if out is not None:
+            return out
         base, exp = expr.as_base_exp()
-        if exp == sp.Rational(1, 2):
-            return f"numpy.sqrt({self._print(base)})"
-        if exp == -sp.Rational(1, 2):
-            return f"(1.0/numpy.sqrt({self._print(base)}))"
-        if exp.is_Integer and 0 < abs(int(exp)) <= MAX_PRODUCT_POWER:
-            b = self.parenthesize(base, 1000)
-            prod = "*".join([b] * abs(int(exp)))
-            return f"({prod})" if exp > 0 else f"(1.0/({prod}))"
-        return super()._print_Pow(expr, rational=rational)
+        return f"numpy.power({self._print(base)}, {self._print(exp)})"
+
+    def _special(self, expr):
+        return f"scipy.special.{_SCIPY[expr.func.__name__]}({self._print(expr.args[0])})"
+
+    _print_erf = _special
+    _print_erfc = _special
+    _print_gamma = _special
+    _print_erfi = _special
+
+    def _print_loggamma(self, expr):
+        return f"scipy.special.gammaln({self._print(expr.args[0])})"
+
+    def _print_Abs(self, expr):
+        return f"numpy.abs({self._print(expr.args[0])})"
+
+    def _print_sign(self, expr):
+        return f"numpy.sign({self._print(expr.args[0])})"
+
+    def _minmax(self, expr, fn):
+        out = self._print(expr.args[-1])
+        for a in reversed(expr.args[:-1]):
+            out = f"numpy.{fn}({self._print(a)}, {out})"
+        return out
+
+    def _print_Min(self, expr):
+        return self._minmax(expr, "minimum")
+
+    def _print_Max(self, expr):
+        return self._minmax(expr, "maximum")
+
+    def _print_Function(self, expr):
+        known = self.known_functions.get(expr.func.__name__)
+        if isinstance(known, str) and not known.startswith("math."):    # math.* does not vectorise
+            return super()._print_Function(expr)
+        raise Unsupported(f"Python: no vectorised function for {expr.func.__name__}")
+
+    def emptyPrinter(self, expr):
+        raise Unsupported(f"Python: cannot print {type(expr).__name__}")
 
 
 def cse_lines(expr, printer, declare, prefix="x"):

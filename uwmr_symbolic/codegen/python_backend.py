@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .law import RHO, THRESHOLDS, LawModel
+from .law import LT, RHO, ST, THRESHOLDS, LawModel
 from .printers import PyPrinter, cse_lines, double_literal
 from .. import e1 as E1, e2 as E2
 from ..univariate import T
@@ -30,6 +30,8 @@ class PythonConfig:
 
 def _function(name, arg, expr, printer):
     lines, value = cse_lines(expr, printer, lambda n, c: f"{n} = {c}")
+    if expr.has(ST):     # s = 1/t kept finite, as in C
+        lines.insert(0, "st = numpy.minimum(1.0 / tt, 1.7976931348623157e+308)")
     first = arg.split(",")[0]
     tail = f" + 0.0 * {first}" if not expr.free_symbols else ""   # keep the array shape
     return [f"def {name}({arg}):", *[f"    {ln}" for ln in lines], f"    return {value}{tail}"]
@@ -46,8 +48,10 @@ def _masks(branches, var):
     return out
 
 
-def render(env, model: LawModel, context: dict, config: PythonConfig = PythonConfig()) -> dict[str, str]:
-    pr = PyPrinter({RHO: "rho", T: "tt", E1: "e1", E2: "e2"})
+def render(env, model: LawModel, context: dict, config: PythonConfig | None = None) -> dict[str, str]:
+    if config is None:
+        config = PythonConfig(*model.thresholds["double"])
+    pr = PyPrinter({RHO: "rho", T: "tt", LT: "lt", ST: "st", E1: "e1", E2: "e2"})
     functions = []
     ctx = dict(context, cfg=config, radial=model.radial,
                tiny_lit=double_literal(config.tiny), far_lit=double_literal(config.far),
@@ -55,15 +59,16 @@ def render(env, model: LawModel, context: dict, config: PythonConfig = PythonCon
                cut=double_literal(config.sinc_cut))
     if not model.radial:
         functions += _function("_g_general", "e1, e2", model.general, pr)
-        ctx.update(functions=functions)
+        ctx.update(functions=functions, needs_scipy=any("scipy." in ln for ln in functions))
         return {f"{model.stem}.py": env.get_template("python_module.py.j2").render(ctx)}
     mid = []
     for i, (br, cond) in enumerate(zip(model.mid, _masks(model.mid, "rho"))):
         functions += _function(f"_H{i}", "rho", br.expr, pr) + [""]
         mid.append(dict(fn=f"_H{i}", cond=cond))
     far = []
+    uses_lt = any(br.expr.has(LT) for br in model.far)
     for i, (br, cond) in enumerate(zip(model.far, _masks(model.far, "tt"))):
-        functions += _function(f"_D{i}", "tt", br.expr, pr) + [""]
+        functions += _function(f"_D{i}", "tt, lt" if uses_lt else "tt", br.expr, pr) + [""]
         far.append(dict(fn=f"_D{i}", cond=cond, k=br.k))
     tiny = None
     if model.tiny is not None:
@@ -71,5 +76,6 @@ def render(env, model: LawModel, context: dict, config: PythonConfig = PythonCon
     h_const = None
     if len(model.mid) == 1 and not model.mid[0].expr.free_symbols:
         h_const = double_literal(model.mid[0].expr)
-    ctx.update(functions=functions, mid=mid, far=far, tiny_term=tiny, h_const=h_const)
+    ctx.update(functions=functions, mid=mid, far=far, tiny_term=tiny, h_const=h_const,
+               needs_scipy=any("scipy." in ln for ln in functions), uses_lt=uses_lt)
     return {f"{model.stem}.py": env.get_template("python_module.py.j2").render(ctx)}

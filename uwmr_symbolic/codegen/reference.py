@@ -27,6 +27,7 @@ import flint
 import mpmath
 import numpy as np
 import sympy as sp
+from sympy.codegen.cfunctions import expm1, log1p
 
 from .. import e1 as E1, e2 as E2
 from ..univariate import prepare
@@ -83,10 +84,24 @@ def _arb_fn(expr: sp.Expr):
         return lambda a, b: base(a, b) ** ex(a, b)
     names = {sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.tanh: "tanh", sp.sinh: "sinh",
              sp.cosh: "cosh", sp.exp: "exp", sp.log: "log", sp.atan: "atan", sp.asinh: "asinh",
-             sp.Abs: "__abs__"}
+             sp.Abs: "__abs__", sp.erf: "erf", sp.erfc: "erfc", sp.gamma: "gamma", sp.acosh: "acosh",
+             sp.atanh: "atanh", sp.asin: "asin", sp.acos: "acos", sp.loggamma: "lgamma",
+             log1p: "log1p", expm1: "expm1"}
     if type(expr) in names:
         (f,), name = args, names[type(expr)]
         return lambda a, b: getattr(f(a, b), name)()
+    if isinstance(expr, (sp.Min, sp.Max)):
+        name = "min" if isinstance(expr, sp.Min) else "max"
+
+        def minmax(a, b, fs=args):
+            out = fs[0](a, b)
+            for f in fs[1:]:
+                out = getattr(out, name)(f(a, b))
+            return out
+        return minmax
+    if isinstance(expr, sp.sign):
+        (f,) = args
+        return lambda a, b: f(a, b).sgn()
     if isinstance(expr, sp.Piecewise):
         branches = [(_arb_fn(v), _arb_cond(c)) for v, c in expr.args]
 
@@ -171,7 +186,19 @@ class Law:
             flint.ctx.prec = old
 
     def g(self, e1: float, e2: float):
-        return adaptive(self._g, e1, e2)
+        """g(e1, e2); at the origin, where the derivative as derived may be
+        0/0 (a norm sqrt(rho) in f), g(0, 0) = 0: g is continuous (P1) and
+        g(e1, 0) -> 0 (P8), so this is the value for every design with P1
+        and P8 (the generated code returns 0 there for every design)."""
+        try:
+            val = adaptive(self._g, e1, e2)
+        except (ZeroDivisionError, ValueError, ArithmeticError):
+            if e1 == 0 and e2 == 0:
+                return flint.arb(0)
+            raise
+        if e1 == 0 and e2 == 0 and not val.is_finite():
+            return flint.arb(0)
+        return val
 
     def evaluate(self, x, cache=None):
         """Reference for one input row x = (e1, e2, e3, vr, wr, k1, k2, lam) of
@@ -216,13 +243,14 @@ def _to_float(x) -> float:
     return float(m)
 
 
-def table(law: Law, inputs: np.ndarray) -> dict:
+def table(law: Law, inputs: np.ndarray, cache: dict | None = None) -> dict:
     """Reference for rows of 8 inputs: exact v and w as double-double
     (v_hi + v_lo; v_hi = +-inf beyond the double range) and the magnitudes of
-    the terms (the tolerance scales before the floor, see `errors`)."""
+    the terms (the tolerance scales before the floor, see `errors`).  `cache`
+    (a dict) may be shared between calls for the same law."""
     n = len(inputs)
     out = {k: np.zeros(n) for k in ("v_hi", "v_lo", "w_hi", "w_lo", "scale_v", "scale_w")}
-    cache = {}
+    cache = {} if cache is None else cache
     old = flint.ctx.prec
     for i in range(n):
         V, W, sv, sw = law.evaluate(inputs[i], cache)
