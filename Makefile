@@ -4,7 +4,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test bench clean generate embedded paper figures fuzz-codegen
+.PHONY: demo test bench clean generate embedded paper figures fuzz-codegen mutate
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -53,3 +53,7 @@ figures: $(STAMP)
 
 clean:
 	rm -rf $(VENV) build *.egg-info
+
+# Hand-written mutants of the trusted kernel, each to be killed by its fast tests (about 10 min).
+mutate: $(STAMP)
+	$(BIN)/python tests/kernel_mutation_check.py
