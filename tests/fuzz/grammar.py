@@ -482,5 +482,7 @@ def designs():
 def design_source(case: Case) -> str:
     """A design file that rebuilds exactly `case.f` (srepr keeps every Float's bits)."""
     doc = f"{case.family}: {case.note}\nf = {case.f}".replace('"""', "'''").replace("\\", "\\\\")
-    return (f'"""{doc}"""\nfrom sympy import *\n\n'
+    return (f'"""{doc}"""\nfrom sympy import *\n'
+            "from sympy.functions.elementary.piecewise import ExprCondPair\n"
+            "from sympy.core.relational import Equality, StrictLessThan, LessThan, StrictGreaterThan, GreaterThan\n\n"
             f"f = {sp.srepr(case.f)}\n")
