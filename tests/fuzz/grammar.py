@@ -43,7 +43,8 @@ class Case:
     family: str
     f: sp.Expr
     truth: dict                     # P1..P8 -> True / False / None
-    kf: sp.Expr | None = None       # exact sup |df/de2| (sp.oo when infinite); None: not known
+    kf: sp.Expr | None = None       # sup |df/de2| (sp.oo: infinite; None: not known); a Float in it
+                                    # stands for its exact binary value
     radii: list = field(default_factory=list)   # exact radii of circle boundaries
     zeros: list = field(default_factory=list)   # exact points (e1, e2) where f = 0, e != 0
     note: str = ""
@@ -126,7 +127,7 @@ def coefficients(draw, allow_float=True):
     if allow_float and draw(st.booleans()):
         x = draw(st.sampled_from([0.1 + 0.2, 1 / 3.0, math.e, math.pi / 4, 0.7071067811865476,
                                   2 ** -0.5, 0.1, 2.5, 1e-3, 1 / 7]))
-        return fl(x), binary(x)
+        return fl(x), fl(x)        # the second is for kf: Floats there are read by the oracle
     q = draw(st.sampled_from([R(1), R(1, 2), R(3), R(2, 7), R(1, 1000), R(5, 3)]))
     return q, q
 
@@ -240,7 +241,7 @@ def elliptic_designs(draw):
     q = a * e1 ** 2 + 2 * h * e1 * e2 + b * e2 ** 2
     f = c * G(q)
     g = grow(RHO_GROWTH)
-    kf = sp.oo if not kf_finite(g) else (None if ksup is None else c_ex * ksup * sp.sqrt(b_ex))
+    kf = sp.oo if not kf_finite(g) else (None if ksup is None else c_ex * ksup * sp.sqrt(b))
     t = {"P1": kf_finite(g), "P2": True, "P3": g is not None, "P4": False, "P5": h == 0,
          "P6": h == 0 and dG_bounded(g), "P7": True, "P8": h == 0}
     return Case("elliptic", f, t, kf, note=f"{name}, a={a}, b={b}, h={h}")
@@ -447,9 +448,8 @@ def classic_designs(draw):
     """Fixed designs from the issue tracker, with their truth."""
     which = draw(st.sampled_from(["cube4", "zero-pow", "zero-pow-jump", "log-e"]))
     if which == "log-e":       # log(math.e + rho) - 1: math.e < e, so f(0) < 0
-        ef = binary(math.e)
         t = radial_truth((Fraction(0), Fraction(1)), offset_sign=-1)
-        return Case("classic", sp.log(fl(math.e) + RHO) - 1, t, 1 / sp.sqrt(ef), note=which)
+        return Case("classic", sp.log(fl(math.e) + RHO) - 1, t, 1 / sp.sqrt(fl(math.e)), note=which)
     if which == "cube4":       # |rho - 4|^3: C^2, f(0) = 64
         f = (RHO ** 2 - 8 * RHO + 16) ** R(3, 2)
         t = {"P1": False, "P2": False, "P3": False, "P4": True, "P5": False, "P6": False,
