@@ -36,6 +36,7 @@ class Stats:
     false_refuted: int = 0
     contradictions: list = field(default_factory=list)     # (path, case, Contradiction)
     seconds: float = 0.0
+    state_leaks: list = field(default_factory=list)   # failed in a used worker, fine in a fresh one
 
     def unexplained(self):
         return [(p, case, c) for p, case, c in self.contradictions if c.known is None]
@@ -58,6 +59,7 @@ class Stats:
             f"wrong refutations:  {self.count('wrong refutation')} ({self.count('wrong refutation', True)} known)",
             f"wrong kf claims:    {self.count('wrong kf')} ({self.count('wrong kf', True)} known)",
             f"crashes / hangs / rejected: {self.count('crash')} / {self.count('hang')} / {self.count('unusable')}",
+            f"hang/death only in a reused process (fine in a fresh one): {len(self.state_leaks)}",
             f"true properties (known by construction) proved: {self.true_proved}/{self.true_known} = {share:.1%}",
             f"false properties refuted: {self.false_refuted}/{self.false_known} = {rshare:.1%}",
         ]
@@ -89,6 +91,15 @@ def run_profile(examples: int, seed: int | None = 0, timeout: float = 10.0, keep
             path = work / f"d{n:05d}.py"
             path.write_text(design_source(case))
             result = verifier.verify(path, timeout)
+            if result.get("hang") or result.get("crash") or result.get("seconds", 0) > timeout / 2:
+                verifier.close()                 # a fresh process for the next design (see worker.py)
+            if result.get("hang") or (result.get("crash") or "").startswith("worker process died"):
+                # does it hang or die on its own, or only after earlier designs in the same process?
+                retry = verifier.verify(path, timeout)
+                verifier.close()
+                if not retry.get("hang") and not (retry.get("crash") or "").startswith("worker process died"):
+                    stats.state_leaks.append((path.name, "hang" if result.get("hang") else result["crash"]))
+                    result = retry
             found = check(case, result)
             stats.tried += 1
             stats.by_family[case.family] += 1
