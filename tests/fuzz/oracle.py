@@ -262,13 +262,22 @@ class Evidence:
             return (c * mpmath.exp(t), s * mpmath.exp(t)) if g(t) <= g(mpmath.log(r)) else (x, y)
 
 
-def _fr(s):
-    return None if s is None else Fraction(s)
+def _bound(s):
+    """A kf bound from the worker (Fraction text or srepr) at 100 digits."""
+    if s is None:
+        return None
+    try:
+        q = Fraction(s)
+        return mpmath.mpf(q.numerator) / q.denominator
+    except ValueError:
+        return mpmath.mpf(str(sp.N(sp.sympify(s), 110)))
 
 
 def check(case: Case, result: dict) -> list[Contradiction]:
     if result.get("hang"):
         return [Contradiction("-", "hang", "the verifier outlived its time limit by the hard margin")]
+    if result.get("harness"):
+        return [Contradiction("-", "harness error", result["harness"])]
     if result.get("crash"):
         return [Contradiction("-", "crash", result["crash"])]
     if "error" in result:
@@ -304,10 +313,8 @@ def check_kf(case: Case, kf: dict | None, ev: Evidence) -> list[Contradiction]:
     if kf is None:
         return []
     out = []
-    lo, hi = _fr(kf["lower"]), _fr(kf["upper"])
     with mpmath.workdps(100):
-        hi_mp = None if hi is None else mpmath.mpf(hi.numerator) / hi.denominator
-        lo_mp = None if lo is None else mpmath.mpf(lo.numerator) / lo.denominator
+        lo_mp, hi_mp = _bound(kf["lower"]), _bound(kf["upper"])
         tol = mpmath.mpf("1e-40")
         if case.kf is not None and case.kf != sp.oo:
             true = _mp_of(case.kf)
@@ -318,7 +325,7 @@ def check_kf(case: Case, kf: dict | None, ev: Evidence) -> list[Contradiction]:
                 out.append(Contradiction("kf", "wrong kf", f"true kf = {case.kf} = {mpmath.nstr(true, 25)} "
                                          f"< certified lower bound {mpmath.nstr(lo_mp, 25)}"))
             if kf["exact"] is not None:
-                claimed = mpmath.mpf(str(sp.N(sp.sympify(kf["exact"]), 60)))
+                claimed = mpmath.mpf(str(sp.N(sp.sympify(kf.get("exact_srepr") or kf["exact"]), 60)))
                 if abs(claimed - true) > tol * true:
                     out.append(Contradiction("kf", "wrong kf", f"claimed exact kf = {kf['exact']} = "
                                              f"{mpmath.nstr(claimed, 25)}, true kf = {case.kf} = {mpmath.nstr(true, 25)}"))
@@ -399,7 +406,7 @@ def classify(case: Case, result: dict, c: Contradiction) -> str | None:
     if c.kind == "wrong kf" and "claimed exact" in c.evidence and f.atoms(sp.Float):
         kfe = result["kf"]["exact"]
         if kfe is not None and case.kf not in (None, sp.oo):
-            rel = abs(_mp_of(sp.sympify(kfe)) / _mp_of(case.kf) - 1)
+            rel = abs(_mp_of(sp.sympify(result["kf"].get("exact_srepr") or kfe)) / _mp_of(case.kf) - 1)
             if rel < 1e-12:
                 return "nsimplify-kf"
     if c.kind == "false proof" and c.prop in ("P1", "P5", "P6", "P7") and _origin_gap(f):

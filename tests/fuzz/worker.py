@@ -23,7 +23,13 @@ HERE = Path(__file__).resolve().parent
 
 
 def _frac(x):
-    return None if x is None else f"{x.numerator}/{x.denominator}"
+    """A bound of kf as exact text: a Fraction, or the SymPy number that
+    `kf.scale` puts there when it claims an exact value."""
+    if x is None:
+        return None
+    if hasattr(x, "numerator") and not hasattr(x, "free_symbols"):
+        return f"{x.numerator}/{x.denominator}"
+    return __import__("sympy").srepr(x)
 
 
 def _answer(path: str, timeout: float) -> dict:
@@ -51,8 +57,11 @@ def _answer(path: str, timeout: float) -> dict:
 def main():
     for line in sys.stdin:
         req = json.loads(line)
-        out = _answer(req["path"], req["timeout"])
-        sys.stdout.write(json.dumps(out) + "\n")
+        try:
+            text = json.dumps(_answer(req["path"], req["timeout"]))
+        except BaseException as exc:      # a bug of this harness, not of the verifier
+            text = json.dumps({"harness": f"{exc.__class__.__name__}: {exc}"})
+        sys.stdout.write(text + "\n")
         sys.stdout.flush()
 
 
