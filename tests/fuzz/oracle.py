@@ -279,7 +279,9 @@ def check(case: Case, result: dict) -> list[Contradiction]:
     if result.get("harness"):
         return [Contradiction("-", "harness error", result["harness"])]
     if result.get("crash"):
-        return [Contradiction("-", "crash", result["crash"])]
+        c = Contradiction("-", "crash", result["crash"])
+        c.known = classify(case, result, c)
+        return [c]
     if "error" in result:
         return [Contradiction("-", "unusable", f"a valid design was rejected: {result['error']}")]
     out = []
@@ -352,8 +354,13 @@ def _still_wrong_when_read15(case, result, c):
     """Re-check the claim against f with 15-digit floats: is it still wrong?"""
     f15 = read15(case.f)
     if c.prop == "kf":
-        if case.kf is None or case.kf == sp.oo:
+        if case.kf == sp.oo:
             return True
+        if case.kf is None:     # only numeric evidence: is the sampled maximum of f15 also too big?
+            best = Evidence(case, f15).kf_lower()
+            with mpmath.workdps(100):
+                hi = _bound(result["kf"]["upper"])
+                return best is not None and hi is not None and best[0] > hi * (1 + mpmath.mpf("1e-40"))
         kf15 = read15(case.kf)
         sub = Case(case.family, f15, case.truth, kf15, case.radii, case.zeros, case.note)
         return bool(check_kf(sub, result["kf"], Evidence(sub)))

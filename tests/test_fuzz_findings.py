@@ -1,0 +1,96 @@
+"""Reproducers of the unsound answers the soundness fuzzer found
+(`tests/adversarial/fuzz_findings/`, each file's docstring gives the design,
+the wrong claim and the independent evidence).  Each test asserts the right
+behaviour and is a strict xfail while the verifier still gets it wrong: when
+a fix lands the test XPASSes, fails, and the xfail (and the matching class in
+`fuzz/oracle.py`'s KNOWN) must go."""
+import math
+from pathlib import Path
+
+import mpmath
+import pytest
+import sympy as sp
+
+from fuzz.oracle import _bound
+from fuzz.worker import Verifier
+
+HERE = Path(__file__).parent / "adversarial" / "fuzz_findings"
+
+
+@pytest.fixture(scope="module")
+def verify():
+    cache = {}
+    with Verifier() as v:
+        def run(name, timeout=20.0):
+            if (name, timeout) not in cache:
+                cache[name, timeout] = v.verify(HERE / name, timeout)
+            return cache[name, timeout]
+        yield run
+
+
+def status(result, prop):
+    assert "properties" in result, result
+    return result["properties"][prop]["status"]
+
+
+def kf_encloses(result, true_value):
+    kf = result["kf"]
+    with mpmath.workdps(100):
+        lo, hi = _bound(kf["lower"]), _bound(kf["upper"])
+        return lo <= true_value <= hi
+
+
+@pytest.mark.xfail(strict=True, reason="issue 9: Float read as a 15-digit decimal")
+def test_float_offset_below_zero_at_the_origin_is_not_proved(verify):
+    r = verify("float_offset_sqrt.py")
+    assert status(r, "P2") != "proved" and status(r, "P3") != "proved"
+
+
+@pytest.mark.xfail(strict=True, reason="issue 9: Float read as a 15-digit decimal")
+def test_math_e_design_is_not_proved_positive(verify):
+    assert status(verify("log_e_float.py"), "P3") != "proved"
+
+
+@pytest.mark.xfail(strict=True, reason="issue 9: Float read as a 15-digit decimal")
+def test_math_e_design_kf_enclosure_contains_the_true_kf(verify):
+    with mpmath.workdps(100):
+        assert kf_encloses(verify("log_e_float.py"), 1 / mpmath.sqrt(mpmath.mpf(math.e)))
+
+
+@pytest.mark.xfail(strict=True, reason="issue 9: kf.scale runs nsimplify (and the Float is read with 15 digits)")
+def test_elliptic_kf_is_not_made_exactly_one(verify):
+    r = verify("elliptic_nsimplify_kf.py")
+    with mpmath.workdps(100):
+        true = mpmath.sqrt(2) * mpmath.mpf(0.7071067811865476)       # 1.0000000000000000684
+        assert kf_encloses(r, true)
+    assert r["kf"]["exact"] != "1"
+
+
+@pytest.mark.xfail(strict=True, reason="issue 9: a radicand's zero is taken as a violation of 'nonnegative'")
+def test_c2_power_of_a_perfect_square_is_not_refuted_on_p7(verify):
+    r = verify("radicand_cube4.py")
+    assert status(r, "P7") != "refuted"
+    assert status(r, "P2") == "refuted" and status(r, "P3") == "refuted"       # these are right
+
+
+@pytest.mark.xfail(strict=True, reason="issue 9: a 'nonzero' guard out of budget is reported as a singularity")
+def test_design_with_every_property_true_is_not_refuted(verify):
+    r = verify("radicand_all_true.py", timeout=40.0)
+    assert [p for p in r["properties"] if status(r, p) == "refuted"] == []
+
+
+@pytest.mark.xfail(strict=True, reason="issue 9: 0**rho makes certify_kf compare nan")
+def test_zero_power_does_not_crash(verify):
+    r = verify("zero_pow_crash.py")
+    assert "crash" not in r and "properties" in r, r.get("crash")
+
+
+def test_every_finding_file_is_a_loadable_design_with_a_docstring():
+    from uwmr_symbolic.design import load_design
+    files = sorted(HERE.glob("*.py"))
+    assert len(files) >= 6
+    for path in files:
+        d = load_design(path)
+        assert isinstance(d.f, sp.Expr)
+        doc = path.read_text().split('"""')[1]
+        assert any(w in doc for w in ("FALSE PROOF", "WRONG", "CRASH")), path.name
