@@ -444,6 +444,19 @@ def dip_designs(draw):
 
 
 @st.composite
+def mixed_sign_designs(draw):
+    """A(rho) - c B(rho): positivity and monotonicity are not known by
+    construction; only the oracle's numeric search can contradict a proof."""
+    a, b = draw(atoms()), draw(atoms(depth=1))
+    c = draw(st.sampled_from([R(1, 2), R(9, 10), R(1), R(11, 10), R(2), R(1, 100)]))
+    f = a.expr - c * b.expr
+    both_finite = kf_finite(a.growth) and kf_finite(b.growth)
+    t = {"P1": True if both_finite else None, "P2": True, "P3": None, "P4": True, "P5": None,
+         "P6": None, "P7": True, "P8": True}
+    return Case("mixed", f, t, None, note=f"c = {c}")
+
+
+@st.composite
 def classic_designs(draw):
     """Fixed designs from the issue tracker, with their truth."""
     which = draw(st.sampled_from(["cube4", "zero-pow", "zero-pow-jump", "log-e"]))
@@ -470,7 +483,7 @@ FAMILIES = {
     "elliptic": elliptic_designs, "separable": separable_designs, "cross": cross_term_designs,
     "half-plane": half_plane_designs, "circle-piecewise": circle_piecewise_designs,
     "point-value": point_value_designs, "origin": origin_designs, "dip": dip_designs,
-    "classic": classic_designs,
+    "classic": classic_designs, "mixed": mixed_sign_designs,
 }
 
 
