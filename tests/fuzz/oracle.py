@@ -399,7 +399,7 @@ KNOWN = {
     "nsimplify-kf": "issue 9: kf.scale runs nsimplify, an exact kf a few ulps off the truth",
     "origin-value": "issue 9: the value at the origin is never compared with the limit F(0+)",
     "point-value": "issue 9: a value on a circle (Eq(rho, c)) is not compared with the one-sided limits",
-    "radicand-zero": "issue 9: a zero of a radicand is taken as a violation of 'nonnegative'",
+    "radicand-zero": "issue 9: continuous_on guards: a radicand with a double zero is taken as a singularity",
     "zero-pow": "issue 9: 0**rho crashes certify_kf (nan compared)",
 }
 
