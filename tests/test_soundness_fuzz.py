@@ -104,6 +104,20 @@ def test_oracle_flags_refutations_of_true_properties_and_accepts_honest_verdicts
     assert [(c.prop, c.kind) for c in found] == [("P5", "wrong refutation")]
 
 
+def test_oracle_rechecks_the_witness_of_a_refutation():
+    case = Case("mixed", sp.sqrt(1 + RHO) - sp.Rational(9, 10) * sp.log(1 + RHO) - 1, {})
+    def refuted(prop, x, reason):
+        r = _result({})
+        r["properties"][prop] = {"status": "refuted", "reason": reason, "witness": {"e1": x, "e2": "0"}}
+        return oracle.check(case, r)
+    # F(2) = sqrt(5) - 0.9 log 5 - 1 = -0.212... < 0 and F'(1) = 1/sqrt(2) - 0.9 < 0: right refutations
+    assert refuted("P3", "2", "f is not positive: fails at s = 2") == []
+    assert refuted("P5", "1", "F'(s) > 0 fails at |e| = 1: fails at s = 1") == []
+    # F(10) = sqrt(101) - 0.9 log 101 - 1 = 4.89 > 0 and F'(10) > 0: the witnesses are no counterexamples
+    assert [c.kind for c in refuted("P3", "10", "f is not positive: fails at s = 10")] == ["wrong refutation"]
+    assert [c.kind for c in refuted("P5", "10", "F'(s) > 0 fails at |e| = 10: fails at s = 10")] == ["wrong refutation"]
+
+
 def test_oracle_numeric_searches_catch_non_smooth_points_without_truth():
     # |e| and a jump on the circle |e| = 1: no truth given, numbers alone must refute the proofs
     cases = [Case("power", sp.sqrt(RHO), {}),

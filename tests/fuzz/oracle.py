@@ -301,10 +301,39 @@ def check(case: Case, result: dict) -> list[Contradiction]:
         elif status == "refuted" and truth is True:
             out.append(Contradiction(p, "wrong refutation", f"true by construction ({case.family}: {case.note}); "
                                      f"verifier: {result['properties'][p]['reason'][:300]}"))
+        elif status == "refuted":
+            bad = check_witness(ev, p, result["properties"][p])
+            if bad:
+                out.append(Contradiction(p, "wrong refutation", bad))
     out += check_kf(case, result.get("kf"), ev)
     for c in out:
         c.known = classify(case, result, c)
     return out
+
+
+def check_witness(ev: Evidence, prop: str, verdict: dict) -> str | None:
+    """Re-check a refutation's witness point (when it names one) at 50 and
+    100 digits: a description of why it is no counterexample, or None."""
+    w, reason = verdict.get("witness"), verdict.get("reason", "")
+    if prop == "P2":
+        v = sp.N(ev.num.fx.subs({e1: 0, e2: 0}), 60)
+        return f"f(0, 0) = 0 exactly, refuted with: {reason[:200]}" if v == 0 else None
+    if not isinstance(w, dict) or "e1" not in w or "e2" not in w or "exist" in reason or "jump" in reason:
+        return None
+    try:
+        x, y = sp.Rational(sp.sympify(w["e1"])), sp.Rational(sp.sympify(w["e2"]))
+    except (TypeError, ValueError, sp.SympifyError):
+        return None
+    if prop == "P3" and "not positive" in reason:
+        v = ev.num.both("f", x, y)
+        if v is not None and v > mpmath.mpf("1e-40"):
+            return f"witness ({x}, {y}) has f = {mpmath.nstr(v, 15)} > 0 (50 and 100 digits); verifier: {reason[:200]}"
+    if prop in ("P5", "P6") and x != 0 and ("fails at" in reason or "< 0 at" in reason):
+        v = ev.num.both("f1", x, y)
+        if v is not None and v * sp.sign(x) > mpmath.mpf("1e-40"):
+            return (f"witness ({x}, {y}) has df/de1 = {mpmath.nstr(v, 15)}, same sign as e1 (50 and 100 digits); "
+                    f"verifier: {reason[:200]}")
+    return None
 
 
 def _mp_of(expr, dps=60):
