@@ -457,6 +457,32 @@ def mixed_sign_designs(draw):
 
 
 @st.composite
+def far_dip_designs(draw):
+    """G(rho) - delta exp(-(rho - R)^2) with a bump far out (|e| = 10, 100, 1e4):
+    f(0, 0) = -delta exp(-R^2) is not 0 (but below 1e-4000), f < 0 near the
+    origin, and f' < 0 just beyond rho = R (delta sqrt(2/e) > G'(R), G concave)."""
+    name = draw(st.sampled_from(["log1p", "sqrt1p"]))
+    G = BLOCKS[name][0](RHO)
+    Rr = draw(st.sampled_from([R(100), R(10 ** 4), R(10 ** 8)]))
+    GR = sp.N(G.subs({e1: sp.sqrt(Rr), e2: 0}), 30)
+    delta = R(Fraction(str(GR)).limit_denominator(1000)) * draw(st.sampled_from([R(1, 2), R(2), R(1)]))
+    f = G - delta * sp.exp(-(RHO - Rr) ** 2)
+    t = {"P1": True, "P2": False, "P3": False, "P4": True, "P5": False, "P6": False, "P7": True, "P8": True}
+    return Case("far-dip", f, t, None, radii=[sp.sqrt(Rr)], note=f"{name}, bump at rho = {Rr}, delta = {delta}")
+
+
+@st.composite
+def almost_radial_designs(draw):
+    """G(rho) + eps e1^2 e2^2/(1 + rho^2), eps tiny: not radial (P4 false)."""
+    expr, growth, _ = draw(smooth_radial(max_terms=1, allow_float=False))
+    eps = R(1, 10 ** draw(st.sampled_from([3, 10, 20])))
+    f = expr + eps * e1 ** 2 * e2 ** 2 / (1 + RHO ** 2)
+    t = {"P1": kf_finite(growth), "P2": True, "P3": growth is not None, "P4": False, "P5": None,
+         "P6": None, "P7": True, "P8": True}
+    return Case("almost-radial", f, t, sp.oo if not kf_finite(growth) else None, note=f"eps = {eps}")
+
+
+@st.composite
 def classic_designs(draw):
     """Fixed designs from the issue tracker, with their truth."""
     which = draw(st.sampled_from(["cube4", "zero-pow", "zero-pow-jump", "log-e"]))
@@ -483,7 +509,8 @@ FAMILIES = {
     "elliptic": elliptic_designs, "separable": separable_designs, "cross": cross_term_designs,
     "half-plane": half_plane_designs, "circle-piecewise": circle_piecewise_designs,
     "point-value": point_value_designs, "origin": origin_designs, "dip": dip_designs,
-    "classic": classic_designs, "mixed": mixed_sign_designs,
+    "classic": classic_designs, "mixed": mixed_sign_designs, "far-dip": far_dip_designs,
+    "almost-radial": almost_radial_designs,
 }
 
 
