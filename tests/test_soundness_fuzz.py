@@ -86,7 +86,7 @@ def test_oracle_sees_the_binary_value_of_a_float_and_classifies_the_15_digit_rea
 def test_oracle_flags_a_kf_enclosure_below_the_true_value_and_a_made_up_exact_value():
     c = 0.30000000000000004
     f = sp.Float(c) * sp.log(1 + RHO)           # kf = c exactly (at |e| = 1)
-    case = Case("radial", f, {}, kf=sp.Float(c))
+    case = Case("radial", f, {}, kf=grammar.kfc(c))
     found = oracle.check(case, _result({}, _kf(Fraction(3, 10), Fraction(3, 10), "3/10")))
     assert [c.kind for c in found] == ["wrong kf", "wrong kf"]
     assert all(c.known == "floats-15" for c in found)

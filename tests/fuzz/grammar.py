@@ -43,8 +43,8 @@ class Case:
     family: str
     f: sp.Expr
     truth: dict                     # P1..P8 -> True / False / None
-    kf: sp.Expr | None = None       # sup |df/de2| (sp.oo: infinite; None: not known); a Float in it
-                                    # stands for its exact binary value
+    kf: sp.Expr | None = None       # sup |df/de2| (sp.oo: infinite; None: not known); float
+                                    # constants in it are kfc placeholders
     radii: list = field(default_factory=list)   # exact radii of circle boundaries
     zeros: list = field(default_factory=list)   # exact points (e1, e2) where f = 0, e != 0
     note: str = ""
@@ -61,6 +61,19 @@ def binary(x: float) -> sp.Rational:
 def fl(x: float) -> sp.Float:
     """A float constant the way a user's `0.1 + 0.2` reaches SymPy."""
     return sp.Float(x)
+
+
+def kfc(x: float) -> sp.Symbol:
+    """A float constant inside an exact kf: a placeholder symbol (SymPy would
+    round Float * sqrt(3) or sqrt(Float) to 53 bits), replaced by the
+    oracle with the double's exact value or with its 15-digit decimal."""
+    return sp.Symbol("flt_" + x.hex(), positive=True)
+
+
+def placeholders(expr, read):
+    """expr with every kfc placeholder replaced by read(float)."""
+    return expr.xreplace({s: read(float.fromhex(s.name[4:])) for s in expr.free_symbols
+                          if s.name.startswith("flt_")})
 
 
 # ---------------------------------------------------------------- radial blocks
@@ -127,7 +140,7 @@ def coefficients(draw, allow_float=True):
     if allow_float and draw(st.booleans()):
         x = draw(st.sampled_from([0.1 + 0.2, 1 / 3.0, math.e, math.pi / 4, 0.7071067811865476,
                                   2 ** -0.5, 0.1, 2.5, 1e-3, 1 / 7]))
-        return fl(x), fl(x)        # the second is for kf: Floats there are read by the oracle
+        return fl(x), kfc(x)       # the second is for kf (see kfc)
     q = draw(st.sampled_from([R(1), R(1, 2), R(3), R(2, 7), R(1, 1000), R(5, 3)]))
     return q, q
 
@@ -230,8 +243,8 @@ def elliptic_designs(draw):
     G, grow, ksup = BLOCKS[name]
     a, a_ex = draw(st.sampled_from([(R(1), R(1)), (R(2), R(2)), (R(1, 3), R(1, 3)),
                                     (fl(0.7071067811865476), binary(0.7071067811865476))]))
-    b, b_ex = draw(st.sampled_from([(R(1), R(1)), (R(4), R(4)), (R(1, 2), R(1, 2)),
-                                    (fl(0.1 + 0.2), binary(0.1 + 0.2))]))
+    b, b_ex, b_kf = draw(st.sampled_from([(R(1), R(1), R(1)), (R(4), R(4), R(4)), (R(1, 2), R(1, 2), R(1, 2)),
+                                          (fl(0.1 + 0.2), binary(0.1 + 0.2), kfc(0.1 + 0.2))]))
     h = draw(st.sampled_from([R(0), R(0), R(1, 4), R(-1, 3)]))
     if h == 0 and a_ex == b_ex:
         h = R(1, 5)
@@ -241,7 +254,7 @@ def elliptic_designs(draw):
     q = a * e1 ** 2 + 2 * h * e1 * e2 + b * e2 ** 2
     f = c * G(q)
     g = grow(RHO_GROWTH)
-    kf = sp.oo if not kf_finite(g) else (None if ksup is None else c_ex * ksup * sp.sqrt(b))
+    kf = sp.oo if not kf_finite(g) else (None if ksup is None else c_ex * ksup * sp.sqrt(b_kf))
     t = {"P1": kf_finite(g), "P2": True, "P3": g is not None, "P4": False, "P5": h == 0,
          "P6": h == 0 and dG_bounded(g), "P7": True, "P8": h == 0}
     return Case("elliptic", f, t, kf, note=f"{name}, a={a}, b={b}, h={h}")
@@ -488,7 +501,7 @@ def classic_designs(draw):
     which = draw(st.sampled_from(["cube4", "zero-pow", "zero-pow-jump", "log-e"]))
     if which == "log-e":       # log(math.e + rho) - 1: math.e < e, so f(0) < 0
         t = radial_truth((Fraction(0), Fraction(1)), offset_sign=-1)
-        return Case("classic", sp.log(fl(math.e) + RHO) - 1, t, 1 / sp.sqrt(fl(math.e)), note=which)
+        return Case("classic", sp.log(fl(math.e) + RHO) - 1, t, 1 / sp.sqrt(kfc(math.e)), note=which)
     if which == "cube4":       # |rho - 4|^3: C^2, f(0) = 64
         f = (RHO ** 2 - 8 * RHO + 16) ** R(3, 2)
         t = {"P1": False, "P2": False, "P3": False, "P4": True, "P5": False, "P6": False,

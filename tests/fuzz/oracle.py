@@ -25,7 +25,7 @@ import sympy as sp
 
 from uwmr_symbolic import e1, e2
 
-from .grammar import PROPS, RHO, Case, binary
+from .grammar import PROPS, RHO, Case, binary, placeholders
 
 SMALL = (sp.Rational(1, 10 ** 12), sp.Rational(1, 10 ** 24))   # distances to a boundary or the origin
 
@@ -44,11 +44,13 @@ class Contradiction:
 
 def read15(f):
     """f as the verifier reads it today: every Float as its 15-digit decimal."""
+    f = placeholders(f, lambda x: sp.Rational(str(sp.Float(x))))
     return f.xreplace({a: sp.Rational(str(a)) for a in f.atoms(sp.Float)})
 
 
 def exact(f):
     """f with every Float as the exact binary value the user's double has."""
+    f = placeholders(f, binary)
     return f.xreplace({a: binary(float(a)) for a in f.atoms(sp.Float)})
 
 
@@ -139,7 +141,7 @@ class Evidence:
             if F[i] <= 0:
                 v = self.num.both("f", float(self.X[i]), float(self.Y[i]))
                 if v is not None and v < 0:
-                    return f"f({self.X[i]!r}, {self.Y[i]!r}) = {mpmath.nstr(v, 15)} (50 and 100 digits)"
+                    return f"f({float(self.X[i])!r}, {float(self.Y[i])!r}) = {mpmath.nstr(v, 15)} (50 and 100 digits)"
         return None
 
     def p4(self):
@@ -162,7 +164,7 @@ class Evidence:
             if G[i] <= 0:
                 v = self.num.both("f1", float(X[i]), float(Y[i]))
                 if v is not None and v * np.sign(X[i]) < 0:
-                    return f"df/de1({X[i]!r}, {Y[i]!r}) = {mpmath.nstr(v, 15)} (50 and 100 digits)"
+                    return f"df/de1({float(X[i])!r}, {float(Y[i])!r}) = {mpmath.nstr(v, 15)} (50 and 100 digits)"
         for y in [1.0, -0.5, 3.0, 1e-3, 100.0]:
             v = self.num.both("f1", 0, y)
             if v is not None and abs(v) > 1e-20:
@@ -176,7 +178,7 @@ class Evidence:
             if G[i] < 0:
                 v = self.num.both("f1", float(X[i]), float(Y[i]))
                 if v is not None and v / X[i] < 0:
-                    return (f"df/de1 / e1 = {mpmath.nstr(v / X[i], 15)} < 0 at ({X[i]!r}, {Y[i]!r}), "
+                    return (f"df/de1 / e1 = {mpmath.nstr(v / X[i], 15)} < 0 at ({float(X[i])!r}, {float(Y[i])!r}), "
                             f"so h < 0 (50 and 100 digits)")
         return self.jump("f1") or self.jump("f")
 
@@ -349,17 +351,18 @@ def check_kf(case: Case, kf: dict | None, ev: Evidence) -> list[Contradiction]:
         tol = mpmath.mpf("1e-40")
         if case.kf is not None and case.kf != sp.oo:
             true = _mp_of(case.kf)
+            shown = placeholders(case.kf, sp.Float)
             if hi_mp is not None and true > hi_mp * (1 + tol):
-                out.append(Contradiction("kf", "wrong kf", f"true kf = {case.kf} = {mpmath.nstr(true, 25)} "
+                out.append(Contradiction("kf", "wrong kf", f"true kf = {shown} = {mpmath.nstr(true, 25)} "
                                          f"> certified upper bound {mpmath.nstr(hi_mp, 25)}"))
             if lo_mp is not None and true < lo_mp * (1 - tol):
-                out.append(Contradiction("kf", "wrong kf", f"true kf = {case.kf} = {mpmath.nstr(true, 25)} "
+                out.append(Contradiction("kf", "wrong kf", f"true kf = {shown} = {mpmath.nstr(true, 25)} "
                                          f"< certified lower bound {mpmath.nstr(lo_mp, 25)}"))
             if kf["exact"] is not None:
                 claimed = mpmath.mpf(str(sp.N(sp.sympify(kf.get("exact_srepr") or kf["exact"]), 60)))
                 if abs(claimed - true) > tol * true:
                     out.append(Contradiction("kf", "wrong kf", f"claimed exact kf = {kf['exact']} = "
-                                             f"{mpmath.nstr(claimed, 25)}, true kf = {case.kf} = {mpmath.nstr(true, 25)}"))
+                                             f"{mpmath.nstr(claimed, 25)}, true kf = {shown} = {mpmath.nstr(true, 25)}"))
             if kf["unbounded"]:
                 out.append(Contradiction("kf", "wrong kf", f"claimed unbounded, true kf = {case.kf}"))
         if case.kf == sp.oo and hi_mp is not None:
@@ -439,7 +442,7 @@ def classify(case: Case, result: dict, c: Contradiction) -> str | None:
         return "zero-pow"
     if _lossy_floats(f) and c.kind in ("false proof", "wrong kf") and not _still_wrong_when_read15(case, result, c):
         return "floats-15"
-    if c.kind == "wrong kf" and "claimed exact" in c.evidence and f.atoms(sp.Float):
+    if c.kind == "wrong kf" and result["kf"]["exact"] is not None and "sqrt(r)" in result["kf"]["reason"]:
         kfe = result["kf"]["exact"]
         if kfe is not None and case.kf not in (None, sp.oo):
             rel = abs(_mp_of(sp.sympify(result["kf"].get("exact_srepr") or kfe)) / _mp_of(case.kf) - 1)
