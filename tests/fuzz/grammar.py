@@ -495,6 +495,49 @@ def almost_radial_designs(draw):
     return Case("almost-radial", f, t, sp.oo if not kf_finite(growth) else None, note=f"eps = {eps}")
 
 
+ORDER = {"Cinf": 99, "C2": 2, "C1": 1, "C0": 0, "jump": -1}
+
+
+@st.composite
+def chain_designs(draw):
+    """G(rho) with n = 2..4 circle boundaries, each join of a random order
+    (D > 0 terms, so f stays increasing): the smoothness is the worst join."""
+    expr, growth, _ = draw(smooth_radial(max_terms=1, allow_float=False))
+    n = draw(st.integers(2, 4))
+    cs = sorted(draw(st.lists(st.sampled_from([R(1, 4), R(1, 2), R(1), R(3, 2), R(2), R(3), R(5), R(9)]),
+                              min_size=n, max_size=n, unique=True)))
+    kinds = [draw(st.sampled_from(["C2", "C1", "C0", "jump", "Cinf"])) for _ in cs]
+    pieces, body = [], expr
+    for c, kind in zip(cs, kinds):
+        pieces.append((body, RHO < c))
+        if kind != "Cinf":
+            body = body + draw(st.sampled_from([R(1), R(1, 3)])) * _join(kind, RHO - c)
+    f = sp.Piecewise(*pieces, (body, True))
+    worst = min(ORDER[k] for k in kinds)
+    t = {"P1": worst >= 1 and kf_finite(growth), "P2": True, "P3": growth is not None,
+         "P4": True if worst >= 1 else None, "P5": worst >= 1, "P6": worst >= 1 and dG_bounded(growth),
+         "P7": worst >= 2, "P8": True}
+    kf = sp.oo if worst >= 1 and not kf_finite(growth) else None
+    return Case("chain", f, t, kf, radii=[sp.sqrt(c) for c in cs], note=", ".join(f"{k}@{c}" for c, k in zip(cs, kinds)))
+
+
+@st.composite
+def maxmin_designs(draw):
+    """Max/Min of two radial functions: one dominates everywhere (f is the
+    smooth one: every truth as for it), or they cross with different slopes."""
+    which = draw(st.sampled_from(["max-dominated", "min-dominated", "max-cross", "min-cross"]))
+    L = sp.log(1 + RHO)
+    if which == "max-dominated":      # log(1+x) >= x/(1+x), equal only at 0
+        f, t, kf = sp.Max(L, RHO / (1 + RHO)), radial_truth((Fraction(0), Fraction(1))), sp.Integer(1)
+    elif which == "min-dominated":    # log(1+x) <= x
+        f, t, kf = sp.Min(L, RHO), radial_truth((Fraction(0), Fraction(1))), sp.Integer(1)
+    else:                             # log(1+x) = x/2 at x = 2.513: slopes 0.285 and 1/2
+        f = sp.Max(L, RHO / 2) if which == "max-cross" else sp.Min(L, RHO / 2)
+        t = {"P1": False, "P2": True, "P3": True, "P4": None, "P5": False, "P6": False, "P7": False, "P8": True}
+        kf = None
+    return Case("maxmin", f, t, kf, radii=[sp.sqrt(R(2513, 1000))] if "cross" in which else [], note=which)
+
+
 @st.composite
 def classic_designs(draw):
     """Fixed designs from the issue tracker, with their truth."""
@@ -523,7 +566,7 @@ FAMILIES = {
     "half-plane": half_plane_designs, "circle-piecewise": circle_piecewise_designs,
     "point-value": point_value_designs, "origin": origin_designs, "dip": dip_designs,
     "classic": classic_designs, "mixed": mixed_sign_designs, "far-dip": far_dip_designs,
-    "almost-radial": almost_radial_designs,
+    "almost-radial": almost_radial_designs, "chain": chain_designs, "maxmin": maxmin_designs,
 }
 
 
