@@ -570,9 +570,24 @@ FAMILIES = {
 }
 
 
+def settle_origin(case: Case) -> Case:
+    """SymPy adds the constant terms of float-coefficient sums in 53-bit
+    arithmetic (c2 (sqrt(1 + u) - 1) + c1 (1 - exp(-u)) keeps c1 - c2 rounded),
+    so f(0, 0) may be a few ulps off 0: the truth follows the expression."""
+    if not case.f.atoms(sp.Float) or case.truth.get("P2") is not True:
+        return case
+    sign = _exact_sign(case.f.subs({e1: 0, e2: 0}))
+    if sign:
+        case.truth = dict(case.truth, P2=False)
+        if sign < 0:
+            case.truth["P3"] = False
+        case.note += f" (constants rounded by SymPy: f(0, 0) {'<' if sign < 0 else '>'} 0)"
+    return case
+
+
 def designs():
     """Any design of the grammar."""
-    return st.one_of(*(s() for s in FAMILIES.values()))
+    return st.one_of(*(s().map(settle_origin) for s in FAMILIES.values()))
 
 
 def design_source(case: Case) -> str:
