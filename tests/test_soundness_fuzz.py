@@ -150,6 +150,13 @@ def test_numeric_evidence_never_contradicts_a_truth_the_grammar_claims(case):
         assert best is None or best[0] <= oracle._mp_of(case.kf) * (1 + 1e-30), (case.f, case.kf, best)
 
 
+def test_truth_values_are_python_bools_even_from_sympy_comparisons():
+    a = sp.Rational(2)
+    case = Case("dip", RHO, {"P5": a ** 2 / 8 + sp.Rational(1, 10 ** 12) > a ** 2 / 8, "P6": a < 1, "P7": None})
+    assert case.truth == {"P5": True, "P6": False, "P7": None}
+    assert case.truth["P6"] is False
+
+
 def test_the_design_file_rebuilds_f_bit_for_bit():
     case = Case("x", sp.Float(0.1 + 0.2) * sp.log(1 + RHO) + sp.Piecewise((1, sp.Eq(RHO, 1)), (0, True)), {})
     ns = {}

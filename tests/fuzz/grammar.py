@@ -48,6 +48,14 @@ class Case:
     radii: list = field(default_factory=list)   # exact radii of circle boundaries
     zeros: list = field(default_factory=list)   # exact points (e1, e2) where f = 0, e != 0
     note: str = ""
+    truth15: dict | None = None     # the truth for f with every Float read as its 15-digit decimal,
+                                    # where the family knows it (classifies the known float issue)
+
+    def __post_init__(self):
+        # comparisons of SymPy numbers give SymPy booleans: make every truth a Python bool
+        for d in (self.truth, self.truth15 or {}):
+            for p, v in d.items():
+                d[p] = None if v is None else bool(v)
 
     def known(self, prop):
         return self.truth.get(prop)
@@ -539,6 +547,21 @@ def maxmin_designs(draw):
 
 
 @st.composite
+def float_power_designs(draw):
+    """c rho^p, p a float a user would compute: f = c |e|^(2p)."""
+    label, p = draw(st.sampled_from([("(0.1+0.2)/0.3", (0.1 + 0.2) / 0.3), ("0.3/(0.1*3)", 0.3 / (0.1 * 3)),
+                                     ("0.75", 0.75), ("1.5", 1.5)]))
+    c, _ = draw(coefficients(allow_float=False))
+    f = c * RHO ** fl(p)
+
+    def truth(q):                     # F(s) = c s^(2q); F'(s)/s = 2qc s^(2q-2); F''(s) ~ s^(2q-2)
+        return {"P1": False, "P2": True, "P3": True, "P4": True, "P5": True,
+                "P6": q == 1, "P7": q >= 1, "P8": True}
+    return Case("float-power", f, truth(binary(p)), sp.oo, note=f"rho**({label}) = rho**{p!r}",
+                truth15=truth(sp.Rational(str(fl(p)))))
+
+
+@st.composite
 def classic_designs(draw):
     """Fixed designs from the issue tracker, with their truth."""
     which = draw(st.sampled_from(["cube4", "zero-pow", "zero-pow-jump", "log-e"]))
@@ -567,6 +590,7 @@ FAMILIES = {
     "point-value": point_value_designs, "origin": origin_designs, "dip": dip_designs,
     "classic": classic_designs, "mixed": mixed_sign_designs, "far-dip": far_dip_designs,
     "almost-radial": almost_radial_designs, "chain": chain_designs, "maxmin": maxmin_designs,
+    "float-power": float_power_designs,
 }
 
 
@@ -578,7 +602,7 @@ def settle_origin(case: Case) -> Case:
         return case
     sign = _exact_sign(case.f.subs({e1: 0, e2: 0}))
     if sign:
-        case.truth = dict(case.truth, P2=False)
+        case.truth = dict(case.truth, P2=False)       # (a plain bool: no __post_init__ here)
         if sign < 0:
             case.truth["P3"] = False
         case.note += f" (constants rounded by SymPy: f(0, 0) {'<' if sign < 0 else '>'} 0)"
