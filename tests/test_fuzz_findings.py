@@ -63,6 +63,18 @@ def test_float_exponent_below_one_is_not_proved_c2_or_p6(verify):
     assert status(r, "P6") != "proved" and status(r, "P7") != "proved"
 
 
+@pytest.mark.xfail(strict=True, reason="issue 9: Float read as a 15-digit decimal")
+def test_a_p3_witness_is_a_counterexample_for_the_design_as_written(verify):
+    r = verify("float_offset_pi_witness.py")
+    assert status(r, "P3") == "refuted"
+    w = r["properties"]["P3"]["witness"]
+    x, y = sp.Rational(sp.sympify(w["e1"])), sp.Rational(sp.sympify(w["e2"]))
+    rho = x ** 2 + y ** 2
+    with mpmath.workdps(60):
+        value = 3 * mpmath.log(1 + mpmath.tanh(mpmath.mpf(rho.p) / rho.q)) - mpmath.pi + mpmath.mpf(math.pi)
+    assert value <= 0, f"f{(x, y)} = {value}"
+
+
 @pytest.mark.xfail(strict=True, reason="issue 9: kf.scale runs nsimplify (and the Float is read with 15 digits)")
 def test_elliptic_kf_is_not_made_exactly_one(verify):
     r = verify("elliptic_nsimplify_kf.py")
@@ -94,7 +106,7 @@ def test_zero_power_does_not_crash(verify):
 def test_every_finding_file_is_a_loadable_design_with_a_docstring():
     from uwmr_symbolic.design import load_design
     files = sorted(HERE.glob("*.py"))
-    assert len(files) >= 7
+    assert len(files) >= 8
     for path in files:
         d = load_design(path)
         assert isinstance(d.f, sp.Expr)

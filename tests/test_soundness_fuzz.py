@@ -114,8 +114,8 @@ def test_oracle_rechecks_the_witness_of_a_refutation():
     assert refuted("P3", "2", "f is not positive: fails at s = 2") == []
     assert refuted("P5", "1", "F'(s) > 0 fails at |e| = 1: fails at s = 1") == []
     # F(10) = sqrt(101) - 0.9 log 101 - 1 = 4.89 > 0 and F'(10) > 0: the witnesses are no counterexamples
-    assert [c.kind for c in refuted("P3", "10", "f is not positive: fails at s = 10")] == ["wrong refutation"]
-    assert [c.kind for c in refuted("P5", "10", "F'(s) > 0 fails at |e| = 10: fails at s = 10")] == ["wrong refutation"]
+    assert [c.kind for c in refuted("P3", "10", "f is not positive: fails at s = 10")] == ["bad witness"]
+    assert [c.kind for c in refuted("P5", "10", "F'(s) > 0 fails at |e| = 10: fails at s = 10")] == ["bad witness"]
 
 
 def test_oracle_numeric_searches_catch_non_smooth_points_without_truth():

@@ -33,7 +33,7 @@ SMALL = (sp.Rational(1, 10 ** 12), sp.Rational(1, 10 ** 24))   # distances to a 
 @dataclass
 class Contradiction:
     prop: str           # P1..P8 or kf
-    kind: str           # false proof | wrong refutation | wrong kf | crash | hang | unusable
+    kind: str           # false proof | wrong refutation | bad witness | wrong kf | crash | hang | unusable
     evidence: str
     known: str | None = None
 
@@ -306,8 +306,9 @@ def check(case: Case, result: dict) -> list[Contradiction]:
                                      f"verifier: {result['properties'][p]['reason'][:300]}"))
         elif status == "refuted":
             bad = check_witness(ev, p, result["properties"][p])
-            if bad:
-                out.append(Contradiction(p, "wrong refutation", bad))
+            if bad:     # the verdict may be right (truth False or unknown); its evidence is not
+                out.append(Contradiction(p, "bad witness", bad + ("" if truth is None else
+                                                                   " (the property is false by construction)")))
     out += check_kf(case, result.get("kf"), ev)
     for c in out:
         c.known = classify(case, result, c)
@@ -386,6 +387,8 @@ def _lossy_floats(f):
 def _still_wrong_when_read15(case, result, c):
     """Re-check the claim against f with 15-digit floats: is it still wrong?"""
     f15 = read15(case.f)
+    if c.kind == "bad witness":
+        return check_witness(Evidence(case, f15), c.prop, result["properties"][c.prop]) is not None
     if case.truth15 is not None and c.prop in case.truth15:
         return case.truth15[c.prop] is (c.kind == "wrong refutation")
     if c.prop == "kf":
@@ -443,7 +446,8 @@ def classify(case: Case, result: dict, c: Contradiction) -> str | None:
     f = case.f
     if c.kind == "crash" and any(p.base == 0 for p in f.atoms(sp.Pow)):
         return "zero-pow"
-    if _lossy_floats(f) and c.kind in ("false proof", "wrong kf") and not _still_wrong_when_read15(case, result, c):
+    if _lossy_floats(f) and c.kind in ("false proof", "wrong kf", "bad witness") \
+            and not _still_wrong_when_read15(case, result, c):
         return "floats-15"
     if c.kind == "wrong kf" and result["kf"]["exact"] is not None and "sqrt(r)" in result["kf"]["reason"]:
         kfe = result["kf"]["exact"]

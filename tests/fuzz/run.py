@@ -57,6 +57,7 @@ class Stats:
         rows += [
             f"false proofs:       {self.count('false proof')} ({self.count('false proof', True)} known issues)",
             f"wrong refutations:  {self.count('wrong refutation')} ({self.count('wrong refutation', True)} known)",
+            f"bad witnesses:      {self.count('bad witness')} ({self.count('bad witness', True)} known)",
             f"wrong kf claims:    {self.count('wrong kf')} ({self.count('wrong kf', True)} known)",
             f"crashes / hangs / rejected: {self.count('crash')} / {self.count('hang')} / {self.count('unusable')}",
             f"hang/death only in a reused process (fine in a fresh one): {len(self.state_leaks)}",
