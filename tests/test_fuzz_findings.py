@@ -111,4 +111,4 @@ def test_every_finding_file_is_a_loadable_design_with_a_docstring():
         d = load_design(path)
         assert isinstance(d.f, sp.Expr)
         doc = path.read_text().split('"""')[1]
-        assert any(w in doc for w in ("FALSE PROOF", "WRONG", "CRASH")), path.name
+        assert any(w in doc for w in ("FALSE PROOF", "WRONG", "CRASH", "BAD WITNESS")), path.name
