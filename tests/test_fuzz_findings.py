@@ -103,10 +103,19 @@ def test_zero_power_does_not_crash(verify):
     assert "crash" not in r and "properties" in r, r.get("crash")
 
 
+@pytest.mark.xfail(strict=True, reason="found by the fuzzer: kf.scale runs sp.Rational on an irrational exact sup")
+def test_elliptic_design_with_irrational_sup_does_not_crash(verify):
+    r = verify("elliptic_irrational_kf_crash.py")
+    assert "crash" not in r, r.get("crash")
+    assert status(r, "P4") == "refuted"
+    with mpmath.workdps(100):
+        assert kf_encloses(r, mpmath.sqrt(2))
+
+
 def test_every_finding_file_is_a_loadable_design_with_a_docstring():
     from uwmr_symbolic.design import load_design
     files = sorted(HERE.glob("*.py"))
-    assert len(files) >= 8
+    assert len(files) >= 9
     for path in files:
         d = load_design(path)
         assert isinstance(d.f, sp.Expr)

@@ -439,6 +439,8 @@ KNOWN = {
     "point-value": "issue 9: a value on a circle (Eq(rho, c)) is not compared with the one-sided limits",
     "radicand-zero": "issue 9: continuous_on guards: a radicand with a double zero is taken as a singularity",
     "zero-pow": "issue 9: 0**rho crashes certify_kf (nan compared)",
+    "elliptic-irrational": "found by this fuzzer: kf.scale calls sp.Rational on an irrational exact sup "
+                           "(fuzz_findings/elliptic_irrational_kf_crash.py)",
 }
 
 
@@ -446,6 +448,8 @@ def classify(case: Case, result: dict, c: Contradiction) -> str | None:
     f = case.f
     if c.kind == "crash" and any(p.base == 0 for p in f.atoms(sp.Pow)):
         return "zero-pow"
+    if c.kind == "crash" and "TypeError: invalid input:" in c.evidence:
+        return "elliptic-irrational"
     if _lossy_floats(f) and c.kind in ("false proof", "wrong kf", "bad witness") \
             and not _still_wrong_when_read15(case, result, c):
         return "floats-15"
