@@ -564,7 +564,13 @@ def float_power_designs(draw):
 @st.composite
 def classic_designs(draw):
     """Fixed designs from the issue tracker, with their truth."""
-    which = draw(st.sampled_from(["cube4", "zero-pow", "zero-pow-jump", "log-e"]))
+    which = draw(st.sampled_from(["cube4", "zero-pow", "zero-pow-jump", "log-e", "design3"]))
+    if which == "design3":     # c log cosh(sqrt(beta rho + 1) - 1): kf = c sqrt(beta) (sup at oo)
+        # (c, not 1/alpha: SymPy would round 1/Float(alpha) to a new Float the truth must not ignore)
+        (c, c_kf), (b, b_kf) = draw(coefficients()), draw(coefficients())
+        f = c * sp.log(sp.cosh(sp.sqrt(b * RHO + 1) - 1))
+        return Case("classic", f, radial_truth((Fraction(1, 2), Fraction(0))), c_kf * sp.sqrt(b_kf),
+                    note=f"design 3, 1/alpha = {c}, beta = {b}")
     if which == "log-e":       # log(math.e + rho) - 1: math.e < e, so f(0) < 0
         t = radial_truth((Fraction(0), Fraction(1)), offset_sign=-1)
         return Case("classic", sp.log(fl(math.e) + RHO) - 1, t, 1 / sp.sqrt(kfc(math.e)), note=which)
