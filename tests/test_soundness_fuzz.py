@@ -96,6 +96,14 @@ def test_oracle_flags_a_kf_enclosure_below_the_true_value_and_a_made_up_exact_va
     assert [c.kind for c in found] == ["wrong kf"] and "(50 and 100 digits)" in found[0].evidence
 
 
+def test_oracle_accepts_a_kf_enclosure_that_is_exactly_the_supremum():
+    # the sampled maximum must not be rounded up by an ulp (it once was, at 53 bits)
+    for f, sup in [(sp.log(1 + RHO) / 3, "1/3"), (sp.asinh(RHO), "Pow(Integer(2), Rational(1, 2))"),
+                   (sp.Rational(1, 3) * sp.asinh(4 * RHO), "Mul(Rational(2, 3), Pow(Integer(2), Rational(1, 2)))")]:
+        kf = {"lower": sup, "upper": sup, "exact": None, "unbounded": False, "reason": "test"}
+        assert oracle.check(Case("radial", f, {}), _result({}, kf)) == [], f
+
+
 def test_oracle_flags_refutations_of_true_properties_and_accepts_honest_verdicts():
     case = Case("radial", sp.log(1 + RHO) / 2, grammar.radial_truth((Fraction(0), Fraction(1))), kf=sp.Rational(1, 2))
     honest = _result({p: "proved" for p in grammar.PROPS}, _kf(Fraction(1, 2), Fraction(1, 2), "1/2"))

@@ -239,8 +239,9 @@ class Evidence:
             x, y = float(self.X[i]), float(self.Y[i])
             pt = self._refine(x, y)
             v = self.num.both("f2", *pt)
-            if v is not None and (best is None or abs(v) > best[0]):
-                best = (abs(v), pt)
+            with mpmath.workdps(100):       # abs() at the default 53 bits would round up by an ulp
+                if v is not None and (best is None or abs(v) > best[0]):
+                    best = (abs(v), pt)
         return best
 
     def _refine(self, x, y):
