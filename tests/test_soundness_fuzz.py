@@ -99,7 +99,8 @@ def test_oracle_flags_a_kf_enclosure_below_the_true_value_and_a_made_up_exact_va
 def test_oracle_accepts_a_kf_enclosure_that_is_exactly_the_supremum():
     # the sampled maximum must not be rounded up by an ulp (it once was, at 53 bits)
     for f, sup in [(sp.log(1 + RHO) / 3, "1/3"), (sp.asinh(RHO), "Pow(Integer(2), Rational(1, 2))"),
-                   (sp.Rational(1, 3) * sp.asinh(4 * RHO), "Mul(Rational(2, 3), Pow(Integer(2), Rational(1, 2)))")]:
+                   (sp.Rational(333333333333333, 10 ** 15) * sp.asinh(4 * RHO),
+                    "Mul(Rational(333333333333333, 500000000000000), Pow(Integer(2), Rational(1, 2)))")]:
         kf = {"lower": sup, "upper": sup, "exact": None, "unbounded": False, "reason": "test"}
         assert oracle.check(Case("radial", f, {}), _result({}, kf)) == [], f
 
