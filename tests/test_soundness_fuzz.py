@@ -97,12 +97,22 @@ def test_oracle_flags_a_kf_enclosure_below_the_true_value_and_a_made_up_exact_va
 
 
 def test_oracle_accepts_a_kf_enclosure_that_is_exactly_the_supremum():
-    # the sampled maximum must not be rounded up by an ulp (it once was, at 53 bits)
     for f, sup in [(sp.log(1 + RHO) / 3, "1/3"), (sp.asinh(RHO), "Pow(Integer(2), Rational(1, 2))"),
                    (sp.Rational(333333333333333, 10 ** 15) * sp.asinh(4 * RHO),
                     "Mul(Rational(333333333333333, 500000000000000), Pow(Integer(2), Rational(1, 2)))")]:
         kf = {"lower": sup, "upper": sup, "exact": None, "unbounded": False, "reason": "test"}
         assert oracle.check(Case("radial", f, {}), _result({}, kf)) == [], f
+
+
+def test_a_kf_that_is_right_for_the_15_digit_reading_is_classified_as_the_float_issue():
+    # c = 1/3.0: the certified sup 2 sqrt(2) c15 is below the true 2 sqrt(2) c but exact for the
+    # decimal c15 = 0.333333333333333; the sampled maximum of that reading must not be rounded
+    # up by an ulp (it once was, at 53 bits, and the contradiction looked unexplained)
+    f = sp.Float(1 / 3.0) * sp.asinh(4 * RHO)
+    up = "Mul(Rational(333333333333333, 500000000000000), Pow(Integer(2), Rational(1, 2)))"
+    found = oracle.check(Case("radial", f, {}), _result({}, {"lower": up, "upper": up, "exact": None,
+                                                             "unbounded": False, "reason": "test"}))
+    assert [(c.kind, c.known) for c in found] == [("wrong kf", "floats-15")]
 
 
 def test_oracle_flags_refutations_of_true_properties_and_accepts_honest_verdicts():
