@@ -30,6 +30,7 @@ class Stats:
     tried: int = 0
     by_family: collections.Counter = field(default_factory=collections.Counter)
     verdicts: dict = field(default_factory=lambda: {p: collections.Counter() for p in PROPS})
+    truth_verdicts: dict = field(default_factory=lambda: {p: collections.Counter() for p in PROPS})
     true_known: int = 0
     true_proved: int = 0
     false_known: int = 0
@@ -48,10 +49,11 @@ class Stats:
     def table(self) -> str:
         rows = [f"designs tried: {self.tried} in {self.seconds:.0f} s  "
                 f"({', '.join(f'{k} {v}' for k, v in sorted(self.by_family.items()))})",
-                "property  proved  refuted  unknown"]
+                "property  proved  refuted  unknown   true: proved/known   false: refuted/known"]
         for p in PROPS:
-            v = self.verdicts[p]
-            rows.append(f"{p:8}  {v['proved']:6}  {v['refuted']:7}  {v['unknown']:7}")
+            v, t = self.verdicts[p], self.truth_verdicts[p]
+            rows.append(f"{p:8}  {v['proved']:6}  {v['refuted']:7}  {v['unknown']:7}   "
+                        f"{t['T proved']:5}/{t['T']:<5}          {t['F refuted']:5}/{t['F']:<5}")
         share = self.true_proved / self.true_known if self.true_known else float("nan")
         rshare = self.false_refuted / self.false_known if self.false_known else float("nan")
         rows += [
@@ -107,6 +109,10 @@ def run_profile(examples: int, seed: int | None = 0, timeout: float = 10.0, keep
             for p in PROPS:
                 st = (result.get("properties") or {}).get(p, {}).get("status", "none")
                 stats.verdicts[p][st] += 1
+                if case.truth.get(p) is not None:
+                    tv = "T" if case.truth[p] else "F"
+                    stats.truth_verdicts[p][tv] += 1
+                    stats.truth_verdicts[p][f"{tv} {st}"] += 1
                 if case.truth.get(p) is True:
                     stats.true_known += 1
                     stats.true_proved += st == "proved"
