@@ -4,7 +4,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test bench clean generate embedded paper figures fuzz-codegen mutate
+.PHONY: demo test bench clean generate embedded paper figures fuzz fuzz-codegen mutate
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -36,6 +36,13 @@ embedded: $(STAMP)
 	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq gcc-arm-none-eabi libnewlib-arm-none-eabi; }
 	$(BIN)/python -m uwmr_symbolic.codegen.embedded
 
+# Long soundness fuzzing: UWMR_FUZZ_EXAMPLES random designs (fresh seed; UWMR_FUZZ_SEED=N repeats one),
+# table of verdicts, false proofs and wrong refutations; designs with a contradiction go to fuzz-findings/.
+UWMR_FUZZ_EXAMPLES ?= 500
+fuzz: $(STAMP)
+	cd tests && ../$(BIN)/python -m fuzz.run --examples $(UWMR_FUZZ_EXAMPLES) \
+	  $(if $(UWMR_FUZZ_SEED),--seed $(UWMR_FUZZ_SEED)) --keep ../fuzz-findings
+
 bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_verify.py
 	$(BIN)/python benchmarks/bench_scaling.py
@@ -52,7 +59,7 @@ figures: $(STAMP)
 	$(BIN)/python -m uwmr_symbolic.simulation.figures --out figures
 
 clean:
-	rm -rf $(VENV) build *.egg-info
+	rm -rf $(VENV) build *.egg-info fuzz-findings
 
 # Hand-written mutants of the trusted kernel, each to be killed by its fast tests (about 10 min).
 mutate: $(STAMP)

@@ -1,0 +1,113 @@
+"""Reproducers of the unsound answers the soundness fuzzer found
+(`tests/adversarial/fuzz_findings/`, each file's docstring gives the design,
+the wrong claim and the independent evidence).  Each test asserts the right
+behaviour; all of them pass since issue 9's fixes.  A new finding gets a
+strict xfail here until it is fixed.  Floats are read as the verifier
+documents (README): a double as its shortest round-trip decimal, `repr`."""
+import math
+from pathlib import Path
+
+import mpmath
+import pytest
+import sympy as sp
+
+from fuzz.oracle import _bound
+from fuzz.worker import Verifier
+
+HERE = Path(__file__).parent / "adversarial" / "fuzz_findings"
+
+
+@pytest.fixture(scope="module")
+def verify():
+    cache = {}
+    with Verifier() as v:
+        def run(name, timeout=20.0):
+            if (name, timeout) not in cache:
+                cache[name, timeout] = v.verify(HERE / name, timeout)
+            return cache[name, timeout]
+        yield run
+
+
+def status(result, prop):
+    assert "properties" in result, result
+    return result["properties"][prop]["status"]
+
+
+def kf_encloses(result, true_value):
+    kf = result["kf"]
+    with mpmath.workdps(100):
+        lo, hi = _bound(kf["lower"]), _bound(kf["upper"])
+        return lo <= true_value <= hi
+
+
+def test_float_offset_below_zero_at_the_origin_is_not_proved(verify):
+    r = verify("float_offset_sqrt.py")
+    assert status(r, "P2") != "proved" and status(r, "P3") != "proved"
+
+
+def test_math_e_design_is_not_proved_positive(verify):
+    assert status(verify("log_e_float.py"), "P3") != "proved"
+
+
+def test_math_e_design_kf_enclosure_contains_the_true_kf(verify):
+    with mpmath.workdps(100):
+        assert kf_encloses(verify("log_e_float.py"), 1 / mpmath.sqrt(mpmath.mpf(repr(math.e))))
+
+
+def test_float_exponent_below_one_is_not_proved_c2_or_p6(verify):
+    r = verify("float_exponent.py")
+    assert status(r, "P6") != "proved" and status(r, "P7") != "proved"
+
+
+def test_a_p3_witness_is_a_counterexample_for_the_design_as_written(verify):
+    r = verify("float_offset_pi_witness.py")
+    assert status(r, "P3") == "refuted"
+    w = r["properties"]["P3"]["witness"]
+    x, y = sp.Rational(sp.sympify(w["e1"])), sp.Rational(sp.sympify(w["e2"]))
+    rho = x ** 2 + y ** 2
+    with mpmath.workdps(60):
+        value = 3 * mpmath.log(1 + mpmath.tanh(mpmath.mpf(rho.p) / rho.q)) - mpmath.pi + mpmath.mpf(repr(math.pi))
+    assert value <= 0, f"f{(x, y)} = {value}"
+
+
+def test_elliptic_kf_is_not_made_exactly_one(verify):
+    r = verify("elliptic_nsimplify_kf.py")
+    with mpmath.workdps(100):
+        true = mpmath.sqrt(2) * mpmath.mpf(repr(0.7071067811865476))   # 1.0000000000000001069
+        assert kf_encloses(r, true)
+    assert r["kf"]["exact"] != "1"
+
+
+def test_c2_power_of_a_perfect_square_is_not_refuted_on_p7(verify):
+    r = verify("radicand_cube4.py")
+    assert status(r, "P7") != "refuted"
+    assert status(r, "P2") == "refuted" and status(r, "P3") == "refuted"       # these are right
+
+
+def test_design_with_every_property_true_is_not_refuted(verify):
+    r = verify("radicand_all_true.py", timeout=40.0)
+    assert [p for p in r["properties"] if status(r, p) == "refuted"] == []
+
+
+def test_zero_power_does_not_crash(verify):
+    r = verify("zero_pow_crash.py")
+    assert "crash" not in r and "properties" in r, r.get("crash")
+
+
+def test_elliptic_design_with_irrational_sup_does_not_crash(verify):
+    r = verify("elliptic_irrational_kf_crash.py")
+    assert "crash" not in r, r.get("crash")
+    assert status(r, "P4") == "refuted"
+    with mpmath.workdps(100):
+        assert kf_encloses(r, mpmath.sqrt(2))
+
+
+def test_every_finding_file_is_a_loadable_design_with_a_docstring():
+    from uwmr_symbolic.design import load_design
+    files = sorted(HERE.glob("*.py"))
+    assert len(files) >= 9
+    for path in files:
+        d = load_design(path)
+        assert isinstance(d.f, sp.Expr)
+        doc = path.read_text().split('"""')[1]
+        assert any(w in doc for w in ("FALSE PROOF", "WRONG", "CRASH", "BAD WITNESS")), path.name
