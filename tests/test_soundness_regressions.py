@@ -220,3 +220,13 @@ def test_an_irrational_exact_sup_scales_for_an_elliptic_design(tmp_path):
     assert report.kf.exact == sp.sqrt(2)
     # sqrt(2) = 1.41421356237309504880...
     assert Fraction("1.414213562373095048") < report.kf.lower <= report.kf.upper < Fraction("1.414213562373095049")
+
+
+def test_identity_cross_check_survives_values_beyond_any_fraction():
+    # exp(-10^30 (1 + e1^2)) has an Arb enclosure whose exact Fraction would need 10^30 bits
+    # (a fuzzed Piecewise chain with erf ran out of memory there)
+    from uwmr_symbolic import e1
+    from uwmr_symbolic.univariate import numerically_equal
+    tiny = sp.exp(-10 ** 30 * (1 + e1 ** 2))
+    assert numerically_equal(tiny, 0 * e1) is False
+    assert numerically_equal(2 * tiny, tiny + tiny) is True

@@ -28,6 +28,7 @@ from fractions import Fraction
 from functools import lru_cache
 
 import sympy as sp
+from flint import arb
 
 from .interval import Interval, IntervalFunction, Undefined
 from .limits import NoLimit, exact_sign, limit_right
@@ -113,12 +114,11 @@ def numerically_equal(a, b, prec=300) -> bool:
             continue
         if not (ba.is_finite() and bb.is_finite()):
             continue
-        lo = max(ba.lower_fraction(), bb.lower_fraction())
-        hi = min(ba.upper_fraction(), bb.upper_fraction())
-        if lo > hi:
+        # exact endpoint arithmetic on the arbs (Fractions of exp(-10^30) would not fit in memory)
+        if ba.hi < bb.lo or bb.hi < ba.lo:
             return False        # disjoint enclosures: a != b at this point
-        size = max(abs(ba.lower_fraction()), abs(ba.upper_fraction()), 1)
-        tight += all(box.upper_fraction() - box.lower_fraction() < size / 2 ** 200 for box in (ba, bb))
+        size = max(abs(ba.lo), abs(ba.hi), arb(1))
+        tight += all((box.hi - box.lo) < size * arb(2) ** -200 for box in (ba, bb))
     return 2 * tight >= len(_CHECK_POINTS)
 
 
