@@ -131,14 +131,22 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
 _NEAR = sp.Rational(1, 64)
 
 
-def _polynomial_side(expr, x) -> int | None:
-    """Sign of a polynomial p with rational coefficients and p(0) = 0 on
-    (0, eps): the sign of its lowest nonzero coefficient; None otherwise."""
+def rational_poly(expr, x) -> sp.Poly | None:
+    """expr as a nonzero polynomial in x with rational coefficients, or None."""
     try:
         poly = sp.Poly(expr, x)
     except (sp.PolynomialError, sp.GeneratorsError):
         return None
     if not (poly.domain.is_ZZ or poly.domain.is_QQ) or poly.is_zero:
+        return None
+    return poly
+
+
+def _polynomial_side(expr, x) -> int | None:
+    """Sign of a polynomial p with rational coefficients and p(0) = 0 on
+    (0, eps): the sign of its lowest nonzero coefficient; None otherwise."""
+    poly = rational_poly(expr, x)
+    if poly is None:
         return None
     lowest = poly.terms()[-1][1]       # terms() lists the highest degree first
     return 1 if lowest > 0 else -1

@@ -31,7 +31,7 @@ import sympy as sp
 from flint import arb
 
 from .interval import Interval, IntervalFunction, Undefined
-from .limits import NoLimit, exact_sign, limit_right
+from .limits import NoLimit, exact_sign, limit_right, rational_poly
 from .verdict import Verdict, proved, refuted, unknown
 
 T = sp.Symbol("t", positive=True)       # t = 1/s on the unbounded part
@@ -570,11 +570,8 @@ def polynomial_sign(expr, var, lo, hi, want, lo_open=True, hi_open=True, strict=
     sign at one inner point is right.  False when not shown."""
     if not all(isinstance(c, sp.Rational) for c in (lo, hi) if c != sp.oo):
         return False
-    try:
-        poly = sp.Poly(expr, var)
-    except (sp.PolynomialError, sp.GeneratorsError):
-        return False
-    if not (poly.domain.is_ZZ or poly.domain.is_QQ) or poly.is_zero:
+    poly = rational_poly(expr, var)
+    if poly is None:
         return False
     coeff, factors = poly.sqf_list()
     sign = 1 if coeff > 0 else -1
