@@ -230,3 +230,12 @@ def test_identity_cross_check_survives_values_beyond_any_fraction():
     tiny = sp.exp(-10 ** 30 * (1 + e1 ** 2))
     assert numerically_equal(tiny, 0 * e1) is False
     assert numerically_equal(2 * tiny, tiny + tiny) is True
+
+
+def test_no_simplify_on_what_is_numerically_no_identity(tmp_path):
+    # a separable f with a float constant: the elliptic guess r is a radical of a big rational,
+    # and SymPy's simplify of f - F(sqrt(e1^2 + r e2^2)) ran for minutes in C code; the
+    # numeric cross-check now comes first.  f -> 3 along e1 = 0 (P3 false), f(1/3, 0) != f(0, 1/3)
+    report, v = verify(tmp_path, "f = math.e*log(1 + e1**2) + 3 - 3*sp.exp(-e2**2)\n", timeout=10)
+    assert v["P4"] == "refuted" and v["P3"] == "refuted" and v["P2"] == "proved"
+    assert report.seconds < 10

@@ -48,9 +48,10 @@ def verify_radial(f: sp.Expr, F: sp.Expr) -> Verdict:
                       "so e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
     radial = F.subs(S, RHO)
     diff = f - radial
-    for simplifier in (sp.expand, sp.simplify, lambda e: sp.simplify(sp.expand(e))):
+    agree = numerically_equal(f, radial)
+    for simplifier in (sp.expand, sp.simplify, lambda e: sp.simplify(sp.expand(e))) if agree else ():
         try:
-            if simplifier(diff) == 0 and numerically_equal(f, radial):
+            if simplifier(diff) == 0:
                 return proved("f(e1, e2) = F(sqrt(e1^2 + e2^2)) is a symbolic identity (SymPy's "
                               "simplification, cross-checked in interval arithmetic), so "
                               "e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
@@ -112,11 +113,12 @@ def _equal(a, b) -> bool:
     e = a - b
     if e == 0:
         return True
+    if not numerically_equal(a, b):
+        return False        # cheap, and spares simplify on what is no identity
     try:
-        said_zero = sp.expand(e) == 0 or sp.simplify(e) == 0
+        return sp.expand(e) == 0 or sp.simplify(e) == 0
     except Exception:  # noqa: BLE001 - a SymPy failure is just 'not shown'
         return False
-    return said_zero and numerically_equal(a, b)
 
 
 def _same_function(a, b) -> bool:
