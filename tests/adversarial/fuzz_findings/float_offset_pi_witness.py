@@ -10,6 +10,9 @@ where the user's f is POSITIVE: rho = 9.765625e-16, f = 3 log(1 + tanh(rho)) - 1
 the f the verifier reads, with math.pi as 3.14159265358979 (offset -3.2e-15).  A
 refutation's witness must be a counterexample for the design as written.
 Found by the fuzzer's float-offset family (seed 201, design 36); mechanism of issue 9.
+Now math.pi is read as repr(math.pi) = 3.141592653589793 (README), pi minus that is
+2.3846e-16, and the verifier's witness |e| = 1/128000000 gives f = 1.83e-16 - 2.38e-16 < 0:
+a counterexample for the design as the verifier documents reading it.
 """
 import math
 
