@@ -11,8 +11,9 @@ from .cli import main as verify_main
 def main(argv=None) -> int:
     folder = (argv or sys.argv[1:] or ["designs"])[0]
     status = verify_main([folder, "--no-cache"])
-    print(f"\nuwmr-verify exit status {status} (0 proved, 1 refuted, 3 inconclusive, 2 unusable). "
-          "Next: `uwmr-verify designs/design1_jiang.py --codegen --simulate`.")
+    print(f"\nuwmr-verify exit status {status} (the codes: 0 all proved, 1 something refuted or a gain check failed, "
+          "3 inconclusive, 2 unusable input). "
+          "Next: `.venv/bin/uwmr-verify designs/design1_jiang.py --codegen --simulate`.")
     return 2 if status == 2 else 0
 
 
