@@ -239,6 +239,15 @@ def _same_interval(a: Claim, b: Claim):
           "premises on different intervals")
 
 
+def _signs_on_one_interval(premises) -> Claim:
+    """Every premise is a sign theorem about the same interval; the first claim."""
+    _need(premises, "no premises")
+    for p in premises:
+        _is_sign(p)
+        _same_interval(p.claim, premises[0].claim)
+    return premises[0].claim
+
+
 def _box_ok(v: Iv, want, strict) -> bool:
     if strict:
         return v.positive() if want > 0 else v.negative()
@@ -365,11 +374,7 @@ def sign_of_product(*premises, expr):
     integer), b > 0 (gives f > 0) or b >= 0 with r > 0 (gives f >= 0).
     Constant factors have an exact nonzero sign.  E then has the product
     sign; strict iff every premise used is strict."""
-    _need(premises, "no premises")
-    for p in premises:
-        _is_sign(p)
-        _same_interval(p.claim, premises[0].claim)
-    var = premises[0].claim.x()
+    var = _signs_on_one_interval(premises).x()
     e = _expr(expr, var)
     factors = sp.Mul.make_args(e)
     by_expr = {p.claim.expr: p for p in premises}
@@ -410,12 +415,9 @@ def sign_of_sum(*premises, expr, want):
     """E = t1 + ... + tk.  Every non-constant term has a premise (same
     interval I) with sign want, every constant term has sign want or is 0
     (exact / Arb); E has sign want, strictly if some term does strictly."""
-    _need(premises and want in (1, -1), "premises and want = +-1 needed")
-    for p in premises:
-        _is_sign(p)
-        _same_interval(p.claim, premises[0].claim)
-        _need(p.claim.want == want, "a premise has the other sign")
-    var = premises[0].claim.x()
+    _need(want in (1, -1), "want = +-1 needed")
+    var = _signs_on_one_interval(premises).x()
+    _need(all(p.claim.want == want for p in premises), "a premise has the other sign")
     e = _expr(expr, var)
     _need(e.is_Add, lambda: f"not a sum: {e}")
     by_expr = {p.claim.expr: p for p in premises}
@@ -446,11 +448,7 @@ def sign_through_increasing(*premises, expr):
     wherever Y is defined (any sign theorem about Y on I shows that).
     log(Y): from Y - 1 > 0 (>= 0) on I, log Y > 0 (>= 0); from Y - 1 < 0
     (<= 0) and a second premise Y > 0, log Y < 0 (<= 0)."""
-    _need(premises, "no premise")
-    for p in premises:
-        _is_sign(p)
-        _same_interval(p.claim, premises[0].claim)
-    c = premises[0].claim
+    c = _signs_on_one_interval(premises)
     var = c.x()
     e = _expr(expr, var)
     _need(isinstance(e, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.log)) and len(e.args) == 1, lambda: f"not G(Y): {e}")
@@ -655,10 +653,7 @@ def sign_by_substitution(outer, *bounds, inner):
     needed = [(u_end, op, side) for u_end, op, side in ((a, g.lo_open, 1), (b, g.hi_open, -1))
               if u_end not in (OO, -OO)]
     _need(needed and len(bounds) == len(needed), "one bound premise per finite end of J")
-    for p in bounds:
-        _is_sign(p)
-        _same_interval(p.claim, bounds[0].claim)
-    c = bounds[0].claim
+    c = _signs_on_one_interval(bounds)
     var = c.x()
     u = _expr(inner, var)
     for (u_end, op, side), p in zip(needed, bounds):
