@@ -48,14 +48,11 @@ class Case:
     radii: list = field(default_factory=list)   # exact radii of circle boundaries
     zeros: list = field(default_factory=list)   # exact points (e1, e2) where f = 0, e != 0
     note: str = ""
-    truth15: dict | None = None     # the truth for f with every Float read as its 15-digit decimal,
-                                    # where the family knows it (classifies the known float issue)
 
     def __post_init__(self):
         # comparisons of SymPy numbers give SymPy booleans: make every truth a Python bool
-        for d in (self.truth, self.truth15 or {}):
-            for p, v in d.items():
-                d[p] = None if v is None else bool(v)
+        for p, v in self.truth.items():
+            self.truth[p] = None if v is None else bool(v)
 
     def known(self, prop):
         return self.truth.get(prop)
@@ -558,8 +555,7 @@ def float_power_designs(draw):
     def truth(q):                     # F(s) = c s^(2q); F'(s)/s = 2qc s^(2q-2); F''(s) ~ s^(2q-2)
         return {"P1": False, "P2": True, "P3": True, "P4": True, "P5": True,
                 "P6": q == 1, "P7": q >= 1, "P8": True}
-    return Case("float-power", f, truth(as_read(p)), sp.oo, note=f"rho**({label}) = rho**{p!r}",
-                truth15=truth(sp.Rational(str(fl(p)))))
+    return Case("float-power", f, truth(as_read(p)), sp.oo, note=f"rho**({label}) = rho**{p!r}")
 
 
 @st.composite
