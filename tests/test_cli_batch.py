@@ -24,7 +24,7 @@ from uwmr_symbolic.report import assignment_line  # noqa: E402
 
 PROPS = [f"P{i}" for i in range(1, 9)]
 #: --timeout for runs that include the design that hangs while loading
-SLOW_TIMEOUT = 4
+SLOW_TIMEOUT = 8
 
 #: An inconclusive design whatever the verifier learns: loading it outlasts
 #: --timeout, so every property ends "unknown" (exit status 3).

@@ -620,3 +620,20 @@ def test_malformed_steps_are_rejected_not_crashes():
         edit(node(cert, "sign_by_cover"))
         with pytest.raises(CertificateError):
             check_certificate(cert)
+
+
+def test_identity_plane():
+    """f = log(1 + x^2 + y^2) equals F(sqrt(x^2 + y^2)) with F(s) = log(1 + s^2)
+    (literally, after SymPy's automatic sqrt(u)^2 = u); a rational identity is
+    checked by cancel; a false one, or one off by 1e-60, is rejected."""
+    x, y = sp.symbols("x y", real=True)
+    r = sp.sqrt(x ** 2 + y ** 2)
+    t = K.identity_plane(lhs=sp.log(1 + x ** 2 + y ** 2), rhs=sp.log(1 + r ** 2), x=x, y=y)
+    assert t.claim.kind == "identity_plane" and t.assumptions == {"sympy-core"}
+    t = K.identity_plane(lhs=(x ** 2 - y ** 2) / (x - y), rhs=x + y, x=x, y=y)
+    assert "sympy-polys" in t.assumptions
+    t = K.identity_plane(lhs=sp.sqrt(4 * x ** 2 + 4 * y ** 2), rhs=2 * r, x=x, y=y)
+    assert "sympy-simplify" in t.assumptions
+    rejects(K.identity_plane, lhs=x ** 2 + y, rhs=x ** 2 + y ** 2, x=x, y=y)
+    rejects(K.identity_plane, lhs=sp.exp(x + y), rhs=sp.exp(x) * sp.exp(y) + sp.Rational(1, 10 ** 60), x=x, y=y)
+    rejects(K.identity_plane, lhs=x, rhs=x, x=x, y=sp.Symbol("y", positive=True))

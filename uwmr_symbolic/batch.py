@@ -16,6 +16,9 @@ import time
 import multiprocessing.connection
 from pathlib import Path
 
+import sympy as sp
+
+from . import design_certificate as certificates
 from .cache import ResultCache, design_key, source_hash
 from .report import design_fields, to_dict
 from .properties import PROPERTIES
@@ -53,13 +56,26 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
     key = design_key(design) if use_cache else None
     if cache is not None:
         hit = cache.get(key)
-        if hit is not None and isinstance(hit.get("exit_status"), int):
+        if hit is not None and isinstance(hit.get("exit_status"), int) and rechecks(hit, design):
             return {**hit, **design_fields(design), "cached": True}
     report = verify_loaded(design, timeout, start)
-    result = to_dict(report)
+    result = {**to_dict(report), "certificate": certificates.build(report)}
     if cache is not None and not report.timed_out:
         cache.put(key, result)
     return {**result, "cached": False}
+
+
+def rechecks(hit: dict, design) -> bool:
+    """A cached result is used only if its design certificate re-checks in
+    the kernel, is about this design's f, and agrees with the cached verdicts."""
+    cert = hit.get("certificate")
+    try:
+        checked = certificates.check(cert)
+    except certificates.CertificateError:
+        return False
+    verdicts = {p: str(v.get("verdict")) for p, v in hit.get("properties", {}).items()}
+    return (cert["design"]["f"] == sp.srepr(design.f)
+            and {c.name: c.status for c in checked if c.name in PROPERTIES} == verdicts)
 
 
 def _internal_error(path: str, exc: BaseException) -> dict:

@@ -19,6 +19,11 @@ def render_simulation_text(sim) -> str:
     return render(sim)
 
 EPILOG = """\
+certificates:
+  --certificate OUT.json writes what the trusted kernel (uwmr_symbolic/kernel) has checked of
+  each property; --check-certificate OUT.json re-checks it with no search.  A cached result
+  is used only when its certificate re-checks.
+
 exit status:
   0  every property P1-P8 proved, proof replay ok, every gain scenario within bound (10)
   1  a property refuted (with a witness) or a gain check fails
@@ -91,6 +96,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--check-generated", action="store_true",
                    help="check that generated/ matches what the design files (default designs/*.py) "
                         "and this tool generate; exit 1 when stale")
+    p.add_argument("--certificate", metavar="PATH",
+                   help="write the design certificate (JSON: the kernel's theorems per property and what still "
+                        "rests on the search) to PATH; with several files PATH is a directory of STEM.cert.json")
+    p.add_argument("--check-certificate", nargs="+", metavar="CERT",
+                   help="re-check certificate file(s) in the kernel without any search and say what each "
+                        "property rests on (exit 0 all check, 1 one does not, 2 unreadable)")
     p.add_argument("--version", action="version", version=f"uwmr-verify {__version__}")
     return p
 
@@ -205,8 +216,52 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
     return status
 
 
+def check_certificates(files) -> int:
+    """`--check-certificate`: re-check each file in the kernel."""
+    from .design_certificate import CertificateError, check
+    status = 0
+    for name in files:
+        try:
+            text = Path(name).read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            print(f"{name}: cannot read the certificate: {exc}", file=sys.stderr)
+            status = max(status, 2)
+            continue
+        try:
+            lines = [c.line() for c in check(text)]
+        except CertificateError as exc:
+            print(f"{name}: the certificate does not check: {exc}", file=sys.stderr)
+            status = max(status, 1)
+            continue
+        print(f"{name}: certificate re-checked")
+        print("\n".join("  " + line for line in lines))
+    return status
+
+
+def write_certificates(paths, results, target) -> int:
+    """`--certificate PATH`: one file, or STEM.cert.json per design in PATH."""
+    out = Path(target)
+    status = 0
+    for d in results:
+        cert = d.get("certificate")
+        if cert is None:
+            continue
+        dest = out / (Path(d["design"]).stem + ".cert.json") if len(paths) > 1 else out
+        try:
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            tmp = dest.with_name(dest.name + ".tmp")
+            tmp.write_text(json.dumps(cert, indent=1) + "\n", encoding="utf-8")
+            tmp.replace(dest)
+        except OSError as exc:
+            print(f"uwmr-verify: cannot write {dest}: {exc}", file=sys.stderr)
+            status = 2
+    return status
+
+
 def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
+    if args.check_certificate:
+        return check_certificates(args.check_certificate)
     if args.timeout <= 0:
         print("uwmr-verify: --timeout must be positive", file=sys.stderr)
         return 2
@@ -232,7 +287,9 @@ def main(argv=None) -> int:
                               progress=progress)
     finally:
         progress.close()
+    cert_status = write_certificates(paths, results, args.certificate) if args.certificate else 0
     for d in results:
+        d.pop("certificate", None)
         if d.get("error") is not None:
             print(f"{d['design']}: {d['error']}", file=sys.stderr)
     sim_status = 0
@@ -280,7 +337,7 @@ def main(argv=None) -> int:
         except OSError as exc:
             print(f"uwmr-verify: cannot write {args.junit_xml}: {exc}", file=sys.stderr)
             return 2
-    status = worst_status([*(d["exit_status"] for d in results), sim_status])
+    status = worst_status([*(d["exit_status"] for d in results), sim_status, cert_status])
     if args.codegen is not None:
         status = worst_status([status, write_code(paths, results, args.codegen, args.force, reports)])
     return status

@@ -8,7 +8,7 @@ value or a limit) is accepted only after c - |F'| >= 0 is proved on all of
 [0, oo) with the prover of `univariate`."""
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 
 import sympy as sp
@@ -17,6 +17,7 @@ from .interval import Interval
 from .limits import NoLimit
 from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
+from .certify import sign_theorems, sup_theorems
 from .univariate import (certified_inside, enclose_sup, exact_sign, exact_value, limit_at_infinity, prepare,
                          prove_sign)
 
@@ -34,6 +35,8 @@ class SupCertificate:
     attained: bool | None
     reason: str
     unbounded_witness: dict | None = None
+    kernel: list = field(default_factory=list)      # kernel theorems (see `certify.sup_theorems`)
+    unchecked: list = field(default_factory=lambda: ["the whole argument (no kernel rules for it yet)"])
 
     def show(self) -> str:
         if self.exact is not None:
@@ -199,6 +202,24 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
                           f"interval branch and bound: sup {name} in [{float(lower):.10g}, {float(upper):.10g}]")
 
 
+def _with_kernel(cert: SupCertificate, pieces) -> SupCertificate:
+    """cert with the kernel's theorems of an exact kf = sup F' on one piece
+    (F' > 0, F' <= kf, sup F' >= kf), or the reason it has none."""
+    if cert.exact is None or len(pieces) != 1 or cert.attained is None:
+        cert.unchecked = ["kf: " + ("no exact value" if cert.exact is None else
+                                    "Piecewise profile" if len(pieces) != 1 else "attainment undecided")]
+        return cert
+    dF = sp.diff(pieces[0].expr, S)
+    point = None
+    if cert.attained:
+        point = next((p for v, p in _candidates(dF, pieces[0].lo, pieces[0].hi)
+                      if p is not None and exact_sign(v - cert.exact) == 0), None)
+    positive, why = sign_theorems(dF, S, 0, sp.oo)
+    theorems, why = sup_theorems(dF, cert.exact, point, S, positive[0]) if positive else (None, why)
+    cert.kernel, cert.unchecked = (theorems, []) if theorems else ([], [f"kf = {cert.exact} (kernel: {why})"])
+    return cert
+
+
 def certify_kf(analysis) -> SupCertificate:
     """kf = sup |F'| over [0, oo) (bound (10), property P1)."""
     pieces = analysis.profile.pieces
@@ -208,7 +229,7 @@ def certify_kf(analysis) -> SupCertificate:
         return pos
     if all(prove_sign(e, S, p.lo, p.hi, want=1, strict=False, budget=1500).proved
            for e, p in zip(dF, pieces)):
-        return pos      # F' >= 0 everywhere: sup |F'| = sup F'
+        return _with_kernel(pos, pieces)      # F' >= 0 everywhere: sup |F'| = sup F'
     neg = certify_sup(analysis, [-e for e in dF], "-F'")
     if neg.upper is None:
         return neg

@@ -28,6 +28,7 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .design import Design
 from .interval import Interval, IntervalFunction, Undefined
+from .certify import REDUCTION, origin_value_theorems, radial_theorems, sign_theorems
 from .kf import KfCertificate, certify_kf, certify_sup, scale
 from .limits import NoLimit, limit_right
 from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
@@ -209,6 +210,15 @@ def _show(v):
     return "undecided" if v is None else str(v)
 
 
+def _lemmas(v: Verdict, lemma: Verdict, *unchecked: str) -> Verdict:
+    """v with the kernel theorems of `lemma` and the facts still resting on
+    the search alone: the radial reduction (P4) and `unchecked`."""
+    v.details["kernel"] = lemma.details.get("kernel", [])
+    v.details["unchecked"] = [REDUCTION,
+                              *lemma.details.get("unchecked", []), *unchecked]
+    return v
+
+
 def _all(parts, what) -> Verdict:
     for v in parts:
         if v.refuted:
@@ -229,7 +239,7 @@ def verify_p2(a: Analysis) -> Verdict:
         return unknown("cannot evaluate f at the origin exactly")
     sgn = exact_sign(v)
     if sgn == 0:
-        return proved("f(0, 0) = 0 exactly")
+        return proved("f(0, 0) = 0 exactly", kernel=origin_value_theorems(v), unchecked=[])
     if sgn is None:
         return unknown(f"cannot decide whether f(0, 0) = {v} is zero")
     return refuted(f"f(0, 0) = {v} != 0", {"e1": "0", "e2": "0", "f": str(v)})
@@ -237,7 +247,12 @@ def verify_p2(a: Analysis) -> Verdict:
 
 def verify_p4(a: Analysis) -> Verdict:
     """P4: e1 df/de2 = e2 df/de1 (radial symmetry)."""
-    return a.p4
+    v = a.p4
+    if v.proved:
+        theorems = radial_theorems(a.f, a.F, E1, E2, S)
+        v.details.update(kernel=theorems, unchecked=[] if theorems else [
+            "f(e1, e2) = F(sqrt(e1^2 + e2^2)) (the kernel's identity rule did not accept it)"])
+    return v
 
 
 def _needs_profile(a: Analysis, name: str) -> Verdict | None:
@@ -269,6 +284,7 @@ def verify_p1(a: Analysis) -> Verdict:
 def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
     """F^(k) > 0 on every open piece and at every boundary point."""
     prof = a.profile
+    kernel, unchecked = [], []
     for piece in prof.pieces:
         e = a.derivative(piece.expr, k)
         v = prove_sign(e, S, piece.lo, piece.hi, want=1, lo_open=True, hi_open=True)
@@ -276,6 +292,10 @@ def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
             return refuted(f"{what} fails at |e| = {v.witness}: {v.reason}", _at(v.witness))
         if not v.proved:
             return unknown(f"{what} on ({piece.lo}, {piece.hi}): {v.reason}")
+        theorems, gap = sign_theorems(sp.diff(piece.expr, S, k), S, piece.lo, piece.hi)
+        kernel += theorems or []
+        if theorems is None:
+            unchecked.append(f"{what} on ({piece.lo}, {piece.hi}) (kernel: {gap})")
     for b in prof.boundaries:
         e = a.derivative(prof.at_point[b], k) if k == 0 else a.derivative(
             next(p.expr for p in prof.pieces if p.lo == b), k)
@@ -285,7 +305,9 @@ def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
             return unknown(f"cannot decide the sign of {what} at the boundary s = {b}")
         if sgn <= 0:
             return refuted(f"{what} fails at the boundary |e| = {b} (value {val})", _at(b))
-    return proved(f"{what} on (0, oo) (interval arithmetic, s = 1/t on the tail, Taylor at zeros)")
+        unchecked.append(f"{what} at the boundary s = {b} (one-sided limit)")
+    return proved(f"{what} on (0, oo) (interval arithmetic, s = 1/t on the tail, Taylor at zeros)",
+                  kernel=kernel, unchecked=unchecked)
 
 
 def verify_p3(a: Analysis) -> Verdict:
@@ -308,14 +330,15 @@ def verify_p3(a: Analysis) -> Verdict:
             return unknown(f"{pos.reason}; cannot decide whether f -> oo ({exc})")
         if not pos.proved:
             return pos
-        return proved(f"{pos.reason}; {growth}")
+        return _lemmas(proved(f"{pos.reason}; {growth}"), pos, "F(s) -> oo as s -> oo (growth of F')")
     if lim != sp.oo:
         return refuted(f"f is not radially unbounded: f(e) -> {lim} as |e| -> oo in every direction "
                        "(limit calculus on F(1/t), t -> 0+)",
                        {"direction": "every", "limit": str(lim)})
     if not pos.proved:
         return pos
-    return proved(f"{pos.reason}; F(s) -> oo as s -> oo (limit calculus on F(1/t))")
+    return _lemmas(proved(f"{pos.reason}; F(s) -> oo as s -> oo (limit calculus on F(1/t))"), pos,
+                   "F(s) -> oo as s -> oo (limit calculus)")
 
 
 def _grows_without_bound(dF, lo) -> str | None:
@@ -347,8 +370,9 @@ def verify_p5(a: Analysis) -> Verdict:
         return pos
     if not exists.proved:
         return unknown(f"{pos.reason}, but {exists.reason}")
-    return proved(f"df/de1 tanh(e1) = F'(s) e1 tanh(e1)/s with {pos.reason}; "
-                  "df/de1 = 0 on e1 = 0 (F'(0+) = 0 at the origin)")
+    return _lemmas(proved(f"df/de1 tanh(e1) = F'(s) e1 tanh(e1)/s with {pos.reason}; "
+                          "df/de1 = 0 on e1 = 0 (F'(0+) = 0 at the origin)"), pos,
+                   "df/de1 exists on R^2 (F'(0+) = 0 at the origin)")
 
 
 def verify_p6(a: Analysis) -> Verdict:

@@ -78,7 +78,8 @@ def to_dict(r: Report) -> dict:
         "name": r.design.name if r.design else None,
         "f": str(r.design.f) if r.design else None,
         "properties": {p: {"verdict": v.status, "reason": v.reason,
-                           "witness": _jsonable(v.witness), **_jsonable(v.details)}
+                           "witness": _jsonable(v.witness),
+                           **_jsonable({k: x for k, x in v.details.items() if k != "kernel"})}
                        for p, v in r.properties.items()},
         "kf": {"exact": None if kf is None or kf.exact is None else str(kf.exact),
                "exact_digits": None if kf is None or kf.exact is None or kf.exact.is_Integer

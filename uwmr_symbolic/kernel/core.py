@@ -736,6 +736,50 @@ def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
     return claim, ("sympy-simplify", "arb")
 
 
+_PLANE_POINTS = [(sp.Rational(p), sp.Rational(q)) for p, q in
+                 (("1/3", "2/7"), ("-5/4", "3/2"), ("2", "-1/5"), ("7/3", "11/4"), ("-3", "-2"),
+                  ("1/10", "-9/8"), ("5", "1/6"), ("-2/9", "4"), ("3/5", "0"), ("0", "-7/3"))]
+
+
+@rule("sympy-core")
+def identity_plane(*, lhs, rhs, x, y):
+    """lhs(x, y) = rhs(x, y) at every point of the plane where both are
+    defined (x, y real variables).  Exact when both are the same expression,
+    or lhs - rhs is a rational function over Q (sympy.cancel gives 0);
+    otherwise SymPy's simplify must give 0 AND lhs - rhs must enclose 0,
+    with radius < 2^-250, at >= 3 of 10 fixed rational points in 320-bit
+    Arb; the theorem then rests on "sympy-simplify".  (With lhs = f and
+    rhs = F(sqrt(x^2 + y^2)) this is the radial reduction of P4: then
+    x df/dy - y df/dx = F'(r)(x y - y x)/r = 0 wherever F' exists.)"""
+    _need(isinstance(x, sp.Symbol) and isinstance(y, sp.Symbol) and x != y, "two distinct variables")
+    for v in (x, y):
+        _need(v.assumptions0 == sp.Symbol("_", real=True).assumptions0, lambda: f"{v} must be declared real only")
+    l, r = _sym(lhs), _sym(rhs)
+    for e in (l, r):
+        _need(not e.has(sp.Float), lambda: f"floats are not exact: {e}")
+        _need(e.free_symbols <= {x, y}, lambda: f"{e} has symbols other than {x}, {y}")
+    claim = Claim("identity_plane", _s(l), _s(sp.Tuple(x, y)), other=_s(r))
+    if l == r:
+        return claim
+    d = l - r
+    if d.is_rational_function(x, y) and all(a.is_Rational for a in d.atoms(sp.Number)) \
+            and not d.atoms(sp.NumberSymbol) and all(p.exp.is_Integer for p in d.atoms(sp.Pow)):
+        _need(sp.cancel(sp.together(d)) == 0, "the rational functions differ")
+        return claim, ("sympy-polys",)
+    _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
+    ok = 0
+    for p, q in _PLANE_POINTS:
+        try:
+            v = evaluate(d.subs({x: p, y: q}), bits=CROSS_CHECK_BITS).hull()
+        except Undefined:
+            continue
+        _need(v.contains(0), lambda: f"the identity fails at ({p}, {q}): lhs - rhs = {v}")
+        _need(bool(v.rad() < arb(2) ** -250), lambda: f"cross-check at ({p}, {q}) not precise enough")
+        ok += 1
+    _need(ok >= 3, "fewer than 3 points to cross-check the identity")
+    return claim, ("sympy-simplify", "arb")
+
+
 @rule("arb", "sympy-core")
 def value_sign(*, value):
     """The sign of an exact real constant: 0 when SymPy's automatic

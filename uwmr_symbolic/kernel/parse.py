@@ -9,8 +9,14 @@ from functools import lru_cache
 import sympy as sp
 
 _NAMES = ("Symbol Integer Rational Add Mul Pow exp log sin cos tanh atan asinh "
-          "sinh cosh erf Abs pi E oo").split()
+          "sinh cosh erf Abs pi E oo Tuple").split()
 _SCOPE = {n: getattr(sp, n) for n in _NAMES}
+# a design's f (design certificates) may use more; still constructors only
+_DESIGN_NAMES = ("Piecewise Max Min sign erfc erfi gamma acosh atanh asin acos tan "
+                 "sqrt Equality Unequality StrictGreaterThan StrictLessThan GreaterThan LessThan "
+                 "And Or Not true false").split()
+_DESIGN_SCOPE = {**_SCOPE, **{n: getattr(sp, n) for n in _DESIGN_NAMES},
+                 "ExprCondPair": sp.functions.elementary.piecewise.ExprCondPair}
 _ASSUMPTIONS = {"real", "positive", "nonnegative"}
 
 
@@ -18,11 +24,11 @@ class ParseError(ValueError):
     pass
 
 
-def _check(node):
+def _check(node, scope=_SCOPE):
     if isinstance(node, ast.Expression):
-        return _check(node.body)
+        return _check(node.body, scope)
     if isinstance(node, ast.Name):
-        if node.id not in _SCOPE:
+        if node.id not in scope:
             raise ParseError(f"name not allowed: {node.id}")
         return
     if isinstance(node, ast.Constant):
@@ -30,11 +36,11 @@ def _check(node):
             raise ParseError(f"literal not allowed: {node.value!r}")
         return
     if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
-        return _check(node.operand)
+        return _check(node.operand, scope)
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
-        _check(node.func)
+        _check(node.func, scope)
         for a in node.args:
-            _check(a)
+            _check(a, scope)
         for k in node.keywords:
             if k.arg not in _ASSUMPTIONS or not (isinstance(k.value, ast.Constant) and k.value.value is True):
                 raise ParseError(f"keyword not allowed: {k.arg}")
@@ -43,12 +49,15 @@ def _check(node):
 
 
 @lru_cache(maxsize=4096)
-def parse(text: str) -> sp.Expr:
+def parse(text: str, design: bool = False) -> sp.Expr:
+    """The expression of an srepr; `design=True` also allows what a design's
+    f may contain (Piecewise and its conditions, Max, Min, more functions)."""
+    scope = _DESIGN_SCOPE if design else _SCOPE
     if not isinstance(text, str) or len(text) > 200_000:
         raise ParseError("expected an srepr string")
     try:
         tree = ast.parse(text, mode="eval")
     except SyntaxError as exc:
         raise ParseError(f"not an srepr: {exc}") from None
-    _check(tree)
-    return eval(compile(tree, "<srepr>", "eval"), {"__builtins__": {}}, dict(_SCOPE))  # noqa: S307
+    _check(tree, scope)
+    return eval(compile(tree, "<srepr>", "eval"), {"__builtins__": {}}, dict(scope))  # noqa: S307

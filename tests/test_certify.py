@@ -1,0 +1,76 @@
+"""The proposer (`uwmr_symbolic.certify`): kernel theorems for sign lemmas.
+
+Every expected answer is derived by hand in the comment of its case.  The
+proposer cannot make a false theorem (only kernel rules make theorems); what
+is tested here is that it finds proofs of true claims, that the theorem is
+exactly the claim asked for, and that false claims give None."""
+import pytest
+import sympy as sp
+
+from uwmr_symbolic.certify import sign_theorems
+from uwmr_symbolic.profile import S
+
+
+def _claim(th):
+    c = th.claim
+    return c.kind, sp.srepr(S) == c.var, c.lo, c.hi, c.lo_open, c.hi_open, c.want, c.strict
+
+
+TRUE = [
+    # s/(1+s^2) > 0 for s > 0: both factors positive
+    (S / (1 + S ** 2), 0, sp.oo),
+    # log(1+s^2)/2 > 0: s^2 > 0 gives 1 + s^2 - 1 > 0, log of it > 0
+    (sp.log(1 + S ** 2) / 2, 0, sp.oo),
+    # sqrt(1+s^2) - 1 > 0: zero of order 2 at 0, -> oo on the tail
+    (sp.sqrt(1 + S ** 2) - 1, 0, sp.oo),
+    # log(cosh(s)) > 0: cosh s > 1 for s != 0
+    (sp.log(sp.cosh(S)), 0, sp.oo),
+    # tanh(s) + s sech(s)^2 > 0: both terms positive for s > 0
+    (sp.tanh(S) + S * (1 - sp.tanh(S) ** 2), 0, sp.oo),
+    # 1 - cos(s) > 0 on (0, 2 pi): double zeros at both open ends
+    (1 - sp.cos(S), 0, 2 * sp.pi),
+    # design 3's F'(s) (alpha = 1, beta = 4): a product of positive factors
+    (sp.diff(sp.log(sp.cosh(sp.sqrt(4 * S ** 2 + 1) - 1)), S), 0, sp.oo),
+]
+
+
+@pytest.mark.parametrize("expr, lo, hi", TRUE, ids=[str(c[0])[:40] for c in TRUE])
+def test_true_strict_claims_are_proved_as_asked(expr, lo, hi):
+    theorems, why = sign_theorems(expr, S, lo, hi, seconds=120)
+    assert theorems is not None, why
+    assert len(theorems) == 1
+    assert theorems[0].claim.expr == sp.srepr(expr)
+    assert _claim(theorems[0]) == ("sign", True, sp.srepr(sp.sympify(lo)),
+                                   "oo" if hi == sp.oo else sp.srepr(hi), True, True, 1, True)
+
+
+FALSE = [
+    # (s - 1)^2 vanishes at s = 1
+    ((S - 1) ** 2, 0, sp.oo),
+    # (1 - s^2)/(1 + s^2)^2 is negative for s > 1
+    ((1 - S ** 2) / (1 + S ** 2) ** 2, 0, sp.oo),
+    # s - 3/2 < 0 on (0, 3/2)
+    (S - sp.Rational(3, 2), 0, sp.oo),
+    # sin(s) < 0 on (pi, 2 pi)
+    (sp.sin(S), 0, 4),
+]
+
+
+@pytest.mark.parametrize("expr, lo, hi", FALSE, ids=[str(c[0])[:40] for c in FALSE])
+def test_false_claims_give_no_theorem(expr, lo, hi):
+    theorems, why = sign_theorems(expr, S, lo, hi)
+    assert theorems is None and why
+
+
+def test_claim_except_at_exact_zeros_is_split_there():
+    """(s - 1)^2 (s + 1) > 0 on (0, 1) and on (1, oo)."""
+    theorems, why = sign_theorems((S - 1) ** 2 * (S + 1), S, 0, sp.oo, zeros=(1,), seconds=120)
+    assert theorems is not None, why
+    assert [(t.claim.lo, t.claim.hi) for t in theorems] == [("Integer(0)", "Integer(1)"), ("Integer(1)", "oo")]
+    assert all(t.claim.lo_open and t.claim.hi_open and t.claim.strict for t in theorems)
+
+
+def test_weak_claim_with_a_touching_zero():
+    """(s - 1)^2 >= 0 on (0, oo): weak, Sturm ignores the even factor."""
+    theorems, why = sign_theorems((S - 1) ** 2, S, 0, sp.oo, strict=False)
+    assert theorems is not None and not theorems[0].claim.strict, why

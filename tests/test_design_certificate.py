@@ -1,0 +1,149 @@
+"""Design certificates (issue 9): what the kernel re-checks of a report, the
+link from its theorems to f, tampering, the CLI and the cache re-check.
+
+Expected facts, by hand:
+* design 1, f = log(1 + rho)/2 with rho = e1^2 + e2^2 (Jiang's design):
+  F(s) = log(1 + s^2)/2 > 0 and F'(s) = s/(1 + s^2) > 0 for s > 0;
+  f(0, 0) = log(1)/2 = 0;
+* design 2, F(s) = sqrt(1 + s^2) - 1 (> 0 for s > 0), F' = s/sqrt(1 + s^2).
+"""
+import copy
+import json
+
+import pytest
+import sympy as sp
+
+from uwmr_symbolic import design_certificate as DC
+from uwmr_symbolic.batch import check_file
+from uwmr_symbolic.cache import ResultCache, design_key
+from uwmr_symbolic.design import load_design
+from uwmr_symbolic.kernel.parse import parse
+from uwmr_symbolic.profile import S
+from uwmr_symbolic.verify import verify_design
+
+from _cli import ROOT, run_cli
+
+DESIGN1 = ROOT / "designs" / "design1_jiang.py"
+DESIGN2 = ROOT / "designs" / "design2_sqrt.py"
+
+
+@pytest.fixture(scope="module")
+def cert1():
+    return DC.build(verify_design(DESIGN1))
+
+
+def _by_name(checks):
+    return {c.name: c for c in checks}
+
+
+def test_certificate_round_trips_and_names_what_it_rests_on(cert1):
+    checks = _by_name(DC.check(json.dumps(cert1)))
+    assert set(checks) == {f"P{i}" for i in range(1, 9)} | {"kf"}
+    assert all(c.status == "proved" for c in checks.values())
+    assert checks["P2"].kernel_checked and checks["P2"].theorems == 1
+    # f = log(1 + e1^2 + e2^2)/2 is literally F(sqrt(e1^2 + e2^2)): P4 rests on SymPy's core only
+    assert checks["P4"].kernel_checked and checks["P4"].assumptions == ["sympy-core"]
+    # kf = 1/2 = F'(1): 1/2 - F' = (s - 1)^2/(2 (1 + s^2)) >= 0, three theorems
+    assert checks["kf"].kernel_checked and checks["kf"].theorems == 3
+    # with P4's identity checked, the reduction no longer counts as unchecked
+    assert checks["P3"].unchecked == ["F(s) -> oo as s -> oo (limit calculus)"]
+    assert checks["P5"].unchecked == ["df/de1 exists on R^2 (F'(0+) = 0 at the origin)"]
+    assert checks["P1"].theorems == 0 and checks["P1"].unchecked == [DC.SEARCH_ONLY]
+
+
+def test_kf_and_p4_links(cert1):
+    """A certificate whose kf is changed, or whose P4 identity is about
+    another profile, fails its link to f."""
+    bad = copy.deepcopy(cert1)
+    bad["properties"]["kf"]["exact"] = sp.srepr(sp.Rational(1, 3))
+    with pytest.raises(DC.CertificateError, match="kf: the kernel's conclusions are not"):
+        DC.check(bad)
+    bad = copy.deepcopy(cert1)
+    bad["properties"]["P4"]["kernel"], bad["properties"]["P2"]["kernel"] = (
+        bad["properties"]["P2"]["kernel"], bad["properties"]["P4"]["kernel"])
+    with pytest.raises(DC.CertificateError, match="P2|P4"):
+        DC.check(bad)
+
+
+def test_kernel_conclusions_are_the_claims_about_this_f(cert1):
+    """P3 proves F > 0 and P5 proves F' > 0 on (0, oo) for F(s) = f(s, 0)."""
+    F = sp.log(1 + S ** 2) / 2
+    for name, expr in (("P3", F), ("P5", sp.diff(F, S))):
+        kernel = cert1["properties"][name]["kernel"]
+        claim = kernel["theorems"][kernel["conclusions"][0]]["claim"]
+        assert sp.simplify(parse(claim["expr"]) - expr) == 0
+        assert (claim["lo"], claim["hi"], claim["want"], claim["strict"]) == ("Integer(0)", "oo", 1, True)
+
+
+def test_swapped_kernel_parts_fail_the_link(cert1):
+    bad = copy.deepcopy(cert1)
+    bad["properties"]["P3"]["kernel"], bad["properties"]["P5"]["kernel"] = (
+        bad["properties"]["P5"]["kernel"], bad["properties"]["P3"]["kernel"])
+    with pytest.raises(DC.CertificateError, match="P3: the kernel's conclusion is not F > 0"):
+        DC.check(bad)
+
+
+def test_certificate_for_another_f_fails_the_link(cert1):
+    other = DC.build(verify_design(DESIGN2))
+    bad = copy.deepcopy(cert1)
+    bad["design"]["f"] = other["design"]["f"]
+    with pytest.raises(DC.CertificateError, match="P2|P3|P5"):
+        DC.check(bad)
+
+
+def test_tampered_step_is_rejected(cert1):
+    bad = copy.deepcopy(cert1)
+    steps = bad["properties"]["P5"]["kernel"]["theorems"]
+    step = next(t for t in steps if t["rule"] == "sign_by_sturm")
+    step["data"]["want"] = -step["data"]["want"]            # claim the other sign
+    with pytest.raises(DC.CertificateError, match="P5: theorem"):
+        DC.check(bad)
+
+
+def test_proved_without_anything_to_rest_on_is_rejected(cert1):
+    bad = copy.deepcopy(cert1)
+    bad["properties"]["P6"]["unchecked"] = []
+    with pytest.raises(DC.CertificateError, match="P6: proved with neither"):
+        DC.check(bad)
+
+
+def test_other_version_gives_a_clear_error(cert1):
+    bad = dict(cert1, version=2)
+    with pytest.raises(DC.CertificateError, match="version 2 is not supported: this checker reads version 1"):
+        DC.check(bad)
+
+
+def test_cli_writes_and_rechecks_a_certificate(tmp_path):
+    out = tmp_path / "d1.cert.json"
+    r = run_cli([str(DESIGN1), "--certificate", str(out), "--no-cache", "-q"])
+    assert r.returncode == 0, r.describe()
+    ok = run_cli(["--check-certificate", str(out)])
+    assert ok.returncode == 0, ok.describe()
+    assert "P2: proved; 1 kernel theorem(s) re-checked (rests on arb, sympy-core); kernel-checked" in ok.stdout
+    data = json.loads(out.read_text())
+    data["properties"]["P2"]["kernel"]["theorems"][0]["claim"]["want"] = 1     # f(0, 0) > 0: false
+    bad = tmp_path / "bad.json"
+    bad.write_text(json.dumps(data))
+    r = run_cli(["--check-certificate", str(bad)])
+    assert r.returncode == 1 and r.stderr.count("\n") == 1 and "does not check" in r.stderr, r.describe()
+    r = run_cli(["--check-certificate", str(tmp_path / "missing.json")])
+    assert r.returncode == 2 and "cannot read the certificate" in r.stderr, r.describe()
+
+
+def test_cache_hit_is_used_only_when_its_certificate_rechecks(tmp_path):
+    first = check_file(str(DESIGN1), 60, str(tmp_path))
+    assert first["cached"] is False and first["exit_status"] == 0
+    second = check_file(str(DESIGN1), 60, str(tmp_path))
+    assert second["cached"] is True
+    cache = ResultCache(tmp_path)
+    key = design_key(load_design(DESIGN1))
+    entry = json.loads(cache.path_for(key).read_text())
+    entry["result"]["properties"]["P6"]["verdict"] = "refuted"       # disagrees with the certificate
+    cache.path_for(key).write_text(json.dumps(entry))
+    assert check_file(str(DESIGN1), 60, str(tmp_path))["cached"] is False
+    entry = json.loads(cache.path_for(key).read_text())
+    steps = entry["result"]["certificate"]["properties"]["P3"]["kernel"]["theorems"]
+    steps[0]["claim"]["want"] = -steps[0]["claim"]["want"]           # a tampered kernel step
+    cache.path_for(key).write_text(json.dumps(entry))
+    third = check_file(str(DESIGN1), 60, str(tmp_path))
+    assert third["cached"] is False and third["properties"]["P3"]["verdict"] == "proved"

@@ -1,0 +1,397 @@
+"""The search proposes, the kernel decides: sign lemmas as kernel theorems.
+
+A sign lemma "want*E(x) > 0 (or >= 0) on an interval" is what P3, P5, P6,
+P7 and kf rest on (see `properties`, `kf`).  `sign_theorems` rebuilds such a
+lemma from the kernel's rules only (`uwmr_symbolic.kernel.core`): it
+searches — bisection cut points, widths of one-sided neighbourhoods, the
+order of a Taylor expansion, the tail form of s = 1/t — and hands every
+conclusion to a kernel rule, which re-checks it.  Nothing here can make a
+theorem that the kernel did not check; a step the kernel refuses makes the
+whole lemma `None` (the search's verdict then rests on the prover alone,
+and the certificate says so).
+
+Strategy, per piece between the caller's exact zeros:
+* a polynomial over Q: Sturm (`sign_by_sturm`);
+* an open end c: a one-sided lemma on (c, c+w] or [c-w, c) — a closed
+  cover then `weaken` when E is defined at c, else by the structure of E
+  (products, sums, odd increasing functions, log), else Taylor at c;
+* the closed middle: bisection with the kernel's own evaluator, the
+  accepted boxes become one `sign_by_cover`;
+* [R, oo): the tail form E_t of s = 1/t (`univariate.tail_form`), an
+  `identity` E_t(t) = E(1/t), the sign of E_t on (0, 1/R], `sign_on_tail`;
+  or `sign_by_monotone` from E(R) and the sign of E' on [R, oo).
+"""
+from __future__ import annotations
+
+import time
+from fractions import Fraction
+
+import sympy as sp
+
+from .kernel import core as K
+from .kernel.arb import Undefined, evaluate
+from .kernel.certificate import to_certificate
+
+OO = sp.oo
+WIDTHS = [sp.Rational(1, 2 ** k) for k in range(1, 16, 2)]
+TAYLOR_ORDER = 6
+BOX_BUDGET = 3000
+REDUCTION = "f(e1, e2) = F(sqrt(e1^2 + r e2^2)) (the reduction to one variable; P4 when r = 1)"
+SECONDS = 2.0           # search time for one lemma; the verdict does not depend on it
+
+
+class NoProof(Exception):
+    """The kernel did not accept a step (or the search found none)."""
+
+
+_CYCLE = NoProof("a claim that needs itself")
+
+
+def _ok(v, want, strict) -> bool:
+    if strict:
+        return v.positive() if want > 0 else v.negative()
+    return v.nonnegative() if want > 0 else v.nonpositive()
+
+
+def _rule(fn, *args, **kw):
+    try:
+        return fn(*args, **kw)
+    except (K.KernelError, Undefined, TypeError, ValueError, ZeroDivisionError) as exc:
+        raise NoProof(f"{getattr(fn, '__name__', fn)}: {exc}") from None
+
+
+def _mid(a, b):
+    """A short rational strictly between the exact a < b (exact comparisons
+    with Fractions when a and b are rational, the kernel's `_lt` otherwise)."""
+    fa, fb = float(a), float(b)
+    for digits in range(1, 40):
+        q = Fraction(round((fa + fb) / 2 * 10 ** digits), 10 ** digits)
+        if a.is_Rational and b.is_Rational:
+            if Fraction(a.p, a.q) < q < Fraction(b.p, b.q):
+                return sp.Rational(q.numerator, q.denominator)
+        elif fa < float(q) < fb and K._lt(a, sp.Rational(q.numerator, q.denominator)) \
+                and K._lt(sp.Rational(q.numerator, q.denominator), b):
+            return sp.Rational(q.numerator, q.denominator)
+    return (a + b) / 2
+
+
+def _cover(e, var, a, b, want, strict):
+    """sign_by_cover on the closed [a, b] from a bisection (the search)."""
+    leaves, stack, n = [], [(a, b)], 0
+    while stack:
+        u, v = stack.pop()
+        n += 1
+        if n > BOX_BUDGET:
+            raise NoProof(f"cover of [{a}, {b}]: budget exhausted")
+        try:
+            if _ok(evaluate(e, var, u, v), want, strict):
+                leaves.append(u)
+                continue
+        except Undefined:
+            pass
+        if n == 1:                              # undefined or unsigned at an end: no cover can work
+            for end in (a, b):
+                try:
+                    ok = _ok(evaluate(e, var, end, end, bits=192), want, strict)
+                except Undefined:
+                    ok = False
+                if not ok:
+                    raise NoProof(f"no sign at the end {var} = {end} of [{a}, {b}]")
+        if float(v) - float(u) < 1e-12:
+            raise NoProof(f"cover of [{a}, {b}]: stuck near {float(u):.6g}")
+        m = _mid(u, v)
+        stack += [(m, v), (u, m)]
+    return _rule(K.sign_by_cover, expr=e, var=var, cuts=sorted(leaves, key=float) + [b], want=want, strict=strict)
+
+
+class Prover:
+    """Proposes kernel steps for sign claims about one expression tree.
+
+    `prove(e, var, I, want, strict)` returns a kernel theorem "want*e > 0
+    (>= 0) on I" (I = (lo, hi, lo_open, hi_open), hi may be oo) or raises
+    NoProof.  Results and failures are memoised per claim."""
+
+    def __init__(self, seconds=SECONDS):
+        self.memo = {}
+        self.deadline = time.monotonic() + seconds
+
+    def prove(self, e, var, I, want, strict=True, depth=0, near=False):
+        """`near`: I is a one-sided neighbourhood of its open end; no further
+        splitting there, Taylor at that end instead."""
+        if time.monotonic() > self.deadline:
+            raise NoProof("the proposer's time budget is spent")
+        key = (e, var, I, want, strict, depth, near)
+        if key not in self.memo:
+            self.memo[key] = _CYCLE
+            try:
+                self.memo[key] = self._prove(e, var, I, want, strict, depth, near)
+            except NoProof as exc:
+                self.memo[key] = exc
+        out = self.memo[key]
+        if isinstance(out, NoProof):
+            raise out
+        return out
+
+    def _prove(self, e, var, I, want, strict, depth, near):
+        lo, hi, lo_open, hi_open = I
+        last = None
+        if e.is_polynomial(var) and all(x == OO or x.is_Rational for x in (lo, hi)):
+            try:
+                return _rule(K.sign_by_sturm, expr=e, var=var, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open,
+                             want=want, strict=strict)
+            except NoProof as exc:
+                last = exc
+        if e.is_rational_function(var) and not e.is_polynomial(var) and not e.has(sp.Float, sp.NumberSymbol):
+            try:                                # factored over Q: Sturm on each factor
+                return self._rewritten(e, sp.factor(sp.together(e)), var, I, want, strict, depth, near)
+            except NoProof as exc:
+                last = exc
+        if hi != OO:
+            try:                                # defined on the closure: one cover
+                return self._weaken(_cover(e, var, lo, hi, want, strict), I, strict)
+            except NoProof as exc:
+                last = exc
+        try:
+            return self._structure(e, var, I, want, strict, depth, near)
+        except NoProof as exc:
+            last = exc
+        if near:
+            return self._taylor(e, var, I, want)
+        if hi == OO:
+            return self._unbounded(e, var, I, want, strict, depth)
+        if lo_open or hi_open:
+            return self._split(e, var, I, want, strict, depth)
+        raise last
+
+    def _rewritten(self, e, form, var, I, want, strict, depth, near):
+        """The sign of e from that of an identical form (`sign_by_rewrite`)."""
+        if form == e:
+            raise NoProof("no other form")
+        th = self.prove(form, var, I, want, strict, depth, near)
+        lo, hi, lo_open, hi_open = I
+        ident = _rule(K.identity, lhs=e, rhs=form, var=var, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open)
+        return _rule(K.sign_by_rewrite, th, ident)
+
+    def _weaken(self, th, I, strict):
+        lo, hi, lo_open, hi_open = I
+        c = th.claim
+        if (K.parse(c.lo), K.parse(c.hi), c.lo_open, c.hi_open, c.strict) == (lo, hi, lo_open, hi_open, strict):
+            return th
+        return _rule(K.weaken, th, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open, strict=strict)
+
+    def _structure(self, e, var, I, want, strict, depth, near=False):
+        """Products, sums, odd increasing functions, exp, cosh and log."""
+        sub = lambda x, w, st=strict: self.prove(x, var, I, w, st, depth, near)   # noqa: E731
+        if e.is_Mul or (e.is_Pow and e.exp.is_Rational):
+            premises, sign = [], 1
+            for f in sp.Mul.make_args(e):
+                if not f.has(var):
+                    sign *= K._const_sign(f)
+                    continue
+                base, n = (f.base, f.exp) if f.is_Pow and f.exp.is_Rational else (f, sp.Integer(1))
+                if base == e:
+                    raise NoProof(f"no rule for {e}")
+                if not n.is_Integer:
+                    premises.append(sub(base, 1, strict or bool(n < 0)))
+                    continue
+                st = strict or bool(n < 0)
+                try:
+                    p = sub(base, 1, st)
+                except NoProof:
+                    p = sub(base, -1, st)
+                premises.append(p)
+                sign *= p.claim.want ** int(n % 2)
+            if sign != want:
+                raise NoProof("the product has the other sign")
+            return _rule(K.sign_of_product, *_unique(premises), expr=e)
+        if isinstance(e, K._ODD_INCREASING):
+            return _rule(K.sign_through_increasing, sub(e.args[0], want), expr=e)
+        if isinstance(e, (sp.exp, sp.cosh)) and want > 0:
+            y = e.args[0]
+            for w in (1, -1):
+                try:
+                    return _rule(K.sign_through_increasing, sub(y, w, False), expr=e)
+                except NoProof:
+                    continue
+            raise NoProof(f"{y} has no sign on {I}")
+        if isinstance(e, sp.log):
+            y = e.args[0]
+            prem = [sub(y - 1, want)] + ([] if want > 0 else [sub(y, 1, True)])
+            return _rule(K.sign_through_increasing, *prem, expr=e)
+        if e.is_Add:
+            premises = []
+            for t in e.args:
+                if t.has(var):
+                    try:
+                        premises.append(sub(t, want))
+                    except NoProof:
+                        premises.append(sub(t, want, False))
+            return _rule(K.sign_of_sum, *premises, expr=e, want=want)
+        raise NoProof(f"no structural rule for {e}")
+
+    def _taylor(self, e, var, I, want):
+        """Taylor at the open end c of a one-sided neighbourhood I."""
+        lo, hi, lo_open, _ = I
+        c, side = (lo, 1) if lo_open else (hi, -1)
+        m, _ = _derivative_order(e, var, c)
+        if m == 0:
+            raise NoProof(f"{e} neither vanishes nor is defined at {c}")
+        th = _rule(K.sign_by_taylor, expr=e, var=var, c=c, side=side, width=hi - lo, order=m)
+        if th.claim.want != want:
+            raise NoProof(f"{e} has the other sign beside {c}")
+        return th
+
+    def _near(self, e, var, c, side, want, w, depth):
+        """A strict sign on (c, c+w] (side +1) or [c-w, c) (side -1)."""
+        I = (c, c + w, True, False) if side > 0 else (c - w, c, False, True)
+        return self.prove(e, var, I, want, True, depth, near=True)
+
+    def _one_sided(self, e, var, c, side, want, room, depth):
+        last = None
+        for w in WIDTHS:
+            if K._lt(2 * w, room):
+                try:
+                    return self._near(e, var, c, side, want, w, depth)
+                except NoProof as exc:
+                    last = exc
+        raise NoProof(f"no one-sided lemma at {c}: {last}")
+
+    def _split(self, e, var, I, want, strict, depth):
+        """One-sided lemmas at the open ends, a cover in between, joined."""
+        a, b, a_open, b_open = I
+        parts, u, v, right = [], a, b, None
+        if a_open:
+            parts.append(self._one_sided(e, var, a, 1, want, b - a, depth))
+            u = K.parse(parts[0].claim.hi)
+        if b_open:
+            right = self._one_sided(e, var, b, -1, want, b - a, depth)
+            v = K.parse(right.claim.lo)
+        parts.append(_cover(e, var, u, v, want, strict))
+        if right is not None:
+            parts.append(right)
+        out = parts[0]
+        for p in parts[1:]:
+            out = _rule(K.join, self._weaken(out, _ends(out), strict), self._weaken(p, _ends(p), strict))
+        return out
+
+    def _unbounded(self, e, var, I, want, strict, depth):
+        """[lo, R] as a finite interval, [R, oo) by s = 1/t or monotonicity."""
+        from .univariate import T, tail_start
+        lo, _, lo_open, _ = I
+        R = tail_start(lo)
+        tail = None
+        try:
+            et = _tail_form(e, var)
+            th = self.prove(et, T, (sp.Integer(0), 1 / R, True, False), want, strict, depth)
+            ident = _rule(K.identity, lhs=et, rhs=e.subs(var, 1 / T), var=T, lo=0, hi=1 / R,
+                          lo_open=True, hi_open=False)       # only now: simplify may be slow
+            tail = _rule(K.sign_on_tail, th, ident, expr=e, var=var, R=R)
+        except NoProof as exc:
+            last = exc
+        if tail is None:
+            if depth >= 1:
+                raise last
+            try:
+                d = sp.diff(e, var)
+                dth = self.prove(d, var, (R, OO, False, True), want, False, depth + 1)
+                tail = self._weaken(_rule(K.sign_by_monotone, dth, expr=e, var=var, R=R), (R, OO, False, True), strict)
+            except NoProof:
+                raise last from None
+        head = self.prove(e, var, (lo, R, lo_open, False), want, strict, depth)
+        return _rule(K.join, head, tail)
+
+
+def _ends(th):
+    c = th.claim
+    return K.parse(c.lo), K.parse(c.hi), c.lo_open, c.hi_open
+
+
+def _tail_form(e, var):
+    from .univariate import tail_form
+    return tail_form(e, var)
+
+
+def _derivative_order(e, var, c):
+    """m and E^(m) with E(c) = ... = E^(m-1)(c) = 0 exactly, E^(m)(c) != 0."""
+    d = e
+    for m in range(TAYLOR_ORDER + 1):
+        if d.subs(var, c) != 0:
+            return m, d
+        d = sp.diff(d, var)
+    raise NoProof("Taylor order too high")
+
+
+def _unique(premises):
+    seen, out = set(), []
+    for p in premises:
+        if p.claim.expr not in seen:
+            seen.add(p.claim.expr)
+            out.append(p)
+    return out
+
+
+def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), strict=True, seconds=SECONDS):
+    """Kernel theorems whose union is the sign lemma: one theorem on each
+    part of <lo, hi> between the exact `zeros` (strict claims exclude them),
+    or None with the reason when the kernel did not accept a step."""
+    lo, hi = sp.sympify(lo), sp.sympify(hi)
+    pts = sorted(set(map(sp.sympify, zeros)), key=float)
+    ends = [lo, *pts, hi]
+    prover = Prover(seconds)
+    try:
+        return [prover.prove(sp.sympify(e), var, (ends[i], ends[i + 1], lo_open if i == 0 else True,
+                                                  hi_open if i == len(ends) - 2 else True), want, strict)
+                for i in range(len(ends) - 1)], ""
+    except (NoProof, K.KernelError, Undefined) as exc:
+        return None, str(exc)
+
+
+def radial_theorems(f, F, x, y, var) -> list:
+    """P4: the kernel's `identity_plane` f(x, y) = F(sqrt(x^2 + y^2)), or []."""
+    try:
+        return [K.identity_plane(lhs=f, rhs=F.subs(var, sp.sqrt(x ** 2 + y ** 2)), x=x, y=y)]
+    except (K.KernelError, Undefined):
+        return []
+
+
+def origin_value_theorems(value) -> list:
+    """P2: the kernel's `value_sign` of the exact f(0, 0), or [] if refused."""
+    try:
+        return [K.value_sign(value=value)]
+    except (K.KernelError, Undefined):
+        return []
+
+
+def sup_theorems(dF, c, point, var, positive):
+    """kf = sup F' = c on (0, oo) (bound (10)) as kernel theorems, or (None,
+    reason).  `point`: where c is attained (None: approached as s -> oo);
+    `positive`: a kernel theorem F' > 0 on (0, oo), so that sup |F'| = sup F'.
+    Upper: c - F' >= 0, by sign lemmas on both sides of the touching point
+    joined there (`join_at_zero`), then `sup_upper_by_sign`.  Lower: the value
+    at the point (`sup_lower_by_point`) or the limit of the tail form at
+    t = 0 (`sup_lower_by_limit`)."""
+    from .univariate import T
+    try:
+        gap = sp.sympify(c) - dF
+        zeros = [point] if point is not None and point != 0 else []
+        parts, why = sign_theorems(gap, var, 0, OO, zeros=zeros, strict=not zeros, seconds=SECONDS / 2)
+        if parts is None:
+            raise NoProof(f"{c} - F' >= 0: {why}")
+        upper = parts[0] if not zeros else _rule(K.join_at_zero, *parts)
+        upper = _rule(K.sup_upper_by_sign, upper, expr=dF, bound=c)
+        if point is not None:
+            lower = _rule(K.sup_lower_by_point, expr=dF, var=var, point=point, bound=c, lo=0, hi=OO,
+                          lo_open=point != 0, hi_open=True)
+        else:
+            w = sp.Rational(1, 4)
+            ident = _rule(K.identity, lhs=_tail_form(dF, var), rhs=dF.subs(var, 1 / T), var=T, lo=0, hi=w,
+                          lo_open=True, hi_open=False)
+            lower = _rule(K.sup_lower_by_limit, ident, expr=dF, var=var, width=w, bound=c, lo=0, lo_open=True)
+        return [positive, upper, lower], ""
+    except (NoProof, K.KernelError, Undefined) as exc:
+        return None, str(exc)
+
+
+def certificate(theorems) -> dict:
+    """The kernel certificate (version 1) of a list of theorems."""
+    return to_certificate(theorems)
