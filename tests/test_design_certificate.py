@@ -45,9 +45,11 @@ def test_certificate_round_trips_and_names_what_it_rests_on(cert1):
     assert checks["P4"].kernel_checked and checks["P4"].assumptions == ["sympy-core"]
     # kf = 1/2 = F'(1): 1/2 - F' = (s - 1)^2/(2 (1 + s^2)) >= 0, three theorems
     assert checks["kf"].kernel_checked and checks["kf"].theorems == 3
-    # with P4's identity checked, the reduction no longer counts as unchecked
-    assert checks["P3"].unchecked == ["F(s) -> oo as s -> oo (limit calculus)"]
-    assert checks["P5"].unchecked == ["df/de1 exists on R^2 (F'(0+) = 0 at the origin)"]
+    # P3: F > 0 and F -> oo (s F' = s^2/(1 + s^2) >= k > 0 on [R, oo): F grows like log s);
+    # P5: F' > 0, and F, F' continuous at 0+ with F'(0) = 0; with P4's identity
+    # checked, the reduction to one variable no longer counts as unchecked
+    assert checks["P3"].kernel_checked and checks["P3"].theorems == 2
+    assert checks["P5"].kernel_checked and checks["P5"].theorems == 3
     assert checks["P1"].theorems == 0 and checks["P1"].unchecked == [DC.SEARCH_ONLY]
 
 
@@ -71,6 +73,8 @@ def test_kernel_conclusions_are_the_claims_about_this_f(cert1):
     for name, expr in (("P3", F), ("P5", sp.diff(F, S))):
         kernel = cert1["properties"][name]["kernel"]
         claim = kernel["theorems"][kernel["conclusions"][0]]["claim"]
+        later = [kernel["theorems"][i]["claim"]["kind"] for i in kernel["conclusions"][1:]]
+        assert later == (["diverges"] if name == "P3" else ["limit", "limit"])
         assert sp.simplify(parse(claim["expr"]) - expr) == 0
         assert (claim["lo"], claim["hi"], claim["want"], claim["strict"]) == ("Integer(0)", "oo", 1, True)
 

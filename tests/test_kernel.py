@@ -637,3 +637,29 @@ def test_identity_plane():
     rejects(K.identity_plane, lhs=x ** 2 + y, rhs=x ** 2 + y ** 2, x=x, y=y)
     rejects(K.identity_plane, lhs=sp.exp(x + y), rhs=sp.exp(x) * sp.exp(y) + sp.Rational(1, 10 ** 60), x=x, y=y)
     rejects(K.identity_plane, lhs=x, rhs=x, x=x, y=sp.Symbol("y", positive=True))
+
+
+def test_continuous_at_end_and_diverges_by_growth():
+    """s/(1 + s^2) is continuous on [0, 1/2] with value 0 at 0; 1/s is not
+    defined at 0.  log(1 + s^2):
+    s F' = 2 s^2/(1 + s^2) >= 1 on [1, oo) (Sturm: s^2 - 1 >= 0 there), so it
+    diverges at log rate; F' >= 1 is false there, so the linear rate is refused."""
+    s = sp.Symbol("s", nonnegative=True)
+    t = K.continuous_at_end(expr=s / (1 + s ** 2), var=s, c=ZERO, width=Q(1, 2))
+    assert (t.claim.kind, t.claim.other) == ("limit", sp.srepr(ZERO))
+    rejects(K.continuous_at_end, expr=1 / s, var=s, c=ZERO, width=Q(1, 2))
+    F = sp.log(1 + s ** 2)
+    g = s * sp.diff(F, s) - 1
+    lower = K.sign_by_rewrite(
+        K.sign_of_product(
+            K.sign_by_sturm(expr=s ** 2 - 1, var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
+                            want=1, strict=False),
+            K.sign_by_sturm(expr=s ** 2 + 1, var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
+                            want=1, strict=True),
+            expr=(s ** 2 - 1) / (s ** 2 + 1)),
+        K.identity(lhs=g, rhs=(s ** 2 - 1) / (s ** 2 + 1), var=s, lo=sp.Integer(1), hi=sp.oo,
+                   lo_open=False, hi_open=True))
+    d = K.diverges_by_growth(lower, expr=F, var=s, R=sp.Integer(1), rate="log", k=sp.Integer(1))
+    assert (d.claim.kind, d.claim.lo, d.claim.hi) == ("diverges", sp.srepr(sp.Integer(1)), "oo")
+    rejects(K.diverges_by_growth, lower, expr=F, var=s, R=sp.Integer(1), rate="linear", k=sp.Integer(1))
+    rejects(K.diverges_by_growth, lower, expr=F, var=s, R=sp.Integer(1), rate="log", k=sp.Integer(2))

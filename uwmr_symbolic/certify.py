@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import time
 from fractions import Fraction
+from functools import lru_cache
 
 import sympy as sp
 
@@ -37,7 +38,7 @@ WIDTHS = [sp.Rational(1, 2 ** k) for k in range(1, 16, 2)]
 TAYLOR_ORDER = 6
 BOX_BUDGET = 3000
 REDUCTION = "f(e1, e2) = F(sqrt(e1^2 + r e2^2)) (the reduction to one variable; P4 when r = 1)"
-SECONDS = 2.0           # search time for one lemma; the verdict does not depend on it
+SECONDS = 1.0           # CPU seconds of search for one lemma; the verdict does not depend on it
 
 
 class NoProof(Exception):
@@ -113,13 +114,14 @@ class Prover:
 
     def __init__(self, seconds=SECONDS):
         self.memo = {}
-        self.deadline = time.monotonic() + seconds
+        self.deadline = time.process_time() + seconds      # CPU time: the same on a loaded machine
+        self.spent = NoProof("the proposer's time budget is spent")
 
     def prove(self, e, var, I, want, strict=True, depth=0, near=False):
         """`near`: I is a one-sided neighbourhood of its open end; no further
         splitting there, Taylor at that end instead."""
-        if time.monotonic() > self.deadline:
-            raise NoProof("the proposer's time budget is spent")
+        if time.process_time() > self.deadline:
+            raise self.spent
         key = (e, var, I, want, strict, depth, near)
         if key not in self.memo:
             self.memo[key] = _CYCLE
@@ -247,12 +249,21 @@ class Prover:
         return self.prove(e, var, I, want, True, depth, near=True)
 
     def _one_sided(self, e, var, c, side, want, room, depth):
+        """A one-sided lemma at c, trying shrinking widths; where e is not
+        defined at c (no Taylor, no cover touching c) only the widest."""
         last = None
-        for w in WIDTHS:
+        try:
+            evaluate(e, var, c, c)
+            widths = WIDTHS
+        except Undefined:
+            widths = [w for w in WIDTHS if K._lt(2 * w, room)][:1]
+        for w in widths:
             if K._lt(2 * w, room):
                 try:
                     return self._near(e, var, c, side, want, w, depth)
                 except NoProof as exc:
+                    if exc is self.spent:
+                        raise
                     last = exc
         raise NoProof(f"no one-sided lemma at {c}: {last}")
 
@@ -330,6 +341,7 @@ def _unique(premises):
     return out
 
 
+@lru_cache(maxsize=256)
 def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), strict=True, seconds=SECONDS):
     """Kernel theorems whose union is the sign lemma: one theorem on each
     part of <lo, hi> between the exact `zeros` (strict claims exclude them),
@@ -354,6 +366,49 @@ def radial_theorems(f, F, x, y, var) -> list:
         return []
 
 
+def growth_theorems(F, var) -> list:
+    """P3's "F(s) -> oo": `diverges_by_growth` from F' >= k or s F' >= k > 0
+    on [R, oo) (the proposer picks R, the rate and k), or []."""
+    d = sp.diff(F, var)
+    prover = Prover(SECONDS / 2)        # one time budget for every attempt
+    for R in (sp.Integer(4), sp.Integer(16)):
+        for rate, g in (("log", var * d), ("linear", d)):
+            try:
+                lo = float(evaluate(g, var, R, R, bits=128).lo.lower())
+            except Undefined:
+                continue
+            if not lo > 0:
+                continue
+            for k in (Fraction(lo / 2).limit_denominator(1000), Fraction(lo / 16).limit_denominator(1000)):
+                if k <= 0:
+                    continue
+                k = sp.Rational(k.numerator, k.denominator)
+                try:
+                    th = prover.prove(g - k, var, (R, OO, False, True), 1, False)
+                    return [_rule(K.diverges_by_growth, th, expr=F, var=var, R=R, rate=rate, k=k)]
+                except NoProof as exc:
+                    if exc is prover.spent:
+                        return []
+                    continue
+    return []
+
+
+def origin_theorems(F, var) -> list:
+    """P5 at the origin: F and F' continuous on [0, w] with F'(0) = 0
+    (`continuous_at_end`), so F'(0+) = 0 and F has the one-sided derivative
+    0 at s = 0 (mean value theorem), or []."""
+    d = sp.diff(F, var)
+    for w in (sp.Rational(1, 2), sp.Rational(1, 16)):
+        try:
+            out = [_rule(K.continuous_at_end, expr=F, var=var, c=0, width=w),
+                   _rule(K.continuous_at_end, expr=d, var=var, c=0, width=w)]
+        except NoProof:
+            continue
+        if out[1].claim.other == K._s(0):
+            return out
+    return []
+
+
 def origin_value_theorems(value) -> list:
     """P2: the kernel's `value_sign` of the exact f(0, 0), or [] if refused."""
     try:
@@ -373,7 +428,7 @@ def sup_theorems(dF, c, point, var, positive):
     from .univariate import T
     try:
         gap = sp.sympify(c) - dF
-        zeros = [point] if point is not None and point != 0 else []
+        zeros = (point,) if point is not None and point != 0 else ()
         parts, why = sign_theorems(gap, var, 0, OO, zeros=zeros, strict=not zeros, seconds=SECONDS / 2)
         if parts is None:
             raise NoProof(f"{c} - F' >= 0: {why}")

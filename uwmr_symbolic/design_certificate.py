@@ -123,13 +123,22 @@ def _link(name, f, theorems, exact=None) -> list[str]:
         return ["the kernel's claims are about the pieces of F (the split of F is the search's)"]
     if name == "kf":
         return _link_kf(sp.diff(F, S), exact, claims)
-    want = F if name == "P3" else sp.diff(F, S)
-    ok = len(claims) == 1 and claims[0].kind == "sign" and (
+    dF = sp.diff(F, S)
+    want = F if name == "P3" else dF
+    ok = len(claims) in (1, 2, 3) and claims[0].kind == "sign" and (
         claims[0].expr, claims[0].var, claims[0].lo, claims[0].hi, claims[0].lo_open, claims[0].hi_open,
         claims[0].want, claims[0].strict) == (sp.srepr(want), sp.srepr(S), "Integer(0)", "oo", True, True, 1, True)
     if not ok:
         raise CertificateError(f"{name}: the kernel's conclusion is not {'F' if name == 'P3' else 'dF/ds'} > 0 "
                                "on (0, oo) for this f")
+    rest = [(c.kind, c.expr, c.var, c.lo) for c in claims[1:]]
+    if name == "P3" and rest and not (len(rest) == 1 and rest[0][:3] == ("diverges", sp.srepr(F), sp.srepr(S))):
+        raise CertificateError("P3: the second conclusion is not F(s) -> oo")
+    if name == "P5" and rest and not (
+            len(rest) == 2 and [r[:4] for r in rest] == [("limit", sp.srepr(F), sp.srepr(S), "Integer(0)"),
+                                                         ("limit", sp.srepr(dF), sp.srepr(S), "Integer(0)")]
+            and claims[2].other == "Integer(0)"):
+        raise CertificateError("P5: the further conclusions are not F, F' continuous at 0+ with F'(0+) = 0")
     return []
 
 

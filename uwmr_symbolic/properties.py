@@ -28,7 +28,8 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .design import Design
 from .interval import Interval, IntervalFunction, Undefined
-from .certify import REDUCTION, origin_value_theorems, radial_theorems, sign_theorems
+from .certify import (REDUCTION, growth_theorems, origin_theorems, origin_value_theorems, radial_theorems,
+                      sign_theorems)
 from .kf import KfCertificate, certify_kf, certify_sup, scale
 from .limits import NoLimit, limit_right
 from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
@@ -210,13 +211,19 @@ def _show(v):
     return "undecided" if v is None else str(v)
 
 
-def _lemmas(v: Verdict, lemma: Verdict, *unchecked: str) -> Verdict:
+def _lemmas(v: Verdict, lemma: Verdict, unchecked: str, extra=None) -> Verdict:
     """v with the kernel theorems of `lemma` and the facts still resting on
-    the search alone: the radial reduction (P4) and `unchecked`."""
-    v.details["kernel"] = lemma.details.get("kernel", [])
-    v.details["unchecked"] = [REDUCTION,
-                              *lemma.details.get("unchecked", []), *unchecked]
+    the search alone: the radial reduction (P4) and `unchecked` -- unless
+    `extra`, the proposer for that fact, gives kernel theorems for it."""
+    found = extra() if extra is not None else []
+    v.details["kernel"] = lemma.details.get("kernel", []) + found
+    v.details["unchecked"] = [REDUCTION, *lemma.details.get("unchecked", []), *([] if found else [unchecked])]
     return v
+
+
+def _single_formula(a: Analysis):
+    """F when the profile is one formula on (0, oo) (no Piecewise), else None."""
+    return a.F if len(a.profile.pieces) == 1 and not a.F.has(sp.Piecewise) else None
 
 
 def _all(parts, what) -> Verdict:
@@ -330,7 +337,8 @@ def verify_p3(a: Analysis) -> Verdict:
             return unknown(f"{pos.reason}; cannot decide whether f -> oo ({exc})")
         if not pos.proved:
             return pos
-        return _lemmas(proved(f"{pos.reason}; {growth}"), pos, "F(s) -> oo as s -> oo (growth of F')")
+        return _lemmas(proved(f"{pos.reason}; {growth}"), pos, "F(s) -> oo as s -> oo (growth of F')",
+                       lambda: _growth(a))
     if lim != sp.oo:
         return refuted(f"f is not radially unbounded: f(e) -> {lim} as |e| -> oo in every direction "
                        "(limit calculus on F(1/t), t -> 0+)",
@@ -338,7 +346,12 @@ def verify_p3(a: Analysis) -> Verdict:
     if not pos.proved:
         return pos
     return _lemmas(proved(f"{pos.reason}; F(s) -> oo as s -> oo (limit calculus on F(1/t))"), pos,
-                   "F(s) -> oo as s -> oo (limit calculus)")
+                   "F(s) -> oo as s -> oo (limit calculus)", lambda: _growth(a))
+
+
+def _growth(a: Analysis) -> list:
+    F = _single_formula(a)
+    return growth_theorems(F, S) if F is not None else []
 
 
 def _grows_without_bound(dF, lo) -> str | None:
@@ -372,7 +385,8 @@ def verify_p5(a: Analysis) -> Verdict:
         return unknown(f"{pos.reason}, but {exists.reason}")
     return _lemmas(proved(f"df/de1 tanh(e1) = F'(s) e1 tanh(e1)/s with {pos.reason}; "
                           "df/de1 = 0 on e1 = 0 (F'(0+) = 0 at the origin)"), pos,
-                   "df/de1 exists on R^2 (F'(0+) = 0 at the origin)")
+                   "df/de1 exists on R^2 (F'(0+) = 0 at the origin)",
+                   lambda: origin_theorems(F, S) if (F := _single_formula(a)) is not None else [])
 
 
 def verify_p6(a: Analysis) -> Verdict:

@@ -33,7 +33,7 @@ SMALL = (sp.Rational(1, 10 ** 12), sp.Rational(1, 10 ** 24))   # distances to a 
 @dataclass
 class Contradiction:
     prop: str           # P1..P8 or kf
-    kind: str           # false proof | wrong refutation | bad witness | wrong kf | crash | hang | unusable
+    kind: str           # false proof | wrong refutation | bad witness | wrong kf | certificate | crash | hang | unusable
     evidence: str
     known: str | None = None
 
@@ -281,6 +281,9 @@ def check(case: Case, result: dict) -> list[Contradiction]:
     if "error" in result:
         return [Contradiction("-", "unusable", f"a valid design was rejected: {result['error']}")]
     out = []
+    if result.get("certificate_error"):
+        out.append(Contradiction("-", "certificate", f"the design certificate does not re-check: "
+                                 f"{result['certificate_error'][:300]}"))
     ev = Evidence(case)
     searches = {"P1": ev.p1, "P2": ev.p2, "P3": ev.p3, "P4": ev.p4, "P5": ev.p5, "P6": ev.p6,
                 "P7": ev.p7, "P8": ev.p8}

@@ -15,7 +15,10 @@ Claim semantics (I: an interval of the real line, ends exact):
 * value_sign: the exact real constant E has sign want (-1, 0 or 1);
 * sup_upper:  E is defined on I and E(x) <= bound there (so sup_I E <= bound);
 * sup_lower:  sup of E over the points of I where it is defined is >= bound
-              (for every eps > 0 some x in I has E(x) > bound - eps).
+              (for every eps > 0 some x in I has E(x) > bound - eps);
+* identity_plane: lhs(x, y) = rhs(x, y) where both are defined (var: (x, y));
+* limit:      E is continuous on [lo, hi] and E(lo) = other, so E -> other as x -> lo+;
+* diverges:   E is defined on [lo, oo) and E(x) -> +oo as x -> oo.
 
 Assumptions a theorem rests on are named strings: "arb" (python-flint's
 outward rounding), "sympy-core" (automatic evaluation, substitution, srepr),
@@ -94,12 +97,19 @@ class Theorem:
 
 
 def _s(e) -> str:
-    return sp.srepr(_sym(e))
+    return _srepr(_sym(e))
+
+
+@functools.lru_cache(maxsize=16384)
+def _srepr(e: sp.Basic) -> str:
+    """srepr, cached: SymPy objects are immutable, and since SymPy 1.13 equal
+    (hence same-key) objects have the same srepr (Float(2) != Integer(2))."""
+    return sp.srepr(e)
 
 
 def _encode(v):
     if isinstance(v, sp.Basic):
-        return {"$": sp.srepr(v)}
+        return {"$": _srepr(v)}
     if isinstance(v, (list, tuple)):
         return [_encode(u) for u in v]
     if v is None or isinstance(v, (bool, int, str)):
@@ -778,6 +788,47 @@ def identity_plane(*, lhs, rhs, x, y):
         ok += 1
     _need(ok >= 3, "fewer than 3 points to cross-check the identity")
     return claim, ("sympy-simplify", "arb")
+
+
+@rule("arb", "sympy-core")
+def continuous_at_end(*, expr, var, c, width):
+    """E is defined, hence continuous, on the closed [c, c+w] (Arb range
+    evaluation: every supported function is continuous where defined) and
+    its value at c is exactly v (SymPy's evaluation of E(c) is a number
+    without floats, and Arb's enclosure of E(c) - v contains 0).  Then
+    lim E(x) as x -> c+ is v.  Claim kind "limit" with other = v."""
+    c, w = _number(c), _number(width)
+    _need(c not in (OO, -OO) and w != OO and _lt(0, w), "finite c and w > 0")
+    _interval(var, c, c + w, False, False, at_zero=True)
+    e = _expr(expr, var)
+    try:
+        evaluate(e, var, c, c + w)
+    except Undefined as exc:
+        raise KernelError(f"{e} not defined on [{c}, {c + w}]: {exc}") from None
+    v = _number(e.subs(var, c))
+    _need(evaluate(e - v, var, c, c, bits=256).hull().contains(0), "Arb disagrees with E(c)")
+    return Claim("limit", _s(e), _s(var), _s(c), _s(c + w), other=_s(v))
+
+
+@rule("arb", "sympy-core", "sympy-diff")
+def diverges_by_growth(lower, *, expr, var, R, rate, k):
+    """E(x) -> +oo as x -> oo.  Premise: G - k >= 0 on [R, oo), with k > 0
+    exact and G = E' (rate "linear") or G = x E' (rate "log"), E' being
+    `sympy.diff(E)`; E defined for every x > 0 (`defined_for_positive`), R > 0.
+    By the mean value theorem E(x) >= E(R) + k (x - R), resp. (integrating
+    E' >= k/x) E(x) >= E(R) + k log(x/R); both tend to +oo."""
+    _is_sign(lower)
+    R, k = _number(R), _number(k)
+    _need(R != OO and _lt(0, R) and k != OO and _lt(0, k), "R > 0 and k > 0")
+    _need(rate in ("linear", "log"), "rate is 'linear' or 'log'")
+    e = _expr(expr, var)
+    d = sp.diff(e, var)
+    g = d if rate == "linear" else var * d
+    c = lower.claim
+    _need((c.expr, c.var, c.lo, c.lo_open, c.hi, c.want) == (_s(g - k), _s(var), _s(R), False, "oo", 1),
+          lambda: f"premise must be {g - k} >= 0 on [{R}, oo)")
+    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    return Claim("diverges", _s(e), _s(var), _s(R), "oo", False, True)
 
 
 @rule("arb", "sympy-core")
