@@ -24,8 +24,8 @@ Strategy, per piece between the caller's exact zeros:
 from __future__ import annotations
 
 import time
+from contextlib import contextmanager
 from fractions import Fraction
-from functools import lru_cache
 
 import sympy as sp
 
@@ -38,7 +38,22 @@ WIDTHS = [sp.Rational(1, 2 ** k) for k in range(1, 16, 2)]
 TAYLOR_ORDER = 6
 BOX_BUDGET = 3000
 REDUCTION = "f(e1, e2) = F(sqrt(e1^2 + r e2^2)) (the reduction to one variable; P4 when r = 1)"
-SECONDS = 1.0           # CPU seconds of search for one lemma; the verdict does not depend on it
+SECONDS = 0.5           # CPU seconds of search for one lemma; the verdict does not depend on it
+DESIGN_SECONDS = 1.5    # CPU seconds of search for all the lemmas of one design (see `start_design`)
+_design_deadline = float("inf")
+
+
+@contextmanager
+def design_budget(seconds=DESIGN_SECONDS):
+    """The proposer's time budget for one design's lemmas (`verify.verify_loaded`):
+    the kernel certification of a design costs at most about `seconds` of CPU
+    time beyond its search, whatever it fails to prove."""
+    global _design_deadline
+    old, _design_deadline = _design_deadline, time.process_time() + seconds
+    try:
+        yield
+    finally:
+        _design_deadline = old
 
 
 class NoProof(Exception):
@@ -114,7 +129,7 @@ class Prover:
 
     def __init__(self, seconds=SECONDS):
         self.memo = {}
-        self.deadline = time.process_time() + seconds      # CPU time: the same on a loaded machine
+        self.deadline = min(time.process_time() + seconds, _design_deadline)   # CPU time: load-independent
         self.spent = NoProof("the proposer's time budget is spent")
 
     def prove(self, e, var, I, want, strict=True, depth=0, near=False):
@@ -341,11 +356,25 @@ def _unique(premises):
     return out
 
 
-@lru_cache(maxsize=256)
+_FOUND: dict = {}          # sign lemmas already proved in this process (failures depend on the budget: not kept)
+
+
 def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), strict=True, seconds=SECONDS):
     """Kernel theorems whose union is the sign lemma: one theorem on each
     part of <lo, hi> between the exact `zeros` (strict claims exclude them),
     or None with the reason when the kernel did not accept a step."""
+    key = (e, var, lo, hi, want, lo_open, hi_open, tuple(zeros), strict)
+    if key not in _FOUND:
+        theorems, why = _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, seconds)
+        if theorems is None:
+            return None, why
+        if len(_FOUND) > 512:
+            _FOUND.clear()
+        _FOUND[key] = theorems
+    return _FOUND[key], ""
+
+
+def _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, seconds):
     lo, hi = sp.sympify(lo), sp.sympify(hi)
     pts = sorted(set(map(sp.sympify, zeros)), key=float)
     ends = [lo, *pts, hi]
@@ -445,6 +474,17 @@ def sup_theorems(dF, c, point, var, positive):
         return [positive, upper, lower], ""
     except (NoProof, K.KernelError, Undefined) as exc:
         return None, str(exc)
+
+
+def sup_upper_theorem(e, bound, var):
+    """E <= bound on (0, oo) (`sup_upper_by_sign` over bound - E >= 0), or None."""
+    parts, _ = sign_theorems(sp.sympify(bound) - e, var, 0, OO, strict=False)
+    if parts is None:
+        return None
+    try:
+        return _rule(K.sup_upper_by_sign, parts[0], expr=e, bound=bound)
+    except NoProof:
+        return None
 
 
 def certificate(theorems) -> dict:

@@ -101,6 +101,29 @@ def _link_kf(dF, exact, claims) -> list[str]:
     return []
 
 
+def _link_p1_p6(name, F, claims) -> list[str]:
+    """P1: F' > 0 on (0, oo); F and F' continuous at 0+ with F'(0) = 0;
+    F' <= U.  Every expression in a kernel sign theorem is built from
+    functions continuous where defined (the rules accept no others), so F' is
+    continuous on (0, oo); with F'(0+) = 0 the gradient F'(|e|) e/|e| of
+    f = F(|e|) is continuous on R^2, and |df/de2| <= U: P1.
+    P6: F' > 0 and F'(s)/s <= k with k > 0: h = F'/(k s) lies in [0, 1]."""
+    dF = sp.diff(F, S)
+    on = (sp.srepr(S), "Integer(0)", "oo", True, True)
+    got = [(c.kind, c.expr, (c.var, c.lo, c.hi, c.lo_open, c.hi_open)) for c in claims]
+    if name == "P1":
+        ok = (len(claims) == 4 and got[0] == ("sign", sp.srepr(dF), on) and claims[0].want == 1
+              and [g[:2] for g in got[1:3]] == [("limit", sp.srepr(F)), ("limit", sp.srepr(dF))]
+              and claims[1].lo == claims[2].lo == "Integer(0)" and claims[2].other == "Integer(0)"
+              and got[3] == ("sup_upper", sp.srepr(dF), on))
+    else:
+        ok = (len(claims) == 2 and got[0] == ("sign", sp.srepr(dF), on) and claims[0].want == 1
+              and got[1] == ("sup_upper", sp.srepr(dF / S), on) and parse(claims[1].other).is_positive)
+    if not ok:
+        raise CertificateError(f"{name}: the kernel's conclusions are not the ones {name} needs for this f")
+    return []
+
+
 def _link(name, f, theorems, exact=None) -> list[str]:
     """Facts the kernel's conclusions do not cover for property `name`."""
     claims = [t.claim for t in theorems]
@@ -116,13 +139,15 @@ def _link(name, f, theorems, exact=None) -> list[str]:
                 and claims[0].other == sp.srepr(rhs) and claims[0].var == sp.srepr(sp.Tuple(E1, E2))):
             raise CertificateError("P4: the kernel's conclusion is not f(e1, e2) = F(sqrt(e1^2 + e2^2))")
         return []
-    if name not in ("P3", "P5", "kf"):
+    if name not in ("P1", "P3", "P5", "P6", "kf"):
         return []
     F = _profile(f)
     if F.has(sp.Piecewise):
         return ["the kernel's claims are about the pieces of F (the split of F is the search's)"]
     if name == "kf":
         return _link_kf(sp.diff(F, S), exact, claims)
+    if name in ("P1", "P6"):
+        return _link_p1_p6(name, F, claims)
     dF = sp.diff(F, S)
     want = F if name == "P3" else dF
     ok = len(claims) in (1, 2, 3) and claims[0].kind == "sign" and (

@@ -29,7 +29,7 @@ from . import e1 as E1, e2 as E2
 from .design import Design
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, growth_theorems, origin_theorems, origin_value_theorems, radial_theorems,
-                      sign_theorems)
+                      sign_theorems, sup_upper_theorem)
 from .kf import KfCertificate, certify_kf, certify_sup, scale
 from .limits import NoLimit, limit_right
 from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
@@ -285,7 +285,13 @@ def verify_p1(a: Analysis) -> Verdict:
         return c1
     if kf.upper is None:
         return unknown(f"C^1 proved, but no finite bound on |df/de2| found: {kf.reason}")
-    return proved(f"{c1.reason}; kf = sup|F'| in [{float(kf.lower):.9g}, {float(kf.upper):.9g}]")
+    v = proved(f"{c1.reason}; kf = sup|F'| in [{float(kf.lower):.9g}, {float(kf.upper):.9g}]")
+    F = _single_formula(a)
+    if F is None or not kf.kernel:
+        return _lemmas(v, v, "f is C^1 with kf finite (continuity and the bound are the search's)")
+    positive, _ = sign_theorems(sp.diff(F, S), S, 0, sp.oo)
+    return _lemmas(v, v, "f is C^1 (continuity at the origin)",
+                   lambda: [positive[0], *origin, kf.kernel[1]] if (origin := origin_theorems(F, S)) else [])
 
 
 def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
@@ -422,8 +428,19 @@ def verify_p6(a: Analysis) -> Verdict:
     k = sup.exact if sup.exact is not None else round_up(sup.upper)
     h = sp.simplify(a.derivative(a.F, 1) / (k * S)).subs(S, a.radius)
     smallest = f"sup F'(s)/s = {sup.show()}"
-    return proved(f"k = {k} ({smallest}), h = F'(s)/(k s) in [0, 1]: h(e1, e2) = {h}",
-                  k=str(k), k_float=float_of(k), h=str(h))
+    v = proved(f"k = {k} ({smallest}), h = F'(s)/(k s) in [0, 1]: h(e1, e2) = {h}",
+               k=str(k), k_float=float_of(k), h=str(h))
+    return _lemmas(v, v, "0 <= h <= 1 (the bound of F'(s)/s is the search's)", lambda: _p6_theorems(a, k))
+
+
+def _p6_theorems(a: Analysis, k) -> list:
+    """F' > 0 (so h >= 0) and F'(s)/s <= k (so h <= 1), both on (0, oo)."""
+    F = _single_formula(a)
+    if F is None:
+        return []
+    dF = sp.diff(F, S)
+    positive, _ = sign_theorems(dF, S, 0, sp.oo)
+    return [positive[0], upper] if positive and (upper := sup_upper_theorem(dF / S, k, S)) else []
 
 
 def round_up(x: Fraction, digits: int = 7) -> sp.Rational:

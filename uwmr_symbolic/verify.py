@@ -8,6 +8,7 @@ from pathlib import Path
 
 import sympy as sp
 
+from .certify import design_budget
 from .design import Design, DesignError, load_design
 from .gains import GainCheck, check_gains
 from .kf import SupCertificate
@@ -79,8 +80,13 @@ def verify_design(path, timeout: float = DEFAULT_TIMEOUT) -> Report:
 def verify_loaded(design: Design, timeout: float = DEFAULT_TIMEOUT, start: float | None = None) -> Report:
     """Decide P1-P8, kf, the proof replay and the gains of a loaded design;
     `start` (time.monotonic()) is when the `timeout` began to run."""
-    path = design.path
     start = time.monotonic() if start is None else start
+    with design_budget():       # the kernel proposer's CPU budget for this design
+        return _verify(design, timeout, start)
+
+
+def _verify(design: Design, timeout: float, start: float) -> Report:
+    path = design.path
     deadline = start + timeout
     timed_out = False
     expired_before = timeouts.expired
