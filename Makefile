@@ -22,7 +22,7 @@ test: $(STAMP)
 
 # Tests not marked slow (markers in pyproject.toml), on 2 workers: under a minute.
 test-fast: $(STAMP)
-	$(BIN)/python -m pytest -q -n 2 -m "not slow and not fuzz"
+	$(BIN)/python -m pytest -q -n 2 --dist loadfile -m "not slow and not fuzz"
 
 # API reference from the docstrings and docs/*.md into site/; a warning fails the build.
 DOCS_STAMP := $(VENV)/.docs-installed
