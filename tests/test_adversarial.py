@@ -41,6 +41,7 @@ def test_flipped_piecewise_conditions_still_radial():
     assert code == 1
 
 
+@pytest.mark.slow        # waits for the kill: about 13 s
 def test_a_check_stuck_in_c_code_is_killed_and_reported_unknown():
     run = run_cli([HERE / "blocks_in_c.py", "--timeout", "2", "--format", "json"], timeout=120)
     assert run.elapsed < 60, run.describe()

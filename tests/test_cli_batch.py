@@ -22,6 +22,8 @@ from uwmr_symbolic import batch, cache  # noqa: E402
 from uwmr_symbolic.batch import Progress, expand_paths, worst_status  # noqa: E402
 from uwmr_symbolic.report import assignment_line  # noqa: E402
 
+pytestmark = pytest.mark.slow        # more than a few seconds: not in make test-fast
+
 PROPS = [f"P{i}" for i in range(1, 9)]
 #: --timeout for runs that include the design that hangs while loading
 SLOW_TIMEOUT = 8

@@ -4,6 +4,10 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
+pytestmark = pytest.mark.slow        # more than a few seconds: not in make test-fast
+
 ROOT = Path(__file__).resolve().parent.parent
 
 

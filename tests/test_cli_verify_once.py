@@ -1,8 +1,12 @@
 """`uwmr-verify FILE --codegen DIR --simulate` verifies the design once in
 the command's own process (besides the batch worker), with --timeout, and
 hands that report to both the code generator and the simulation."""
+import pytest
+
 import uwmr_symbolic.verify as verify_module
 from uwmr_symbolic import cli
+
+pytestmark = pytest.mark.slow        # simulates both paths: not in make test-fast
 
 
 def test_codegen_and_simulate_share_one_verification(tmp_path, monkeypatch):

@@ -15,6 +15,8 @@ from uwmr_symbolic.codegen import CodegenRefused, build, casadi_function, genera
 from uwmr_symbolic.codegen import c_backend
 from uwmr_symbolic.verify import verify_design
 
+pytestmark = pytest.mark.slow        # more than a few seconds: not in make test-fast
+
 ROOT = Path(__file__).resolve().parent.parent
 DESIGNS = sorted((ROOT / "designs").glob("*.py"))
 VERIFIED = {"design1_jiang", "design2_sqrt", "design3_logcosh"}

@@ -31,7 +31,7 @@ OK, ERR_NULL, ERR_NONFINITE, ERR_GAIN, ERR_RANGE = 0, 1, 2, 3, 4
 N_FLOAT, N_WIDE = 100_000, 20_000
 DOUBLE_TOL, FLOAT_TOL = 1e-12, 1e-5
 
-pytestmark = pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")
+pytestmark = [pytest.mark.slow, pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")]
 
 
 def random_inputs(seed):

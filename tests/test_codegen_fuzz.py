@@ -34,7 +34,7 @@ EXAMPLES = int(os.environ.get("UWMR_FUZZ_EXAMPLES", "3"))
 TIMEOUT = float(os.environ.get("UWMR_FUZZ_TIMEOUT", "10"))
 RHO = sp.Symbol("rho", positive=True)
 COUNTS = collections.Counter()
-pytestmark = pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")
+pytestmark = [pytest.mark.slow, pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")]
 
 WRAPS = [
     lambda u: sp.log(1 + u),

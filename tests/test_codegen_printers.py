@@ -21,6 +21,8 @@ from sympy.codegen.cfunctions import expm1, hypot, log1p
 from uwmr_symbolic.codegen.harness import STRICT
 from uwmr_symbolic.codegen.printers import CPrinter, PyPrinter, Unsupported
 
+pytestmark = pytest.mark.slow        # compiles ~350 expressions: not in make test-fast
+
 x, y, z = sp.symbols("x y z", real=True)
 EXPS = [sp.Rational(1, 2), -sp.Rational(1, 2), sp.Rational(3, 2), -sp.Rational(3, 2), 2, -2, 3, -1,
         sp.Rational(5, 2), 9, sp.Rational(1, 3)]

@@ -19,7 +19,7 @@ from uwmr_symbolic.codegen.validate import check, load_module
 from uwmr_symbolic.design import load_design
 
 ROOT = Path(__file__).resolve().parent
-pytestmark = pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")
+pytestmark = [pytest.mark.slow, pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")]
 
 
 def _generated(path: Path, tmp: Path):

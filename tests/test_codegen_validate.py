@@ -14,7 +14,7 @@ from uwmr_symbolic.verify import verify_design
 
 ROOT = Path(__file__).resolve().parent.parent
 D1 = ROOT / "designs/design1_jiang.py"
-pytestmark = pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")
+pytestmark = [pytest.mark.slow, pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")]
 
 
 @pytest.fixture(scope="module")

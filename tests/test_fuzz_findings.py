@@ -14,6 +14,8 @@ import sympy as sp
 from fuzz.oracle import _bound
 from fuzz.worker import Verifier
 
+pytestmark = pytest.mark.slow        # more than a few seconds: not in make test-fast
+
 HERE = Path(__file__).parent / "adversarial" / "fuzz_findings"
 
 

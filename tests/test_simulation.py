@@ -13,6 +13,8 @@ from uwmr_symbolic.simulation.metrics import metrics
 
 from pathlib import Path
 
+pytestmark = pytest.mark.slow        # more than a few seconds: not in make test-fast
+
 ROOT = Path(__file__).resolve().parents[1]
 
 DESIGNS = ROOT / "designs"

@@ -21,6 +21,8 @@ from fuzz.grammar import RHO, Case, designs
 from fuzz.run import run_profile
 from uwmr_symbolic import e1, e2
 
+pytestmark = pytest.mark.slow        # more than a few seconds: not in make test-fast
+
 FIXED_EXAMPLES = int(os.environ.get("UWMR_FUZZ_FIXED_EXAMPLES", "16"))
 FIXED_SEED = 20261123
 

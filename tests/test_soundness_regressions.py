@@ -13,6 +13,8 @@ from uwmr_symbolic.profile import S, continuous_on
 from uwmr_symbolic.univariate import polynomial_sign, prove_sign
 from uwmr_symbolic.verify import verify_design
 
+pytestmark = pytest.mark.slow        # more than a few seconds: not in make test-fast
+
 HEADER = """\
 import math
 import sympy as sp

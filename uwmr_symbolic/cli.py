@@ -7,7 +7,7 @@ import os
 import sys
 from pathlib import Path
 
-from . import __version__
+from . import __version__, settings
 from .batch import Progress, check_files, expand_paths, worst_status
 from .report import (render_github, render_json, render_junit, render_markdown_summary, render_summary,
                      render_text)
@@ -45,9 +45,16 @@ formats:
 
 cache:
   Results are cached by the design's canonical expression, parameters, gains,
-  the tool's version and the verifier's source, in $UWMR_CACHE_DIR (default
-  ~/.cache/uwmr-symbolic); --no-cache recomputes everything and stores nothing.
+  the tool's version and the verifier's source, in --cache-dir, else
+  $UWMR_CACHE_DIR, else cache-dir in [tool.uwmr-symbolic], else
+  ~/.cache/uwmr-symbolic; --no-cache recomputes everything and stores nothing.
   A result in which a time limit expired is not stored.
+
+settings:
+  [tool.uwmr-symbolic] in the nearest pyproject.toml with that table (searched
+  from the current folder upwards) may set timeout, jobs, designs (globs checked
+  when no FILE is given) and cache-dir; paths are relative to that file.
+  Command-line flags override them; an unknown key or a wrong value exits 2.
 
 A design file defines f (a SymPy expression in real symbols e1, e2) and
 optionally params, gains, name, description: see the README."""
@@ -65,12 +72,15 @@ def build_parser() -> argparse.ArgumentParser:
                    help="output format (default text)")
     p.add_argument("--junit-xml", metavar="PATH",
                    help="also write the JUnit XML report to PATH (whatever --format is)")
-    p.add_argument("--timeout", type=float, default=DEFAULT_TIMEOUT,
+    p.add_argument("--timeout", type=float, default=None,
                    help=f"seconds per design before undecided properties become 'unknown' "
-                        f"(default {DEFAULT_TIMEOUT:g})")
+                        f"(default {DEFAULT_TIMEOUT:g}, or timeout in [tool.uwmr-symbolic])")
     p.add_argument("-j", "--jobs", type=int, default=None,
                    help="worker processes for several files (default: the number of CPU cores)")
     p.add_argument("--no-cache", action="store_true", help="neither read nor write the result cache")
+    p.add_argument("--cache-dir", metavar="DIR", default=None,
+                   help="folder of the result cache (default $UWMR_CACHE_DIR, else cache-dir in "
+                        "[tool.uwmr-symbolic], else ~/.cache/uwmr-symbolic)")
     p.add_argument("-q", "--quiet", action="store_true",
                    help="text format: with several files print only the summary table")
     p.add_argument("--codegen", nargs="?", const="", metavar="DIR",
@@ -262,6 +272,11 @@ def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
     if args.check_certificate:
         return check_certificates(args.check_certificate)
+    try:
+        settings.apply(args, DEFAULT_TIMEOUT)   # [tool.uwmr-symbolic] in pyproject.toml; flags win
+    except settings.SettingsError as exc:
+        print(f"uwmr-verify: {exc}", file=sys.stderr)
+        return 2
     if args.timeout <= 0:
         print("uwmr-verify: --timeout must be positive", file=sys.stderr)
         return 2
@@ -284,7 +299,7 @@ def main(argv=None) -> int:
     progress = Progress(len(paths))
     try:
         results = check_files(paths, args.timeout, use_cache=not args.no_cache, jobs=args.jobs,
-                              progress=progress)
+                              cache_dir=args.cache_dir, progress=progress)
     finally:
         progress.close()
     cert_status = write_certificates(paths, results, args.certificate) if args.certificate else 0
