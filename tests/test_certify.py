@@ -10,6 +10,8 @@ import sympy as sp
 from uwmr_symbolic.certify import sign_theorems
 from uwmr_symbolic.profile import S
 
+pytestmark = pytest.mark.slow     # verifies designs / runs the proposer: seconds of CPU
+
 
 def _claim(th):
     c = th.claim

@@ -23,6 +23,8 @@ from uwmr_symbolic.verify import verify_design
 
 from _cli import ROOT, run_cli
 
+pytestmark = pytest.mark.slow     # verifies designs / runs the proposer: seconds of CPU
+
 DESIGN1 = ROOT / "designs" / "design1_jiang.py"
 DESIGN2 = ROOT / "designs" / "design2_sqrt.py"
 
