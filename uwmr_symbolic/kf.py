@@ -73,7 +73,11 @@ def _candidates(expr, lo, hi, interior=True):
     and bound was not the one at infinity), one-sided values at the ends
     (point None at oo)."""
     out = []
-    crit = attempt(lambda: sp.solveset(sp.diff(expr, S), S, sp.Interval.open(lo, hi)), 3.0) if interior else None
+    d = sp.diff(expr, S)
+    # SymPy solves E' = 0 in closed form only for algebraic or singly transcendental E'
+    # (exp(-s^2)(1 - 2 s^2)); with functions of functions it searches until the time limit
+    solvable = interior and _nesting(d) <= 1
+    crit = attempt(lambda: sp.solveset(d, S, sp.Interval.open(lo, hi)), 3.0) if solvable else None
     if isinstance(crit, sp.FiniteSet) and any(c.has(sp.CRootOf, sp.RootOf) for c in crit):
         crit = None     # algebraic numbers without radicals: no closed form to offer
     if isinstance(crit, sp.FiniteSet):
@@ -99,6 +103,14 @@ def _candidates(expr, lo, hi, interior=True):
         if v is not None and v not in (sp.oo, -sp.oo):
             out.append((v, hi))
     return out
+
+
+def _nesting(expr) -> int:
+    """How deeply functions are nested in expr (sqrt and powers do not count)."""
+    if not expr.args:
+        return 0
+    inner = max(_nesting(a) for a in expr.args)
+    return inner + 1 if isinstance(expr, sp.Function) else inner
 
 
 def _prove_bound(c, exprs, pieces, zeros_of) -> tuple[bool, bool | None]:

@@ -38,6 +38,7 @@ T = sp.Symbol("t", positive=True)       # t = 1/s on the unbounded part
 X = sp.Symbol("x", positive=True)       # distance from a boundary point
 
 MAX_BOXES = 4000          # bisection budget for one sign proof
+REGROUP_MAX_OPS = 120     # `prepare` regroups sums up to this size (sympy.count_ops)
 TAYLOR_ORDER = 6          # highest derivative tried at a zero
 NEAR_WIDTHS = [Fraction(1, 2 ** k) for k in range(1, 16, 2)]
 
@@ -129,13 +130,16 @@ def _checked_rewrite(expr, out):
     return expr
 
 
+@lru_cache(maxsize=2048)
 def prepare(expr: sp.Expr) -> sp.Expr:
     """A form of expr that interval arithmetic handles well (same function):
     tanh instead of sinh/cosh, cosh^-2 instead of 1 - tanh^2, and sums
     regrouped on their transcendental factors (fewer cancelling terms).
     Each rewrite is cross-checked (`numerically_zero`) before it is kept."""
     out = _one_minus_tanh_squared(_hyperbolic_to_tanh(expr))
-    if isinstance(out, sp.Add) and out.has(sp.Function):
+    # regrouping collects and factors: fast on the sizes it helps with (a few
+    # dozen operations), minutes on the derivatives of deeply nested profiles
+    if isinstance(out, sp.Add) and out.has(sp.Function) and sp.count_ops(out) <= REGROUP_MAX_OPS:
         syms = list(out.free_symbols)
         if len(syms) == 1:
             grouped = _regroup(out, syms[0])
@@ -155,6 +159,7 @@ def tail_start(lo) -> sp.Integer:
     return sp.Integer(max(4, int(2 * float(lo) + 4)))
 
 
+@lru_cache(maxsize=2048)
 def limit_at_infinity(expr, var):
     """lim expr as var -> oo by the limit calculus on expr(1/t), t -> 0+,
     tried on the plain substitution and on the tail form; raises NoLimit."""
@@ -167,6 +172,7 @@ def limit_at_infinity(expr, var):
     raise last
 
 
+@lru_cache(maxsize=2048)
 def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
     """expr(1/t) for t > 0, with radicals of rational functions brought over a
     common denominator so that powers of t cancel (sqrt(4/t**2 + 1) becomes
