@@ -259,7 +259,7 @@ def _flat(*args):
     """The arguments as float arrays of their broadcast shape, raveled, and that shape."""
     arrays = numpy.broadcast_arrays(*(numpy.asarray(a, dtype=float) for a in args))
     shape = arrays[0].shape
-    return [a.ravel().copy() for a in arrays], shape
+    return [a.ravel() for a in arrays], shape
 
 
 def _shaped(a, shape):
