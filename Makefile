@@ -16,6 +16,8 @@ demo: $(STAMP)
 	$(BIN)/python -m uwmr_symbolic.demo designs
 
 test: $(STAMP)
+	@command -v cmake >/dev/null 2>&1 || { apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq cmake; }
 	$(BIN)/python -m pytest -q
 	$(MAKE) --no-print-directory embedded
 
