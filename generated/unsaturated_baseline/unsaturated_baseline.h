@@ -58,7 +58,7 @@ extern "C" {
  * convergence.  Check your rate and delay by simulation
  * (uwmr_symbolic.simulation: run_digital(h=..., delay=...)).
  *
- * Bound (10).  For every input with status 0:
+ * Bound (10).  Law (9) gives, whatever the errors,
  *   |v| <= |vr| + k1,     |w| <= |wr| + lam |vr| KF + k2
  * would hold with KF = sup |df/de2|, but this design is NOT VERIFIED and
  * KF here is unbounded (no finite bound certified): the bound is not promised.
