@@ -67,8 +67,9 @@ extern "C" {
  *
  * Bound (10).  Law (9) gives, whatever the errors,
  *   |v| <= |vr| + k1,     |w| <= |wr| + lam |vr| KF + k2
- * would hold with KF = sup |df/de2|, but this design is NOT VERIFIED and
- * KF here is 1 = 1 (certified upper bound): the bound is not promised.
+ * with KF = sup |df/de2| when P1 holds.  This design is NOT VERIFIED:
+ * UWMR_DESIGN4_COSINE_KF = 1 = 1
+ * (certified upper bound) and the bound is not promised.
  *
  * Return value: UWMR_OK (0) on success, otherwise one of the codes below.
  * On every nonzero return the outputs are set to 0 (a safe stop: v = w = 0,
