@@ -248,3 +248,15 @@ def test_validation_refuses_a_wrapped_e3(tmp_path):
     files[f"{stem}.c"] = text.replace(line, "    d = remainder(thr - th, 6.283185307179586) + n * 6.283185307179586;")
     with pytest.raises(validate.ValidationFailed, match=r"C double errors \(7\).*e3"):
         validate.validate(load_design(design_path), model, files, None, casadi=False)
+
+
+def test_design_files_accept_lambda_for_lam(tmp_path):
+    text = (ROOT / "designs" / "design1_jiang.py").read_text()
+    alias = tmp_path / "alias.py"
+    alias.write_text(text.replace("lam=1.2", "**{'lambda': 1.2}"))
+    assert float(load_design(alias).gains["circle"]["lam"]) == 1.2
+    both = tmp_path / "both.py"
+    both.write_text(text.replace("lam=1.2", "lam=1.2, **{'lambda': 1.2}"))
+    from uwmr_symbolic.design import DesignError
+    with pytest.raises(DesignError, match="alias"):
+        load_design(both)
