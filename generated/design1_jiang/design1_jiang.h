@@ -148,7 +148,8 @@ int uwmr_design1_jiang_track(uwmr_design1_jiang_tracker *tracker, const uwmr_des
 
 /* One sample of the loop: _track, then _control.  pose is measured, ref is
  * the reference pose with its velocities vr [m/s], wr [rad/s]; (v, w) are
- * the commands [m/s, rad/s].  Status of the first step that fails. */
+ * the commands [m/s, rad/s].  Status of the first step that fails (when
+ * only _control fails, the tracker has taken the new headings). */
 int uwmr_design1_jiang_step(uwmr_design1_jiang_tracker *tracker, const uwmr_design1_jiang_pose *pose,
                                 const uwmr_design1_jiang_pose *ref, double vr, double wr,
                                 const uwmr_design1_jiang_gains *gains, double *v, double *w);
@@ -184,7 +185,8 @@ int uwmr_design1_jiang_track_f32(uwmr_design1_jiang_tracker_f32 *tracker, const 
 
 /* One sample of the loop: _track, then _control.  pose is measured, ref is
  * the reference pose with its velocities vr [m/s], wr [rad/s]; (v, w) are
- * the commands [m/s, rad/s].  Status of the first step that fails. */
+ * the commands [m/s, rad/s].  Status of the first step that fails (when
+ * only _control fails, the tracker has taken the new headings). */
 int uwmr_design1_jiang_step_f32(uwmr_design1_jiang_tracker_f32 *tracker, const uwmr_design1_jiang_pose_f32 *pose,
                                     const uwmr_design1_jiang_pose_f32 *ref, float vr, float wr,
                                     const uwmr_design1_jiang_gains_f32 *gains, float *v, float *w);

@@ -150,7 +150,8 @@ int uwmr_design3_logcosh_track(uwmr_design3_logcosh_tracker *tracker, const uwmr
 
 /* One sample of the loop: _track, then _control.  pose is measured, ref is
  * the reference pose with its velocities vr [m/s], wr [rad/s]; (v, w) are
- * the commands [m/s, rad/s].  Status of the first step that fails. */
+ * the commands [m/s, rad/s].  Status of the first step that fails (when
+ * only _control fails, the tracker has taken the new headings). */
 int uwmr_design3_logcosh_step(uwmr_design3_logcosh_tracker *tracker, const uwmr_design3_logcosh_pose *pose,
                                   const uwmr_design3_logcosh_pose *ref, double vr, double wr,
                                   const uwmr_design3_logcosh_gains *gains, double *v, double *w);
@@ -186,7 +187,8 @@ int uwmr_design3_logcosh_track_f32(uwmr_design3_logcosh_tracker_f32 *tracker, co
 
 /* One sample of the loop: _track, then _control.  pose is measured, ref is
  * the reference pose with its velocities vr [m/s], wr [rad/s]; (v, w) are
- * the commands [m/s, rad/s].  Status of the first step that fails. */
+ * the commands [m/s, rad/s].  Status of the first step that fails (when
+ * only _control fails, the tracker has taken the new headings). */
 int uwmr_design3_logcosh_step_f32(uwmr_design3_logcosh_tracker_f32 *tracker, const uwmr_design3_logcosh_pose_f32 *pose,
                                       const uwmr_design3_logcosh_pose_f32 *ref, float vr, float wr,
                                       const uwmr_design3_logcosh_gains_f32 *gains, float *v, float *w);

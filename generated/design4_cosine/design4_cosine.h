@@ -142,7 +142,8 @@ int uwmr_design4_cosine_track(uwmr_design4_cosine_tracker *tracker, const uwmr_d
 
 /* One sample of the loop: _track, then _control.  pose is measured, ref is
  * the reference pose with its velocities vr [m/s], wr [rad/s]; (v, w) are
- * the commands [m/s, rad/s].  Status of the first step that fails. */
+ * the commands [m/s, rad/s].  Status of the first step that fails (when
+ * only _control fails, the tracker has taken the new headings). */
 int uwmr_design4_cosine_step(uwmr_design4_cosine_tracker *tracker, const uwmr_design4_cosine_pose *pose,
                                  const uwmr_design4_cosine_pose *ref, double vr, double wr,
                                  const uwmr_design4_cosine_gains *gains, double *v, double *w);
@@ -178,7 +179,8 @@ int uwmr_design4_cosine_track_f32(uwmr_design4_cosine_tracker_f32 *tracker, cons
 
 /* One sample of the loop: _track, then _control.  pose is measured, ref is
  * the reference pose with its velocities vr [m/s], wr [rad/s]; (v, w) are
- * the commands [m/s, rad/s].  Status of the first step that fails. */
+ * the commands [m/s, rad/s].  Status of the first step that fails (when
+ * only _control fails, the tracker has taken the new headings). */
 int uwmr_design4_cosine_step_f32(uwmr_design4_cosine_tracker_f32 *tracker, const uwmr_design4_cosine_pose_f32 *pose,
                                      const uwmr_design4_cosine_pose_f32 *ref, float vr, float wr,
                                      const uwmr_design4_cosine_gains_f32 *gains, float *v, float *w);

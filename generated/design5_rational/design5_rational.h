@@ -136,7 +136,8 @@ int uwmr_design5_rational_track(uwmr_design5_rational_tracker *tracker, const uw
 
 /* One sample of the loop: _track, then _control.  pose is measured, ref is
  * the reference pose with its velocities vr [m/s], wr [rad/s]; (v, w) are
- * the commands [m/s, rad/s].  Status of the first step that fails. */
+ * the commands [m/s, rad/s].  Status of the first step that fails (when
+ * only _control fails, the tracker has taken the new headings). */
 int uwmr_design5_rational_step(uwmr_design5_rational_tracker *tracker, const uwmr_design5_rational_pose *pose,
                                    const uwmr_design5_rational_pose *ref, double vr, double wr,
                                    const uwmr_design5_rational_gains *gains, double *v, double *w);
@@ -172,7 +173,8 @@ int uwmr_design5_rational_track_f32(uwmr_design5_rational_tracker_f32 *tracker, 
 
 /* One sample of the loop: _track, then _control.  pose is measured, ref is
  * the reference pose with its velocities vr [m/s], wr [rad/s]; (v, w) are
- * the commands [m/s, rad/s].  Status of the first step that fails. */
+ * the commands [m/s, rad/s].  Status of the first step that fails (when
+ * only _control fails, the tracker has taken the new headings). */
 int uwmr_design5_rational_step_f32(uwmr_design5_rational_tracker_f32 *tracker, const uwmr_design5_rational_pose_f32 *pose,
                                        const uwmr_design5_rational_pose_f32 *ref, float vr, float wr,
                                        const uwmr_design5_rational_gains_f32 *gains, float *v, float *w);

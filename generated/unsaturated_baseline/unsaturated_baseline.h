@@ -135,7 +135,8 @@ int uwmr_unsaturated_baseline_track(uwmr_unsaturated_baseline_tracker *tracker, 
 
 /* One sample of the loop: _track, then _control.  pose is measured, ref is
  * the reference pose with its velocities vr [m/s], wr [rad/s]; (v, w) are
- * the commands [m/s, rad/s].  Status of the first step that fails. */
+ * the commands [m/s, rad/s].  Status of the first step that fails (when
+ * only _control fails, the tracker has taken the new headings). */
 int uwmr_unsaturated_baseline_step(uwmr_unsaturated_baseline_tracker *tracker, const uwmr_unsaturated_baseline_pose *pose,
                                        const uwmr_unsaturated_baseline_pose *ref, double vr, double wr,
                                        const uwmr_unsaturated_baseline_gains *gains, double *v, double *w);
@@ -171,7 +172,8 @@ int uwmr_unsaturated_baseline_track_f32(uwmr_unsaturated_baseline_tracker_f32 *t
 
 /* One sample of the loop: _track, then _control.  pose is measured, ref is
  * the reference pose with its velocities vr [m/s], wr [rad/s]; (v, w) are
- * the commands [m/s, rad/s].  Status of the first step that fails. */
+ * the commands [m/s, rad/s].  Status of the first step that fails (when
+ * only _control fails, the tracker has taken the new headings). */
 int uwmr_unsaturated_baseline_step_f32(uwmr_unsaturated_baseline_tracker_f32 *tracker, const uwmr_unsaturated_baseline_pose_f32 *pose,
                                            const uwmr_unsaturated_baseline_pose_f32 *ref, float vr, float wr,
                                            const uwmr_unsaturated_baseline_gains_f32 *gains, float *v, float *w);

@@ -29,6 +29,7 @@ heading between calls (e3 is never wrapped), and
 `step(tracker, pose, ref, vr, wr, gains) -> (v, w)` (and `step_status`),
 errors -> law -> commands in one call; gains {"k1", "k2", "lam"} ("lambda"
 is accepted for lam).  Units: m, rad, m/s, rad/s.
+
 NOT VERIFIED (--force): no accuracy is promised.
 """
 import numpy
