@@ -17,6 +17,8 @@ demo: $(STAMP)
 
 # The whole suite (about 8 min on 2 idle cores), then the Cortex-M check.
 test: $(STAMP)
+	@command -v cmake >/dev/null 2>&1 || { apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq cmake; }
 	$(BIN)/python -m pytest -q
 	$(MAKE) --no-print-directory embedded
 

@@ -113,7 +113,7 @@ int main(int argc, char **argv)
                 double v, w;
                 if (k == 0) {{
                     uwmr_{ident}_gains g;
-                    g.k1 = a[5]; g.k2 = a[6]; g.lambda = a[7];
+                    g.k1 = a[5]; g.k2 = a[6]; g.lam = a[7];
                     uwmr_{ident}_control(a[0], a[1], a[2], a[3], a[4], &g, &v, &w);
                 }} else if (k == 1) {{
                     hand_control(a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], &v, &w);

@@ -21,7 +21,7 @@ def test_verified_design_is_generated_as_committed(tmp_path):
     run = cli(ROOT / "designs/design1_jiang.py", "--codegen", out, "--no-cache")
     assert run.returncode == 0, run.stderr
     names = sorted(p.name for p in out.iterdir())
-    assert names == ["design1_jiang.c", "design1_jiang.h", "design1_jiang.py"]
+    assert names == ["CMakeLists.txt", "design1_jiang.c", "design1_jiang.h", "design1_jiang.py", "example_main.c"]
     for name in names:
         assert (out / name).read_text() == (ROOT / "generated/design1_jiang" / name).read_text()
 
@@ -34,7 +34,7 @@ def test_refuted_design_needs_force_and_then_carries_the_banner(tmp_path):
     assert not out.exists()
     run = cli(ROOT / "designs/design5_rational.py", "--codegen", out, "--force")
     assert run.returncode == 1                      # the verdict is still a refutation
-    for name in ("design5_rational.c", "design5_rational.h", "design5_rational.py"):
+    for name in ("design5_rational.c", "design5_rational.h", "design5_rational.py", "example_main.c", "CMakeLists.txt"):
         head = (out / name).read_text()[:400]
         assert "NOT VERIFIED: P3 refuted" in head, name
 

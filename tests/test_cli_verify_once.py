@@ -25,4 +25,4 @@ def test_codegen_and_simulate_share_one_verification(tmp_path, monkeypatch):
                        "--timeout", "45", "--jobs", "1"])
     assert status == 0
     assert calls == [(str(design), 45.0)]
-    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["jiang.c", "jiang.h", "jiang.py"]
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["CMakeLists.txt", "example_main.c", "jiang.c", "jiang.h", "jiang.py"]

@@ -52,8 +52,8 @@ def test_refuses_unverified_and_writes_nothing(stem, reports, tmp_path):
 def test_force_puts_banner_on_top_of_every_file(reports, tmp_path):
     written = generate(ROOT / "designs" / "unsaturated_baseline.py", tmp_path / "b", force=True,
                        report=reports["unsaturated_baseline"])
-    assert sorted(p.name for p in written) == ["unsaturated_baseline.c", "unsaturated_baseline.h",
-                                                 "unsaturated_baseline.py"]
+    assert sorted(p.name for p in written) == ["CMakeLists.txt", "example_main.c", "unsaturated_baseline.c",
+                                                 "unsaturated_baseline.h", "unsaturated_baseline.py"]
     for p in written:
         head = "\n".join(p.read_text().splitlines()[:3])
         assert "NOT VERIFIED: P1 refuted" in head, p

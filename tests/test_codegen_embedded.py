@@ -21,6 +21,22 @@ def test_cortex_m4f_float_variant_has_no_double(src, tmp_path):
     assert 0 < text < 16384
 
 
+@pytest.mark.skipif(not embedded.available(), reason="arm-none-eabi-gcc missing: `make embedded` installs it")
+def test_cortex_m4f_example_links_against_newlib(tmp_path):
+    """The example loop (float variant) links with --specs=nosys.specs; its
+    flash, static RAM and stack are measured, and the generated functions'
+    frames are all there."""
+    src = ROOT / "generated" / "design3_logcosh"
+    ex = embedded.example(src, tmp_path)
+    for label in ("newlib", "newlib-nano"):
+        flash, ram = ex[label]
+        assert 4000 < flash < 200_000 and 0 < ram < 64_000
+    assert ex["newlib-nano"][0] < ex["newlib"][0]
+    frames = ex["frames"]
+    assert {"main", "uwmr_design3_logcosh_step_f32", "uwmr_design3_logcosh_control_f32"} <= set(frames)
+    assert ex["stack"] == sum(frames.values()) and 0 < ex["stack"] < 4096
+
+
 def test_double_helpers_are_recognised():
     for name in ("__aeabi_dmul", "__aeabi_f2d", "__aeabi_d2f", "__muldf3", "__extendsfdf2", "__aeabi_i2d"):
         assert embedded.DOUBLE_HELPER.match(name), name

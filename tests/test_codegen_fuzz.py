@@ -98,7 +98,7 @@ def test_proved_random_designs_generate_validated_code(G, tmp_path_factory):
         COUNTS["refused"] += 1
         pytest.fail(f"G(rho) = {G}: a proved design whose code fails validation: {exc.reasons[0]}")
     COUNTS["generated"] += 1
-    assert len(written) == 3
+    assert len(written) == 5
     # the sanitizer build on the validation sample: no report, the status codes of the strict build
     model, _ = build(path, report=report)
     exe = build_executable(tmp / "out", "fuzz_design", tmp,

@@ -24,7 +24,8 @@ pytestmark = [pytest.mark.slow, pytest.mark.skipif(shutil.which("gcc") is None, 
 
 def _generated(path: Path, tmp: Path):
     written = generate(path, tmp / path.stem)
-    assert sorted(p.name for p in written) == sorted(f"{path.stem}{x}" for x in (".c", ".h", ".py"))
+    assert sorted(p.name for p in written) == sorted([*(f"{path.stem}{x}" for x in (".c", ".h", ".py")),
+                                                      "example_main.c", "CMakeLists.txt"])
     lib = build_library(tmp / path.stem, path.stem, tmp)
     mod = load_module(tmp / path.stem / f"{path.stem}.py", f"regression_{path.stem}")
     return lib, mod

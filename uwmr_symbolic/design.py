@@ -158,6 +158,10 @@ def _parse_gains(raw) -> dict:
     for scenario, entries in raw.items():
         if not isinstance(entries, dict):
             raise DesignError(f"gain scenario {scenario!r} must be a dict with {', '.join(GAIN_KEYS)}")
+        if "lambda" in entries:      # the paper's name, accepted for lam
+            if "lam" in entries:
+                raise DesignError(f"gain scenario {scenario!r} gives both 'lam' and its alias 'lambda'")
+            entries = {("lam" if k == "lambda" else k): v for k, v in entries.items()}
         unknown_keys = sorted(set(entries) - set(GAIN_KEYS))
         if unknown_keys:
             raise DesignError(f"gain scenario {scenario!r} has unknown entry {unknown_keys[0]!r}; "

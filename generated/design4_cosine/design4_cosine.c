@@ -50,7 +50,7 @@ static double prod_slow(const double *x, int n)
     return ldexp(mant, ex);
 }
 
-/* lambda vr df/de2(e1, e2) sinc(e3) for finite inputs */
+/* lam vr df/de2(e1, e2) sinc(e3) for finite inputs */
 static double gterm(double e1, double e2, double lam, double vr, double sinc)
 {
     const double a1 = fabs(e1), a2 = fabs(e2);
@@ -159,7 +159,7 @@ static int careful(double e1, double e2, double e3, double vr, double wr,
     }
     k1 = gains->k1;
     k2 = gains->k2;
-    lam = gains->lambda;
+    lam = gains->lam;
     if (!(isfinite(e1) && isfinite(e2) && isfinite(e3) && isfinite(vr) && isfinite(wr)
           && isfinite(k1) && isfinite(k2) && isfinite(lam))) {
         return UWMR_ERR_NONFINITE;
@@ -200,7 +200,7 @@ int uwmr_design4_cosine_control(double e1, double e2, double e3, double vr, doub
      * The careful path (called from two places, so it is not inlined here)
      * takes everything else and gives the same results within rounding. */
     if (gains != NULL && v != NULL && w != NULL) {
-        const double k1 = gains->k1, k2 = gains->k2, lam = gains->lambda;
+        const double k1 = gains->k1, k2 = gains->k2, lam = gains->lam;
         const double a1 = fabs(e1), a2 = fabs(e2), a3 = fabs(e3), s12 = a1 + a2;
         const double kmin = k1 < k2 ? (k1 < lam ? k1 : lam) : (k2 < lam ? k2 : lam);
         const double lv = lam * vr;
@@ -227,6 +227,135 @@ int uwmr_design4_cosine_control(double e1, double e2, double e3, double vr, doub
         return careful(e1, e2, e3, vr, wr, gains, v, w);
     }
     return careful(e1, e2, e3, vr, wr, gains, v, w);
+}
+
+/* The safe stop of the error functions: every output that exists is 0. */
+static void zero3(double *e1, double *e2, double *e3)
+{
+    if (e1 != NULL) {
+        *e1 = 0.0;
+    }
+    if (e2 != NULL) {
+        *e2 = 0.0;
+    }
+    if (e3 != NULL) {
+        *e3 = 0.0;
+    }
+}
+
+/* Errors (7) with e3 = (thr - th) + 2 pi n, n a whole number of turns.  A
+ * difference or a sum that overflows is retried with halved terms (the
+ * errors may be finite although xr - x is not). */
+static int errors_core(double x, double y, double th, double xr, double yr, double thr, double n,
+                       double *e1, double *e2, double *e3)
+{
+    double c, s, xt, yt, a, b, d;
+    zero3(e1, e2, e3);
+    if (e1 == NULL || e2 == NULL || e3 == NULL) {
+        return UWMR_ERR_NULL;
+    }
+    if (!(isfinite(x) && isfinite(y) && isfinite(th) && isfinite(xr) && isfinite(yr) && isfinite(thr))) {
+        return UWMR_ERR_NONFINITE;
+    }
+    c = cos(th);
+    s = sin(th);
+    xt = xr - x;
+    yt = yr - y;
+    a = c * xt + s * yt;
+    b = c * yt - s * xt;
+    if (!(isfinite(a) && isfinite(b))) {
+        xt = 0.5 * xr - 0.5 * x;
+        yt = 0.5 * yr - 0.5 * y;
+        a = 2.0 * (c * xt + s * yt);
+        b = 2.0 * (c * yt - s * xt);
+    }
+    d = (thr - th) + n * 6.283185307179586;
+    if (!isfinite(d)) {
+        d = 2.0 * ((0.5 * thr - 0.5 * th) + n * 3.141592653589793);
+    }
+    if (!(isfinite(a) && isfinite(b) && isfinite(d))) {
+        return UWMR_ERR_RANGE;
+    }
+    *e1 = a;
+    *e2 = b;
+    *e3 = d;
+    return UWMR_OK;
+}
+
+int uwmr_design4_cosine_errors(double x, double y, double th, double xr, double yr, double thr,
+                                   double *e1, double *e2, double *e3)
+{
+    return errors_core(x, y, th, xr, yr, thr, 0.0, e1, e2, e3);
+}
+
+void uwmr_design4_cosine_reset(uwmr_design4_cosine_tracker *tracker)
+{
+    if (tracker != NULL) {
+        tracker->th_last = 0.0;
+        tracker->thr_last = 0.0;
+        tracker->turns = 0.0;
+        tracker->turns_r = 0.0;
+        tracker->started = 0;
+    }
+}
+
+/* The whole number of turns nearest to d / (2 pi): the 2 pi multiple by
+ * which a heading that moved by less than pi jumped (d = last - new). */
+static double turns_of(double d)
+{
+    return floor(d / 6.283185307179586 + 0.5);
+}
+
+int uwmr_design4_cosine_track(uwmr_design4_cosine_tracker *tracker, const uwmr_design4_cosine_pose *pose,
+                                  const uwmr_design4_cosine_pose *ref, double *e1, double *e2, double *e3)
+{
+    double turns = 0.0, turns_r = 0.0;
+    int status;
+    zero3(e1, e2, e3);
+    if (tracker == NULL || pose == NULL || ref == NULL || e1 == NULL || e2 == NULL || e3 == NULL) {
+        return UWMR_ERR_NULL;
+    }
+    if (!(isfinite(pose->x) && isfinite(pose->y) && isfinite(pose->th)
+          && isfinite(ref->x) && isfinite(ref->y) && isfinite(ref->th))) {
+        return UWMR_ERR_NONFINITE;
+    }
+    if (fabs(pose->th) > UWMR_HEADING_MAX || fabs(ref->th) > UWMR_HEADING_MAX) {
+        return UWMR_ERR_RANGE;
+    }
+    if (tracker->started) {
+        turns = tracker->turns + turns_of(tracker->th_last - pose->th);
+        turns_r = tracker->turns_r + turns_of(tracker->thr_last - ref->th);
+    }
+    if (fabs(turns) > UWMR_TURNS_MAX || fabs(turns_r) > UWMR_TURNS_MAX) {
+        return UWMR_ERR_RANGE;
+    }
+    status = errors_core(pose->x, pose->y, pose->th, ref->x, ref->y, ref->th, turns_r - turns, e1, e2, e3);
+    if (status == UWMR_OK) {
+        tracker->th_last = pose->th;
+        tracker->thr_last = ref->th;
+        tracker->turns = turns;
+        tracker->turns_r = turns_r;
+        tracker->started = 1;
+    }
+    return status;
+}
+
+int uwmr_design4_cosine_step(uwmr_design4_cosine_tracker *tracker, const uwmr_design4_cosine_pose *pose,
+                                 const uwmr_design4_cosine_pose *ref, double vr, double wr,
+                                 const uwmr_design4_cosine_gains *gains, double *v, double *w)
+{
+    double e1, e2, e3;
+    const int status = uwmr_design4_cosine_track(tracker, pose, ref, &e1, &e2, &e3);
+    if (status != UWMR_OK) {
+        if (v != NULL) {
+            *v = 0.0;
+        }
+        if (w != NULL) {
+            *w = 0.0;
+        }
+        return status;
+    }
+    return uwmr_design4_cosine_control(e1, e2, e3, vr, wr, gains, v, w);
 }
 #endif /* UWMR_NO_DOUBLE */
 
@@ -257,7 +386,7 @@ static float prod_slow_f32(const float *x, int n)
     return ldexpf(mant, ex);
 }
 
-/* lambda vr df/de2(e1, e2) sinc(e3) for finite inputs */
+/* lam vr df/de2(e1, e2) sinc(e3) for finite inputs */
 static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
 {
     const float a1 = fabsf(e1), a2 = fabsf(e2);
@@ -366,7 +495,7 @@ static int careful_f32(float e1, float e2, float e3, float vr, float wr,
     }
     k1 = gains->k1;
     k2 = gains->k2;
-    lam = gains->lambda;
+    lam = gains->lam;
     if (!(isfinite(e1) && isfinite(e2) && isfinite(e3) && isfinite(vr) && isfinite(wr)
           && isfinite(k1) && isfinite(k2) && isfinite(lam))) {
         return UWMR_ERR_NONFINITE;
@@ -407,7 +536,7 @@ int uwmr_design4_cosine_control_f32(float e1, float e2, float e3, float vr, floa
      * The careful path (called from two places, so it is not inlined here)
      * takes everything else and gives the same results within rounding. */
     if (gains != NULL && v != NULL && w != NULL) {
-        const float k1 = gains->k1, k2 = gains->k2, lam = gains->lambda;
+        const float k1 = gains->k1, k2 = gains->k2, lam = gains->lam;
         const float a1 = fabsf(e1), a2 = fabsf(e2), a3 = fabsf(e3), s12 = a1 + a2;
         const float kmin = k1 < k2 ? (k1 < lam ? k1 : lam) : (k2 < lam ? k2 : lam);
         const float lv = lam * vr;
@@ -434,4 +563,133 @@ int uwmr_design4_cosine_control_f32(float e1, float e2, float e3, float vr, floa
         return careful_f32(e1, e2, e3, vr, wr, gains, v, w);
     }
     return careful_f32(e1, e2, e3, vr, wr, gains, v, w);
+}
+
+/* The safe stop of the error functions: every output that exists is 0. */
+static void zero3_f32(float *e1, float *e2, float *e3)
+{
+    if (e1 != NULL) {
+        *e1 = 0.0F;
+    }
+    if (e2 != NULL) {
+        *e2 = 0.0F;
+    }
+    if (e3 != NULL) {
+        *e3 = 0.0F;
+    }
+}
+
+/* Errors (7) with e3 = (thr - th) + 2 pi n, n a whole number of turns.  A
+ * difference or a sum that overflows is retried with halved terms (the
+ * errors may be finite although xr - x is not). */
+static int errors_core_f32(float x, float y, float th, float xr, float yr, float thr, float n,
+                           float *e1, float *e2, float *e3)
+{
+    float c, s, xt, yt, a, b, d;
+    zero3_f32(e1, e2, e3);
+    if (e1 == NULL || e2 == NULL || e3 == NULL) {
+        return UWMR_ERR_NULL;
+    }
+    if (!(isfinite(x) && isfinite(y) && isfinite(th) && isfinite(xr) && isfinite(yr) && isfinite(thr))) {
+        return UWMR_ERR_NONFINITE;
+    }
+    c = cosf(th);
+    s = sinf(th);
+    xt = xr - x;
+    yt = yr - y;
+    a = c * xt + s * yt;
+    b = c * yt - s * xt;
+    if (!(isfinite(a) && isfinite(b))) {
+        xt = 0.5F * xr - 0.5F * x;
+        yt = 0.5F * yr - 0.5F * y;
+        a = 2.0F * (c * xt + s * yt);
+        b = 2.0F * (c * yt - s * xt);
+    }
+    d = (thr - th) + n * 6.2831855F;
+    if (!isfinite(d)) {
+        d = 2.0F * ((0.5F * thr - 0.5F * th) + n * 3.1415927F);
+    }
+    if (!(isfinite(a) && isfinite(b) && isfinite(d))) {
+        return UWMR_ERR_RANGE;
+    }
+    *e1 = a;
+    *e2 = b;
+    *e3 = d;
+    return UWMR_OK;
+}
+
+int uwmr_design4_cosine_errors_f32(float x, float y, float th, float xr, float yr, float thr,
+                                       float *e1, float *e2, float *e3)
+{
+    return errors_core_f32(x, y, th, xr, yr, thr, 0.0F, e1, e2, e3);
+}
+
+void uwmr_design4_cosine_reset_f32(uwmr_design4_cosine_tracker_f32 *tracker)
+{
+    if (tracker != NULL) {
+        tracker->th_last = 0.0F;
+        tracker->thr_last = 0.0F;
+        tracker->turns = 0.0F;
+        tracker->turns_r = 0.0F;
+        tracker->started = 0;
+    }
+}
+
+/* The whole number of turns nearest to d / (2 pi): the 2 pi multiple by
+ * which a heading that moved by less than pi jumped (d = last - new). */
+static float turns_of_f32(float d)
+{
+    return floorf(d / 6.2831855F + 0.5F);
+}
+
+int uwmr_design4_cosine_track_f32(uwmr_design4_cosine_tracker_f32 *tracker, const uwmr_design4_cosine_pose_f32 *pose,
+                                      const uwmr_design4_cosine_pose_f32 *ref, float *e1, float *e2, float *e3)
+{
+    float turns = 0.0F, turns_r = 0.0F;
+    int status;
+    zero3_f32(e1, e2, e3);
+    if (tracker == NULL || pose == NULL || ref == NULL || e1 == NULL || e2 == NULL || e3 == NULL) {
+        return UWMR_ERR_NULL;
+    }
+    if (!(isfinite(pose->x) && isfinite(pose->y) && isfinite(pose->th)
+          && isfinite(ref->x) && isfinite(ref->y) && isfinite(ref->th))) {
+        return UWMR_ERR_NONFINITE;
+    }
+    if (fabsf(pose->th) > UWMR_HEADING_MAX_F32 || fabsf(ref->th) > UWMR_HEADING_MAX_F32) {
+        return UWMR_ERR_RANGE;
+    }
+    if (tracker->started) {
+        turns = tracker->turns + turns_of_f32(tracker->th_last - pose->th);
+        turns_r = tracker->turns_r + turns_of_f32(tracker->thr_last - ref->th);
+    }
+    if (fabsf(turns) > UWMR_TURNS_MAX_F32 || fabsf(turns_r) > UWMR_TURNS_MAX_F32) {
+        return UWMR_ERR_RANGE;
+    }
+    status = errors_core_f32(pose->x, pose->y, pose->th, ref->x, ref->y, ref->th, turns_r - turns, e1, e2, e3);
+    if (status == UWMR_OK) {
+        tracker->th_last = pose->th;
+        tracker->thr_last = ref->th;
+        tracker->turns = turns;
+        tracker->turns_r = turns_r;
+        tracker->started = 1;
+    }
+    return status;
+}
+
+int uwmr_design4_cosine_step_f32(uwmr_design4_cosine_tracker_f32 *tracker, const uwmr_design4_cosine_pose_f32 *pose,
+                                     const uwmr_design4_cosine_pose_f32 *ref, float vr, float wr,
+                                     const uwmr_design4_cosine_gains_f32 *gains, float *v, float *w)
+{
+    float e1, e2, e3;
+    const int status = uwmr_design4_cosine_track_f32(tracker, pose, ref, &e1, &e2, &e3);
+    if (status != UWMR_OK) {
+        if (v != NULL) {
+            *v = 0.0F;
+        }
+        if (w != NULL) {
+            *w = 0.0F;
+        }
+        return status;
+    }
+    return uwmr_design4_cosine_control_f32(e1, e2, e3, vr, wr, gains, v, w);
 }

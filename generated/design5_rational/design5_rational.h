@@ -21,23 +21,68 @@ extern "C" {
  * Control law (9) for Design 5:
  *
  *   v = vr cos(e3) + k1 tanh(e1)
- *   w = wr + lambda vr df/de2(e1, e2) sin(e3)/e3 + k2 tanh(e3)
+ *   w = wr + lam vr df/de2(e1, e2) sin(e3)/e3 + k2 tanh(e3)
  *
  * with f(e1, e2) = 1 - 1/(e1**2 + e2**2 + 1).
  * The design's parameters are compiled in; the gains are passed in.
  *
+ * CONTRACT
+ *
+ * Frames.  World: fixed, right-handed, x and y in the floor plane, headings
+ * measured from the world x axis, counter-clockwise positive.  Body: on the
+ * robot, x forward, y to the left.  A pose (x, y, th) is the body frame's
+ * origin and heading in the world frame; the reference pose (xr, yr, thr)
+ * likewise.  The errors (7) are the reference position seen from the body
+ * frame and the heading difference:
+ *   e1 =  cos(th) (xr - x) + sin(th) (yr - y)      (forward)
+ *   e2 = -sin(th) (xr - x) + cos(th) (yr - y)      (left)
+ *   e3 =  thr - th                                 NOT wrapped to (-pi, pi]
+ *
+ * Units.  x, y, e1, e2 in m; th, thr, e3 in rad; v, vr in m/s; w, wr in
+ * rad/s; k1 in m/s, k2 in rad/s, lam in rad/m (f and its derivative take
+ * e1, e2 as numbers of metres).
+ *
+ * e3 must not be wrapped: with atan2-wrapped headings e3 jumps by 2 pi and
+ * the law's k2 tanh(e3) and sin(e3)/e3 terms jump with it.  The tracker
+ * (uwmr_design5_rational_track / _step) therefore unwraps the measured and the
+ * reference heading between calls: headings may arrive wrapped or not, and
+ * may jump by any multiple of 2 pi, provided the true headings change by
+ * less than pi between two calls.  The first call after
+ * uwmr_design5_rational_reset fixes the branch: e3 starts as thr - th as given.
+ *
+ * Sampling and delay.  (9) is a continuous-time law; its stability proof
+ * (Proposition 1) is for the continuous loop.  Call _step once per sample
+ * with the newest pose, apply (v, w) at once and hold them until the next
+ * sample; the paper samples at 100 Hz.  A delay between measuring the pose
+ * and applying (v, w) is not covered by the proof: it leaves bound (10)
+ * intact (the bound holds for every output) but can slow or spoil the
+ * convergence.  Check your rate and delay by simulation
+ * (uwmr_symbolic.simulation: run_digital(h=..., delay=...)).
+ *
+ * Bound (10).  Law (9) gives, whatever the errors,
+ *   |v| <= |vr| + k1,     |w| <= |wr| + lam |vr| KF + k2
+ * with KF = sup |df/de2| when P1 holds.  This design is NOT VERIFIED:
+ * UWMR_DESIGN5_RATIONAL_KF = 3*sqrt(3)/8 = 0.6495190528
+ * (certified upper bound) and the bound is not promised.
+ *
  * Return value: UWMR_OK (0) on success, otherwise one of the codes below.
- * On every nonzero return *v and *w are set to 0 (a safe stop) when the
- * pointers are not NULL:
- *   UWMR_ERR_NULL       gains, v or w is NULL
+ * On every nonzero return the outputs are set to 0 (a safe stop: v = w = 0,
+ * stand still) when their pointers are not NULL:
+ *   UWMR_ERR_NULL       a pointer argument is NULL
  *   UWMR_ERR_NONFINITE  an input (or a gain) is NaN or +-inf
- *   UWMR_ERR_GAIN       a gain is negative (the law needs k1, k2, lambda >= 0)
- *   UWMR_ERR_RANGE      v or w would overflow the floating-point type
+ *   UWMR_ERR_GAIN       a gain is negative (the law needs k1, k2, lam >= 0)
+ *   UWMR_ERR_RANGE      a result would overflow the floating-point type; the
+ *                       tracker also returns it for a heading beyond
+ *                       UWMR_HEADING_MAX or a turn count beyond
+ *                       UWMR_TURNS_MAX (see the tracker below)
+ *
  * NOT VERIFIED: generated with --force.  The validation against the exact
  * law was run, but with --force its failures do not stop generation, and
  * bound (10) is not checked: no accuracy is promised.
- * No dynamic memory, no mutable global state; reentrant.  libm may set errno
- * on an underflow inside the computation.
+ * No dynamic memory, no mutable global state; reentrant (a tracker belongs
+ * to one control loop).  libm may set errno on an underflow inside the
+ * computation.  The gain field was called `lambda` before uwmr-symbolic
+ * generated the tracker; it is `lam` in C, Python and the design files.
  */
 #ifndef UWMR_STATUS_CODES
 #define UWMR_STATUS_CODES
@@ -52,18 +97,87 @@ extern "C" {
 #define UWMR_DESIGN5_RATIONAL_KF 0.649519052838329
 #define UWMR_DESIGN5_RATIONAL_KF_F32 0.6495191F
 
-typedef struct { double k1, k2, lambda; } uwmr_design5_rational_gains;
-typedef struct { float k1, k2, lambda; } uwmr_design5_rational_gains_f32;
-
-#ifndef UWMR_NO_DOUBLE   /* define it to build the float variant alone (no double code at all) */
-int uwmr_design5_rational_control(double e1, double e2, double e3, double vr, double wr,
-                                      const uwmr_design5_rational_gains *gains, double *v, double *w);
+/* The tracker accepts headings with |th|, |thr| <= UWMR_HEADING_MAX rad and
+ * counts at most UWMR_TURNS_MAX turns either way (status 4 beyond). */
+#ifndef UWMR_TRACKER_LIMITS
+#define UWMR_TRACKER_LIMITS
+#define UWMR_HEADING_MAX 1.0e12
+#define UWMR_HEADING_MAX_F32 1.0e5F
+#define UWMR_TURNS_MAX 1.0e12
+#define UWMR_TURNS_MAX_F32 1.0e6F
 #endif
 
-/* The same law in single precision only (no double arithmetic, no double
- * libm calls): for FPUs without double support such as the Cortex-M4F. */
+#ifndef UWMR_NO_DOUBLE   /* define it to build the float variant alone (no double code at all) */
+typedef struct { double k1, k2, lam; } uwmr_design5_rational_gains;
+
+/* A pose in the world frame: x, y [m], th [rad]. */
+typedef struct { double x, y, th; } uwmr_design5_rational_pose;
+
+/* The tracker: the last accepted headings and the turns counted so far.
+ * Opaque; start it with uwmr_design5_rational_reset. */
+typedef struct { double th_last, thr_last, turns, turns_r; int started; } uwmr_design5_rational_tracker;
+
+/* Law (9): (e1, e2, e3, vr, wr) -> (v, w). */
+int uwmr_design5_rational_control(double e1, double e2, double e3, double vr, double wr,
+                                      const uwmr_design5_rational_gains *gains, double *v, double *w);
+
+/* Errors (7) from the measured pose (x, y, th) and the reference pose
+ * (xr, yr, thr), headings taken as given (e3 = thr - th, no unwrapping). */
+int uwmr_design5_rational_errors(double x, double y, double th, double xr, double yr, double thr,
+                                     double *e1, double *e2, double *e3);
+
+/* Forget the headings: the next call fixes the branch of e3. */
+void uwmr_design5_rational_reset(uwmr_design5_rational_tracker *tracker);
+
+/* Errors (7) with both headings unwrapped by the tracker (see CONTRACT).
+ * On a nonzero status the tracker is left as it was. */
+int uwmr_design5_rational_track(uwmr_design5_rational_tracker *tracker, const uwmr_design5_rational_pose *pose,
+                                    const uwmr_design5_rational_pose *ref, double *e1, double *e2, double *e3);
+
+/* One sample of the loop: _track, then _control.  pose is measured, ref is
+ * the reference pose with its velocities vr [m/s], wr [rad/s]; (v, w) are
+ * the commands [m/s, rad/s].  Status of the first step that fails (when
+ * only _control fails, the tracker has taken the new headings). */
+int uwmr_design5_rational_step(uwmr_design5_rational_tracker *tracker, const uwmr_design5_rational_pose *pose,
+                                   const uwmr_design5_rational_pose *ref, double vr, double wr,
+                                   const uwmr_design5_rational_gains *gains, double *v, double *w);
+#endif
+
+/* The same in single precision only (no double arithmetic, no double libm
+ * calls): for FPUs without double support such as the Cortex-M4F. */
+typedef struct { float k1, k2, lam; } uwmr_design5_rational_gains_f32;
+
+/* A pose in the world frame: x, y [m], th [rad]. */
+typedef struct { float x, y, th; } uwmr_design5_rational_pose_f32;
+
+/* The tracker: the last accepted headings and the turns counted so far.
+ * Opaque; start it with uwmr_design5_rational_reset_f32. */
+typedef struct { float th_last, thr_last, turns, turns_r; int started; } uwmr_design5_rational_tracker_f32;
+
+/* Law (9): (e1, e2, e3, vr, wr) -> (v, w). */
 int uwmr_design5_rational_control_f32(float e1, float e2, float e3, float vr, float wr,
                                           const uwmr_design5_rational_gains_f32 *gains, float *v, float *w);
+
+/* Errors (7) from the measured pose (x, y, th) and the reference pose
+ * (xr, yr, thr), headings taken as given (e3 = thr - th, no unwrapping). */
+int uwmr_design5_rational_errors_f32(float x, float y, float th, float xr, float yr, float thr,
+                                         float *e1, float *e2, float *e3);
+
+/* Forget the headings: the next call fixes the branch of e3. */
+void uwmr_design5_rational_reset_f32(uwmr_design5_rational_tracker_f32 *tracker);
+
+/* Errors (7) with both headings unwrapped by the tracker (see CONTRACT).
+ * On a nonzero status the tracker is left as it was. */
+int uwmr_design5_rational_track_f32(uwmr_design5_rational_tracker_f32 *tracker, const uwmr_design5_rational_pose_f32 *pose,
+                                        const uwmr_design5_rational_pose_f32 *ref, float *e1, float *e2, float *e3);
+
+/* One sample of the loop: _track, then _control.  pose is measured, ref is
+ * the reference pose with its velocities vr [m/s], wr [rad/s]; (v, w) are
+ * the commands [m/s, rad/s].  Status of the first step that fails (when
+ * only _control fails, the tracker has taken the new headings). */
+int uwmr_design5_rational_step_f32(uwmr_design5_rational_tracker_f32 *tracker, const uwmr_design5_rational_pose_f32 *pose,
+                                       const uwmr_design5_rational_pose_f32 *ref, float vr, float wr,
+                                       const uwmr_design5_rational_gains_f32 *gains, float *v, float *w);
 
 #ifdef __cplusplus
 }

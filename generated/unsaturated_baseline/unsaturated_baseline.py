@@ -21,6 +21,15 @@ arrays (broadcast together).  An element with a NaN or infinite input, a
 negative gain, or an overflowing result gets v = w = 0 (a safe stop);
 `control_status` also returns the status codes (0 ok, 2 non-finite input,
 3 negative gain, 4 overflow), as the C functions do.  Needs numpy only.
+
+Errors (7) and the loop, as in C (frames, units and the contract: see the C
+header): `errors(x, y, th, xr, yr, thr) -> (e1, e2, e3)` (and
+`errors_status`), `Tracker()` that unwraps the measured and the reference
+heading between calls (e3 is never wrapped), and
+`step(tracker, pose, ref, vr, wr, gains) -> (v, w)` (and `step_status`),
+errors -> law -> commands in one call; gains {"k1", "k2", "lam"} ("lambda"
+is accepted for lam).  Units: m, rad, m/s, rad/s.
+
 NOT VERIFIED (--force): no accuracy is promised.
 """
 import numpy
@@ -236,3 +245,164 @@ def control(e1, e2, e3, vr, wr, k1, k2, lam):
     elif shape == ():
         res = res[0][0], res[1][0]
     return _out(res[0]), _out(res[1])
+
+
+# ---- errors (7) and the heading tracker (the C functions _errors, _track) ----
+
+TWO_PI = 6.283185307179586
+HEADING_MAX = 1.0e12      # the tracker accepts |th|, |thr| <= HEADING_MAX [rad]
+TURNS_MAX = 1.0e12        # and counts at most TURNS_MAX turns either way (status 4 beyond)
+_E_OK, _E_NONFINITE, _E_RANGE = 0, 2, 4
+
+
+def _flat(*args):
+    """The arguments as float arrays of their broadcast shape, raveled, and that shape."""
+    arrays = numpy.broadcast_arrays(*(numpy.asarray(a, dtype=float) for a in args))
+    shape = arrays[0].shape
+    return [a.ravel() for a in arrays], shape
+
+
+def _shaped(a, shape):
+    return float(a[0]) if shape == () else a.reshape(shape)
+
+
+def _errors_core(x, y, th, xr, yr, thr, n):
+    """Errors (7) with e3 = (thr - th) + 2 pi n on 1-d arrays: (e1, e2, e3, status).
+    Non-finite input: status 2; a result beyond the double range: status 4;
+    both with e1 = e2 = e3 = 0.  An overflowing difference or sum is retried
+    with halved terms, as in C."""
+    finite = numpy.isfinite(x) & numpy.isfinite(y) & numpy.isfinite(th)
+    finite &= numpy.isfinite(xr) & numpy.isfinite(yr) & numpy.isfinite(thr)
+    with numpy.errstate(all="ignore"):
+        c, s = numpy.cos(th), numpy.sin(th)
+        xt, yt = xr - x, yr - y
+        a = c * xt + s * yt
+        b = c * yt - s * xt
+        again = finite & ~(numpy.isfinite(a) & numpy.isfinite(b))
+        if again.any():
+            hx = 0.5 * xr[again] - 0.5 * x[again]
+            hy = 0.5 * yr[again] - 0.5 * y[again]
+            ca, sa = c[again], s[again]
+            a[again] = 2.0 * (ca * hx + sa * hy)
+            b[again] = 2.0 * (ca * hy - sa * hx)
+        d = (thr - th) + n * TWO_PI
+        again = finite & ~numpy.isfinite(d)
+        if again.any():
+            d[again] = 2.0 * ((0.5 * thr[again] - 0.5 * th[again]) + n[again] * (0.5 * TWO_PI))
+    status = numpy.where(finite, _E_OK, _E_NONFINITE)
+    status[finite & ~(numpy.isfinite(a) & numpy.isfinite(b) & numpy.isfinite(d))] = _E_RANGE
+    bad = status != _E_OK
+    a[bad] = 0.0
+    b[bad] = 0.0
+    d[bad] = 0.0
+    return a, b, d, status
+
+
+def errors_status(x, y, th, xr, yr, thr):
+    """Errors (7) from the measured pose (x, y [m], th [rad]) and the reference
+    pose (xr, yr, thr), headings as given (e3 = thr - th, not wrapped);
+    elementwise over broadcast arrays: (e1, e2, e3, status)."""
+    (x, y, th, xr, yr, thr), shape = _flat(x, y, th, xr, yr, thr)
+    a, b, d, status = _errors_core(x, y, th, xr, yr, thr, numpy.zeros(x.shape))
+    return (_shaped(a, shape), _shaped(b, shape), _shaped(d, shape),
+            int(status[0]) if shape == () else status.reshape(shape))
+
+
+def errors(x, y, th, xr, yr, thr):
+    """(e1, e2, e3) of errors (7), 0 where the status is not 0 (see errors_status)."""
+    return errors_status(x, y, th, xr, yr, thr)[:3]
+
+
+class Tracker:
+    """Unwraps the measured and the reference heading between calls, so that
+    headings arriving wrapped to (-pi, pi] (or jumping by any multiple of
+    2 pi) give a continuous e3, as long as the true headings move by less
+    than pi between two calls.  One robot (scalars) or many (arrays of one
+    fixed shape).  The first call after reset() fixes the branch of e3."""
+
+    def __init__(self):
+        self.reset()
+
+    def reset(self):
+        self.shape = None
+        self.th_last = self.thr_last = self.turns = self.turns_r = self.started = None
+
+    def track(self, pose, ref):
+        """(e1, e2, e3, status) of errors (7) with both headings unwrapped;
+        pose = (x, y, th) measured, ref = (xr, yr, thr).  Elements with a
+        nonzero status keep their previous state."""
+        (x, y, th, xr, yr, thr), shape = _flat(*pose, *ref)
+        if self.shape is None:
+            self.shape = shape
+            z = numpy.zeros(x.shape)
+            self.th_last, self.thr_last, self.turns, self.turns_r = z, z.copy(), z.copy(), z.copy()
+            self.started = numpy.zeros(x.shape, dtype=bool)
+        elif shape != self.shape:
+            raise ValueError(f"this tracker follows poses of shape {self.shape}, not {shape}")
+        with numpy.errstate(all="ignore"):
+            turns = self.turns + numpy.floor((self.th_last - th) / TWO_PI + 0.5)
+            turns_r = self.turns_r + numpy.floor((self.thr_last - thr) / TWO_PI + 0.5)
+        turns[~self.started] = 0.0
+        turns_r[~self.started] = 0.0
+        out_of_range = ((numpy.abs(th) > HEADING_MAX) | (numpy.abs(thr) > HEADING_MAX)
+                        | (numpy.abs(turns) > TURNS_MAX) | (numpy.abs(turns_r) > TURNS_MAX))
+        n = numpy.where(out_of_range, 0.0, turns_r - turns)
+        a, b, d, status = _errors_core(x, y, th, xr, yr, thr, n)
+        range_bad = out_of_range & (status == _E_OK)
+        status[range_bad] = _E_RANGE
+        a[range_bad] = b[range_bad] = d[range_bad] = 0.0
+        good = status == _E_OK
+        self.th_last[good], self.thr_last[good] = th[good], thr[good]
+        self.turns[good], self.turns_r[good] = turns[good], turns_r[good]
+        self.started |= good
+        return (_shaped(a, shape), _shaped(b, shape), _shaped(d, shape),
+                int(status[0]) if shape == () else status.reshape(shape))
+
+
+def _gains(gains):
+    """(k1, k2, lam) from a mapping with k1, k2 and lam (or its alias lambda),
+    an object with those attributes, or a sequence (k1, k2, lam)."""
+    if isinstance(gains, dict):
+        get = gains.get
+    elif hasattr(gains, "k1"):
+        def get(key, default=None):
+            return getattr(gains, key, default)
+    else:
+        k1, k2, lam = gains
+        return k1, k2, lam
+    lam = get("lam", get("lambda"))
+    if get("k1") is None or get("k2") is None or lam is None:
+        raise ValueError("gains need k1, k2 and lam (or lambda)")
+    return get("k1"), get("k2"), lam
+
+
+def step_status(tracker, pose, ref, vr, wr, gains):
+    """One sample of the loop, as the C _step: errors (7) by the tracker, then
+    law (9).  pose = (x, y, th) measured [m, m, rad], ref = (xr, yr, thr), vr
+    [m/s], wr [rad/s]; gains: see _gains.  (v, w, status); v = w = 0 where
+    the status is not 0."""
+    k1, k2, lam = _gains(gains)
+    e1, e2, e3, status = tracker.track(pose, ref)
+    v, w, law_status = control_status(e1, e2, e3, vr, wr, k1, k2, lam)
+    status = numpy.where(status == OK, law_status, status)
+    v, w = numpy.where(status == OK, v, 0.0), numpy.where(status == OK, w, 0.0)
+    if numpy.ndim(status) == 0:
+        return float(v), float(w), int(status)
+    return v, w, status
+
+
+def step(tracker, pose, ref, vr, wr, gains):
+    """(v, w) [m/s, rad/s] of one sample (see step_status); a node needs
+
+        tracker = Tracker()                       # once
+        v, w = step(tracker, (x, y, th), (xr, yr, thr), vr, wr, dict(k1=..., k2=..., lam=...))
+    """
+    k1, k2, lam = _gains(gains)
+    e1, e2, e3, status = tracker.track(pose, ref)
+    v, w = control(e1, e2, e3, vr, wr, k1, k2, lam)
+    if numpy.ndim(status) == 0:
+        return (float(v), float(w)) if status == OK else (0.0, 0.0)
+    bad = numpy.broadcast_to(status != OK, numpy.shape(v))
+    if bad.any():
+        v, w = numpy.where(bad, 0.0, v), numpy.where(bad, 0.0, w)
+    return v, w

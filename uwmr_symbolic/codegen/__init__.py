@@ -131,13 +131,21 @@ def _context(design, model: LawModel) -> dict:
         params.append(dict(name=name, macro=macro, exact=str(model.params[name]),
                            double=double_literal(model.params[name])))
     f_text = "f(e1, e2) = " + sp.sstr(design.f_source)
+    gains = design.gains or {}
+    scenario = "circle" if "circle" in gains else next(iter(gains), None)
+    if scenario is None:
+        example = dict(source="none in the design file: k1 = 0.25, k2 = 0.7, lam = 0.3, Vmax = 0.75, Wmax = 2",
+                       k1="0.25", k2="0.7", lam="0.3", Vmax="0.75", Wmax="2.0")
+    else:
+        example = {k: double_literal(gains[scenario][k]) for k in ("k1", "k2", "lam", "Vmax", "Wmax")}
+        example["source"] = f"scenario {scenario!r} of {source}"
     return dict(name=model.name, source=source, f_text=_ascii_safe(f_text), params=params,
                 kf_text=model.kf_text, verified=model.verified,
                 kf_status="certified upper bound" if model.kf_upper is not None else "no finite bound certified",
                 kf_double="INFINITY" if math.isinf(kf) else repr(kf),
                 kf_float="INFINITY" if math.isinf(kf) else _float_text(kf32),
                 kf_python="float('inf')" if math.isinf(kf) else repr(kf),
-                c_banner=_banner(model, source, "c"), py_banner=_banner(model, source, "py"))
+                c_banner=_banner(model, source, "c"), py_banner=_banner(model, source, "py"), example=example)
 
 
 def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, str]]:
@@ -179,7 +187,8 @@ def validate_build(design_path, model, files, report=None):
 
 
 def generate(design_path, out_dir=None, force=False, report=None, validate=True) -> list[Path]:
-    """Write <stem>.py, <stem>.h, <stem>.c into out_dir (default generated/<stem>/).
+    """Write <stem>.py, <stem>.h, <stem>.c, example_main.c and CMakeLists.txt
+    into out_dir (default generated/<stem>/).
 
     Refuses (raises CodegenRefused(reasons)) unless P1..P8 are all proved;
     with force=True every file starts with a NOT VERIFIED: <reasons> banner.

@@ -1,4 +1,6 @@
-"""C99 back-end: `<stem>.h` and `<stem>.c` with a double and a float variant.
+"""C99 back-end: `<stem>.h` and `<stem>.c` with a double and a float variant
+(law (9), errors (7), the heading tracker and `_step`), the example loop
+`example_main.c` and a `CMakeLists.txt` (static library `uwmr::<stem>`).
 
 The law's structure (regions, branches, guarded product) comes from
 `law.LawModel`; this module only prints it.  Both variants share one
@@ -231,7 +233,7 @@ def fast_lines(model: LawModel, cfg: CConfig, names) -> list[str] | None:
             # |lam vr| <= lv_hi follows from lam + |vr| <= sqrt(lv_hi): lam joins the sum test
             big = min(big, 2.0 ** math.floor(math.log2(lv_hi) / 2))
             gains_sum = "k1 + k2 + lam"
-    out = [f"const {t} k1 = gains->k1, k2 = gains->k2, lam = gains->lambda;",
+    out = [f"const {t} k1 = gains->k1, k2 = gains->k2, lam = gains->lam;",
            f"const {t} a1 = fabs{fn}(e1), a2 = fabs{fn}(e2), a3 = fabs{fn}(e3), s12 = a1 + a2;",
            f"const {t} kmin = k1 < k2 ? (k1 < lam ? k1 : lam) : (k2 < lam ? k2 : lam);",
            f"const {t} lv = lam * vr;",
@@ -281,7 +283,11 @@ def render(env, model: LawModel, context: dict) -> dict[str, str]:
         variants.append(dict(cfg=cfg, body=gterm_lines(model, cfg, names), fast=fast_lines(model, cfg, names),
                              tiny=cfg.lit(cfg.tiny), far=cfg.lit(cfg.far), cut=cfg.lit(cfg.sinc_cut),
                              zero=cfg.lit(0), one=cfg.lit(1), two=cfg.lit(2), half=cfg.lit(sp.Rational(1, 2)), huge="HUGE_VALF" if cfg.precision == "float" else "HUGE_VAL", c6=cfg.lit(sp.Rational(1, 6)),
-                             c120=cfg.lit(sp.Rational(1, 120))))
+                             c120=cfg.lit(sp.Rational(1, 120)), pi=cfg.lit(sp.pi), two_pi=cfg.lit(2 * sp.pi),
+                             heading_max="UWMR_HEADING_MAX" + cfg.suffix.upper(),
+                             turns_max="UWMR_TURNS_MAX" + cfg.suffix.upper()))
     ctx = dict(context, ident=ident, IDENT=ident.upper(), variants=variants, stem=model.stem)
     return {f"{model.stem}.h": env.get_template("c_header.h.j2").render(ctx),
-            f"{model.stem}.c": env.get_template("c_source.c.j2").render(ctx)}
+            f"{model.stem}.c": env.get_template("c_source.c.j2").render(ctx),
+            "example_main.c": env.get_template("example_main.c.j2").render(ctx),
+            "CMakeLists.txt": env.get_template("CMakeLists.txt.j2").render(ctx)}

@@ -79,3 +79,11 @@ def render(env, model: LawModel, context: dict, config: PythonConfig | None = No
     ctx.update(functions=functions, mid=mid, far=far, tiny_term=tiny, h_const=h_const,
                needs_scipy=any("scipy." in ln for ln in functions), uses_lt=uses_lt)
     return {f"{model.stem}.py": env.get_template("python_module.py.j2").render(ctx)}
+
+
+def errors_source() -> str:
+    """Errors (7) and the Tracker exactly as in every generated module, as
+    a module of their own (numpy only): for the simulation of a controller
+    that has no generated module (the baseline (38))."""
+    from . import _env
+    return "import numpy\n\n\n" + _env().get_template("python_tracking.py.j2").render()

@@ -313,3 +313,41 @@ def mp_g(design, e1: float, e2: float, dps: int = 50):
         dps += max(0, int(-mpmath.log10(rho)) + 1)
     with mpmath.workdps(dps):
         return +fn(mpmath.mpf(e1), mpmath.mpf(e2))
+
+
+ERRORS_PREC = 200
+
+
+def tracking_errors(rows, turns=None, limit: float = LIMITS["double"][1], prec: int = ERRORS_PREC) -> dict:
+    """Errors (7) of rows (x, y, th, xr, yr, thr), e3 = (thr - th) + 2 pi n
+    with n = turns (0 by default), in mpmath at `prec` bits from the rows'
+    exact binary values (mpmath reduces huge headings with the extra
+    precision they need).  Arrays of shape (N, 3): `hi` + `lo` the exact
+    value as a double-double (hi = inf beyond the double range), `over`
+    where |exact| > limit, `edge` where it is within 1e-9 of limit (either
+    status is right there); `scale` (N, 3): |x| + |y| + |xr| + |yr| for e1
+    and e2, |th| + |thr| + 2 pi |n| for e3, capped at the largest double."""
+    rows = np.asarray(rows, dtype=float)
+    n = np.zeros(len(rows)) if turns is None else np.asarray(turns, dtype=float)
+    hi = np.zeros((len(rows), 3))
+    lo = np.zeros((len(rows), 3))
+    over = np.zeros((len(rows), 3), dtype=bool)
+    edge = np.zeros((len(rows), 3), dtype=bool)
+    with mpmath.workprec(prec):
+        two_pi = 2 * mpmath.pi
+        lim = mpmath.mpf(limit)
+        for i, (r, k) in enumerate(zip(rows, n)):
+            x, y, th, xr, yr, thr = (mpmath.mpf(float(v)) for v in r)
+            c, s = mpmath.cos(th), mpmath.sin(th)
+            xt, yt = xr - x, yr - y
+            for j, e in enumerate((c * xt + s * yt, c * yt - s * xt, (thr - th) + mpmath.mpf(float(k)) * two_pi)):
+                h = float(e)
+                hi[i, j] = h
+                lo[i, j] = float(e - h) if math.isfinite(h) else 0.0
+                over[i, j] = abs(e) > lim
+                edge[i, j] = abs(abs(e) - lim) <= lim * mpmath.mpf(1e-9)
+    a = np.abs(rows)
+    with np.errstate(over="ignore"):
+        sp_ = np.minimum(a[:, 0] + a[:, 1] + a[:, 3] + a[:, 4], np.finfo(float).max)
+        sh = np.minimum(a[:, 2] + a[:, 5] + 2 * math.pi * np.abs(n), np.finfo(float).max)
+    return dict(hi=hi, lo=lo, over=over, edge=edge, scale=np.column_stack([sp_, sp_, sh]))

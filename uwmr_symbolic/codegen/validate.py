@@ -174,6 +174,173 @@ def check_safe_stop(stem, target, x, want, v, w, st):
                                f"status {int(st[i])}; expected v = w = 0, status {int(want[i])}")
 
 
+POSE_NAMES = ("x", "y", "th", "xr", "yr", "thr")
+
+
+def pose_rows(precision: str, n_random: int = 600, seed: int = 0) -> np.ndarray:
+    """Rows (x, y, th, xr, yr, thr) for errors (7): x against xr over the
+    signed extreme grid, y and yr over it one at a time, the heading th over the signed grid
+    (huge headings included) with a few positions, and random rows over
+    every magnitude and over 1e-4..1e4 (headings within 1e4 rad there)."""
+    rng = np.random.default_rng(seed)
+    mags = extreme_values(precision)
+    signed = sorted({*mags, *[-m for m in mags]})
+    base = [0.3, -0.7, 0.4, 1.1, 0.2, -2.5]
+    rows = []
+    for a in signed:
+        for b in signed:
+            rows.append([a, base[1], base[2], b, base[4], base[5]])
+        rows.append([base[0], a, -base[2], base[3], base[4], base[5]])
+        rows.append([base[0], base[1], -base[2], base[3], a, base[5]])
+    for t in signed:
+        for pos in ([0.3, -0.7, 1.1, 0.2], [mags[-1], 0.0, -mags[-1], mags[-2]], [mags[1], 0.0, 0.0, mags[2]]):
+            rows.append([pos[0], pos[1], t, pos[2], pos[3], -t])
+            rows.append([pos[0], pos[1], t, pos[2], pos[3], base[5]])
+    lo = math.log10(_limits(precision)[0]) + 0.3
+    hi = math.log10(_limits(precision)[2]) - 0.1
+    for a, b, n in ((lo, hi, n_random // 2), (-4.0, 4.0, n_random - n_random // 2)):
+        x = 10.0 ** rng.uniform(a, b, (n, 6)) * rng.choice([-1.0, 1.0], (n, 6))
+        x[rng.random((n, 6)) < 0.05] = 0.0
+        rows.extend(x.tolist())
+    return _cast(np.array(rows, dtype=float), precision)
+
+
+def bad_pose_rows():
+    """Rows with NaN, +inf or -inf in each pose input in turn (status 2)."""
+    rows = []
+    for i in range(6):
+        for bad in (math.nan, math.inf, -math.inf):
+            r = [0.3, -0.7, 0.4, 1.1, 0.2, -2.5]
+            r[i] = bad
+            rows.append(r)
+    return np.array(rows)
+
+
+def heading_sequences(precision: str, n_seq: int = 6, length: int = 150, seed: int = 0):
+    """(rows (S, K, 6), turns (S, K), status (S, K)): S pose sequences as a
+    robot and its reference would send them.  The true headings move by
+    less than pi per call (steps of up to 3 rad); each arrives wrapped to
+    (-pi, pi] or shifted by a random multiple of 2 pi (jumps of up to 6
+    turns between calls), around 0 or around 1e3 rad (double: also 1e6).
+    `turns` is the exact number of turns by which the tracker must correct
+    thr - th (the shifts relative to the first call); a few rows are NaN or
+    beyond UWMR_HEADING_MAX (status 2 / 4; the tracker must keep its state)."""
+    rng = np.random.default_rng(seed)
+    centres = [0.0, 1e3] + ([1e6] if precision == "double" else [])
+    rows = np.zeros((n_seq, length, 6))
+    turns = np.zeros((n_seq, length))
+    status = np.zeros((n_seq, length), dtype=int)
+    hmax = 1e12 if precision == "double" else 1e5
+    for s in range(n_seq):
+        steps = rng.uniform(-0.3, 0.3, (length, 2))
+        big = rng.random((length, 2)) < 0.1
+        steps[big] = rng.uniform(-3.0, 3.0, (int(big.sum()),))
+        u = np.cumsum(steps, axis=0) + centres[s % len(centres)]
+        shift = rng.integers(-3, 4, (length, 2)).astype(float)
+        wrapped = rng.random(length) < 0.5
+        heads = u - 2 * math.pi * shift
+        # "wrapped": the heading reduced to (-pi, pi], the shift it took
+        w_shift = np.floor((u + math.pi) / (2 * math.pi))
+        heads[wrapped] = (u - 2 * math.pi * w_shift)[wrapped]
+        shift[wrapped] = w_shift[wrapped]
+        pos = rng.uniform(-5.0, 5.0, (length, 4))
+        rows[s] = np.column_stack([pos[:, 0], pos[:, 1], heads[:, 0], pos[:, 2], pos[:, 3], heads[:, 1]])
+        # the exact correction: the shifts relative to the first accepted call
+        turns[s] = (shift[:, 1] - shift[0, 1]) - (shift[:, 0] - shift[0, 0])
+    rows = _cast(rows.reshape(-1, 6), precision).reshape(rows.shape)
+    for s in range(n_seq):
+        for k in rng.choice(np.arange(1, length), 3, replace=False):
+            col = rng.choice([0, 2, 3, 5])
+            rows[s, k, col] = math.nan if col in (0, 3) or rng.random() < 0.5 else hmax * 4.0
+            status[s, k] = ERR_NONFINITE if math.isnan(rows[s, k, col]) else ERR_RANGE
+    return rows, turns, status
+
+
+def check_errors(stem, target, x, turns, got, st, precision, want=None, exact=None):
+    """Errors (7) against `reference.tracking_errors` (mpmath, 200 bits;
+    `exact` may pass its result in): for finite rows status 0 with every
+    error <= TOL of its scale (floored at the smallest normal number), or
+    status 4 exactly where an exact error is beyond the type's largest finite
+    number (either status within 1e-9 of it); rows with `want` != 0 must give
+    that status and zeros.  Raises ValidationFailed at the first bad row;
+    returns the largest error."""
+    x = np.asarray(x, dtype=float)
+    st = np.asarray(st)
+    got = np.column_stack([np.asarray(g, dtype=float) for g in got])
+    want = np.zeros(len(x), dtype=int) if want is None else np.asarray(want)
+    sub, tiny, big, eps = _limits(precision)
+    tol = TOL[precision]
+    if exact is None:
+        exact = reference.tracking_errors(x, turns, big)
+    good = want == OK
+    over = good & exact["over"].any(axis=1)
+    edge = good & exact["edge"].any(axis=1)
+    zeros = np.all(got == 0, axis=1)
+    with np.errstate(all="ignore"):
+        err = np.abs((got - exact["hi"]) - exact["lo"]) / np.maximum(exact["scale"], tiny)
+    ok = good & (st == OK)
+    err = np.where(ok[:, None], err, 0.0)
+    worst = err.max(axis=1) if len(x) else np.zeros(0)
+
+    def fail(mask, why):
+        if not np.any(mask):
+            return
+        i = int(np.flatnonzero(mask)[0])
+        vals = ", ".join(f"e{j + 1}={got[i, j]:.17g}" for j in range(3))
+        ex = ", ".join(f"e{j + 1}={exact['hi'][i, j]:.17g}" for j in range(3)) if want[i] == OK else \
+            f"status {int(want[i])}"
+        where = ", ".join(f"{n}={float(v):.17g}" for n, v in zip(POSE_NAMES, x[i]))
+        if turns is not None:
+            where += f", turns={float(np.asarray(turns)[i]):g}"
+        raise ValidationFailed(f"{stem}: {target}: {why} at ({where}): got {vals}, status {int(st[i])}; exact {ex}")
+    fail(~good & ((st != want) | ~zeros), "no safe stop")
+    fail(over & ~edge & (st != ERR_RANGE), "an error beyond the type's range not reported as status 4")
+    fail((st == ERR_RANGE) & ~zeros, "no safe stop (zeros) with status 4")
+    fail(good & (st != OK) & ~((st == ERR_RANGE) & (over | edge)), "nonzero status on finite poses whose errors are finite")
+    fail(ok & ~np.all(np.isfinite(got), axis=1), "non-finite error with status 0")
+    fail(ok & ~(worst <= tol), f"an error off by {worst.max() if len(x) else 0:.3g} of the scale (above {tol:g})")
+    return float(worst.max()) if len(x) else 0.0
+
+
+def _check_error_functions(stem, lib, mod, precision_rows, seqs):
+    """Errors (7) and the tracker of the C variants and the Python module
+    (see check_errors); returns the targets checked."""
+    out, cache = [], {}
+    xb = bad_pose_rows()
+    wb = np.full(len(xb), ERR_NONFINITE)
+    for precision, f32, target in (("double", False, "C double errors (7)"), ("float", True, "C float errors (7)"),
+                                   ("double", None, "Python errors (7)")):
+        x = precision_rows[precision]
+        rows, turns, want = seqs[precision]
+        big = _limits(precision)[2]
+        key = (precision, "rows")
+        if key not in cache:
+            cache[key] = reference.tracking_errors(x, None, big)
+            cache[(precision, "seq")] = reference.tracking_errors(rows.reshape(-1, 6), turns.ravel(), big)
+        if f32 is None:
+            e1, e2, e3, st = mod.errors_status(*xb.T)
+            check_errors(stem, target, xb, None, (e1, e2, e3), st, precision, wb)
+            e1, e2, e3, st = mod.errors_status(*x.T)
+        else:
+            e1, e2, e3, st = lib.errors(xb, f32=f32)
+            check_errors(stem, target, xb, None, (e1, e2, e3), st, precision, wb)
+            e1, e2, e3, st = lib.errors(x, f32=f32)
+        worst = check_errors(stem, target, x, None, (e1, e2, e3), st, precision, exact=cache[key])
+        # the tracker along every sequence: C one sequence at a time, Python all at once
+        if f32 is None:
+            tracker = mod.Tracker()
+            res = [tracker.track(tuple(rows[:, k, :3].T), tuple(rows[:, k, 3:].T)) for k in range(rows.shape[1])]
+            got = [np.stack([r[j] for r in res], axis=1).ravel() for j in range(4)]
+        else:
+            parts = [lib.track(seq, f32=f32) for seq in rows]
+            got = [np.concatenate([p[j] for p in parts]) for j in range(4)]
+        name = target.replace("errors (7)", "tracker")
+        worst = max(worst, check_errors(stem, name, rows.reshape(-1, 6), turns.ravel(), got[:3], got[3], precision,
+                                        want.ravel(), exact=cache[(precision, "seq")]))
+        out.append(Target(target + " and tracker", precision, len(x) + rows.size // 6, worst))
+    return out
+
+
 @dataclass
 class Target:
     name: str                       # "C double", "C float", "Python", "Python fast path", "CasADi"
@@ -305,6 +472,9 @@ def validate(design, model: LawModel, files: dict, kf: float | None, n_random: i
             worst = max(worst, check(stem, "Python (row by row)", xd[some], sub, pv, pw, np.zeros(len(some)),
                                      "double", kf))
             res.targets.append(Target("Python fast path", "double", len(mod_rows) + len(some), worst))
+            res.targets += _check_error_functions(
+                stem, lib, mod, {p: pose_rows(p, n_random // 4, seed + i) for i, p in enumerate(("double", "float"))},
+                {p: heading_sequences(p, seed=seed + i) for i, p in enumerate(("double", "float"))})
         except ValidationFailed:
             raise
         except Exception as exc:  # noqa: BLE001 - any crash of the module is a failure

@@ -15,7 +15,11 @@
   `pose0` may hold N initial poses, simulated together (batch / Monte-Carlo).
 
 Errors (7): e1 = cos th xt + sin th yt, e2 = -sin th xt + cos th yt,
-e3 = thr - th with NO wrapping (xt = xr - x, yt = yr - y)."""
+e3 = thr - th with NO wrapping (xt = xr - x, yt = yr - y), computed by the
+generated code that drives the loop (`control.errors`, see
+`controllers.Backend`): C errors with the C law, Python with Python.  The
+simulated headings are continuous, so the tracker that the firmware uses on
+top of them (`_step`) would leave them as they are."""
 from __future__ import annotations
 
 import math
@@ -29,11 +33,14 @@ RTOL, ATOL = 1e-10, 1e-10
 SAMPLE_PERIOD = 0.01
 
 
-def body_errors(x, y, th, xr, yr, thr):
-    """(7): e1, e2 in the robot frame and e3 = thr - th (not wrapped)."""
-    xt, yt = xr - x, yr - y
-    c, s = np.cos(th), np.sin(th)
-    return c * xt + s * yt, -s * xt + c * yt, thr - th
+def _errors(control):
+    """The errors (7) that go with `control`: its own generated ones
+    (`controllers.Backend.errors`), else the generated Python ones."""
+    errors = getattr(control, "errors", None)
+    if errors is None:
+        from .controllers import generated_errors
+        errors = generated_errors()
+    return getattr(control, "control", control), errors
 
 
 @dataclass
@@ -55,21 +62,21 @@ class Trajectory:
 
 def run_continuous(control, ref, pose0, gains, duration=None, rtol=RTOL, atol=ATOL,
                    grid_dt=1e-3, method="DOP853", max_step=0.05) -> Trajectory:
-    """Integrate (1) under law (9) with `control(e1, e2, e3, vr, wr, k1, k2, lam) -> (v, w)`."""
+    """Integrate (1) under law (9) with `control(e1, e2, e3, vr, wr, k1, k2, lam) -> (v, w)`
+    and its errors (7) `control.errors` (see `_errors`)."""
     k1, k2, lam = (float(gains[k]) for k in ("k1", "k2", "lam"))
     t1 = ref.t1 if duration is None else ref.t0 + duration
     fn = ref.fn
     buf = np.empty(1)
+    law, errors = _errors(control)
 
     def rhs(t, s):
         buf[0] = t
         xr, yr, thr, vr, wr = fn(buf)
-        x, y, th = s
-        c, sn = math.cos(th), math.sin(th)
-        xt, yt = float(xr[0]) - x, float(yr[0]) - y
-        v, w = control(c * xt + sn * yt, -sn * xt + c * yt, float(thr[0]) - th,
-                       float(vr[0]), float(wr[0]), k1, k2, lam)
-        return (v * c, v * sn, w)
+        x, y, th = (float(a) for a in s)
+        e1, e2, e3 = errors(x, y, th, float(xr[0]), float(yr[0]), float(thr[0]))
+        v, w = law(e1, e2, e3, float(vr[0]), float(wr[0]), k1, k2, lam)
+        return (v * math.cos(th), v * math.sin(th), w)
 
     sol = solve_ivp(rhs, (ref.t0, t1), np.asarray(pose0, dtype=float), method=method,
                     rtol=rtol, atol=atol, dense_output=True, max_step=max_step)
@@ -79,8 +86,8 @@ def run_continuous(control, ref, pose0, gains, duration=None, rtol=RTOL, atol=AT
     t = np.linspace(ref.t0, t1, n)
     x, y, th = sol.sol(t)
     xr, yr, thr, vr, wr = ref(t)
-    e = body_errors(x, y, th, xr, yr, thr)
-    v, w = control(*e, vr, wr, k1, k2, lam)
+    e = errors(x, y, th, xr, yr, thr)
+    v, w = law(*e, vr, wr, k1, k2, lam)
     return Trajectory("continuous", t, x, y, th, xr, yr, thr, np.asarray(v), np.asarray(w), e,
                       dict(nfev=int(sol.nfev), method=method, rtol=rtol, atol=atol, sol=sol))
 
@@ -104,6 +111,7 @@ def run_digital(control, ref, pose0, gains, duration=None, h=SAMPLE_PERIOD, dela
     max |v|, max |w|, the time the errors last exceeded `tol` = (pos [m], ang [rad])
     and, when `window` = (ta, tb) is given, sums for the RMS over it."""
     k1, k2, lam = (float(gains[k]) for k in ("k1", "k2", "lam"))
+    law, errors = _errors(control)
     t1 = ref.t1 if duration is None else ref.t0 + duration
     steps = int(round((t1 - ref.t0) / h))
     tk = ref.t0 + h * np.arange(steps + 1)
@@ -138,10 +146,8 @@ def run_digital(control, ref, pose0, gains, duration=None, h=SAMPLE_PERIOD, dela
             ym = y + rng.normal(0.0, noise[0], n)
             thm = th + rng.normal(0.0, noise[1], n)
         xr, yr, thr = XR[k], YR[k], THR[k]
-        xt, yt = xr - xm, yr - ym
-        c, s = np.cos(thm), np.sin(thm)
-        e1, e2, e3 = c * xt + s * yt, c * yt - s * xt, thr - thm
-        vw = control(e1, e2, e3, VR[k], WR[k], k1, k2, lam)
+        e1, e2, e3 = errors(xm, ym, thm, xr, yr, thr)
+        vw = law(e1, e2, e3, VR[k], WR[k], k1, k2, lam)
         if delay:
             queue.append(vw)
             v, w = queue.pop(0)
@@ -176,11 +182,11 @@ def run_digital(control, ref, pose0, gains, duration=None, h=SAMPLE_PERIOD, dela
         X, Y, TH, V, W = (rec[i] for i in range(5))
         if single:
             X, Y, TH, V, W = X[0], Y[0], TH[0], V[0], W[0]
-        e = body_errors(X, Y, TH, XR, YR, THR)
+        e = errors(X, Y, TH, XR, YR, THR)
         return Trajectory("digital", tk, X, Y, TH, XR, YR, THR, V, W, e, info)
     info.update(max_abs_v=vmax, max_abs_w=wmax, last_bad=last_bad,
                 settle_time=np.where(last_bad < steps, tk[np.minimum(last_bad + 1, steps)], np.inf))
     if window is not None:
         info["rms"] = np.sqrt(acc / (kb - ka + 1))
-    e = body_errors(x, y, th, XR[-1], YR[-1], THR[-1])
+    e = errors(x, y, th, XR[-1], YR[-1], THR[-1])
     return Trajectory("digital", tk[-1:], x, y, th, XR[-1:], YR[-1:], THR[-1:], None, None, e, info)
