@@ -37,7 +37,7 @@ from .design import DesignError, design_from_namespace
 from .properties import PROPERTIES
 from .timeouts import TimeLimit, no_signals, time_limit
 from .verdict import unknown
-from .verify import DEFAULT_TIMEOUT, Report, verify_loaded
+from .verify import DEFAULT_TIMEOUT, Report, _timed_out, verify_loaded
 
 if TYPE_CHECKING:
     from .simulation.reference import Reference
@@ -72,7 +72,8 @@ def _verify_here(namespace: dict, path: Path, timeout: float) -> Report:
     except DesignError as exc:
         return Report(path, None, {}, None, error=str(exc), seconds=time.monotonic() - start)
     except TimeLimit:
-        return _stopped(path, timeout, time.monotonic() - start)
+        props = {p: _timed_out("checking f, params and gains", timeout) for p in PROPERTIES}
+        return Report(path, None, props, None, seconds=time.monotonic() - start, timed_out=True)
     return verify_loaded(design, timeout, start)
 
 
