@@ -85,6 +85,39 @@ def test_verify_from_another_thread_respects_its_timeout():
     assert _verdicts(out["full"]) == {p: "proved" for p in out["full"].properties}
 
 
+def test_two_threads_verify_in_worker_processes_at_once():
+    out = {}
+
+    def run(key, f):
+        out[key] = verify(f)
+
+    threads = [threading.Thread(target=run, args=("jiang", JIANG)),
+               threading.Thread(target=run, args=("sqrt", sp.sqrt(1 + e1**2 + e2**2) - 1))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(300)
+    assert out["jiang"].kf.exact == sp.Rational(1, 2) and out["sqrt"].kf.exact == 1      # Table 1
+    assert out["jiang"].exit_status == out["sqrt"].exit_status == 0
+
+
+class Label(str):
+    """Defined in this test module, which a worker process cannot import."""
+
+
+def test_what_the_worker_cannot_read_is_verified_here():
+    with pytest.warns(RuntimeWarning, match="could not read the design"):
+        report = verify(JIANG, name=Label("jiang"))
+    assert report.kf.exact == sp.Rational(1, 2) and report.exit_status == 0
+
+
+def test_a_dying_design_file_is_reported_unusable(tmp_path):
+    design = tmp_path / "exits.py"
+    design.write_text("import os\nos._exit(7)\n")
+    report = verify_file(design, timeout=20)
+    assert report.exit_status == 2 and "died" in report.error
+
+
 def test_worker_is_killed_when_the_design_blocks_inside_c():
     start = time.monotonic()
     report = verify_file(ROOT / "tests" / "adversarial" / "blocks_in_c.py", timeout=1)

@@ -14,18 +14,22 @@ its code, simulate it.  Everything the command line does, without files::
     sim.plot_inputs()           # V, W with the limits of (6), as Figures 6 and 9
 
 Time limits work from any thread and on any OS: by default the verifier runs
-in a worker process (``python -m uwmr_symbolic._worker``) that is killed when
-it outlives its limit; with ``worker=False`` it runs in the calling thread,
+in a worker process (``python -m uwmr_symbolic._worker``, started once and
+reused) that is killed when it outlives its limit; with ``worker=False`` it runs in the calling thread,
 limited by a watchdog thread (`timeouts`), never by a signal handler."""
 from __future__ import annotations
 
+import atexit
+import contextlib
 import os
 import pickle
+import queue
 import re
 import shutil
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 import warnings
 from pathlib import Path
@@ -49,7 +53,7 @@ __all__ = ["verify", "verify_file", "generate", "simulate", "DEFAULT_TIMEOUT", "
 #: exists; generated files are named after the design's stem).
 IN_MEMORY = Path("<in-memory>")
 TARGETS = ("c", "python", "casadi")
-WORKER_START = 5.0      # seconds allowed for the worker process to start, beyond the limit
+WORKER_START = 10.0     # seconds allowed for a new worker process to start, beyond the limit
 
 
 def _stem(name: str) -> str:
@@ -100,34 +104,92 @@ def _run(job: dict, worker: bool) -> Report:
         return _verify_here(job["namespace"], job["path"], job["timeout"])
 
 
+class _Worker:
+    """A running ``python -m uwmr_symbolic._worker``: reused from one job to
+    the next (the verifier stays imported and warm), killed when a job
+    outlives its limit."""
+
+    def __init__(self):
+        env = dict(os.environ)
+        package_parent = str(Path(__file__).resolve().parents[1])
+        env["PYTHONPATH"] = os.pathsep.join(p for p in (package_parent, env.get("PYTHONPATH")) if p)
+        self.proc = subprocess.Popen([sys.executable, "-m", "uwmr_symbolic._worker"], stdin=subprocess.PIPE,
+                                     stdout=subprocess.PIPE, env=env)
+
+    def ask(self, data: bytes, limit: float) -> bytes | None:
+        """The answer to one job, or None when the process was killed at `limit`
+        seconds or died."""
+        from ._worker import read_message, write_message
+        answers: queue.SimpleQueue = queue.SimpleQueue()
+        reader = threading.Thread(target=lambda: answers.put(read_message(self.proc.stdout)), daemon=True)
+        try:
+            write_message(self.proc.stdin, data)
+        except OSError:
+            self.close()
+            return None
+        reader.start()
+        try:
+            answer = answers.get(timeout=limit)
+        except queue.Empty:
+            answer = None
+        if answer is None:
+            self.close()
+        return answer
+
+    def close(self):
+        self.proc.kill()
+        self.proc.wait()
+        for stream in (self.proc.stdin, self.proc.stdout):
+            with contextlib.suppress(OSError):
+                stream.close()
+
+
+_idle: list[_Worker] = []           # workers waiting for a job (several threads may verify at once)
+_idle_lock = threading.Lock()
+
+
+@atexit.register
+def _close_idle_workers():
+    with _idle_lock:
+        while _idle:
+            _idle.pop().close()
+
+
 def _in_worker(data: bytes, job: dict) -> Report | None:
-    """The report computed by ``python -m uwmr_symbolic._worker`` (None: the
-    worker could not read the job, e.g. a SymPy class defined in a notebook)."""
+    """The report computed by a worker process (None: the worker could not
+    read the job, e.g. a SymPy class defined in a notebook)."""
     from .batch import hard_limit
-    env = dict(os.environ)
-    package_parent = str(Path(__file__).resolve().parents[1])
-    env["PYTHONPATH"] = os.pathsep.join(p for p in (package_parent, env.get("PYTHONPATH")) if p)
-    limit = hard_limit(job["timeout"]) + WORKER_START
+    with _idle_lock:
+        worker = _idle.pop() if _idle else None
+    if worker is not None and worker.proc.poll() is not None:    # it died while idle
+        worker.close()
+        worker = None
+    fresh = worker is None
+    if fresh:
+        worker = _Worker()
+    limit = hard_limit(job["timeout"]) + (WORKER_START if fresh else 0.0)
     start = time.monotonic()
-    try:
-        proc = subprocess.run([sys.executable, "-m", "uwmr_symbolic._worker"], input=data, capture_output=True,
-                              timeout=limit, env=env)
-    except subprocess.TimeoutExpired:
-        return _stopped(Path(job["path"]), job["timeout"], time.monotonic() - start)
-    if proc.stderr:
-        sys.stderr.write(proc.stderr.decode(errors="replace"))
-    if proc.returncode == 3:
-        warnings.warn("the worker process could not read the design (a class defined in this session?); "
-                      "verifying in this process", RuntimeWarning, stacklevel=4)
+    answer = worker.ask(data, limit)
+    if answer is None:
+        elapsed = time.monotonic() - start
+        if elapsed < limit and job["kind"] == "file":
+            return Report(Path(job["path"]), None, {}, None, seconds=elapsed,
+                          error="the process checking this file died (does the file call os._exit or crash Python?)")
+        if elapsed < limit:
+            raise RuntimeError("the verifier's worker process died (see the messages above)")
+        return _stopped(Path(job["path"]), job["timeout"], elapsed)
+    with _idle_lock:
+        _idle.append(worker)
+    status, value, output = pickle.loads(answer)
+    if output:
+        sys.stderr.write(output)
+    if status == "unreadable":
+        warnings.warn(f"the worker process could not read the design ({value}); verifying in this process",
+                      RuntimeWarning, stacklevel=4)
         return None
-    try:
-        result = pickle.loads(proc.stdout)
-    except Exception:  # noqa: BLE001
-        last = (proc.stderr.decode(errors="replace").strip().splitlines() or ["no output"])[-1]
-        raise RuntimeError(f"the verifier's worker process failed (exit {proc.returncode}): {last}") from None
-    if isinstance(result, BaseException):
-        raise result
-    return result
+    if status == "error":
+        raise value
+    return value
 
 
 def verify(f: sp.Expr, params: Mapping | None = None, gains: Mapping | None = None, *, name: str | None = None,
