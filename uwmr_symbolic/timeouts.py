@@ -95,6 +95,7 @@ class _Watchdog:
 
     def __init__(self):
         self.armed: dict[int, tuple] = {}
+        self.fired: dict[int, tuple] = {}     # the entry of each thread that has fired (watchdog's own)
         self.wake: queue.SimpleQueue = queue.SimpleQueue()
         self.thread: threading.Thread | None = None
 
@@ -110,19 +111,31 @@ class _Watchdog:
 
     def _run(self):
         while True:
-            now = time.monotonic()
-            for tid, entry in list(self.armed.items()):
-                if entry[0] <= now and self.armed.get(tid) is entry:
-                    _raise_in(tid, TimeLimit)
-                    if self.armed.get(tid) is entry:
-                        del self.armed[tid]          # fired once, like the one-shot SIGALRM timer
-                    else:
-                        _raise_in(tid, None)         # the block ended meanwhile: take it back
-            nearest = min((e[0] for e in list(self.armed.values())), default=None)   # list(): one C call
             try:
-                self.wake.get(timeout=None if nearest is None else max(nearest - time.monotonic(), 0.0))
-            except queue.Empty:
-                pass
+                self._fire_and_wait()
+            except Exception:  # noqa: BLE001 - the watchdog must outlive any surprise
+                time.sleep(1e-3)
+
+    def _fire_and_wait(self):
+        now = time.monotonic()
+        waiting = []
+        for tid, entry in list(self.armed.items()):       # list(): one C call, no concurrent change
+            if self.fired.get(tid) is entry:
+                continue                                   # fired once, like the one-shot SIGALRM timer
+            if entry[0] > now:
+                waiting.append(entry[0])
+                continue
+            _raise_in(tid, TimeLimit)
+            self.fired[tid] = entry
+            if self.armed.get(tid) is not entry:
+                _raise_in(tid, None)                       # the block ended meanwhile: take it back
+        for tid in list(self.fired):
+            if tid not in self.armed:
+                del self.fired[tid]
+        try:
+            self.wake.get(timeout=max(min(waiting) - time.monotonic(), 0.0) if waiting else None)
+        except queue.Empty:
+            pass
 
 
 _watchdog = _Watchdog()
