@@ -208,3 +208,18 @@ def test_simulate_circle_with_the_baseline():
     assert len(sim.plot_lyapunov().axes[0].lines) == 1
     with pytest.raises(ValueError, match="no gain scenario 'lemniscate'"):
         simulate(report, "lemniscate")
+
+
+def test_simulate_a_straight_line_with_wr_max_zero():
+    from uwmr_symbolic.simulation import from_path
+    line = from_path("line", lambda t: (0.5 * t, 0.0 * t), lambda t: (0.5 + 0 * t, 0 * t),
+                     lambda t: (0 * t, 0 * t), 0.0, 40.0, "straight line at 0.5 m/s")
+    gains = dict(CIRCLE, lam=1.2, Wr_max=0)        # a straight line: |Wr|max = 0 in (3)
+    report = verify(JIANG, gains={"line": gains}, name="Jiang", worker=False)
+    assert report.gains["line"].W_bound == sp.Rational(3, 10) + sp.Rational(7, 10)    # 0 + 1.2*0.5*0.5 + 0.7
+    sim = simulate(report, line, kinds=("digital",), backends=("python",))
+    m = sim.runs["digital"]
+    assert sim.ok and m["converged"] and m["max_abs_v"] <= 0.75 and m["max_abs_w"] <= 2.0
+    assert sim.scenario.pose0 == pytest.approx((-0.5, -0.5, 0.0))      # 0.5 m beside the start
+    tr = sim.trajectories["digital"]
+    assert abs(tr.y[-1]) < 0.01 and tr.x[-1] == pytest.approx(20.0, abs=0.01)
