@@ -223,3 +223,13 @@ def test_simulate_a_straight_line_with_wr_max_zero():
     assert sim.scenario.pose0 == pytest.approx((-0.5, -0.5, 0.0))      # 0.5 m beside the start
     tr = sim.trajectories["digital"]
     assert abs(tr.y[-1]) < 0.01 and tr.x[-1] == pytest.approx(20.0, abs=0.01)
+
+
+def test_the_reused_worker_reads_relative_paths_from_the_current_folder(tmp_path, monkeypatch):
+    for folder, f in (("a", "sp.log(1 + e1**2 + e2**2) / 2"), ("b", "sp.sqrt(1 + e1**2 + e2**2) - 1")):
+        (tmp_path / folder).mkdir()
+        (tmp_path / folder / "d.py").write_text(f"import sympy as sp\nfrom uwmr_symbolic import e1, e2\nf = {f}\n")
+    monkeypatch.chdir(tmp_path / "a")
+    assert verify_file("d.py").kf.exact == sp.Rational(1, 2)
+    monkeypatch.chdir(tmp_path / "b")
+    assert verify_file("d.py").kf.exact == 1

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import contextlib
 import io
+import os
 import pickle
 import struct
 import sys
@@ -43,6 +44,7 @@ def _answer(data: bytes) -> tuple:
         return "unreadable", f"{type(exc).__name__}: {exc}", ""
     captured = io.StringIO()
     try:
+        os.chdir(job["cwd"])
         with contextlib.redirect_stdout(captured), contextlib.redirect_stderr(captured):
             if job["kind"] == "file":
                 report = api._verify_file_here(job["path"], job["timeout"])

@@ -90,7 +90,7 @@ def _run(job: dict, worker: bool) -> Report:
     """Run a verification job in a worker process, or here (`worker=False`)."""
     if worker and sys.executable:
         try:
-            data = pickle.dumps(job)
+            data = pickle.dumps({**job, "cwd": os.getcwd()})     # relative paths as here
         except Exception as exc:  # noqa: BLE001 - e.g. a lambda among the params
             warnings.warn(f"the design cannot be sent to a worker process ({type(exc).__name__}: {exc}); "
                           f"verifying in this process", RuntimeWarning, stacklevel=3)
