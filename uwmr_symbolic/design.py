@@ -150,7 +150,7 @@ def _importable(directory: Path):
         with contextlib.suppress(ValueError):
             sys.path.remove(str(directory))
         for name in set(sys.modules) - before:
-            file = getattr(sys.modules[name], "__file__", None)
+            file = getattr(sys.modules.get(name), "__file__", None)
             if file and Path(file).resolve().parent == directory:
                 del sys.modules[name]
 
