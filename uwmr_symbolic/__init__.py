@@ -25,6 +25,8 @@ class _CallableModule(_types.ModuleType):
     def __call__(self, *args, **kwargs):
         return _api.verify(*args, **kwargs)
 
+    __call__.__doc__ = _api.verify.__doc__      # what help() and IPython's `verify?` show for a call
+
 
 _verify_module.__class__ = _CallableModule
 _verify_module.__signature__ = _inspect.signature(_api.verify)
