@@ -1,6 +1,7 @@
 """The Python API: verify (in memory, in a worker process or in the calling
 thread, from any thread), verify_file, generate, simulate, and what a Report
-and a SimulationResult show."""
+and a SimulationResult show.  The tests that start a worker process, compile
+or simulate are marked slow (not in make test-fast)."""
 import json
 import threading
 import time
@@ -36,6 +37,7 @@ def test_the_module_stays_importable_and_is_callable():
     assert callable(verify) and "gains" in str(__import__("inspect").signature(verify))
 
 
+@pytest.mark.slow
 def test_verify_design_3_in_memory_matches_the_file():
     report = verify(F3, {ALPHA: 1.0, BETA: 4.0}, {"circle": dict(CIRCLE, lam=0.3)}, name="Design 3", worker=False)
     assert _verdicts(report) == {p: "proved" for p in uwmr_symbolic.verify.PROPERTIES}
@@ -49,6 +51,7 @@ def test_verify_design_3_in_memory_matches_the_file():
     assert _verdicts(from_file) == _verdicts(report) and from_file.kf.exact == report.kf.exact
 
 
+@pytest.mark.slow
 def test_verify_in_a_worker_process_gives_the_same_report():
     here = verify(JIANG, gains={"circle": dict(CIRCLE, lam=1.2)}, name="Jiang", worker=False)
     there = verify(JIANG, gains={"circle": dict(CIRCLE, lam=1.2)}, name="Jiang")
@@ -85,6 +88,7 @@ def test_verify_from_another_thread_respects_its_timeout():
     assert _verdicts(out["full"]) == {p: "proved" for p in out["full"].properties}
 
 
+@pytest.mark.slow
 def test_two_threads_verify_in_worker_processes_at_once():
     out = {}
 
@@ -105,12 +109,14 @@ class Label(str):
     """Defined in this test module, which a worker process cannot import."""
 
 
+@pytest.mark.slow
 def test_what_the_worker_cannot_read_is_verified_here():
     with pytest.warns(RuntimeWarning, match="could not read the design"):
         report = verify(JIANG, name=Label("jiang"))
     assert report.kf.exact == sp.Rational(1, 2) and report.exit_status == 0
 
 
+@pytest.mark.slow
 def test_a_dying_design_file_is_reported_unusable(tmp_path):
     design = tmp_path / "exits.py"
     design.write_text("import os\nos._exit(7)\n")
@@ -118,6 +124,7 @@ def test_a_dying_design_file_is_reported_unusable(tmp_path):
     assert report.exit_status == 2 and "died" in report.error
 
 
+@pytest.mark.slow
 def test_worker_is_killed_when_the_design_blocks_inside_c():
     start = time.monotonic()
     report = verify_file(ROOT / "tests" / "adversarial" / "blocks_in_c.py", timeout=1)
@@ -163,6 +170,7 @@ def test_no_gains_report_says_so():
     assert "gains within the limits" not in str(report)
 
 
+@pytest.mark.slow
 def test_generate_targets(tmp_path):
     import casadi
     report = verify(JIANG, name="Jiang", worker=False)
@@ -185,6 +193,7 @@ def test_generate_targets(tmp_path):
     assert not (tmp_path / "no").exists()
 
 
+@pytest.mark.slow
 def test_simulate_circle_with_the_baseline():
     report = verify(JIANG, gains={"circle": dict(CIRCLE, lam=1.2)}, name="Jiang", worker=False)
     sim = simulate(report, "circle", baseline=True)
@@ -210,6 +219,7 @@ def test_simulate_circle_with_the_baseline():
         simulate(report, "lemniscate")
 
 
+@pytest.mark.slow
 def test_simulate_a_straight_line_with_wr_max_zero():
     from uwmr_symbolic.simulation import from_path
     line = from_path("line", lambda t: (0.5 * t, 0.0 * t), lambda t: (0.5 + 0 * t, 0 * t),
@@ -225,6 +235,7 @@ def test_simulate_a_straight_line_with_wr_max_zero():
     assert abs(tr.y[-1]) < 0.01 and tr.x[-1] == pytest.approx(20.0, abs=0.01)
 
 
+@pytest.mark.slow
 def test_the_reused_worker_reads_relative_paths_from_the_current_folder(tmp_path, monkeypatch):
     for folder, f in (("a", "sp.log(1 + e1**2 + e2**2) / 2"), ("b", "sp.sqrt(1 + e1**2 + e2**2) - 1")):
         (tmp_path / folder).mkdir()

@@ -4,6 +4,7 @@ beside the design file."""
 import sys
 from pathlib import Path
 
+import pytest
 import sympy as sp
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -15,6 +16,7 @@ from uwmr_symbolic.gains import check_gains  # noqa: E402
 JIANG = "import sympy as sp\nfrom uwmr_symbolic import e1, e2\nf = sp.log(1 + e1**2 + e2**2)/2\n"
 
 
+@pytest.mark.slow        # runs the command line
 def test_no_gains_says_bound_10_was_not_checked(tmp_path):
     design = tmp_path / "jiang.py"
     design.write_text(JIANG)

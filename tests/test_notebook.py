@@ -10,6 +10,8 @@ nbformat = pytest.importorskip("nbformat")
 nbclient = pytest.importorskip("nbclient")
 pytest.importorskip("ipykernel")
 
+pytestmark = pytest.mark.slow        # more than a few seconds: not in make test-fast
+
 NOTEBOOK = Path(__file__).resolve().parent.parent / "examples" / "first_design.ipynb"
 
 
