@@ -24,6 +24,18 @@ CASES = {
     "gain_missing_wmax.py": "gain scenario without Wmax",
     "gain_negative_k1.py": "gain scenario with k1 = -0.1",
     "does_not_exist.py": "no such file",
+    "symbols_x_y.py": "f written in x, y instead of e1, e2",
+    "numpy_log.py": "np.log of a SymPy expression",
+    "math_sqrt.py": "math.sqrt of a SymPy expression",
+    "caret_power.py": "^ written for a power",
+}
+
+#: file -> the words of the one line that name the fix
+FIXES = {
+    "symbols_x_y.py": ["f is written in x, y", "name them e1 and e2", "from uwmr_symbolic import e1, e2"],
+    "numpy_log.py": ["at line 6", "numpy's log", "use sympy.log"],
+    "math_sqrt.py": ["at line 7", "math.sqrt", "use sympy.sqrt"],
+    "caret_power.py": ["at line 5", "write powers with **"],
 }
 HANGS = "sleep_forever.py"
 
@@ -44,6 +56,17 @@ def test_unusable_input(name):
     lines = run.stderr.strip("\n").splitlines()
     assert len(lines) == 1, f"expected exactly one line on stderr, got {len(lines)}\n{info}"
     assert name in lines[0], f"stderr does not name the file\n{info}"
+
+
+@pytest.mark.parametrize("name", sorted(FIXES), ids=lambda n: n.removesuffix(".py"))
+def test_common_mistake_names_the_fix(name):
+    run = run_cli([f"{BAD}/{name}", "--no-cache"], timeout=300)
+    assert run.returncode == 2, run.describe()
+    lines = run.stderr.strip("\n").splitlines()
+    assert len(lines) == 1 and "Traceback" not in run.stderr, run.describe()
+    assert lines[0].startswith(f"{BAD}/{name}: "), run.describe()
+    for words in FIXES[name]:
+        assert words in lines[0], f"{words!r} missing from: {lines[0]}"
 
 
 def test_design_hanging_at_import_times_out():

@@ -9,4 +9,27 @@ __version__ = "0.1.0"
 #: Design files may import these or create their own with the same names.
 e1, e2 = _sp.symbols("e1 e2", real=True)
 
-__all__ = ["e1", "e2", "__version__"]
+# The Python API (`api`): verify, verify_file, generate, simulate.
+# `uwmr_symbolic.verify` stays the verifier's module (`import uwmr_symbolic.verify
+# as v`, `from uwmr_symbolic.verify import verify_design` and patches of its
+# names keep working) and calling it calls `api.verify`.
+import inspect as _inspect  # noqa: E402
+import types as _types  # noqa: E402
+
+from . import api as _api, verify as _verify_module  # noqa: E402
+from .api import generate, simulate, verify_file  # noqa: E402
+from .design import DesignError  # noqa: E402
+
+
+class _CallableModule(_types.ModuleType):
+    def __call__(self, *args, **kwargs):
+        return _api.verify(*args, **kwargs)
+
+    __call__.__doc__ = _api.verify.__doc__      # what help() and IPython's `verify?` show for a call
+
+
+_verify_module.__class__ = _CallableModule
+_verify_module.__signature__ = _inspect.signature(_api.verify)
+verify = _verify_module
+
+__all__ = ["e1", "e2", "__version__", "verify", "verify_file", "generate", "simulate", "DesignError"]

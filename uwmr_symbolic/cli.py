@@ -177,10 +177,10 @@ class Reports:
         self._reports = {}
 
     def __call__(self, path):
-        from .verify import verify_design
+        from .api import verify_file
         key = str(path)
         if key not in self._reports:
-            self._reports[key] = verify_design(path, timeout=self.timeout)
+            self._reports[key] = verify_file(path, timeout=self.timeout, worker=False)
         return self._reports[key]
 
 

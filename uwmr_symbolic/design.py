@@ -10,6 +10,7 @@ import ast
 import contextlib
 import fractions
 import numbers
+import re
 import runpy
 import sys
 from dataclasses import dataclass, field
@@ -20,6 +21,10 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 
 GAIN_KEYS = ("k1", "k2", "lam", "Vmax", "Wmax", "Vr_max", "Wr_max")
+#: |Wr|max = 0 is a straight-line reference: (3) bounds |Wr(t)| by it and
+#: bound (10) holds with it as written.  Every other entry must be positive
+#: (lam, k1, k2 > 0 in (9); lim Vr(t) != 0 needs |Vr|max > 0).
+NONNEGATIVE_KEYS = ("Wr_max",)
 
 
 class DesignError(Exception):
@@ -111,7 +116,7 @@ def _run_file(path: Path) -> tuple[dict, str]:
         raise DesignError(f"syntax error at line {exc.lineno}: {exc.msg}") from None
     try:
         # a print() in a design file must not corrupt JSON on stdout
-        with contextlib.redirect_stdout(sys.stderr):
+        with contextlib.redirect_stdout(sys.stderr), _importable(path.parent):
             namespace = runpy.run_path(str(path), run_name="__uwmr_design__")
     except SystemExit as exc:
         raise DesignError(f"the file called exit({exc.code}) while loading") from None
@@ -123,8 +128,58 @@ def _run_file(path: Path) -> tuple[dict, str]:
                 line = tb.tb_lineno
             tb = tb.tb_next
         where = f" at line {line}" if line else ""
+        text = source.splitlines()[line - 1] if line and line <= len(source.splitlines()) else ""
+        hint = mistake_hint(exc, text)
+        if hint:
+            raise DesignError(f"at line {line}: {hint}" if line else hint) from None
         raise DesignError(f"raised {exc.__class__.__name__}{where}: {exc}") from None
     return namespace, source
+
+
+@contextlib.contextmanager
+def _importable(directory: Path):
+    """The design's own directory is importable while it loads (a helper
+    module beside it), and the modules imported from there are forgotten
+    afterwards (an edited helper is read again next time)."""
+    directory = directory.resolve()
+    before = set(sys.modules)
+    sys.path.insert(0, str(directory))
+    try:
+        yield
+    finally:
+        with contextlib.suppress(ValueError):
+            sys.path.remove(str(directory))
+        for name in set(sys.modules) - before:
+            file = getattr(sys.modules.get(name), "__file__", None)
+            if file and Path(file).resolve().parent == directory:
+                del sys.modules[name]
+
+
+_FUNCTION_CALL = re.compile(r"\b(np|numpy|math)\.(\w+)\s*\(")
+
+
+def mistake_hint(exc: Exception, line_text: str = "") -> str | None:
+    """One line naming the fix for the usual mistakes of a design file (numpy
+    or math functions applied to SymPy expressions, ``^`` for a power), or
+    None."""
+    message = str(exc)
+    calls = _FUNCTION_CALL.findall(line_text)
+    if isinstance(exc, TypeError) and "unsupported operand type(s) for ^" in message:
+        return "`^` is exclusive-or in Python; write powers with ** (e1**2, not e1^2)"
+    ufunc = re.search(r"no callable (\w+) method", message)
+    if isinstance(exc, (TypeError, AttributeError)) and (ufunc or "loop of ufunc" in message):
+        name = ufunc.group(1) if ufunc else next((n for m, n in calls if m != "math"), "log")
+        return (f"numpy's {name} cannot take a SymPy expression; use sympy.{name} "
+                f"(import sympy as sp; sp.{name}(...))")
+    if isinstance(exc, TypeError) and ("convert expression to float" in message
+                                       or "must be real number, not" in message):
+        name = next((n for m, n in calls if m == "math"), None)
+        if name or "math." in line_text:
+            name = name or "sqrt"
+            return (f"math.{name} cannot take a SymPy expression; use sympy.{name} "
+                    f"(import sympy as sp; sp.{name}(...))")
+        return f"a float was asked of a SymPy expression ({message}); use sympy functions (sympy.sqrt, sympy.log) on e1, e2"
+    return None
 
 
 def _canonical_symbols(expr: sp.Expr) -> sp.Expr:
@@ -171,7 +226,10 @@ def _parse_gains(raw) -> dict:
             if key not in entries:
                 raise DesignError(f"gain scenario {scenario!r} has no {key!r}")
             v = exact_number(entries[key], f"gains[{scenario!r}][{key!r}]")
-            if not (v > 0) == True:  # noqa: E712  (SymPy relational)
+            if key in NONNEGATIVE_KEYS:
+                if not (v >= 0) == True:  # noqa: E712  (SymPy relational)
+                    raise DesignError(f"gains[{scenario!r}][{key!r}] = {entries[key]} must not be negative")
+            elif not (v > 0) == True:  # noqa: E712  (SymPy relational)
                 raise DesignError(f"gains[{scenario!r}][{key!r}] = {entries[key]} must be positive")
             values[key] = v
         out[str(scenario)] = values
@@ -209,6 +267,14 @@ def load_design(path) -> Design:
     """Load and check a design file (the public contract of the README)."""
     path = Path(path)
     ns, source = _run_file(path)
+    return design_from_namespace(ns, path, _f_line(source))
+
+
+def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
+    """Check the names a design defines (``f``, and optionally ``params``,
+    ``gains``, ``name``, ``description``, as in a design file's namespace) and
+    return the `Design`; `path` names it in messages and generated files."""
+    path = Path(path)
     if "f" not in ns:
         raise DesignError("defines no `f`; add e.g. `f = sympy.log(1 + e1**2 + e2**2) / 2`")
     f_source = ns["f"]
@@ -223,6 +289,9 @@ def load_design(path) -> Design:
     params = _parse_params(ns.get("params"), f)
     f = f.subs({s: params[s.name] for s in f.free_symbols if s.name in params})
     extra = sorted(s.name for s in f.free_symbols if s not in (E1, E2))
+    if extra and not f.has(E1, E2):
+        raise DesignError(f"f is written in {', '.join(extra)}, not in the error coordinates: name them e1 and e2 "
+                          f"(`from uwmr_symbolic import e1, e2`, or sympy.symbols('e1 e2', real=True))")
     if extra:
         raise DesignError(f"free symbol {extra[0]!r} of f has no value; add it to `params`")
     unused = sorted(set(params) - {s.name for s in _canonical_symbols(f_source).free_symbols})
@@ -234,4 +303,4 @@ def load_design(path) -> Design:
     name = ns.get("name") if isinstance(ns.get("name"), str) else path.stem
     description = ns.get("description") if isinstance(ns.get("description"), str) else ""
     return Design(path=path, f=f, f_source=f_source, params=params, gains=gains,
-                  name=name, description=description, f_line=_f_line(source))
+                  name=name, description=description, f_line=f_line)

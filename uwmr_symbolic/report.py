@@ -159,8 +159,19 @@ def render_text(r) -> str:
     lines.append(f"  proof replay: {'ok' if pr.get('ok') else 'NOT ok'} — "
                  + "; ".join(f"{k}: {'ok' if s['ok'] else 'no'}" for k, s in pr.get("steps", {}).items()))
     served = ", served from the cache" if d.get("cached") else ""
-    lines.append(f"  => {STATUS_TEXT[d['exit_status']]}  ({d['seconds']:.2f} s{served})")
+    lines.append(f"  => {status_text(d)}  ({d['seconds']:.2f} s{served})")
     return "\n".join(lines)
+
+
+NO_GAINS = "no gain scenarios given, so bound (10) was not checked"
+
+
+def status_text(d: dict) -> str:
+    """The verdict line of a result dict; a design without ``gains`` is never
+    said to be within the limits."""
+    if d["exit_status"] == 0 and not d.get("gains"):
+        return f"all properties proved; {NO_GAINS}"
+    return STATUS_TEXT[d["exit_status"]]
 
 
 def _kf_summary(kf: dict) -> str:
@@ -348,5 +359,6 @@ def render_github(results: list[dict]) -> str:
                                        "kf undecided, so the |W| bound cannot be checked"))
         if d["exit_status"] == 0:
             out.append(_annotation("notice", path, f_line, f"uwmr-verify proved ({name})",
-                                   f"P1-P8 proved, kf = {_kf_summary(d['kf'])}, every gain scenario within bound (10)"))
+                                   f"P1-P8 proved, kf = {_kf_summary(d['kf'])}, "
+                                   + ("every gain scenario within bound (10)" if d["gains"] else NO_GAINS)))
     return "\n".join(out)

@@ -1,5 +1,8 @@
 """The verifier: load a design, decide P1-P8, certify kf, replay the proof,
-check the gains against bound (10).  Returns a `Report`."""
+check the gains against bound (10).  Returns a `Report`.
+
+This module is callable: ``from uwmr_symbolic import verify; verify(f, params,
+gains)`` is `uwmr_symbolic.api.verify` (see its documentation)."""
 from __future__ import annotations
 
 import time
@@ -25,6 +28,12 @@ EXIT_OK, EXIT_REFUTED, EXIT_UNUSABLE, EXIT_INCONCLUSIVE = 0, 1, 2, 3
 
 @dataclass
 class Report:
+    """The verifier's result for one design: the verdict of each property
+    P1-P8 (``properties``), the certified kf of P1 (``kf``), bound (10) per
+    gain scenario (``gains``), the replay of the Lyapunov argument (11)-(19)
+    (``proof_replay``) and ``exit_status`` (0 proved, 1 refuted or a gain
+    check fails, 2 unusable, 3 inconclusive).  In a notebook it shows as a
+    table; ``to_dict()`` is the JSON of ``--format json``."""
     path: Path
     design: Design | None
     properties: dict[str, Verdict]
@@ -47,6 +56,25 @@ class Report:
                 and all(g.W_ok for g in self.gains.values()):
             return EXIT_OK
         return EXIT_INCONCLUSIVE
+
+    def to_dict(self) -> dict:
+        """The report as JSON-able data (the object ``--format json`` prints)."""
+        from .report import to_dict
+        return to_dict(self)
+
+    def __str__(self) -> str:
+        from .report import render_text
+        return render_text(self)
+
+    def _repr_html_(self) -> str:
+        from .display import report_html
+        return report_html(self)
+
+    def plot_profile(self, s_max: float = 10.0):
+        """A matplotlib Figure of F(s), F'(s) and F'(s)/s (f = F(|(e1, e2)|))
+        with the certified kf of P1 and the k of P6."""
+        from .display import profile_figure
+        return profile_figure(self, s_max)
 
 
 def _timed_out(what: str, timeout: float) -> Verdict:

@@ -159,7 +159,10 @@ def simulate_design(design_path, report=None, monte_carlo=0, seed=0, references=
     apply to the digital loop.  A scenario without a known path is reported as
     skipped (ok stays true).  M["ok"] false marks a failed check; the
     scenario's "ok" is the conjunction over continuous and digital (the
-    baseline is there for comparison and never counts)."""
+    baseline is there for comparison and never counts).  With
+    `keep_trajectories` each M also holds its `Trajectory` under
+    "_trajectory"; `uwmr_symbolic.simulate` returns one scenario's runs with
+    their trajectories as a `SimulationResult` instead."""
     report = _load(design_path, report)
     design = report.design
     verified = _verified(report)

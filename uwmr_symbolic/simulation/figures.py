@@ -8,7 +8,9 @@ design, plus the unsaturated baseline (38):
     figures/<path>_inputs.png    V and W against time with the +-limits (Fig. 6 / 9)
 
 The runs are the 100 Hz digital loop with one sample of delay (as on the
-robot), driven by the generated Python modules.
+robot), driven by the generated Python modules.  `path_figure`,
+`errors_figure` and `inputs_figure` draw the same panels as matplotlib
+Figures (no pyplot state) for `SimulationResult`'s plots.
 
     python -m uwmr_symbolic.simulation.figures [--out figures]
 """
@@ -19,11 +21,8 @@ import math
 import sys
 from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from matplotlib.figure import Figure  # noqa: E402
 
 from .api import _float_gains, paper_scenario  # noqa: E402
 from .controllers import load_controllers, unsaturated_38  # noqa: E402
@@ -61,12 +60,21 @@ def _save(fig, title: str, out: Path):
     fig.suptitle(title, fontsize=11)
     fig.tight_layout()
     fig.savefig(out, dpi=DPI)
-    plt.close(fig)
+
+
+def _subplots(rows, cols, figsize, **kw):
+    fig = Figure(figsize=figsize)
+    return fig, fig.subplots(rows, cols, squeeze=False, **kw)
 
 
 def plot_path(sc, runs, out: Path, fig_no: int):
+    _save(path_figure(runs), f"Fig. {fig_no} (simulated): {sc.name}, path in the plane (100 Hz, 1 sample delay)", out)
+
+
+def path_figure(runs) -> Figure:
+    """One panel per run [(label, color, Trajectory, gains)]: robot and reference paths."""
     rows, cols = _grid(len(runs))
-    fig, axes = plt.subplots(rows, cols, figsize=(3.3 * cols, 3.3 * rows), sharex=True, sharey=True)
+    fig, axes = _subplots(rows, cols, (3.3 * cols, 3.3 * rows), sharex=True, sharey=True)
     for ax, (label, color, tr, _) in zip(axes.flat, runs):
         ax.plot(tr.xr, tr.yr, "k--", lw=0.9, label="reference", zorder=3)
         ax.plot(tr.x, tr.y, color=color, lw=1.2, label="robot")
@@ -78,12 +86,20 @@ def plot_path(sc, runs, out: Path, fig_no: int):
         ax.set_xlabel("x [m]")
     for ax in axes[:, 0]:
         ax.set_ylabel("y [m]")
+    for ax in list(axes.flat)[len(runs):]:
+        ax.set_visible(False)
     axes.flat[0].legend(fontsize=7, loc="best")
-    _save(fig, f"Fig. {fig_no} (simulated): {sc.name}, path in the plane (100 Hz, 1 sample delay)", out)
+    return fig
 
 
 def plot_errors(sc, runs, out: Path, fig_no: int):
-    fig, axes = plt.subplots(3, 1, figsize=(9, 7.5), sharex=True)
+    _save(errors_figure(runs), f"Fig. {fig_no} (simulated): {sc.name}, position and orientation errors", out)
+
+
+def errors_figure(runs) -> Figure:
+    """xt, yt, tht of (5) against time, one curve per run."""
+    fig, axes = _subplots(3, 1, (9, 7.5), sharex=True)
+    axes = axes[:, 0]
     for label, color, tr, _ in runs:
         for ax, a in zip(axes, (tr.xr - tr.x, tr.yr - tr.y, tr.thr - tr.th)):
             ax.plot(tr.t, a, color=color, lw=1.0, label=label)
@@ -92,11 +108,17 @@ def plot_errors(sc, runs, out: Path, fig_no: int):
         ax.grid(alpha=0.3)
     axes[-1].set_xlabel("t [s]")
     axes[0].legend(fontsize=7, ncol=3, loc="upper right")
-    _save(fig, f"Fig. {fig_no} (simulated): {sc.name}, position and orientation errors", out)
+    return fig
 
 
 def plot_inputs(sc, runs, out: Path, fig_no: int):
-    fig, axes = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    _save(inputs_figure(runs), f"Fig. {fig_no} (simulated): {sc.name}, control inputs with the limits", out)
+
+
+def inputs_figure(runs) -> Figure:
+    """V and W against time, one curve per run, with the limits +-Vmax, +-Wmax of (6)."""
+    fig, axes = _subplots(2, 1, (9, 6), sharex=True)
+    axes = axes[:, 0]
     for label, color, tr, _ in runs:
         axes[0].plot(tr.t, tr.v, color=color, lw=0.9, label=label)
         axes[1].plot(tr.t, tr.w, color=color, lw=0.9, label=label)
@@ -112,7 +134,7 @@ def plot_inputs(sc, runs, out: Path, fig_no: int):
     axes[1].text(0.0, g["Wmax"], f" +Wmax = {g['Wmax']:g} rad/s", ha="left", va="bottom", fontsize=8)
     axes[-1].set_xlabel("t [s]")
     axes[0].legend(fontsize=7, ncol=3, loc="lower right")
-    _save(fig, f"Fig. {fig_no} (simulated): {sc.name}, control inputs with the limits", out)
+    return fig
 
 
 def main(argv=None) -> int:

@@ -1,0 +1,71 @@
+"""Design files the loader must accept: no gains (and the report says bound (10)
+was not checked), a straight-line reference (|Wr|max = 0), a helper module
+beside the design file."""
+import sys
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from _cli import run_cli  # noqa: E402
+
+from uwmr_symbolic.design import DesignError, load_design  # noqa: E402
+from uwmr_symbolic.gains import check_gains  # noqa: E402
+
+JIANG = "import sympy as sp\nfrom uwmr_symbolic import e1, e2\nf = sp.log(1 + e1**2 + e2**2)/2\n"
+
+
+@pytest.mark.slow        # runs the command line
+def test_no_gains_says_bound_10_was_not_checked(tmp_path):
+    design = tmp_path / "jiang.py"
+    design.write_text(JIANG)
+    run = run_cli([design, "--no-cache"], timeout=300)
+    assert run.returncode == 0, run.describe()
+    assert "gains within the limits" not in run.stdout
+    assert "no gain scenarios given, so bound (10) was not checked" in run.stdout.splitlines()[-1]
+
+
+def test_straight_line_reference_wr_max_zero_is_accepted(tmp_path):
+    design = tmp_path / "line.py"
+    design.write_text(JIANG + "gains = {'line': dict(k1=0.25, k2=0.7, lam=1.2, Vmax=0.75, Wmax=2.0, "
+                              "Vr_max=0.5, Wr_max=0)}\n")
+    d = load_design(design)
+    assert d.gains["line"]["Wr_max"] == 0
+    g = check_gains(d.gains, sp.Rational(1, 2))["line"]
+    # bound (10): |W| <= 0 + 1.2 * 0.5 * 1/2 + 0.7 = 1
+    assert g.W_bound == 1 and g.W_ok and g.V_ok
+    # Vr_max = 0 stays refused: lim Vr(t) != 0 is assumed in (2)-(3)
+    design.write_text(JIANG + "gains = {'line': dict(k1=0.25, k2=0.7, lam=1.2, Vmax=0.75, Wmax=2.0, "
+                              "Vr_max=0, Wr_max=0)}\n")
+    try:
+        load_design(design)
+    except DesignError as exc:
+        assert "Vr_max" in str(exc) and "positive" in str(exc)
+    else:
+        raise AssertionError("Vr_max = 0 accepted")
+    design.write_text(JIANG + "gains = {'line': dict(k1=0.25, k2=0.7, lam=1.2, Vmax=0.75, Wmax=2.0, "
+                              "Vr_max=0.5, Wr_max=-1)}\n")
+    try:
+        load_design(design)
+    except DesignError as exc:
+        assert "must not be negative" in str(exc)
+    else:
+        raise AssertionError("Wr_max = -1 accepted")
+
+
+def test_design_imports_a_helper_module_beside_it(tmp_path):
+    (tmp_path / "uwmr_test_helper_shapes.py").write_text(
+        "import sympy as sp\ndef jiang(a, b):\n    return sp.log(1 + a**2 + b**2) / 2\n")
+    design = tmp_path / "uses_helper.py"
+    design.write_text("from uwmr_symbolic import e1, e2\nfrom uwmr_test_helper_shapes import jiang\n"
+                      "f = jiang(e1, e2)\n")
+    d = load_design(design)
+    e1, e2 = sp.symbols("e1 e2", real=True)
+    assert d.f == sp.log(1 + e1**2 + e2**2) / 2
+    # the helper is read afresh next time (edited between two runs in a notebook)
+    assert "uwmr_test_helper_shapes" not in sys.modules
+    assert str(tmp_path) not in sys.path
+    (tmp_path / "uwmr_test_helper_shapes.py").write_text(
+        "import sympy as sp\ndef jiang(a, b):\n    return sp.sqrt(1 + a**2 + b**2) - 1\n")
+    assert load_design(design).f == sp.sqrt(1 + e1**2 + e2**2) - 1
