@@ -56,8 +56,10 @@ def test_certificate_round_trips_and_names_what_it_rests_on(cert1):
     # P6: F' > 0 and F'(s)/s = 1/(1 + s^2) <= k
     assert checks["P1"].kernel_checked and checks["P1"].theorems == 4
     assert checks["P6"].kernel_checked and checks["P6"].theorems == 2
-    for name in ("P7", "P8"):           # no kernel rules for them yet
-        assert checks[name].theorems == 0 and checks[name].unchecked == [DC.SEARCH_ONLY]
+    # P8: F' continuous on (0, oo) and F'(0+) = 0; P7: also F'' on (0, oo) and at 0+, F at 0+
+    assert checks["P8"].kernel_checked and checks["P8"].theorems == 2
+    assert checks["P7"].kernel_checked and checks["P7"].theorems == 5
+    assert "sympy-diff" in checks["P7"].assumptions       # the link differentiates F
 
 
 def test_kf_and_p4_links(cert1):
@@ -84,6 +86,14 @@ def test_kernel_conclusions_are_the_claims_about_this_f(cert1):
         assert later == (["diverges"] if name == "P3" else ["limit", "limit"])
         assert sp.simplify(parse(claim["expr"]) - expr) == 0
         assert (claim["lo"], claim["hi"], claim["want"], claim["strict"]) == ("Integer(0)", "oo", 1, True)
+
+
+def test_p7_and_p8_parts_swapped_fail_the_link(cert1):
+    bad = copy.deepcopy(cert1)
+    bad["properties"]["P7"]["kernel"], bad["properties"]["P8"]["kernel"] = (
+        bad["properties"]["P8"]["kernel"], bad["properties"]["P7"]["kernel"])
+    with pytest.raises(DC.CertificateError, match="P7: the kernel's conclusions are not the ones P7 needs"):
+        DC.check(bad)
 
 
 def test_swapped_kernel_parts_fail_the_link(cert1):
@@ -113,7 +123,7 @@ def test_tampered_step_is_rejected(cert1):
 
 def test_proved_without_anything_to_rest_on_is_rejected(cert1):
     bad = copy.deepcopy(cert1)
-    bad["properties"]["P7"]["unchecked"] = []
+    bad["properties"]["P7"]["kernel"], bad["properties"]["P7"]["unchecked"] = None, []
     with pytest.raises(DC.CertificateError, match="P7: proved with neither"):
         DC.check(bad)
 

@@ -663,3 +663,14 @@ def test_continuous_at_end_and_diverges_by_growth():
     assert (d.claim.kind, d.claim.lo, d.claim.hi) == ("diverges", sp.srepr(sp.Integer(1)), "oo")
     rejects(K.diverges_by_growth, lower, expr=F, var=s, R=sp.Integer(1), rate="linear", k=sp.Integer(1))
     rejects(K.diverges_by_growth, lower, expr=F, var=s, R=sp.Integer(1), rate="log", k=sp.Integer(2))
+
+
+def test_continuous_on_positive():
+    """log(1 + s^2), s/sqrt(1 + s^2) and sqrt(s) are defined (so continuous) for
+    every s > 0; 1/(s - 1) is not (s = 1), log(s - 1) is not (s <= 1)."""
+    s = sp.Symbol("s", nonnegative=True)
+    for e in (sp.log(1 + s ** 2), s / sp.sqrt(1 + s ** 2), sp.sqrt(s)):
+        t = K.continuous_on_positive(expr=e, var=s)
+        assert (t.claim.kind, t.claim.lo, t.claim.hi, t.claim.lo_open) == ("continuous", sp.srepr(ZERO), "oo", True)
+    for e in (1 / (s - 1), sp.log(s - 1)):
+        rejects(K.continuous_on_positive, expr=e, var=s)

@@ -438,6 +438,30 @@ def origin_theorems(F, var) -> list:
     return []
 
 
+def smoothness_theorems(F, var, order) -> list:
+    """P8 (order 1): F' continuous on (0, oo) and at 0+ with F'(0) = 0.
+    P7 (order 2): also F'' continuous on (0, oo) and at 0+ (value L), so that
+    F'(s)/s = F''(xi) -> L too (mean value theorem), and F continuous at 0+.
+    [] if not shown."""
+    d1 = sp.diff(F, var)
+    d2 = sp.diff(d1, var)
+    try:
+        out = [_rule(K.continuous_on_positive, expr=d1, var=var)]
+        if order == 2:
+            out.append(_rule(K.continuous_on_positive, expr=d2, var=var))
+    except NoProof:
+        return []
+    for w in (sp.Rational(1, 2), sp.Rational(1, 16)):
+        try:
+            ends = [_rule(K.continuous_at_end, expr=d, var=var, c=0, width=w)
+                    for d in (d1, d2, F)[:1 if order == 1 else 3]]
+        except NoProof:
+            continue
+        if ends[0].claim.other == K._s(0):
+            return out + ends
+    return []
+
+
 def origin_value_theorems(value) -> list:
     """P2: the kernel's `value_sign` of the exact f(0, 0), or [] if refused."""
     try:

@@ -124,6 +124,23 @@ def _link_p1_p6(name, F, claims) -> list[str]:
     return []
 
 
+def _link_smooth(name, F, claims) -> list[str]:
+    """P8: F' continuous on (0, oo) and F'(0+) = 0, so df/de2 = F'(s) e2/s
+    -> 0 as e2 -> 0 (|e2|/s <= 1; at e1 = 0 it is F'(|e2|) sign(e2) -> 0).
+    P7: also F'' continuous on (0, oo) and at 0+ (value L), F continuous at
+    0+; then F'(s)/s = F''(xi) -> L, so the Hessian F'' e e^T/s^2 + (F'/s)(I - e e^T/s^2) of
+    f = F(|e|) is continuous on R^2 \\ {0} and tends to L I at the origin."""
+    d1 = sp.diff(F, S)
+    order = 1 if name == "P8" else 2
+    ds = [d1, sp.diff(d1, S)][:order]
+    want = [("continuous", sp.srepr(d), "Integer(0)") for d in ds] + [
+        ("limit", sp.srepr(d), "Integer(0)") for d in ([d1] if order == 1 else [*ds, F])]
+    got = [(c.kind, c.expr, c.lo) for c in claims]
+    if got != want or claims[order].other != "Integer(0)" or any(c.var != sp.srepr(S) for c in claims):
+        raise CertificateError(f"{name}: the kernel's conclusions are not the ones {name} needs for this f")
+    return []
+
+
 def _link(name, f, theorems, exact=None) -> list[str]:
     """Facts the kernel's conclusions do not cover for property `name`."""
     claims = [t.claim for t in theorems]
@@ -139,7 +156,7 @@ def _link(name, f, theorems, exact=None) -> list[str]:
                 and claims[0].other == sp.srepr(rhs) and claims[0].var == sp.srepr(sp.Tuple(E1, E2))):
             raise CertificateError("P4: the kernel's conclusion is not f(e1, e2) = F(sqrt(e1^2 + e2^2))")
         return []
-    if name not in ("P1", "P3", "P5", "P6", "kf"):
+    if name not in ("P1", "P3", "P5", "P6", "P7", "P8", "kf"):
         return []
     F = _profile(f)
     if F.has(sp.Piecewise):
@@ -148,6 +165,8 @@ def _link(name, f, theorems, exact=None) -> list[str]:
         return _link_kf(sp.diff(F, S), exact, claims)
     if name in ("P1", "P6"):
         return _link_p1_p6(name, F, claims)
+    if name in ("P7", "P8"):
+        return _link_smooth(name, F, claims)
     dF = sp.diff(F, S)
     want = F if name == "P3" else dF
     ok = len(claims) in (1, 2, 3) and claims[0].kind == "sign" and (
@@ -196,6 +215,8 @@ def check(data) -> list[PropertyCheck]:
                 pc.assumptions = sorted(set().union(*[t.assumptions for t in theorems]))
                 exact = parse(entry["exact"]) if name == "kf" else None
                 pc.unchecked += _link(name, f, theorems, exact)
+                if name not in ("P2", "P4"):        # the link differentiates F itself
+                    pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
             elif pc.status == "proved" and not pc.unchecked:
                 raise CertificateError(f"{name}: proved with neither kernel theorems nor unchecked facts")
             out.append(pc)

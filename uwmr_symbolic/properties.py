@@ -29,7 +29,7 @@ from . import e1 as E1, e2 as E2
 from .design import Design
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, growth_theorems, origin_theorems, origin_value_theorems, radial_theorems,
-                      sign_theorems, sup_upper_theorem)
+                      sign_theorems, smoothness_theorems, sup_upper_theorem)
 from .kf import KfCertificate, certify_kf, certify_sup, scale
 from .limits import NoLimit, limit_right
 from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
@@ -455,7 +455,12 @@ def verify_p7(a: Analysis) -> Verdict:
     early = _needs_profile(a, "P7")
     if early:
         return early
-    return a.c2
+    v = a.c2
+    if not v.proved:
+        return v
+    v = proved(v.reason, **v.details)
+    return _lemmas(v, v, "f is C^2 (continuity of F'' and F'/s, also at the origin)",
+                   lambda: smoothness_theorems(F, S, 2) if (F := _single_formula(a)) is not None else [])
 
 
 def verify_p8(a: Analysis) -> Verdict:
@@ -480,7 +485,9 @@ def verify_p8(a: Analysis) -> Verdict:
         cont = continuous_on(dF, piece.lo, piece.hi, closed=False)
         if not cont.proved:
             return unknown(f"F' on ({piece.lo}, {piece.hi}): {cont.reason}")
-    return proved("F'(0+) = 0, and F' is bounded near every s > 0, so F'(s) e2/s -> 0 as e2 -> 0")
+    v = proved("F'(0+) = 0, and F' is bounded near every s > 0, so F'(s) e2/s -> 0 as e2 -> 0")
+    return _lemmas(v, v, "F' bounded near every s > 0 and F'(0+) = 0",
+                   lambda: smoothness_theorems(F, S, 1) if (F := _single_formula(a)) is not None else [])
 
 
 # --------------------------------------------------------------------------

@@ -18,6 +18,7 @@ Claim semantics (I: an interval of the real line, ends exact):
               (for every eps > 0 some x in I has E(x) > bound - eps);
 * identity_plane: lhs(x, y) = rhs(x, y) where both are defined (var: (x, y));
 * limit:      E is continuous on [lo, hi] and E(lo) = other, so E -> other as x -> lo+;
+* continuous: E is defined and continuous at every point of (lo, hi);
 * diverges:   E is defined on [lo, oo) and E(x) -> +oo as x -> oo.
 
 Assumptions a theorem rests on are named strings: "arb" (python-flint's
@@ -808,6 +809,18 @@ def continuous_at_end(*, expr, var, c, width):
     v = _number(e.subs(var, c))
     _need(evaluate(e - v, var, c, c, bits=256).hull().contains(0), "Arb disagrees with E(c)")
     return Claim("limit", _s(e), _s(var), _s(c), _s(c + w), other=_s(v))
+
+
+@rule("sympy-core")
+def continuous_on_positive(*, expr, var):
+    """E is continuous on (0, oo): `defined_for_positive` shows E defined at
+    every x > 0, and every construct it accepts (+, *, rational powers, exp,
+    log, cosh, sin, cos, tanh, atan, asinh, sinh, erf, Abs) is continuous
+    where defined.  Claim kind "continuous" on (0, oo)."""
+    e = _expr(expr, var)
+    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    _interval(var, 0, OO, True, True)
+    return Claim("continuous", _s(e), _s(var), _s(0), "oo", True, True)
 
 
 @rule("arb", "sympy-core", "sympy-diff")
