@@ -177,7 +177,8 @@ def test_generate_targets(tmp_path):
     only_py = generate(report, tmp_path / "py", targets=("python",))
     assert [p.name for p in only_py] == ["jiang.py"]
     every = generate(report, tmp_path / "all")
-    assert sorted(p.name for p in every) == ["jiang.c", "jiang.casadi", "jiang.h", "jiang.py"]
+    assert sorted(p.name for p in every) == ["CMakeLists.txt", "example_main.c", "jiang.c", "jiang.casadi",
+                                             "jiang.h", "jiang.py"]
     fn = casadi.Function.load(str(tmp_path / "all" / "jiang.casadi"))
     ns = {}
     exec((tmp_path / "all" / "jiang.py").read_text(), ns)

@@ -262,7 +262,8 @@ def generate(report: Report, out_dir: str | os.PathLike, targets: Iterable[str] 
     """Write the controller (9) of a verified design into `out_dir`.
 
     `targets`: any of ``"c"`` (``<stem>.h``, ``<stem>.c``: C99, double and
-    float), ``"python"`` (``<stem>.py``, numpy) and ``"casadi"``
+    float, with the errors (7) and ``_step``; plus ``example_main.c`` and a
+    ``CMakeLists.txt``, see docs/deploy.md), ``"python"`` (``<stem>.py``, numpy) and ``"casadi"``
     (``<stem>.casadi``, a serialised ``casadi.Function``
     ``control(e1, e2, e3, vr, wr, k1, k2, lam) -> (v, w)``).  The C and Python
     files are checked against the exact law before anything is written.
@@ -282,7 +283,8 @@ def generate(report: Report, out_dir: str | os.PathLike, targets: Iterable[str] 
     if "c" in targets or "python" in targets:
         with tempfile.TemporaryDirectory() as tmp:
             for p in write_checked(report.path, Path(tmp) / "out", force=force, report=report):
-                if ("c" in targets and p.suffix in (".c", ".h")) or ("python" in targets and p.suffix == ".py"):
+                c_file = p.suffix in (".c", ".h") or p.name == "CMakeLists.txt"   # the C package, example included
+                if ("c" in targets and c_file) or ("python" in targets and p.suffix == ".py"):
                     out.mkdir(parents=True, exist_ok=True)
                     written.append(Path(shutil.copyfile(p, out / p.name)))
     if "casadi" in targets:
