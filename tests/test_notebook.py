@@ -52,7 +52,8 @@ def test_bound_10_and_generated_files(executed):
     # |W| <= 1 + 0.3 * 0.5 * 2 + 0.7 = 2 = Wmax: lam = 0.3 is the largest lam within bound (10)
     assert _value(cell) == {"W_bound": "2", "margin": "0", "lam_max": "3/10"}
     [cell] = _tagged(executed, "generate")
-    assert _value(cell) == ["design_3.c", "design_3.casadi", "design_3.h", "design_3.py"]
+    assert _value(cell) == ["CMakeLists.txt", "design_3.c", "design_3.casadi", "design_3.h", "design_3.py",
+                            "example_main.c"]
 
 
 def test_simulation_and_figures(executed):
