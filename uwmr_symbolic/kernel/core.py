@@ -136,21 +136,26 @@ def rule(*assumes):
     def deco(fn):
         @functools.wraps(fn)
         def apply(*premises, **data):
-            for p in premises:
-                _need(isinstance(p, Theorem), lambda: f"{fn.__name__}: a premise is not a theorem")
-            enc = {k: _encode(v) for k, v in data.items()}      # fails early on non-JSON data
-            try:
-                data = {k: decode(v) for k, v in enc.items()}     # exactly what a checker sees
-            except ParseError as exc:
-                raise KernelError(f"{fn.__name__}: {exc}") from None
-            out = fn(*premises, **data)
-            claim, extra = out if isinstance(out, tuple) else (out, ())
-            assumptions = frozenset(assumes).union(extra, *[p.assumptions for p in premises])
-            return Theorem(claim, fn.__name__, tuple(premises), json.dumps(enc, sort_keys=True),
-                           assumptions, _token=_TOKEN)
+            return _apply(fn, assumes, premises, data)
         RULES[fn.__name__] = apply
         return apply
     return deco
+
+
+def _apply(fn, assumes, premises, data) -> Theorem:
+    """One application of the rule fn (see `rule`)."""
+    for p in premises:
+        _need(isinstance(p, Theorem), lambda: f"{fn.__name__}: a premise is not a theorem")
+    enc = {k: _encode(v) for k, v in data.items()}      # fails early on non-JSON data
+    try:
+        data = {k: decode(v) for k, v in enc.items()}     # exactly what a checker sees
+    except ParseError as exc:
+        raise KernelError(f"{fn.__name__}: {exc}") from None
+    out = fn(*premises, **data)
+    claim, extra = out if isinstance(out, tuple) else (out, ())
+    assumptions = frozenset(assumes).union(extra, *[p.assumptions for p in premises])
+    return Theorem(claim, fn.__name__, tuple(premises), json.dumps(enc, sort_keys=True),
+                   assumptions, _token=_TOKEN)
 
 
 # ---------------------------------------------------------------- helpers
@@ -243,10 +248,8 @@ def _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict) -> Claim:
                  int(want), bool(strict))
 
 
-def _is_sign(t: Theorem, var=None):
+def _is_sign(t: Theorem):
     _need(t.claim.kind == "sign", lambda: f"premise is a {t.claim.kind} theorem, not a sign theorem")
-    if var is not None:
-        _need(t.claim.var == _s(var), "premise about another variable")
 
 
 def _same_interval(a: Claim, b: Claim):
