@@ -1068,21 +1068,23 @@ def test_command_line(tmp_path, capsys):
     from uwmr_symbolic.kernel.__main__ import main
     (th, vs), _ = small_proof()
     up = K.sup_upper_by_cover(expr=x, var=x, cuts=[0, 1], bound=I1)
+    ho = sturm(x + 1, x, 0, 1, hi_open=True)
     good = tmp_path / "good.json"
-    good.write_text(json.dumps(to_certificate([th, vs, up])))
+    good.write_text(json.dumps(to_certificate([th, vs, up, ho])))
     assert main([str(good)]) == 0
     assert capsys.readouterr().out.splitlines() == [
         f"{good}: checked sign tanh(x - 1) want=1 strict=True for x in (1, 2]",
         f"{good}: checked value_sign -1 + sqrt(2) want=1 strict=True",
         f"{good}: checked sup_upper x want=0 strict=False other=1 for x in [0, 1]",
+        f"{good}: checked sign x + 1 want=1 strict=True for x in [0, 1)",
         f"{good}: rests on arb, sympy-core, sympy-polys"]
     bad = tmp_path / "bad.json"
     bad.write_text("{")
     missing = tmp_path / "missing.json"
     assert main([str(bad), str(good), str(missing)]) == 1
     out = capsys.readouterr().out.splitlines()
-    assert out[0].startswith(f"{bad}: REJECTED: Expecting property name") and len(out) == 6
-    assert out[5].startswith(f"{missing}: REJECTED: [Errno 2]")
+    assert out[0].startswith(f"{bad}: REJECTED: Expecting property name") and len(out) == 7
+    assert out[6].startswith(f"{missing}: REJECTED: [Errno 2]")
     wrong = tmp_path / "wrong.json"
     cert = to_certificate([vs])
     cert["version"] = 7
@@ -1099,7 +1101,7 @@ def test_command_line(tmp_path, capsys):
         assert main() == 0
     finally:
         sys.argv = old
-    assert capsys.readouterr().out.count("checked") == 3
+    assert capsys.readouterr().out.count("checked") == 4
 
 
 
@@ -1193,3 +1195,36 @@ def test_parse_design_scope_reaches_every_argument():
 def test_evaluator_refuses_nan():
     with pytest.raises(Undefined, match="^not an exact real constant: nan$"):
         evaluate(sp.nan)
+
+
+def test_boundaries_seen_by_the_mutants():
+    # sign_by_monotone with R = 1/2 < 1: E = 1 - 1/(4s), E(1/2) = 1/2 > 0, E' = s**-2/4 > 0
+    E = 1 - 1 / (4 * s)
+    dE = K.sign_of_product(sturm(s, s, Q(1, 2), oo, hi_open=True), expr=sp.diff(E, s))
+    assert K.sign_by_monotone(dE, expr=E, var=s, R=Q(1, 2)).claim == sign(E, s, Q(1, 2), oo, hi_open=True)
+    # the closed end 0 of a positive variable: continuity and a sup at the point 0 only evaluate
+    assert K.continuous_at_end(expr=s + 1, var=s, c=I0, width=I1).claim == \
+        Claim("limit", R(s + 1), R(s), R(I0), R(I1), other=R(I1))
+    assert K.sup_lower_by_point(expr=s, var=s, point=I0, bound=I0, lo=I0, hi=I1, lo_open=False,
+                                hi_open=False).claim == Claim("sup_lower", R(s), R(s), R(I0), R(I1), other=R(I0))
+    # an open right end is kept: sup over (0, oo) of s/(s**2 + 1) >= 1/2, at s = 1
+    E2 = s / (s ** 2 + 1)
+    assert K.sup_lower_by_point(expr=E2, var=s, point=I1, bound=Q(1, 2), lo=I0, hi=oo, lo_open=True,
+                                hi_open=True).claim == Claim("sup_lower", R(E2), R(s), R(I0), "oo", True, True,
+                                                             other=R(Q(1, 2)))
+    # -oo is no finite constant and no positive factor
+    assert why(K.value_sign, value=-oo) == "a finite constant"
+    up = K.sup_upper_by_cover(expr=x, var=x, cuts=[0, Q(1, 2)], bound=Q(1, 2))
+    assert why(K.sup_scaled, up, factor=-oo) == "factor must be a positive constant"
+    # k * U, not U / k or k / U: 4 * (x <= 1/2) is 4x <= 2
+    assert K.sup_scaled(up, factor=4 * I1).claim == Claim("sup_upper", R(4 * x), R(x), R(I0), R(Q(1, 2)), other=R(I2))
+    # x <= 1 + 1e-45 on [0, 1]: the box gives exactly 1, the bound's ball must be narrower than 1e-45
+    B = 1 + Q(1, 10 ** 45)
+    assert K.sup_upper_by_cover(expr=x, var=x, cuts=[0, 1], bound=B).claim.other == R(B)
+    # lim E_t(0) = 1 exactly; 1 + 1e-90 is inside Arb's 256-bit ball of E_t(0) - c but is not the limit
+    Et = 1 / sp.sqrt(t ** 2 + 1)
+    idt = K.identity(lhs=Et, rhs=(s / sp.sqrt(s ** 2 + 1)).subs(s, 1 / t), var=t, lo=I0, hi=oo, lo_open=True,
+                     hi_open=True)
+    c = 1 + Q(1, 10 ** 90)
+    assert why(K.sup_lower_by_limit, idt, expr=s / sp.sqrt(s ** 2 + 1), var=s, width=Q(1, 2), bound=c, lo=I0,
+               lo_open=True) == f"E_t(0) is not exactly {c}"
