@@ -38,7 +38,6 @@ class Undefined(ArithmeticError):
     something this evaluator does not support."""
 
 
-@contextmanager
 def precision(bits: int):
     old = flint.ctx.prec
     flint.ctx.prec = bits
@@ -46,6 +45,9 @@ def precision(bits: int):
         yield
     finally:
         flint.ctx.prec = old
+
+
+precision = contextmanager(precision)       # not a decorator: see core.rule
 
 
 class Iv:

@@ -48,7 +48,6 @@ def _check(node, scope=_SCOPE):
     raise ParseError(f"syntax not allowed: {ast.dump(node)[:60]}")
 
 
-@lru_cache(maxsize=4096)
 def parse(text: str, design: bool = False) -> sp.Expr:
     """The expression of an srepr; `design=True` also allows what a design's
     f may contain (Piecewise and its conditions, Max, Min, more functions)."""
@@ -61,3 +60,6 @@ def parse(text: str, design: bool = False) -> sp.Expr:
         raise ParseError(f"not an srepr: {exc}") from None
     _check(tree, scope)
     return eval(compile(tree, "<srepr>", "eval"), {"__builtins__": {}}, dict(scope))  # noqa: S307
+
+
+parse = lru_cache(maxsize=4096)(parse)      # not a decorator: see core.rule

@@ -1,0 +1,1230 @@
+"""Tests that kill mutants of the trusted kernel (`make mutate`, docs/kernel.md
+"Mutation testing").  Each asserts what a rule, the evaluator, the parser or
+the certificate checker must accept or reject:
+
+* an accepted claim is compared field by field with the claim worked out by
+  hand (interval, open ends, sign, strictness) and with the assumptions the
+  theorem must rest on;
+* a rejection is checked by its exact message, so the test fails when the
+  input is refused by some other check than the one it is aimed at (the
+  messages are what `python -m uwmr_symbolic.kernel` prints).
+"""
+import pytest
+import sympy as sp
+
+from uwmr_symbolic.kernel import KernelError, Undefined, evaluate, rules as K
+from uwmr_symbolic.kernel.core import Claim
+
+x = sp.Symbol("x", real=True)
+s = sp.Symbol("s", positive=True)
+t = sp.Symbol("t", positive=True)
+n = sp.Symbol("n", nonnegative=True)
+Q = sp.Rational
+I0, I1, I2, I3 = (sp.Integer(k) for k in range(4))
+oo = sp.oo
+R = sp.srepr
+
+
+def why(fn, *args, **kw):
+    """The message of the KernelError that fn raises."""
+    with pytest.raises(KernelError) as err:
+        fn(*args, **kw)
+    return str(err.value)
+
+
+def sign(e, var, lo, hi, lo_open=False, hi_open=False, want=1, strict=True):
+    """The claim of a sign theorem, written out by hand."""
+    return Claim("sign", R(sp.sympify(e)), R(var), R(sp.sympify(lo)), R(sp.sympify(hi)),
+                 lo_open, hi_open, want, strict)
+
+
+def sturm(e, var, lo, hi, lo_open=False, hi_open=False, want=1, strict=True):
+    return K.sign_by_sturm(expr=e, var=var, lo=sp.sympify(lo), hi=sp.sympify(hi),
+                           lo_open=lo_open, hi_open=hi_open, want=want, strict=strict)
+
+
+ARB = {"arb", "sympy-core"}
+
+
+# ---------------------------------------------------------- shared checks
+
+def test_rule_data_and_premises_are_checked():
+    assert why(K.value_sign, value="2") == "expected a SymPy object or an int, got str"
+    assert why(K.value_sign, value=True) == "expected a SymPy object or an int, got bool"
+    assert why(K.value_sign, value=1.5) == "rule data must be SymPy objects, numbers, strings or lists: 1.5"
+    assert why(K.value_sign, value=x) == "not an exact number: x"
+    # a Float never reaches a rule: the data is re-read from its srepr, and Float is not allowed there
+    assert why(K.value_sign, value=sp.Float(1)) == "value_sign: name not allowed: Float"
+    # (-1)**(1/3) is a number, but the kernel reads x**(1/3) as the real root only for x >= 0
+    assert why(K.value_sign, value=sp.Pow(-1, Q(1, 3))) == "not a real constant: (-1)**(1/3) (x**(1/3) needs x >= 0)"
+    assert why(K.value_sign, value=oo) == "a finite constant"
+    # (1 + sqrt 2)**2 - 3 - 2 sqrt 2 is exactly 0, but not literally: its Arb ball contains 0
+    c = (1 + sp.sqrt(2)) ** 2 - 3 - 2 * sp.sqrt(2)
+    assert why(K.value_sign, value=c) == f"sign of {c} not decided"
+    assert why(K.join, 1, 2) == "join: a premise is not a theorem"
+
+
+def test_value_sign_claims():
+    # an int is read as an Integer; sqrt(2) - 1 > 0, 3 - pi < 0, 0 exactly
+    for v, w in ((2, 1), (sp.sqrt(2) - 1, 1), (3 - sp.pi, -1), (sp.sqrt(2) ** 2 - 2, 0), (-5, -1)):
+        thm = K.value_sign(value=v)
+        assert thm.claim == Claim("value_sign", R(sp.sympify(v)), want=w, strict=True)
+        assert thm.assumptions == ARB and thm.rule == "value_sign"
+
+
+def test_interval_checks():
+    y = sp.Symbol("y")                    # no assumption at all (integer=True is refused by the parser)
+    ident = K.identity
+    kw = dict(lhs=I1, rhs=I1)
+    assert why(ident, var=x, lo=I0, hi=I1, lo_open=1, hi_open=False, **kw) == "open/closed flags are booleans"
+    assert why(ident, var=x, lo=I0, hi=I1, lo_open=False, hi_open=0, **kw) == "open/closed flags are booleans"
+    assert why(ident, var=x, lo=I1, hi=I1, lo_open=False, hi_open=False, **kw) == "empty interval (1, 1)"
+    assert why(ident, var=x, lo=I2, hi=I1, lo_open=False, hi_open=False, **kw) == "empty interval (2, 1)"
+    assert why(ident, var=x, lo=-oo, hi=I1, lo_open=False, hi_open=False, **kw) == "infinite ends are open"
+    assert why(ident, var=x, lo=I0, hi=oo, lo_open=False, hi_open=False, **kw) == "infinite ends are open"
+    assert why(ident, var=y, lo=I0, hi=I1, lo_open=False, hi_open=False, **kw) == \
+        "y: a variable is declared real, positive or nonnegative, nothing else"
+    assert why(ident, var=I2, lo=I0, hi=I1, lo_open=False, hi_open=False, **kw) == "not a variable: 2"
+    # s > 0: the closed end 0, a negative end, -oo are refused; the open end 0 and 1/2 are fine
+    msg = "s > 0 assumed: interval must lie in (0, oo)"
+    assert why(ident, var=s, lo=I0, hi=I1, lo_open=False, hi_open=False, **kw) == msg
+    assert why(ident, var=s, lo=-I1, hi=I1, lo_open=True, hi_open=False, **kw) == msg
+    assert why(ident, var=s, lo=-oo, hi=I1, lo_open=True, hi_open=False, **kw) == msg
+    assert ident(var=s, lo=I0, hi=I1, lo_open=True, hi_open=False, **kw).claim.lo == R(I0)
+    assert ident(var=s, lo=Q(1, 2), hi=I1, lo_open=False, hi_open=False, **kw).claim.lo == R(Q(1, 2))
+    # n >= 0: the closed end 0 is fine, -1 is not
+    assert ident(var=n, lo=I0, hi=I1, lo_open=False, hi_open=False, **kw).claim.lo_open is False
+    assert why(ident, var=n, lo=-I1, hi=I1, lo_open=False, hi_open=False, **kw) == "n >= 0 assumed"
+    assert why(ident, var=n, lo=-oo, hi=I1, lo_open=True, hi_open=False, **kw) == "n >= 0 assumed"
+    # rules that only evaluate allow the closed end 0 of s, but still not -1
+    assert why(K.sign_by_cover, expr=s + 2, var=s, cuts=[-1, 1], want=1) == "s >= 0 assumed"
+    assert K.sign_by_cover(expr=s + 2, var=s, cuts=[0, 1], want=1).claim == sign(s + 2, s, 0, 1)
+    # an end that is not a rational: sqrt(2) < 3/2 decided by Arb
+    assert K.sign_by_cover(expr=x, var=x, cuts=[1, sp.sqrt(2), Q(3, 2)], want=1).claim.hi == R(Q(3, 2))
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=[1, Q(3, 2), sp.sqrt(2)], want=1) == \
+        "cut points not increasing: 3/2, sqrt(2)"
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=[1, sp.sqrt(2), sp.sqrt(2)], want=1) == \
+        "cut points not increasing: sqrt(2), sqrt(2)"
+    # a cut that is not a real number
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=[1, 2, sp.Pow(-1, Q(1, 3))], want=1) == \
+        "not a real constant: (-1)**(1/3) (x**(1/3) needs x >= 0)"
+
+
+def test_expressions_are_checked():
+    assert why(K.sign_by_cover, expr=x, var=I2, cuts=[0, 1], want=1) == "not a variable: 2"
+    assert why(K.sign_by_cover, expr=x + sp.Float(1.5), var=x, cuts=[0, 1], want=1) == \
+        "sign_by_cover: name not allowed: Float"
+    assert why(K.sign_by_cover, expr=x + s, var=x, cuts=[0, 1], want=1) == "s + x has symbols other than x"
+
+
+# ---------------------------------------------------------- sign_by_cover
+
+def test_sign_by_cover_claims_and_messages():
+    # -x**2 - 1 < 0 everywhere; -x**2 <= 0 (weak) across 0
+    thm = K.sign_by_cover(expr=-x ** 2 - 1, var=x, cuts=[-1, 0, 1], want=-1)
+    assert thm.claim == sign(-x ** 2 - 1, x, -1, 1, want=-1) and thm.assumptions == ARB
+    assert thm.rule == "sign_by_cover"
+    weak = K.sign_by_cover(expr=-x ** 2, var=x, cuts=[-1, 0, 1], want=-1, strict=False)
+    assert weak.claim == sign(-x ** 2, x, -1, 1, want=-1, strict=False)
+    assert why(K.sign_by_cover, expr=-x ** 2, var=x, cuts=[-1, 0, 1], want=-1).startswith(
+        "sign not shown on [-1, 0]: Iv(")
+    assert why(K.sign_by_cover, expr=x ** 2, var=x, cuts=[-1, 0, 1], want=-1, strict=False).startswith(
+        "sign not shown on [-1, 0]: Iv(")
+    for bad in (dict(want=0), dict(want=1, strict=1), dict(want=2)):
+        assert why(K.sign_by_cover, expr=x, var=x, cuts=[1, 2], **bad) == "want is +1 or -1, strict a boolean"
+    assert why(K.sign_by_cover, expr=1 / x, var=x, cuts=[-1, 1], want=1) == \
+        "1/x not evaluable on [-1, 1]: division by an interval that may contain 0"
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=[1], want=1) == \
+        "a cover needs a list of at least two cut points"
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=[1, oo], want=1) == "cut points are finite"
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=[-oo, 1], want=1) == "cut points are finite"
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=[1, 3, 2], want=1) == "cut points not increasing: 3, 2"
+
+
+# ---------------------------------------------------------- sign_by_taylor
+
+def test_sign_by_taylor_claims_and_messages():
+    # x - sin x = x**3/6 - ...: E'''(xi) = cos(xi) > 0 near 0; sign side**3 on each side
+    E = x - sp.sin(x)
+    right = K.sign_by_taylor(expr=E, var=x, c=I0, side=1, width=Q(1, 2), order=3)
+    assert right.claim == sign(E, x, 0, Q(1, 2), lo_open=True, want=1)
+    left = K.sign_by_taylor(expr=E, var=x, c=I0, side=-1, width=Q(1, 2), order=3)
+    assert left.claim == sign(E, x, -Q(1, 2), 0, hi_open=True, want=-1)
+    assert left.assumptions == ARB | {"sympy-diff"} and left.rule == "sign_by_taylor"
+    # 1 - cos x = x**2/2 - ...: order 2, positive on both sides (side**2 = 1)
+    F = 1 - sp.cos(x)
+    assert K.sign_by_taylor(expr=F, var=x, c=I0, side=-1, width=Q(1, 2), order=2).claim == \
+        sign(F, x, -Q(1, 2), 0, hi_open=True, want=1)
+    # cos x - 1 at 0, order 2: E'' = -cos < 0 on [-1/2, 0], side**2 = 1: negative
+    assert K.sign_by_taylor(expr=-F, var=x, c=I0, side=-1, width=Q(1, 2), order=2).claim == \
+        sign(-F, x, -Q(1, 2), 0, hi_open=True, want=-1)
+    # order 1 about c = 1: E = x - 1, E' = 1 > 0
+    assert K.sign_by_taylor(expr=x - 1, var=x, c=I1, side=1, width=I1, order=1).claim == \
+        sign(x - 1, x, 1, 2, lo_open=True)
+    assert K.sign_by_taylor(expr=x - 1, var=x, c=I1, side=-1, width=I1, order=1).claim == \
+        sign(x - 1, x, 0, 1, hi_open=True, want=-1)
+    # order 12 is the largest allowed: x**12 at 0
+    assert K.sign_by_taylor(expr=x ** 12, var=x, c=I0, side=-1, width=I1, order=12).claim.want == 1
+    assert why(K.sign_by_taylor, expr=x ** 13, var=x, c=I0, side=1, width=I1, order=13) == "order m is 1..12"
+    assert why(K.sign_by_taylor, expr=x, var=x, c=I0, side=1, width=I1, order=0) == "order m is 1..12"
+    assert why(K.sign_by_taylor, expr=x, var=x, c=I0, side=1, width=I1, order=I1) == "order m is 1..12"
+    assert why(K.sign_by_taylor, expr=x, var=x, c=I0, side=0, width=I1, order=1) == "side is +1 or -1"
+    assert why(K.sign_by_taylor, expr=x, var=x, c=I0, side=2, width=I1, order=1) == "side is +1 or -1"
+    assert why(K.sign_by_taylor, expr=x, var=x, c=I0, side=1, width=I0, order=1) == "width > 0"
+    assert why(K.sign_by_taylor, expr=x, var=x, c=I0, side=1, width=-I1, order=1) == "width > 0"
+    assert why(K.sign_by_taylor, expr=sp.cos(x), var=x, c=I0, side=1, width=I1, order=1) == \
+        "derivative 0 at 0 is 1, not exactly 0"
+    # E' = 1 + 2x at 0 is 1: order 2 needs it to vanish
+    assert why(K.sign_by_taylor, expr=x + x ** 2, var=x, c=I0, side=1, width=I1, order=2) == \
+        "derivative 1 at 0 is 1, not exactly 0"
+    assert why(K.sign_by_taylor, expr=E, var=x, c=I0, side=1, width=I2 * 2, order=3) == \
+        "derivative 3 has no strict sign on [0, 4]"
+    assert why(K.sign_by_taylor, expr=x ** 2, var=x, c=I0, side=1, width=I1, order=1) == \
+        "derivative 1 has no strict sign on [0, 1]"                  # E' = 2x is 0 at 0
+    assert why(K.sign_by_taylor, expr=s * sp.log(s), var=s, c=I0, side=1, width=I1, order=1) == \
+        "derivative 0 not defined on [0, 1]: log of an interval that may contain values <= 0"
+    assert why(K.sign_by_taylor, expr=x - 1, var=x, c=I1, side=1, width=I1, order=1, cuts=[1, Q(3, 2)]) == \
+        "the cuts must run from one end of the box to the other"
+    assert why(K.sign_by_taylor, expr=x - 1, var=x, c=I1, side=1, width=I1, order=1, cuts=[Q(3, 2), 2]) == \
+        "the cuts must run from one end of the box to the other"
+    # the m-th derivative is checked on the sub-boxes: x**2 - x/2 at 0 has E' = 2x - 1/2 < 0 on [0, 1/8]
+    # but not on [1/8, 1], so a cut is no help; E' on [0, 1/8] alone is fine
+    assert K.sign_by_taylor(expr=x ** 2 - x / 2, var=x, c=I0, side=1, width=Q(1, 8), order=1,
+                            cuts=[0, Q(1, 16), Q(1, 8)]).claim.want == -1
+    assert why(K.sign_by_taylor, expr=x ** 2 - x / 2, var=x, c=I0, side=1, width=I1, order=1,
+               cuts=[0, Q(1, 8), 1]) == "derivative 1 has no strict sign on [0, 1]"
+
+
+# ---------------------------------------------------------- sign_by_sturm
+
+def test_sign_by_sturm_claims_and_messages():
+    thm = sturm(x ** 2 - 2, x, Q(3, 2), oo, hi_open=True)
+    assert thm.claim == sign(x ** 2 - 2, x, Q(3, 2), oo, hi_open=True)
+    assert thm.assumptions == {"sympy-polys"} and thm.rule == "sign_by_sturm"
+    assert sturm(x - 2, x, 1, 2, hi_open=True, want=-1).claim == sign(x - 2, x, 1, 2, hi_open=True, want=-1)
+    assert why(sturm, x - 2, x, 1, 2, want=-1) == "factor x - 2 has a root in the interval"
+    assert why(sturm, x - 1, x, 1, 2) == "factor x - 1 has a root in the interval"
+    # weak: a root at an end, open or closed, is allowed for an odd factor
+    assert sturm(x * (x - 1), x, 1, 2, lo_open=True, strict=False).claim.strict is False
+    assert sturm(x * (x - 2), x, 1, 2, hi_open=True, want=-1, strict=False).claim.want == -1
+    assert why(sturm, x * (x - 1), x, 0, 2, strict=False) == "factor x**2 - x has a root in the interval"
+    # (x - 1)**2 (x + 1) on [0, 2], weak: the first inner point 1 is a root, the next is 2/3
+    assert sturm((x - 1) ** 2 * (x + 1), x, 0, 2, strict=False).claim.want == 1
+    assert why(sturm, (x - 1) ** 2 * (x + 1), x, 0, 2, want=-1, strict=False) == "p(2/3) has the wrong sign"
+    # the inner point: 1/2 on [0, 1]; 3 on (-oo, 4]... base hi - 1 = 3, then 3 - 1 = 2; 5/2 on [2, oo); -1 on R
+    assert why(sturm, x ** 2 + 1, x, 0, 1, want=-1) == "p(1/2) has the wrong sign"
+    assert why(sturm, x ** 2 + 1, x, -oo, 4, lo_open=True, want=-1) == "p(2) has the wrong sign"
+    assert why(sturm, x ** 2 + 1, x, 2, oo, hi_open=True, want=-1) == "p(5/2) has the wrong sign"
+    assert why(sturm, x ** 2 + 1, x, -oo, oo, True, True, want=-1) == "p(-1) has the wrong sign"
+    # on (-oo, 4] the candidates are 2, 1, 0, ...: x - 2 and x - 1 vanish there (weak, squared)
+    assert why(sturm, (x - 2) ** 2 * (x - 1) ** 2 * (x ** 2 + 1), x, -oo, 4, lo_open=True, want=-1,
+               strict=False) == "p(0) has the wrong sign"
+    assert why(sturm, x, x, 0, 1, want=0) == "want is +1 or -1, strict a boolean"
+    assert why(sturm, x, x, 0, 1, strict=0) == "want is +1 or -1, strict a boolean"
+    assert why(sturm, x, x, 0, sp.sqrt(2)) == "Sturm needs rational ends"
+    assert why(sturm, x, x, -sp.sqrt(2), 1) == "Sturm needs rational ends"
+    assert why(sturm, 1 / x, x, 1, 2) == "not a polynomial: 1/x"
+    assert why(sturm, sp.sqrt(2) * x, x, 1, 2) == "coefficients are not rational"
+    assert why(sturm, I0, x, 1, 2) == "the zero polynomial"
+    assert why(sturm, x ** 2 - 2, x, 1, 2) == "factor x**2 - 2 has a root in the interval"
+    # roots at both ends of a closed interval, strict: both counted
+    assert why(sturm, x * (x - 1), x, 0, 1, lo_open=True) == "factor x**2 - x has a root in the interval"
+    assert sturm(x * (x - 1), x, 0, 1, lo_open=True, hi_open=True, want=-1).claim.want == -1
+
+
+# ---------------------------------------------------------- products and sums
+
+def test_sign_of_product_claims_and_messages():
+    pos = sturm(x + 1, x, 1, 2)                                # x + 1 > 0 on [1, 2]
+    neg = sturm(x - 3, x, 1, 2, want=-1)                      # x - 3 < 0
+    weak = sturm(x - 1, x, 1, 2, strict=False)                # x - 1 >= 0
+    wneg = sturm(x - 2, x, 1, 2, want=-1, strict=False)       # x - 2 <= 0
+    P = K.sign_of_product
+    cases = [((pos, neg), (x + 1) * (x - 3), -1, True), ((neg,), -2 * (x - 3) ** 3, 1, True),
+             ((neg,), (x - 3) ** 2, 1, True), ((neg,), (x - 3) ** 3, -1, True),
+             ((neg,), (x - 3) ** -1, -1, True), ((neg,), (x - 3) ** -2, 1, True),
+             ((weak,), (x - 1) ** 2, 1, False), ((weak,), (x - 1) ** 3, 1, False),
+             ((wneg,), (x - 2) ** 2, 1, False), ((wneg,), (x - 2) ** 3, -1, False),
+             ((weak,), sp.sqrt(x - 1), 1, False), ((pos,), (x + 1) ** Q(-1, 2), 1, True),
+             ((pos, weak), (x + 1) * (x - 1), 1, False), ((pos, wneg), 3 * (x + 1) ** 2 * (x - 2) ** 3, -1, False),
+             ((pos,), (x + 1) ** 2 * 5, 1, True), ((wneg,), -(x - 2) ** 3, 1, False)]
+    for prem, e, w, st in cases:
+        thm = P(*prem, expr=e)
+        assert thm.claim == sign(e, x, 1, 2, want=w, strict=st), e
+    assert thm.assumptions == ARB | {"sympy-polys"} and thm.rule == "sign_of_product"
+    assert why(P, pos, expr=(x + 1) * sp.sin(x)) == "no premise for factor sin(x)"
+    assert why(P, pos, expr=(x + 1) * (x + 2) ** 2) == "no premise for factor (x + 2)**2 nor its base"
+    assert why(P, weak, expr=1 / (x - 1)) == "1/(x - 1): a negative power needs a strict sign of its base"
+    assert why(P, neg, expr=sp.sqrt(x - 3)) == "sqrt(x - 3): needs base > 0 (>= 0 if r > 0)"
+    assert why(P, weak, expr=(x - 1) ** Q(-1, 2)) == "1/sqrt(x - 1): needs base > 0 (>= 0 if r > 0)"
+    assert why(P, pos, neg, expr=x + 1) == "a premise matches no factor"
+    assert why(P, pos, expr=(x + 1) * 0) == "a zero factor"
+    assert why(P, expr=x) == "no premises"
+    assert why(P, pos, sturm(x - 3, x, 1, Q(5, 2), want=-1), expr=(x + 1) * (x - 3)) == "premises on different intervals"
+    assert why(P, pos, K.identity(lhs=x, rhs=x, var=x, lo=I1, hi=I2, lo_open=False, hi_open=False),
+               expr=x + 1) == "premise is a identity theorem, not a sign theorem"
+    # open ends are kept
+    op = sturm(x - 1, x, 1, 2, lo_open=True)
+    assert P(op, expr=2 * (x - 1) ** 3).claim == sign(2 * (x - 1) ** 3, x, 1, 2, lo_open=True)
+    op = sturm(x - 3, x, 1, 2, hi_open=True, want=-1)
+    assert P(op, expr=2 * (x - 3) ** 3).claim == sign(2 * (x - 3) ** 3, x, 1, 2, hi_open=True, want=-1)
+
+
+def test_sign_of_sum_claims_and_messages():
+    sq = sturm(x ** 2, x, -1, 1, strict=False)
+    S = K.sign_of_sum
+    assert S(sq, expr=x ** 2 + 1, want=1).claim == sign(x ** 2 + 1, x, -1, 1)
+    nq = sturm(-x ** 2, x, -1, 1, want=-1, strict=False)
+    assert S(nq, expr=-x ** 2 - 1, want=-1).claim == sign(-x ** 2 - 1, x, -1, 1, want=-1)
+    two = S(sq, sturm(x ** 4, x, -1, 1, strict=False), expr=x ** 2 + 1 + x ** 4, want=1)
+    assert two.claim == sign(x ** 4 + x ** 2 + 1, x, -1, 1) and two.assumptions == ARB | {"sympy-polys"}
+    # strict because one term is: x**2 > 0 on [1/2, 1]
+    one = S(sturm(x ** 2, x, Q(1, 2), 1), sturm(x ** 4, x, Q(1, 2), 1, strict=False), expr=x ** 2 + x ** 4, want=1)
+    assert one.claim == sign(x ** 4 + x ** 2, x, Q(1, 2), 1)
+    weak2 = S(sq, sturm(x ** 4, x, -1, 1, strict=False), expr=x ** 2 + x ** 4, want=1)
+    assert weak2.claim == sign(x ** 4 + x ** 2, x, -1, 1, strict=False)
+    assert why(S, sq, expr=x ** 2 + 1, want=0) == "want = +-1 needed"
+    assert why(S, sq, expr=x ** 2 + 1, want=2) == "want = +-1 needed"
+    assert why(S, sq, expr=x ** 2 - 1, want=1) == "constant term -1 has the wrong sign"
+    assert why(S, nq, expr=-x ** 2 + 1, want=-1) == "constant term 1 has the wrong sign"
+    assert why(S, sq, expr=-x ** 2 - 1, want=-1) == "a premise has the other sign"
+    assert why(S, sq, expr=x ** 2, want=1) == "not a sum: x**2"
+    assert why(S, sq, expr=x ** 2 + x, want=1) == "no premise for term x"
+    assert why(S, sq, sturm(x ** 4, x, -1, 1, strict=False), expr=x ** 2 + 1, want=1) == \
+        "a premise matches no term"
+    op = sturm(x, x, 0, 1, lo_open=True, hi_open=True)
+    assert S(op, expr=x + 2, want=1).claim == sign(x + 2, x, 0, 1, True, True)
+
+
+def test_sign_through_increasing_claims_and_messages():
+    T = K.sign_through_increasing
+    y = sturm(x - 1, x, 1, 2, lo_open=True, strict=False)
+    ny = sturm(x - 3, x, 1, 2, hi_open=True, want=-1)
+    for G in (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf):
+        assert T(y, expr=G(x - 1)).claim == sign(G(x - 1), x, 1, 2, lo_open=True, strict=False)
+        assert T(ny, expr=G(x - 3)).claim == sign(G(x - 3), x, 1, 2, hi_open=True, want=-1)
+    thm = T(ny, expr=sp.exp(x - 3))
+    assert thm.claim == sign(sp.exp(x - 3), x, 1, 2, hi_open=True) and thm.assumptions == {"sympy-core", "sympy-polys"}
+    assert T(y, expr=sp.cosh(x - 1)).claim == sign(sp.cosh(x - 1), x, 1, 2, lo_open=True)
+    assert why(T, y, expr=sp.cos(x - 1)) == "not G(Y): cos(x - 1)"
+    assert why(T, y, expr=sp.tanh(x)) == "premise must be about the argument"
+    assert why(T, y, y, expr=sp.tanh(x - 1)) == "premise must be about the argument"
+    assert why(T, y, expr=sp.exp(x)) == "premise must be about the argument"
+    assert why(T, y, y, expr=sp.cosh(x - 1)) == "premise must be about the argument"
+    # log: from x - 1 >= 0 on (1, 2], log x >= 0; from x - 3 < 0 and x > 0, log(x - 2)... use Y = x
+    assert T(y, expr=sp.log(x)).claim == sign(sp.log(x), x, 1, 2, lo_open=True, strict=False)
+    assert why(T, y, y, expr=sp.log(x)) == "one premise for log Y > 0"
+    assert why(T, y, expr=sp.log(x + 1)) == "first premise must be about Y - 1"
+    below = sturm(x - 1, x, Q(1, 2), Q(2, 3), hi_open=True, want=-1)
+    posx = sturm(x, x, Q(1, 2), Q(2, 3), hi_open=True)
+    assert T(below, posx, expr=sp.log(x)).claim == sign(sp.log(x), x, Q(1, 2), Q(2, 3), hi_open=True, want=-1)
+    assert why(T, below, expr=sp.log(x)) == "log Y < 0 needs Y > 0 too"
+    assert why(T, below, below, expr=sp.log(x)) == "second premise must be Y > 0"
+    wpos = sturm(x, x, Q(1, 2), Q(2, 3), hi_open=True, strict=False)
+    assert why(T, below, wpos, expr=sp.log(x)) == "second premise must be Y > 0"
+    npos = sturm(x - 1, x, Q(1, 2), Q(2, 3), hi_open=True, want=-1)
+    assert why(T, below, npos, expr=sp.log(x)) == "second premise must be Y > 0"
+
+
+# ---------------------------------------------------------- join, join_at_zero, weaken
+
+def test_join_claims_and_messages():
+    a = sturm(x + 1, x, 0, 1, lo_open=True, strict=False)
+    b = sturm(x + 1, x, 1, 2, lo_open=True, hi_open=True)
+    j = K.join(a, b)
+    assert j.claim == sign(x + 1, x, 0, 2, True, True, strict=False) and j.rule == "join"
+    assert j.assumptions == {"sympy-polys"}
+    assert K.join(sturm(x + 1, x, 0, 1), b).claim == sign(x + 1, x, 0, 2, hi_open=True)
+    assert why(K.join, a, sturm(x + 2, x, 1, 2)) == "different claims"
+    assert why(K.join, a, sturm(x + 1, x, 2, 3)) == "not adjacent"
+    assert why(K.join, sturm(x + 1, x, 0, 1, hi_open=True), b) == "shared end point Integer(1) is covered by neither"
+    ident = K.identity(lhs=x, rhs=x, var=x, lo=I1, hi=I2, lo_open=False, hi_open=False)
+    assert why(K.join, ident, b) == "premise is a identity theorem, not a sign theorem"
+    assert why(K.join, a, ident) == "premise is a identity theorem, not a sign theorem"
+
+
+def test_join_at_zero_claims_and_messages():
+    e = (x - 1) ** 2 * (x + 1)
+    left = sturm(e, x, 0, 1, lo_open=True, hi_open=True)
+    right = sturm(e, x, 1, 2, lo_open=True, hi_open=True)
+    j = K.join_at_zero(left, right)
+    assert j.claim == sign(e, x, 0, 2, True, True, strict=False) and j.assumptions == ARB | {"sympy-polys"}
+    assert why(K.join_at_zero, left, sturm(e + 1, x, 1, 2, lo_open=True)) == "different claims"
+    assert why(K.join_at_zero, left, sturm(e, x, Q(3, 2), 2, lo_open=True)) == "not adjacent"
+    f = x ** 2 - 2 * x + 2
+    assert why(K.join_at_zero, sturm(f, x, 0, 1, hi_open=True), sturm(f, x, 1, 2, lo_open=True)) == \
+        "E(1) is not exactly 0"
+    ident = K.identity(lhs=x, rhs=x, var=x, lo=I1, hi=I2, lo_open=False, hi_open=False)
+    assert why(K.join_at_zero, ident, right) == "premise is a identity theorem, not a sign theorem"
+    assert why(K.join_at_zero, left, ident) == "premise is a identity theorem, not a sign theorem"
+
+
+def test_weaken_claims_and_messages():
+    j = sturm(x + 1, x, 0, 2, lo_open=True)
+    W = K.weaken
+    w = W(j, lo=Q(1, 2), hi=I2, lo_open=False, hi_open=True, strict=False)
+    assert w.claim == sign(x + 1, x, Q(1, 2), 2, hi_open=True, strict=False) and w.rule == "weaken"
+    assert w.assumptions == {"arb", "sympy-polys"}
+    # the same interval, and its ends: (0, 2] inside (0, 2], (0, 1) inside; [0, 2] not
+    assert W(j, lo=I0, hi=I2, lo_open=True, hi_open=False, strict=True).claim == j.claim
+    assert W(j, lo=I0, hi=I1, lo_open=True, hi_open=True, strict=True).claim == sign(x + 1, x, 0, 1, True, True)
+    assert why(W, j, lo=I0, hi=I2, lo_open=False, hi_open=False, strict=True) == "J is not inside I"
+    assert why(W, j, lo=Q(1, 2), hi=I3, lo_open=False, hi_open=False, strict=True) == "J is not inside I"
+    h = sturm(x + 1, x, 0, 2, hi_open=True)
+    assert why(W, h, lo=I1, hi=I2, lo_open=False, hi_open=False, strict=True) == "J is not inside I"
+    assert W(h, lo=I1, hi=I2, lo_open=False, hi_open=True, strict=True).claim.hi_open is True
+    assert why(W, w, lo=Q(1, 2), hi=I1, lo_open=False, hi_open=False, strict=True) == \
+        "a weak sign does not give a strict one"
+    ident = K.identity(lhs=x, rhs=x, var=x, lo=I1, hi=I2, lo_open=False, hi_open=False)
+    assert why(W, ident, lo=I1, hi=I2, lo_open=False, hi_open=False, strict=False) == \
+        "premise is a identity theorem, not a sign theorem"
+
+
+# ---------------------------------------------------------- rewrite, tail, substitution, monotone
+
+def exact_identity(lhs, rhs, var, lo, hi, lo_open=False, hi_open=False):
+    return K.identity(lhs=lhs, rhs=rhs, var=var, lo=sp.sympify(lo), hi=sp.sympify(hi),
+                      lo_open=lo_open, hi_open=hi_open)
+
+
+def test_sign_by_rewrite_claims_and_messages():
+    L = (s ** 2 + 2 * s + 1) / (s + 1)                     # = s + 1 for s > 0, defined there
+    Rw = sturm(s + 1, s, 0, oo, True, True)
+    ident = exact_identity(L, s + 1, s, 0, oo, True, True)
+    thm = K.sign_by_rewrite(Rw, ident)
+    assert thm.claim == sign(L, s, 0, oo, True, True) and thm.rule == "sign_by_rewrite"
+    assert thm.assumptions == ARB | {"sympy-polys"}
+    # I = [1, 2] inside (0, oo): lo > 0, defined for s > 0
+    assert K.sign_by_rewrite(sturm(s + 1, s, 1, 2), ident).claim == sign(L, s, 1, 2)
+    # the identity on (0, oo) does not cover [0, 2] (x real, closed at 0)
+    Lx = (x ** 2 + 2 * x + 1) / (x + 1)
+    identx = exact_identity(Lx, x + 1, x, 0, 2)
+    Rx = sturm(x + 1, x, 0, 2)
+    assert K.sign_by_rewrite(Rx, identx, cuts=[0, 1, 2]).claim == sign(Lx, x, 0, 2)
+    assert why(K.sign_by_rewrite, Rx, identx) == "L not shown defined on I"             # 0 is not > 0
+    # on (0, 2] Lx is defined (syntactically, for x > 0): accepted without cuts
+    assert K.sign_by_rewrite(sturm(x + 1, x, 0, 2, lo_open=True), identx).claim == sign(Lx, x, 0, 2, lo_open=True)
+    assert why(K.sign_by_rewrite, Rx, identx, cuts=[0, 1]) == "cuts must tile the closed I"
+    assert why(K.sign_by_rewrite, Rx, identx, cuts=[1, 2]) == "cuts must tile the closed I"
+    assert why(K.sign_by_rewrite, sturm(x + 1, x, 0, 2, lo_open=True), exact_identity(Lx, x + 1, x, 0, 2),
+               cuts=[0, 2]) == "cuts must tile the closed I"
+    assert why(K.sign_by_rewrite, sturm(x + 1, x, 0, 2, hi_open=True), identx, cuts=[0, 2]) == \
+        "cuts must tile the closed I"
+    # (x**2 - 1)/(x - 1) is undefined at 1: each closed box is evaluated, [1/2, 2] included
+    L1 = (x ** 2 - 1) / (x - 1)
+    ident1 = exact_identity(L1, x + 1, x, 0, 2)
+    assert why(K.sign_by_rewrite, Rx, ident1, cuts=[0, Q(1, 2), 2]) == \
+        "L undefined on [1/2, 2]: division by an interval that may contain 0"
+    assert why(K.sign_by_rewrite, sturm(x + 1, x, 0, 2, lo_open=True), ident1) == "L not shown defined on I"
+    assert why(K.sign_by_rewrite, Rx, Rx) == "second premise must be an identity"
+    assert why(K.sign_by_rewrite, ident, ident) == "premise is a identity theorem, not a sign theorem"
+    assert why(K.sign_by_rewrite, sturm(x + 2, x, 0, 2), identx) == \
+        "the identity must read L = R for the R of the sign"
+    # same expression (a constant), another variable
+    assert why(K.sign_by_rewrite, sturm(I2, x, 0, 2), exact_identity(I2, I2, n, 0, 2)) == \
+        "the identity must read L = R for the R of the sign"
+    assert why(K.sign_by_rewrite, sturm(x + 1, x, 0, 3), identx, cuts=[0, 3]) == \
+        "the identity does not hold on all of I"
+
+
+def test_defined_for_positive():
+    d = K.defined_for_positive
+    # defined for every s > 0
+    for e in (s, 2 * s, s + 1, 1 / s, sp.log(s), sp.log(1 + s ** 2), sp.sqrt(s), s ** Q(-3, 2),
+              1 / (s ** 2 + 1), sp.log(sp.exp(s)), 1 / sp.cosh(s), sp.sqrt(sp.Abs(s - 1) + s), 1 / (s + (s - 1) ** 2),
+              sp.tanh(s - 1) + sp.atan(s) + sp.sin(s) + sp.cos(s) + sp.Abs(s - 2) + sp.erf(s),
+              sp.log(sp.exp(s - 3)), 1 / (s * (s + 2)), sp.Integer(3), (s - 1) ** 2, sp.sqrt(2) / s,
+              1 / (sp.sqrt(2) + (s - 1) ** 2), 1 / ((s - 1) ** 2 + sp.Abs(s - 3) + s),
+              1 / (s + (s - 1) ** 2 * (s - 2) ** 2), 1 / (s + (s - 1) ** 4), sp.log(s + sp.Abs(s - 1) * (s - 2) ** 2)):
+        assert d(e, s), e
+    # not (or not syntactically) defined for every s > 0
+    for e in (1 / (s - 1), sp.log(s - 1), sp.sqrt(s - 1), 1 / sp.sin(s), sp.log(sp.sin(s) + 2), s ** s,
+              sp.gamma(s), 1 / (1 - s), (s - 1) ** Q(1, 2), 1 / ((s - 1) ** 2), sp.log(-s), sp.log(s * (s - 1)),
+              1 / (s - 1) ** 3, sp.log(sp.Abs(s - 1)), 1 / ((s - 1) ** 2 + (s - 2) ** 2), sp.log(1 - sp.exp(s)),
+              1 / (sp.exp(s) - 1), sp.sqrt(sp.log(s)), 1 / sp.Integer(-1) * sp.log(s - 2), sp.log(sp.log(s)),
+              sp.exp(1 / (s - 1)), sp.cosh(sp.log(s - 1)), sp.log(sp.Pow(-1, Q(1, 3)) + s), 1 / (s + sp.Pow(-1, Q(1, 3))),
+              s + sp.Pow(-1, Q(1, 3)), 1 / (s + (s - 1) ** 3), sp.log(s ** s), sp.log(s + (s - 1) ** 3 * (s - 2) ** 2),
+              1 / (((1 + sp.sqrt(2)) ** 2 - 3 - 2 * sp.sqrt(2)) * s), sp.log(s + s * (s - 1) ** 2 - 2 * s)):
+        assert not d(e, s), e
+
+
+def tail(E, Et, Rv, ident_lo=0, ident_hi=oo, ident_hi_open=True):
+    tt = K.sign_by_taylor(expr=Et, var=t, c=I0, side=1, width=1 / Rv, order=1)
+    ident = K.identity(lhs=Et, rhs=E.subs(s, 1 / t), var=t, lo=sp.sympify(ident_lo), hi=sp.sympify(ident_hi),
+                       lo_open=True, hi_open=ident_hi_open)
+    return tt, ident
+
+
+def test_sign_on_tail_claims_and_messages():
+    E, Et = s / (s ** 2 + 1), t / (t ** 2 + 1)
+    tt, ident = tail(E, Et, I2)
+    thm = K.sign_on_tail(tt, ident, expr=E, var=s, R=I2)
+    assert thm.claim == sign(E, s, 2, oo, hi_open=True) and thm.rule == "sign_on_tail"
+    assert thm.assumptions == {"arb", "sympy-core", "sympy-diff", "sympy-polys"}
+    # an identity on exactly (0, 1/2] is enough; (0, 1/2) is not; (0, 1/3] is not
+    _, id_half = tail(E, Et, I2, ident_hi=Q(1, 2), ident_hi_open=False)
+    assert K.sign_on_tail(tt, id_half, expr=E, var=s, R=I2).claim == thm.claim
+    _, id_open = tail(E, Et, I2, ident_hi=Q(1, 2), ident_hi_open=True)
+    msg = "the identity must hold on (0, 1/R]"
+    assert why(K.sign_on_tail, tt, id_open, expr=E, var=s, R=I2) == msg
+    _, id_third = tail(E, Et, I2, ident_hi=Q(1, 3), ident_hi_open=False)
+    assert why(K.sign_on_tail, tt, id_third, expr=E, var=s, R=I2) == msg
+    _, id_from = tail(E, Et, I2, ident_lo=Q(1, 10))
+    assert why(K.sign_on_tail, tt, id_from, expr=E, var=s, R=I2) == msg
+    assert why(K.sign_on_tail, tt, ident, expr=E, var=s, R=I0) == "R > 0"
+    assert why(K.sign_on_tail, tt, ident, expr=E, var=s, R=-I1) == "R > 0"
+    assert why(K.sign_on_tail, tt, ident, expr=E, var=s, R=oo) == "R > 0"
+    assert why(K.sign_on_tail, tt, tt, expr=E, var=s, R=I2) == "second premise must be an identity"
+    assert why(K.sign_on_tail, ident, ident, expr=E, var=s, R=I2) == \
+        "premise is a identity theorem, not a sign theorem"
+    assert why(K.sign_on_tail, tt, ident, expr=Et, var=t, R=I2) == "the tail variable must differ from the variable"
+    assert why(K.sign_on_tail, tt, ident, expr=E, var=s, R=I3) == "the tail theorem must be about (0, 1/R]"
+    closed = K.weaken(K.sign_by_cover(expr=Et, var=t, cuts=[Q(1, 4), Q(1, 2)], want=1), lo=Q(1, 4),
+                      hi=Q(1, 2), lo_open=True, hi_open=False, strict=True)
+    assert why(K.sign_on_tail, closed, ident, expr=E, var=s, R=I2) == "the tail theorem must be about (0, 1/R]"
+    assert why(K.sign_on_tail, tt, ident, expr=2 * E, var=s, R=I2) == "the identity must read E_t(t) = E(1/t)"
+    other = K.identity(lhs=2 * Et, rhs=2 * E.subs(s, 1 / t), var=t, lo=I0, hi=oo, lo_open=True, hi_open=True)
+    assert why(K.sign_on_tail, tt, other, expr=2 * E, var=s, R=I2) == "the identity must read E_t(t) = E(1/t)"
+    # E = (s**2 - 25)/(s - 5) is undefined at s = 5, though E(1/t) = (1 + 5t)/t where both are defined
+    E5, Et5 = (s ** 2 - 25) / (s - 5), (1 + 5 * t) / t
+    id5 = K.identity(lhs=Et5, rhs=E5.subs(s, 1 / t), var=t, lo=I0, hi=oo, lo_open=True, hi_open=True)
+    pos5 = K.sign_of_product(sturm(1 + 5 * t, t, 0, Q(1, 4), lo_open=True), sturm(t, t, 0, Q(1, 4), lo_open=True),
+                             expr=Et5)
+    assert why(K.sign_on_tail, pos5, id5, expr=E5, var=s, R=4 * I1) == \
+        "(s**2 - 25)/(s - 5) not shown defined for all s > 0"
+
+
+def test_sign_by_substitution_claims_and_messages():
+    u = sp.Symbol("u", real=True)
+    S = K.sign_by_substitution
+    outer = sturm(u - 1, u, 2, 3, hi_open=True)                   # u - 1 > 0 on J = [2, 3)
+    # x in [3/2, 8/5]: x**2 in [9/4, 64/25], inside J
+    lo_b = sturm(x ** 2 - 2, x, Q(3, 2), Q(8, 5))
+    hi_b = sturm(3 - x ** 2, x, Q(3, 2), Q(8, 5))
+    thm = S(outer, lo_b, hi_b, inner=x ** 2)
+    assert thm.claim == sign(x ** 2 - 1, x, Q(3, 2), Q(8, 5)) and thm.rule == "sign_by_substitution"
+    assert thm.assumptions == {"sympy-core", "sympy-polys"}
+    # a weak bound suffices at the closed end 2 of J, not at the open end 3
+    lo_w = sturm(x ** 2 - 2, x, Q(3, 2), Q(8, 5), strict=False)
+    hi_w = sturm(3 - x ** 2, x, Q(3, 2), Q(8, 5), strict=False)
+    assert S(outer, lo_w, hi_b, inner=x ** 2).claim == thm.claim
+    assert why(S, outer, lo_b, hi_w, inner=x ** 2) == "premise must show 3 - u > 0"
+    assert why(S, outer, hi_b, lo_b, inner=x ** 2) == "premise must show u - 2 >= 0"
+    assert why(S, lo_b, lo_b, lo_b, inner=x ** 2) == "premise must show u - 3/2 >= 0"
+    assert why(S, outer, lo_b, sturm(x ** 2 - 3, x, Q(3, 2), Q(8, 5), want=-1), inner=x ** 2) == \
+        "premise must show 3 - u > 0"
+    assert why(S, outer, lo_b, inner=x ** 2) == "one bound premise per finite end of J"
+    assert why(S, outer, lo_b, hi_b, hi_b, inner=x ** 2) == "one bound premise per finite end of J"
+    assert why(S, sturm(u ** 2 + 1, u, -oo, oo, True, True), lo_b, inner=x ** 2) == \
+        "one bound premise per finite end of J"
+    # the sign, strictness and open ends: 4 - u... u - 4 < 0 on [2, 3); weak outer gives a weak claim
+    assert S(sturm(u - 4, u, 2, 3, hi_open=True, want=-1), lo_b, hi_b, inner=x ** 2).claim == \
+        sign(x ** 2 - 4, x, Q(3, 2), Q(8, 5), want=-1)
+    assert S(sturm(u - 2, u, 2, 3, hi_open=True, strict=False), lo_b, hi_b, inner=x ** 2).claim == \
+        sign(x ** 2 - 2, x, Q(3, 2), Q(8, 5), strict=False)
+    lo_o = sturm(x ** 2 - 2, x, Q(3, 2), Q(8, 5), lo_open=True, hi_open=True)
+    hi_o = sturm(3 - x ** 2, x, Q(3, 2), Q(8, 5), lo_open=True, hi_open=True)
+    assert S(outer, lo_o, hi_o, inner=x ** 2).claim == sign(x ** 2 - 1, x, Q(3, 2), Q(8, 5), True, True)
+    # one finite end: 1 - u > 0 on (-oo, 0]; u = -x**2 <= 0 from x**2 >= 0
+    half = sturm(1 - u, u, -oo, 0, lo_open=True)
+    assert S(half, sturm(x ** 2, x, 1, 2, strict=False), inner=-x ** 2).claim == sign(x ** 2 + 1, x, 1, 2)
+    assert why(S, half, sturm(x ** 2 - 1, x, 1, 2, strict=False), inner=-x ** 2) == "premise must show 0 - u >= 0"
+    ident = exact_identity(x, x, x, 1, 2)
+    assert why(S, ident, lo_b, inner=x ** 2) == "premise is a identity theorem, not a sign theorem"
+    assert why(S, outer, lo_b, ident, inner=x ** 2) == "premise is a identity theorem, not a sign theorem"
+
+
+def test_sign_by_monotone_claims_and_messages():
+    M = K.sign_by_monotone
+    E = 1 - 1 / s                                            # E(2) = 1/2 > 0, E' = s**-2 > 0
+    dE = K.sign_of_product(sturm(s, s, 2, oo, hi_open=True), expr=sp.diff(E, s))
+    thm = M(dE, expr=E, var=s, R=I2)
+    assert thm.claim == sign(E, s, 2, oo, hi_open=True) and thm.rule == "sign_by_monotone"
+    assert thm.assumptions == ARB | {"sympy-diff", "sympy-polys"}
+    # decreasing and negative: 1/s - 1, E(2) = -1/2, E' = -s**-2 < 0
+    F = 1 / s - 1
+    dF = K.sign_of_product(sturm(s, s, 2, oo, hi_open=True), expr=sp.diff(F, s))
+    assert M(dF, expr=F, var=s, R=I2).claim == sign(F, s, 2, oo, hi_open=True, want=-1)
+    # a weak E' >= 0 still gives E > 0: (s - 2)**3 + 1, E(2) = 1, E' = 3 (s - 2)**2 >= 0
+    G = (s - 2) ** 3 + 1
+    dG = K.sign_of_product(sturm(s - 2, s, 2, oo, hi_open=True, strict=False), expr=sp.diff(G, s))
+    assert not dG.claim.strict and M(dG, expr=G, var=s, R=I2).claim == sign(G, s, 2, oo, hi_open=True)
+    assert why(M, dE, expr=E, var=s, R=I0) == "R > 0"
+    assert why(M, dE, expr=E, var=s, R=-I1) == "R > 0"
+    assert why(M, dE, expr=E, var=s, R=oo) == "R > 0"
+    msg = "premise must be a sign of E' on [R, oo)"
+    assert why(M, dE, expr=E, var=s, R=I3) == msg
+    assert why(M, dE, expr=2 * E, var=s, R=I2) == msg
+    assert why(M, dE, expr=E.subs(s, x), var=x, R=I2) == msg
+    op = K.sign_of_product(sturm(s, s, 2, oo, lo_open=True, hi_open=True), expr=sp.diff(E, s))
+    assert why(M, op, expr=E, var=s, R=I2) == msg
+    fin = K.sign_of_product(sturm(s, s, 2, 5), expr=sp.diff(E, s))
+    assert why(M, fin, expr=E, var=s, R=I2) == msg
+    # 1/s - 1/4: E(2) = 1/4 > 0 but E' < 0
+    H = 1 / s - Q(1, 4)
+    dH = K.sign_of_product(sturm(s, s, 2, oo, hi_open=True), expr=sp.diff(H, s))
+    assert why(M, dH, expr=H, var=s, R=I2) == "E(R) has not the sign of E'"
+    assert why(M, dE, expr=E - 1, var=s, R=I2) == "E(R) has not the sign of E'"      # -1/s < 0 at 2
+    L = sp.log(s - 1) + 1
+    dL = K.sign_of_product(sturm(s - 1, s, 2, oo, hi_open=True), expr=sp.diff(L, s))
+    assert why(M, dL, expr=L, var=s, R=I2) == "log(s - 1) + 1 not shown defined for all s > 0"
+    ident = exact_identity(s, s, s, 2, oo, hi_open=True)
+    assert why(M, ident, expr=E, var=s, R=I2) == "premise is a identity theorem, not a sign theorem"
+
+
+# ---------------------------------------------------------- identities and the cross-check
+
+def test_cross_check_points_and_precision():
+    cc = K._cross_check
+    few = "fewer than 3 points to cross-check the identity"
+    # the points: k/10 on [0, 1], lo + k/3 or hi - k/3 on a half-line, k/3 (|k| <= 4) on the line
+    cc(sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1, x, I0, I1)
+    with pytest.raises(KernelError, match="^the identity fails at x = 1/10: lhs - rhs = "):
+        cc(x - Q(9, 10), x, I0, I1)
+    with pytest.raises(KernelError, match="^cross-check at x = 1/10 not precise enough$"):
+        cc(2 ** 100 * (sp.sin(x) ** 2 + sp.cos(x) ** 2) - 2 ** 100, x, I0, I1)
+    with pytest.raises(KernelError, match="^cross-check needs rational ends$"):
+        cc(x - x, x, sp.sqrt(2), I2)
+
+    def only_from(a):
+        """sin(x)**2 + cos(x)**2 - 1, times sqrt(x - a): zero, defined only for x > a (at x = a,
+        a not dyadic, the ball of x - a straddles 0, so sqrt is undefined there too)."""
+        return sp.sqrt(x - a) * (sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1)
+    cc(only_from(Q(3, 5)), x, I0, I1)                           # 7/10, 8/10, 9/10
+    with pytest.raises(KernelError, match=f"^{few}$"):
+        cc(only_from(Q(7, 10)), x, I0, I1)                      # 8/10, 9/10
+    # [0, oo): 1/3, 2/3, ..., 3: x > 2 leaves 7/3, 8/3, 3 (x = 2 exactly is fine too: 2 - 2 = 0)
+    cc(only_from(Q(13, 6)), x, I0, oo)
+    with pytest.raises(KernelError, match=f"^{few}$"):
+        cc(only_from(Q(7, 3) + Q(1, 100)), x, I0, oo)
+    # (-oo, 0]: -1/3, ..., -3
+    cc(only_from(Q(13, 6)).subs(x, -x), x, -oo, I0)
+    with pytest.raises(KernelError, match=f"^{few}$"):
+        cc(only_from(Q(7, 3) + Q(1, 100)).subs(x, -x), x, -oo, I0)
+    # (-oo, oo): -4/3, ..., 4/3
+    cc(only_from(Q(1, 2)), x, -oo, oo)                          # 2/3, 1, 4/3
+    with pytest.raises(KernelError, match=f"^{few}$"):
+        cc(only_from(Q(3, 4)), x, -oo, oo)                      # 1, 4/3
+    # [2, 3]: 2 + k/10
+    cc(only_from(Q(13, 5)), x, I2, I3)                          # 2.7, 2.8, 2.9
+    with pytest.raises(KernelError, match=f"^{few}$"):
+        cc(only_from(Q(27, 10)), x, I2, I3)                     # 2.8, 2.9 (2.7 - 27/10 straddles 0)
+    # (1, oo): 1 + k/3
+    cc(only_from(Q(19, 6)), x, I1, oo)                          # 10/3, 11/3, 4
+    with pytest.raises(KernelError, match=f"^{few}$"):
+        cc(only_from(Q(10, 3) + Q(1, 100)), x, I1, oo)
+    # (-oo, -1]: -1 - k/3
+    cc(only_from(Q(19, 6)).subs(x, -x), x, -oo, -I1)
+    with pytest.raises(KernelError, match=f"^{few}$"):
+        cc(only_from(Q(10, 3) + Q(1, 100)).subs(x, -x), x, -oo, -I1)
+
+
+def test_identity_claims_and_messages():
+    ex = exact_identity(s / (s ** 2 + 1), 1 / (s + 1 / s), s, 0, oo, True, True)
+    assert ex.claim == Claim("identity", R(s / (s ** 2 + 1)), R(s), R(I0), "oo", True, True,
+                             other=R(1 / (s + 1 / s)))
+    assert ex.assumptions == {"sympy-core", "sympy-polys"} and ex.rule == "identity"
+    trig = exact_identity(sp.sin(x) ** 2 + sp.cos(x) ** 2, I1, x, -1, 2, hi_open=True)
+    assert trig.claim == Claim("identity", R(sp.sin(x) ** 2 + sp.cos(x) ** 2), R(x), R(-I1), R(I2), False, True,
+                               other=R(I1))
+    assert trig.assumptions == {"sympy-core", "sympy-simplify", "arb"}
+    # not rational functions over Q: a radical, pi, an irrational power -- simplify + cross-check
+    for l, r in ((sp.sqrt(2) * (x + 1), sp.sqrt(2) * x + sp.sqrt(2)), (sp.pi * (x + 1), sp.pi * x + sp.pi),
+                 (sp.sqrt(x + 2) * (x + 1), sp.sqrt(x + 2) * x + sp.sqrt(x + 2)),
+                 (sp.exp(x) * (x + 1), x * sp.exp(x) + sp.exp(x))):
+        assert "sympy-simplify" in exact_identity(l, r, x, 0, 1).assumptions, l
+    assert why(exact_identity, x ** 2, x, x, 0, 1) == "the rational functions differ"
+    assert why(exact_identity, sp.sin(x), sp.cos(x), x, 0, 1) == "SymPy's simplify does not reduce lhs - rhs to 0"
+    assert why(exact_identity, sp.sin(x) ** 2 + sp.cos(x) ** 2, I1, x, sp.sqrt(2), 2) == \
+        "cross-check needs rational ends"
+    assert why(exact_identity, 2 ** 100 * (sp.sin(x) ** 2 + sp.cos(x) ** 2), 2 ** 100, x, 0, 1) == \
+        "cross-check at x = 1/10 not precise enough"
+    assert why(exact_identity, sp.sqrt(x - Q(7, 10)) * (sp.sin(x) ** 2 + sp.cos(x) ** 2), sp.sqrt(x - Q(7, 10)),
+               x, 0, 1) == "fewer than 3 points to cross-check the identity"
+    assert why(exact_identity, x, x, s, 1, 2) == "x has symbols other than s"
+
+
+def test_identity_plane_claims_and_messages():
+    y = sp.Symbol("y", real=True)
+    P = K.identity_plane
+    same = P(lhs=x * y, rhs=x * y, x=x, y=y)
+    assert same.claim == Claim("identity_plane", R(x * y), R(sp.Tuple(x, y)), other=R(x * y))
+    assert same.assumptions == {"sympy-core"} and same.rule == "identity_plane"
+    rat = P(lhs=(x ** 2 - y ** 2) / (x - y), rhs=x + y, x=x, y=y)
+    assert rat.assumptions == {"sympy-core", "sympy-polys"}
+    # exact in x alone is not enough: y**(1/2) makes it irrational in y
+    for l, r in ((sp.sqrt(2) * (x + y), sp.sqrt(2) * x + sp.sqrt(2) * y), (sp.pi * (x + 1), sp.pi * x + sp.pi),
+                 (sp.exp(y) * (x + 1), x * sp.exp(y) + sp.exp(y)), (sp.exp(x) * (y + 1), y * sp.exp(x) + sp.exp(x)),
+                 (sp.sqrt(y ** 2 + 1) * (x + 1), x * sp.sqrt(y ** 2 + 1) + sp.sqrt(y ** 2 + 1))):
+        assert P(lhs=l, rhs=r, x=x, y=y).assumptions == {"sympy-core", "sympy-simplify", "arb"}, l
+    assert why(P, lhs=x ** 2 + y, rhs=x ** 2 + y ** 2, x=x, y=y) == "the rational functions differ"
+    assert why(P, lhs=sp.sin(x), rhs=sp.cos(y), x=x, y=y) == "SymPy's simplify does not reduce lhs - rhs to 0"
+    assert why(P, lhs=x, rhs=x, x=x, y=x) == "two distinct variables"
+    assert why(P, lhs=x, rhs=x, x=x, y=I2) == "two distinct variables"
+    assert why(P, lhs=x, rhs=x, x=I2, y=y) == "two distinct variables"
+    assert why(P, lhs=x, rhs=x, x=x, y=s) == "s must be declared real only"
+    assert why(P, lhs=x, rhs=x, x=n, y=y) == "n must be declared real only"
+    assert why(P, lhs=x + s, rhs=x + s, x=x, y=y) == "s + x has symbols other than x, y"
+    assert why(P, lhs=x, rhs=x + s - s + t, x=x, y=y) == "t + x has symbols other than x, y"
+    # the cross-check at the 10 fixed points: sqrt(x - 2) is defined at (2, -1/5), (7/3, 11/4), (5, 1/6)
+    one = sp.sin(y) ** 2 + sp.cos(y) ** 2
+    ok = P(lhs=sp.sqrt(x - 2) * one, rhs=sp.sqrt(x - 2), x=x, y=y)
+    assert "sympy-simplify" in ok.assumptions
+    assert why(P, lhs=sp.sqrt(x - 3) * one, rhs=sp.sqrt(x - 3), x=x, y=y) == \
+        "fewer than 3 points to cross-check the identity"
+    # and at (1/3, 2/7) first: 2**100 (sin**2 + cos**2) is 2**100 only to about 2**-218 in 320 bits
+    assert why(P, lhs=2 ** 100 * one, rhs=2 ** 100, x=x, y=y) == "cross-check at (1/3, 2/7) not precise enough"
+    # sqrt(-x - 2 + ...) first evaluable at (-3, -2): the points are tried in their order
+    assert why(P, lhs=2 ** 100 * sp.sqrt(-x - 2) * one, rhs=2 ** 100 * sp.sqrt(-x - 2), x=x, y=y) == \
+        "cross-check at (-3, -2) not precise enough"
+
+
+def test_continuous_at_end_and_diverges_by_growth_claims_and_messages():
+    C = K.continuous_at_end
+    thm = C(expr=sp.cos(x), var=x, c=I0, width=Q(1, 2))
+    assert thm.claim == Claim("limit", R(sp.cos(x)), R(x), R(I0), R(Q(1, 2)), other=R(I1))
+    assert thm.assumptions == ARB and thm.rule == "continuous_at_end"
+    assert C(expr=sp.exp(x), var=x, c=I1, width=I1).claim.other == R(sp.E)
+    assert C(expr=sp.sqrt(n), var=n, c=I0, width=I1).claim.other == R(I0)
+    for c, w in ((oo, I1), (I0, oo), (I0, I0), (I0, -I1), (-oo, I1)):
+        assert why(C, expr=x, var=x, c=c, width=w) == "finite c and w > 0"
+    assert why(C, expr=n, var=n, c=-I1, width=I1) == "n >= 0 assumed"
+    assert why(C, expr=1 / n, var=n, c=I0, width=Q(1, 2)) == \
+        "1/n not defined on [0, 1/2]: division by an interval that may contain 0"
+    D = K.diverges_by_growth
+    lin = sturm(2 * s - 2, s, 1, oo, hi_open=True, strict=False)          # (s**2)' - 2 = 2s - 2 >= 0 on [1, oo)
+    d = D(lin, expr=s ** 2, var=s, R=I1, rate="linear", k=I2)
+    assert d.claim == Claim("diverges", R(s ** 2), R(s), R(I1), "oo", False, True) and d.rule == "diverges_by_growth"
+    assert d.assumptions == ARB | {"sympy-diff", "sympy-polys"}
+    # log rate: s * (s**2)' - 2 = 2 s**2 - 2 >= 0 on [1, oo)
+    lg = sturm(2 * s ** 2 - 2, s, 1, oo, hi_open=True, strict=False)
+    assert D(lg, expr=s ** 2, var=s, R=I1, rate="log", k=I2).claim == d.claim
+    assert why(D, lg, expr=s ** 2, var=s, R=I1, rate="linear", k=I2) == "premise must be 2*s - 2 >= 0 on [1, oo)"
+    assert why(D, lin, expr=s ** 2, var=s, R=I1, rate="log", k=I2) == "premise must be 2*s**2 - 2 >= 0 on [1, oo)"
+    assert why(D, lin, expr=s ** 2, var=s, R=I1, rate="square", k=I2) == "rate is 'linear' or 'log'"
+    for Rv, k in ((I0, I2), (I1, I0), (oo, I2), (I1, oo), (-I1, I2), (I1, -I2)):
+        assert why(D, lin, expr=s ** 2, var=s, R=Rv, rate="linear", k=k) == "R > 0 and k > 0"
+    assert why(D, lin, expr=s ** 2, var=s, R=I2, rate="linear", k=I2) == "premise must be 2*s - 2 >= 0 on [2, oo)"
+    op = sturm(2 * s - 2, s, 1, oo, lo_open=True, hi_open=True)
+    assert why(D, op, expr=s ** 2, var=s, R=I1, rate="linear", k=I2) == "premise must be 2*s - 2 >= 0 on [1, oo)"
+    fin = sturm(2 * s - 2, s, 1, 5, strict=False)
+    assert why(D, fin, expr=s ** 2, var=s, R=I1, rate="linear", k=I2) == "premise must be 2*s - 2 >= 0 on [1, oo)"
+    # -s**2 with k = 1: (-s**2)' - 1 = -2s - 1 < 0, the wrong sign
+    neg = sturm(-2 * s - 1, s, 1, oo, hi_open=True, want=-1)
+    assert why(D, neg, expr=-s ** 2, var=s, R=I1, rate="linear", k=I1) == "premise must be -2*s - 1 >= 0 on [1, oo)"
+    xs = sturm(2 * x - 2, x, 1, oo, hi_open=True, strict=False)
+    assert why(D, xs, expr=s ** 2, var=s, R=I1, rate="linear", k=I2) == "premise must be 2*s - 2 >= 0 on [1, oo)"
+    # log(s - 1) + s**2 grows, but is not defined for every s > 0
+    L = sp.log(s - 1) + s ** 2
+    # log(s - 1) + s**2 + 2s: E' - 2 = 2s + 1/(s - 1) > 0 on [2, oo), but E is not defined on (0, 1]
+    L = sp.log(s - 1) + s ** 2 + 2 * s
+    pl = K.sign_of_sum(K.sign_of_product(sturm(s, s, 2, oo, hi_open=True), expr=2 * s),
+                       K.sign_of_product(sturm(s - 1, s, 2, oo, hi_open=True), expr=1 / (s - 1)),
+                       expr=2 * s + 1 / (s - 1), want=1)
+    assert why(D, pl, expr=L, var=s, R=I2, rate="linear", k=I2) == f"{L} not shown defined for all s > 0"
+    ident = exact_identity(s, s, s, 1, oo, hi_open=True)
+    assert why(D, ident, expr=s ** 2, var=s, R=I1, rate="linear", k=I2) == \
+        "premise is a identity theorem, not a sign theorem"
+
+
+# ---------------------------------------------------------- sup rules
+
+def test_sup_upper_rules_claims_and_messages():
+    U = K.sup_upper_by_cover
+    # x <= 1 on [0, 1] exactly at the end (Arb: upper(x) = 1 <= 1); x <= 1/2 is false there
+    up = U(expr=x, var=x, cuts=[0, Q(1, 2), 1], bound=I1)
+    assert up.claim == Claim("sup_upper", R(x), R(x), R(I0), R(I1), other=R(I1)) and up.rule == "sup_upper_by_cover"
+    assert up.assumptions == ARB
+    assert U(expr=s, var=s, cuts=[0, 1], bound=I1).claim.lo == R(I0)            # closed 0 of s > 0 is fine
+    assert why(U, expr=x, var=x, cuts=[0, 1], bound=Q(1, 2)) == "E <= 1/2 not shown on [0, 1]"
+    assert why(U, expr=x, var=x, cuts=[0, Q(1, 2), 1], bound=Q(3, 4)) == "E <= 3/4 not shown on [1/2, 1]"
+    assert why(U, expr=x, var=x, cuts=[0, 1], bound=oo) == "finite bound"
+    assert why(U, expr=x, var=x, cuts=[0, 1], bound=-oo) == "finite bound"
+    assert why(U, expr=1 / x, var=x, cuts=[-1, 1], bound=I1) == \
+        "1/x not evaluable on [-1, 1]: division by an interval that may contain 0"
+    assert why(U, expr=s, var=s, cuts=[-1, 1], bound=I2) == "s >= 0 assumed"
+    # an irrational bound: x <= sqrt(2) on [0, 7/5]
+    assert U(expr=x, var=x, cuts=[0, Q(7, 5)], bound=sp.sqrt(2)).claim.other == R(sp.sqrt(2))
+    S = K.sup_upper_by_sign
+    g = 2 * x - x ** 2
+    sq = sturm(1 - g, x, -1, 3, lo_open=True, strict=False)         # 1 - (2x - x**2) = (x - 1)**2 >= 0
+    thm = S(sq, expr=g, bound=I1)
+    assert thm.claim == Claim("sup_upper", R(g), R(x), R(-I1), R(I3), True, False, other=R(I1))
+    assert thm.assumptions == {"sympy-polys"} and thm.rule == "sup_upper_by_sign"
+    assert why(S, sq, expr=g, bound=I2) == "premise must be U - E >= 0"
+    neg = sturm(-x ** 2 - 1, x, 0, 1, want=-1)                       # 0 - (x**2 + 1) < 0
+    assert why(S, neg, expr=x ** 2 + 1, bound=I0) == "premise must be U - E >= 0"
+    assert why(S, exact_identity(x, x, x, 0, 1), expr=x, bound=I0) == \
+        "premise is a identity theorem, not a sign theorem"
+    A = K.sup_upper_of_abs
+    a = U(expr=x, var=x, cuts=[-1, 1], bound=I1)
+    b = U(expr=-x, var=x, cuts=[-1, 1], bound=I1)
+    ab = A(a, b)
+    assert ab.claim == Claim("sup_upper", R(sp.Abs(x)), R(x), R(-I1), R(I1), other=R(I1)) and ab.rule == "sup_upper_of_abs"
+    assert ab.assumptions == ARB
+    assert why(A, a, a) == "second premise must be about -E"
+    assert why(A, a, U(expr=-x, var=x, cuts=[-1, 1], bound=I2)) == "premises on different intervals or bounds"
+    assert why(A, a, U(expr=-x, var=x, cuts=[-1, 2], bound=I1)) == "premises on different intervals or bounds"
+    assert why(A, sq, b) == "premises must be sup_upper theorems"
+    assert why(A, a, sq) == "premises must be sup_upper theorems"
+
+
+def test_sup_lower_by_point_claims_and_messages():
+    L = K.sup_lower_by_point
+    E = s / (s ** 2 + 1)
+    kw = dict(lo=I0, hi=I2, lo_open=True, hi_open=False)
+    low = L(expr=E, var=s, point=I1, bound=Q(1, 2), **kw)              # E(1) = 1/2 exactly
+    assert low.claim == Claim("sup_lower", R(E), R(s), R(I0), R(I2), True, False, other=R(Q(1, 2)))
+    assert low.assumptions == ARB and low.rule == "sup_lower_by_point"
+    # the closed end 2 may be the point (E(2) = 2/5), an open end may not
+    assert L(expr=E, var=s, point=I2, bound=Q(2, 5), **kw).claim.other == R(Q(2, 5))
+    assert why(L, expr=E, var=s, point=I2, bound=Q(2, 5), lo=I0, hi=I2, lo_open=True, hi_open=True) == \
+        "point after I"
+    assert why(L, expr=E, var=s, point=I3, bound=I0, **kw) == "point after I"
+    assert L(expr=x, var=x, point=I0, bound=I0, lo=I0, hi=I1, lo_open=False, hi_open=False).claim.lo == R(I0)
+    assert why(L, expr=x, var=x, point=I0, bound=I0, lo=I0, hi=I1, lo_open=True, hi_open=False) == "point before I"
+    assert why(L, expr=x, var=x, point=-I1, bound=-I2, lo=I0, hi=I1, lo_open=False, hi_open=False) == \
+        "point before I"
+    # exact: (sqrt 2)**2 = 2 literally, though Arb's ball of it is not >= 2; by Arb: E(1) = 1/2 >= 2/5
+    assert L(expr=x ** 2, var=x, point=sp.sqrt(2), bound=I2, lo=I0, hi=I2, lo_open=False, hi_open=False).claim.other \
+        == R(I2)
+    assert L(expr=E, var=s, point=I1, bound=Q(2, 5), **kw).claim.other == R(Q(2, 5))
+    B = Q(1, 2) + Q(1, 10 ** 30)
+    assert why(L, expr=E, var=s, point=I1, bound=B, **kw) == f"E(1) >= {B} not shown"
+    assert why(L, expr=1 / (s - 1), var=s, point=I1, bound=I0, **kw) == \
+        "E undefined at 1: division by an interval that may contain 0"
+
+
+def test_sup_lower_by_limit_and_sup_scaled_claims_and_messages():
+    E = s / sp.sqrt(s ** 2 + 1)                                   # -> 1 as s -> oo
+    Et = 1 / sp.sqrt(t ** 2 + 1)
+    half = Q(1, 2)
+
+    def ident(lo=I0, hi=oo, hi_open=True, lhs=Et, rhs=E.subs(s, 1 / t), var=t):
+        return K.identity(lhs=lhs, rhs=rhs, var=var, lo=lo, hi=hi, lo_open=True, hi_open=hi_open)
+    L = K.sup_lower_by_limit
+    idt = ident()
+    low = L(idt, expr=E, var=s, width=half, bound=I1, lo=I0, lo_open=True)
+    assert low.claim == Claim("sup_lower", R(E), R(s), R(I0), "oo", True, True, other=R(I1))
+    assert low.assumptions == {"arb", "sympy-core", "sympy-simplify"} and low.rule == "sup_lower_by_limit"
+    assert L(idt, expr=E, var=s, width=half, bound=I1, lo=I3, lo_open=False).claim == \
+        Claim("sup_lower", R(E), R(s), R(I3), "oo", False, True, other=R(I1))
+    # the identity on exactly (0, 1/2] is enough; (0, 1/2) and (0, 1/4] are not
+    assert L(ident(hi=half, hi_open=False), expr=E, var=s, width=half, bound=I1, lo=I0, lo_open=True).claim == low.claim
+    msg = "the identity must hold on (0, w]"
+    assert why(L, ident(hi=half), expr=E, var=s, width=half, bound=I1, lo=I0, lo_open=True) == msg
+    assert why(L, ident(hi=Q(1, 4), hi_open=False), expr=E, var=s, width=half, bound=I1, lo=I0, lo_open=True) == msg
+    assert why(L, ident(lo=Q(1, 10)), expr=E, var=s, width=half, bound=I1, lo=I0, lo_open=True) == msg
+    assert why(L, idt, expr=E, var=s, width=half, bound=Q(101, 100), lo=I0, lo_open=True) == \
+        "E_t(0) is not exactly 101/100"
+    assert why(L, idt, expr=2 * E, var=s, width=half, bound=I2, lo=I0, lo_open=True) == \
+        "the identity must read E_t(t) = E(1/t)"
+    assert why(L, sturm(t, t, 0, 1, lo_open=True), expr=E, var=s, width=half, bound=I1, lo=I0, lo_open=True) == \
+        "premise must be an identity"
+    assert why(L, idt, expr=Et, var=t, width=half, bound=I1, lo=I0, lo_open=True) == \
+        "the tail variable must differ from the variable"
+    for w, b in ((I0, I1), (oo, I1), (-I1, I1), (half, oo), (half, -oo)):
+        assert why(L, idt, expr=E, var=s, width=w, bound=b, lo=I0, lo_open=True) == "finite w > 0 and bound"
+    # E = s: E(1/t) = 1/t is not defined at t = 0
+    i2 = ident(lhs=1 / t, rhs=1 / t)
+    assert why(L, i2, expr=s, var=s, width=half, bound=I1, lo=I0, lo_open=True) == \
+        "E_t not defined on [0, 1/2]: division by an interval that may contain 0"
+    # E = 1 + 1/(s - 1): E(1/t) = 1/(1 - t) -> 1, but E is undefined at s = 1
+    E1 = 1 + 1 / (s - 1)
+    i3 = ident(lhs=1 / (1 - t), rhs=E1.subs(s, 1 / t))
+    assert why(L, i3, expr=E1, var=s, width=half, bound=I1, lo=I0, lo_open=True) == \
+        f"{E1} not shown defined for all s > 0"
+    # lo must be >= 0: for s > 0 the interval check says so, for a real x the rule does
+    assert why(L, idt, expr=E, var=s, width=half, bound=I1, lo=-I1, lo_open=True) == \
+        "s > 0 assumed: interval must lie in (0, oo)"
+    Ex = x / sp.sqrt(x ** 2 + 1)
+    ix = ident(rhs=Ex.subs(x, 1 / t))
+    assert L(ix, expr=Ex, var=x, width=half, bound=I1, lo=I0, lo_open=False).claim.lo == R(I0)
+    assert why(L, ix, expr=Ex, var=x, width=half, bound=I1, lo=-I1, lo_open=False) == "lo >= 0"
+    Sc = K.sup_scaled
+    sc = Sc(low, factor=sp.sqrt(2))
+    assert sc.claim == Claim("sup_lower", R(sp.sqrt(2) * E), R(s), R(I0), "oo", True, True, other=R(sp.sqrt(2)))
+    assert sc.assumptions == low.assumptions and sc.rule == "sup_scaled"
+    up = K.sup_upper_by_cover(expr=x, var=x, cuts=[0, 1], bound=I1)
+    assert Sc(up, factor=I3).claim == Claim("sup_upper", R(3 * x), R(x), R(I0), R(I1), other=R(I3))
+    for k in (I0, -sp.sqrt(2), oo):
+        assert why(Sc, up, factor=k) == "factor must be a positive constant"
+    assert why(Sc, sturm(x, x, 1, 2), factor=I2) == "premise must be a sup theorem"
+    assert why(Sc, idt, factor=I2) == "premise must be a sup theorem"
+
+
+# ---------------------------------------------------------- the parser
+
+def test_parse_accepts_srepr_and_refuses_the_rest():
+    from uwmr_symbolic.kernel.parse import ParseError, parse
+    assert parse("Add(Integer(1), Integer(2))") == 3
+    assert parse("Integer(-3)") == -3 and parse("-Integer(3)") == -3          # a unary minus is allowed
+    assert parse("Symbol('x', real=True)") == x
+    assert parse("Rational(1, 3)") == Q(1, 3)
+    assert parse("Max(Integer(1), Integer(2))", design=True) == 2
+    assert parse("Piecewise(ExprCondPair(Integer(1), true))", design=True) == 1
+    cases = {
+        "Max(Integer(1), Integer(2))": "name not allowed: Max",            # design names only with design=True
+        "getattr(Integer(1), 'p')": "name not allowed: getattr",
+        "Integer(x)": "name not allowed: x",
+        "Integer(1.5)": "literal not allowed: 1.5",
+        "Integer(True)": "literal not allowed: True",
+        "Integer(None)": "literal not allowed: None",
+        "Symbol('x', integer=True)": "keyword not allowed: integer",
+        "Symbol('x', real=False)": "keyword not allowed: real",
+        "Symbol('x', real=1)": "keyword not allowed: real",
+        "Symbol('x', real='True')": "keyword not allowed: real",
+        "Symbol('x', **{'real': True})": "keyword not allowed: None",
+        "Symbol('x', real=Integer(1))": "keyword not allowed: real",
+    }
+    for text, msg in cases.items():
+        with pytest.raises(ParseError) as err:
+            parse(text)
+        assert str(err.value) == msg, text
+    for text, start in (("+Integer(1)", "syntax not allowed: UnaryOp(op=UAdd()"),
+                        ("~Integer(1)", "syntax not allowed: UnaryOp(op=Invert()"),
+                        ("Integer(1).p", "syntax not allowed: Attribute("),
+                        ("Integer(1)(2)", "syntax not allowed: Call(func=Call("),
+                        ("[Integer(1)]", "syntax not allowed: List("),
+                        ("Integer(1) + Integer(2)", "syntax not allowed: BinOp("),
+                        ("Integer(1", "not an srepr: ")):
+        with pytest.raises(ParseError) as err:
+            parse(text)
+        assert str(err.value).startswith(start), text
+    for bad in (12, None, "Integer(1)" + " " * 200_000):
+        with pytest.raises(ParseError) as err:
+            parse(bad)
+        assert str(err.value) == "expected an srepr string"
+    assert parse("Integer(1)" + " " * (200_000 - 10)) == 1                 # exactly 200,000 characters
+    # names outside the scope are not builtins either
+    with pytest.raises(ParseError, match="^name not allowed: __import__$"):
+        parse("__import__('os')")
+
+
+# ---------------------------------------------------------- the evaluator
+
+def lo_hi(box):
+    return float(box.lo.lower()), float(box.hi.upper())
+
+
+def test_evaluator_enclosures_are_tight():
+    # hand-computed ranges; the enclosure must contain them and be within 1e-9 of them
+    cases = [
+        (x + 1, -1, 2, (0, 3)), (-x, -1, 2, (-2, 1)), (2 * x - 3 * x ** 2, 0, 1, (-3, 2)),
+        # a product is enclosed by its corner products: x in [-1, 2], x + 1 in [0, 3] -> [-3, 6]
+        (x * (x + 1), -1, 2, (-3, 6)), (x * (x - 3), 1, 2, (-4, -1)), ((x - 3) * (x - 4), 1, 2, (2, 6)),
+        (x ** 2, -1, 2, (0, 4)), (x ** 2, -3, -1, (1, 9)), (x ** 2, 1, 3, (1, 9)), (x ** 3, -1, 2, (-1, 8)),
+        (x ** -1, 1, 2, (0.5, 1)), (x ** -1, -2, -1, (-1, -0.5)), (x ** -2, 1, 2, (0.25, 1)),
+        (x ** -2, -2, -1, (0.25, 1)), (x ** -3, -2, -1, (-1, -0.125)),
+        (sp.sqrt(x), 0, 4, (0, 2)), (sp.sqrt(x), 1, 4, (1, 2)), (x ** Q(3, 2), 0, 4, (0, 8)),
+        (x ** Q(-1, 2), 1, 4, (0.5, 1)), (x ** Q(-3, 2), 1, 4, (0.125, 1)),
+        (sp.Abs(x), -3, 2, (0, 3)), (sp.Abs(x), -3, -2, (2, 3)), (sp.Abs(x), 1, 2, (1, 2)),
+        (sp.cosh(x), -1, 2, (1, float(sp.cosh(2)))), (sp.cosh(x), -2, -1, (float(sp.cosh(1)), float(sp.cosh(2)))),
+        (sp.exp(x), 0, 1, (1, float(sp.E))), (sp.log(x), 1, sp.E, (0, 1)), (sp.E ** x, 0, 1, (1, float(sp.E))),
+        (sp.tanh(x), -1, 1, (-float(sp.tanh(1)), float(sp.tanh(1)))),
+        (sp.atan(x), 0, 1, (0, float(sp.pi / 4))), (sp.asinh(x), 0, 1, (0, float(sp.asinh(1)))),
+        (sp.sinh(x), 0, 1, (0, float(sp.sinh(1)))), (sp.erf(x), 0, 1, (0, float(sp.erf(1)))),
+        (sp.sin(x), 0, 0, (0, 0)), (sp.cos(x), 0, 0, (1, 1)), (sp.pi * x, 1, 1, (float(sp.pi), float(sp.pi))),
+        (x / 3, 1, 1, (1 / 3, 1 / 3)), (sp.Integer(7), 0, 1, (7, 7)),
+    ]
+    for e, a, b, (ra, rb) in cases:
+        lo, hi = lo_hi(evaluate(e, x, sp.sympify(a), sp.sympify(b)))
+        assert lo <= ra + 1e-12 and rb - 1e-12 <= hi, (e, lo, hi)
+        assert ra - 1e-9 <= lo and hi <= rb + 1e-9, (e, lo, hi)
+    # sin and cos take the hull: sin on [0, 1] is within [sin 0, sin 1] = [0, 0.8415] (+ rounding)
+    lo, hi = lo_hi(evaluate(sp.sin(x), x, I0, I1))
+    assert -1e-6 <= lo <= 0 and 0.84 <= hi <= 1
+    lo, hi = lo_hi(evaluate(sp.cos(x), x, I0, I1))
+    assert 0 <= lo <= 0.55 and 1 <= hi <= 1 + 1e-9
+    assert lo_hi(evaluate(sp.pi)) == pytest.approx((3.141592653589793, 3.141592653589793))
+    assert lo_hi(evaluate(sp.E)) == pytest.approx((2.718281828459045, 2.718281828459045))
+    assert lo_hi(evaluate(Q(-7, 2))) == (-3.5, -3.5)
+
+
+def test_evaluator_comparisons_and_precision():
+    box = evaluate(x - 1, x, I1, I2)
+    assert box.nonnegative() and not box.positive() and not box.negative() and not box.nonpositive()
+    box = evaluate(x - 2, x, I1, I2)
+    assert box.nonpositive() and not box.negative() and not box.nonnegative()
+    assert evaluate(x, x, I1, I2).positive() and evaluate(-x, x, I1, I2).negative()
+    assert repr(evaluate(sp.Integer(2))) == "Iv(2.00000000000000, 2.00000000000000)"
+    # bits: 1/3 at 256 bits is far tighter than at 53
+    fine, coarse = evaluate(Q(1, 3), bits=256), evaluate(Q(1, 3), bits=53)
+    assert float(fine.lo.rad()) < 2.0 ** -250 and float(coarse.lo.rad()) > 2.0 ** -120
+    import flint
+    before = flint.ctx.prec
+    evaluate(Q(1, 3), bits=300)
+    assert flint.ctx.prec == before                     # precision restored
+    with pytest.raises(Undefined):
+        evaluate(sp.log(x), x, I0, I1, bits=300)
+    assert flint.ctx.prec == before                     # also after an error
+
+
+def test_evaluator_refusals_have_reasons():
+    cases = [
+        (sp.sqrt(x), -1, 1, "x**(1/2) needs x >= 0"), (x ** Q(-1, 2), 0, 1, "x**(-1/2) needs x > 0"),
+        (1 / x, -1, 1, "division by an interval that may contain 0"), (1 / x, 0, 1, "division by an interval that may contain 0"),
+        (x ** -2, -1, 0, "division by an interval that may contain 0"),
+        (sp.log(x), 0, 1, "log of an interval that may contain values <= 0"),
+        (x ** x, 1, 2, "only rational exponents: x**x"), (2 ** x, 1, 2, "only rational exponents: 2**x"),
+        (sp.gamma(x), 1, 2, "unsupported function gamma"), (sp.Max(x, 1), 0, 2, "unsupported: Max"),
+        (sp.I * x, 0, 1, "unsupported: ImaginaryUnit"),
+        (x + sp.Float(0.5), 0, 1, "not an exact real constant: 0.500000000000000"),
+        (x + sp.oo, 0, 1, "not an exact real constant: oo"),
+        (x + sp.Symbol("y"), 0, 1, "free symbol y"),
+    ]
+    for e, a, b, msg in cases:
+        with pytest.raises(Undefined) as err:
+            evaluate(e, x, sp.sympify(a), sp.sympify(b))
+        assert str(err.value) == msg, e
+    with pytest.raises(Undefined, match="^unsupported constant EulerGamma$"):
+        evaluate(sp.EulerGamma)
+
+
+# ---------------------------------------------------------- certificates and the command line
+
+def small_proof():
+    """x - 1 > 0 on (1, 2] (Sturm), tanh(x - 1) > 0 there, and sqrt(2) - 1 > 0: two conclusions
+    sharing nothing, the first with one premise."""
+    base = sturm(x - 1, x, 1, 2, lo_open=True)
+    return [K.sign_through_increasing(base, expr=sp.tanh(x - 1)), K.value_sign(value=sp.sqrt(2) - 1)], base
+
+
+def test_to_certificate_lists_premises_once_and_first():
+    from uwmr_symbolic.kernel import check_certificate, to_certificate
+    (th, vs), base = small_proof()
+    both = K.sign_of_product(base, sturm(x + 1, x, 1, 2, lo_open=True), expr=(x - 1) * (x + 1))
+    cert = to_certificate([th, both, vs])
+    assert [n["rule"] for n in cert["theorems"]] == ["sign_by_sturm", "sign_through_increasing", "sign_by_sturm",
+                                                    "sign_of_product", "value_sign"]
+    assert [n["id"] for n in cert["theorems"]] == [0, 1, 2, 3, 4]
+    assert [n["premises"] for n in cert["theorems"]] == [[], [0], [], [0, 2], []]   # base listed once
+    assert cert["conclusions"] == [1, 3, 4]
+    assert cert["assumptions"] == ["arb", "sympy-core", "sympy-polys"]
+    assert (cert["format"], cert["version"]) == ("uwmr-kernel-certificate", 1)
+    assert cert["theorems"][1]["claim"] == th.claim.to_json()
+    assert [t.claim for t in check_certificate(cert)] == [th.claim, both.claim, vs.claim]
+
+
+def test_certificate_checker_messages():
+    import copy
+
+    from uwmr_symbolic.kernel import CertificateError, check_certificate, to_certificate
+    (th, vs), _ = small_proof()
+    good = to_certificate([th, vs])
+
+    def refused(edit):
+        cert = copy.deepcopy(good)
+        out = edit(cert)
+        with pytest.raises(CertificateError) as err:
+            check_certificate(cert if out is None else out)
+        return str(err.value)
+    assert refused(lambda c: [c]) == "a certificate is a JSON object"
+    assert refused(lambda c: c.update(format="other")) == "not a uwmr-kernel-certificate (format = 'other')"
+    assert refused(lambda c: c.__delitem__("format")) == "not a uwmr-kernel-certificate (format = None)"
+    assert refused(lambda c: c.update(version=2)) == (
+        "certificate format version 2 is not supported: this kernel reads version 1 only; re-create the certificate")
+    assert refused(lambda c: c.update(version="1")).startswith("certificate format version '1' is not supported")
+    for key in ("theorems", "conclusions", "assumptions"):
+        assert refused(lambda c: c.update({key: {}})) == f"'{key}' must be a list"
+    shape = "theorem 0: needs id = 0, rule, premises, data, claim"
+    for edit in (lambda c: c["theorems"][0].update(id=1), lambda c: c["theorems"][0].update(rule=3),
+                 lambda c: c["theorems"][0].update(premises={}), lambda c: c["theorems"][0].update(data=[]),
+                 lambda c: c["theorems"][0].update(claim=[]), lambda c: c["theorems"].__setitem__(0, [])):
+        assert refused(edit) == shape
+    assert refused(lambda c: c["theorems"][1].update(id=0)) == "theorem 1: needs id = 1, rule, premises, data, claim"
+    assert refused(lambda c: c["theorems"][0].update(rule="trust_me")) == "theorem 0: unknown rule 'trust_me'"
+    early = "theorem 1: premises must be earlier theorems"
+    for prem in ([1], [-1], [True], ["0"], [0.0]):
+        assert refused(lambda c: c["theorems"][1].update(premises=prem)) == early, prem
+    assert refused(lambda c: c["theorems"][0]["data"].update(want=-1)) == (
+        "theorem 0 (sign_by_sturm) does not check: p(3/2) has the wrong sign")
+    assert refused(lambda c: c["theorems"][0]["data"].update(frob=1)).startswith(
+        "theorem 0 (sign_by_sturm) does not check: ")
+    assert refused(lambda c: c["theorems"][0]["claim"].update(frob=1)).startswith("theorem 0: malformed claim: ")
+    claimed = refused(lambda c: c["theorems"][0]["claim"].update(strict=False))
+    assert claimed.startswith("theorem 0 (sign_by_sturm): the rule proves Claim(") and \
+        "the certificate claims Claim(" in claimed
+    concl = "conclusions must name theorems of the certificate"
+    for bad in ([], [3], [-1], ["0"]):
+        assert refused(lambda c: c.update(conclusions=bad)) == concl, bad
+    assert refused(lambda c: c.update(assumptions=["arb", "sympy-core"])) == (
+        "the certificate rests on ['arb', 'sympy-core', 'sympy-polys'], it lists ['arb', 'sympy-core']")
+    assert refused(lambda c: "{") .startswith("not JSON: ")
+    # the listed assumptions may come in any order; only the last conclusion may be named
+    ok = copy.deepcopy(good)
+    ok["assumptions"] = list(reversed(ok["assumptions"]))
+    assert [t.claim for t in check_certificate(ok)] == [th.claim, vs.claim]
+    ok["conclusions"], ok["assumptions"] = [2], ["arb", "sympy-core"]
+    assert [t.claim for t in check_certificate(ok)] == [vs.claim]
+    import json
+    assert [t.claim for t in check_certificate(json.dumps(good).encode())] == [th.claim, vs.claim]
+
+
+def test_command_line(tmp_path, capsys):
+    import json
+
+    from uwmr_symbolic.kernel import to_certificate
+    from uwmr_symbolic.kernel.__main__ import main
+    (th, vs), _ = small_proof()
+    up = K.sup_upper_by_cover(expr=x, var=x, cuts=[0, 1], bound=I1)
+    ho = sturm(x + 1, x, 0, 1, hi_open=True)
+    good = tmp_path / "good.json"
+    good.write_text(json.dumps(to_certificate([th, vs, up, ho])))
+    assert main([str(good)]) == 0
+    assert capsys.readouterr().out.splitlines() == [
+        f"{good}: checked sign tanh(x - 1) want=1 strict=True for x in (1, 2]",
+        f"{good}: checked value_sign -1 + sqrt(2) want=1 strict=True",
+        f"{good}: checked sup_upper x want=0 strict=False other=1 for x in [0, 1]",
+        f"{good}: checked sign x + 1 want=1 strict=True for x in [0, 1)",
+        f"{good}: rests on arb, sympy-core, sympy-polys"]
+    bad = tmp_path / "bad.json"
+    bad.write_text("{")
+    missing = tmp_path / "missing.json"
+    assert main([str(bad), str(good), str(missing)]) == 1
+    out = capsys.readouterr().out.splitlines()
+    assert out[0].startswith(f"{bad}: REJECTED: Expecting property name") and len(out) == 7
+    assert out[6].startswith(f"{missing}: REJECTED: [Errno 2]")
+    wrong = tmp_path / "wrong.json"
+    cert = to_certificate([vs])
+    cert["version"] = 7
+    wrong.write_text(json.dumps(cert))
+    assert main([str(wrong)]) == 1
+    assert capsys.readouterr().out == (f"{wrong}: REJECTED: certificate format version 7 is not supported: "
+                                       "this kernel reads version 1 only; re-create the certificate\n")
+    assert main([]) == 2
+    assert capsys.readouterr().out.startswith("python -m uwmr_symbolic.kernel CERT.json ...: re-check certificates.")
+    import sys
+    old = sys.argv
+    sys.argv = ["kernel", str(good)]
+    try:
+        assert main() == 0
+    finally:
+        sys.argv = old
+    assert capsys.readouterr().out.count("checked") == 4
+
+
+
+# ---------------------------------------------------------- theorems, rule application, comparisons
+
+# sqrt(2) cut after 60 decimals: 0 < sqrt(2) - P < 1e-60 (the next digits are 7379...), which
+# 256-bit balls (radius ~1e-77) resolve and 128-bit ones (~1e-38) do not
+P = sp.Rational(1414213562373095048801688724209698078569671875376948073176679, 10 ** 60)
+
+
+def test_theorem_records_its_rule_premises_data_and_assumptions():
+    import dataclasses
+    import json
+
+    from uwmr_symbolic.kernel import Theorem
+    a = sturm(x + 1, x, 0, 1)
+    b = K.sign_by_cover(expr=x + 2, var=x, cuts=[0, Q(1, 2), 1], want=1)
+    thm = K.sign_of_product(a, b, expr=(x + 1) * (x + 2))
+    assert thm.rule == "sign_of_product" and thm.premises == (a, b)
+    assert thm.assumptions == {"arb", "sympy-core", "sympy-polys"}        # the rule's, a's and b's
+    assert json.loads(thm.data) == {"expr": {"$": R((x + 1) * (x + 2))}}
+    # the data as JSON with sorted keys, SymPy objects as srepr, ints as ints; strict was not given
+    assert b.data == json.dumps({"cuts": [0, {"$": "Rational(1, 2)"}, 1],
+                                 "expr": {"$": R(x + 2)}, "var": {"$": R(x)}, "want": 1}, sort_keys=True)
+    assert thm._token is None
+    with pytest.raises(KernelError, match="^theorems are made only by kernel rules$"):
+        Theorem(thm.claim, "made up", (), "{}", frozenset())
+    with pytest.raises(KernelError, match="^theorems are made only by kernel rules$"):
+        dataclasses.replace(thm, assumptions=frozenset())
+    assert why(K.sign_of_product, a, thm.claim, expr=(x + 1) * (x + 2)) == "sign_of_product: a premise is not a theorem"
+    # None, booleans, strings and nested lists are rule data too
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=[[0], [1]], want=1) == "expected a SymPy object or an int, got list"
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=None, want=1) == "a cover needs a list of at least two cut points"
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=I2, want=1) == "a cover needs a list of at least two cut points"
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=[0, 1], want={"$": "Integer(1)"}) == \
+        "rule data must be SymPy objects, numbers, strings or lists: {'$': 'Integer(1)'}"
+
+
+def test_comparisons_of_ends():
+    ident = K.identity
+    kw = dict(lhs=I1, rhs=I1, var=x, lo_open=True, hi_open=True)
+    assert why(ident, lo=oo, hi=I2 * 5 // 2, **kw) == "empty interval (oo, 5)"
+    assert why(ident, lo=I1, hi=-oo, **kw) == "empty interval (1, -oo)"
+    assert why(ident, lo=oo, hi=oo, **kw) == "empty interval (oo, oo)"
+    assert why(ident, lo=-oo, hi=-oo, **kw) == "empty interval (-oo, -oo)"
+    assert ident(lo=-oo, hi=oo, **kw).claim.hi == "oo"
+    # sqrt(2) against a rational 1e-60 below it: decided only with enough bits
+    p = P
+    assert K.sign_by_cover(expr=x, var=x, cuts=[1, p, sp.sqrt(2)], want=1).claim.hi == R(sp.sqrt(2))
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=[1, sp.sqrt(2), p], want=1) == f"cut points not increasing: sqrt(2), {p}"
+    # a constant that is exactly 1 but not literally: neither above nor below 1
+    one = (1 + sp.sqrt(2)) ** 2 - 2 * sp.sqrt(2) - 2
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=[1, one], want=1) == f"cut points not increasing: 1, {one}"
+    assert why(K.sign_by_cover, expr=x, var=x, cuts=[one, 1], want=1) == f"cut points not increasing: {one}, 1"
+
+
+def test_weaken_keeps_the_closed_end_0_of_a_positive_variable():
+    cover = K.sign_by_cover(expr=s + 1, var=s, cuts=[0, 1], want=1)
+    assert K.weaken(cover, lo=I0, hi=Q(1, 2), lo_open=False, hi_open=False, strict=False).claim == \
+        sign(s + 1, s, 0, Q(1, 2), strict=False)
+
+
+
+
+def test_rules_that_need_256_bits():
+    assert sp.Rational(7, 10 ** 61) < sp.sqrt(2) - P < sp.Rational(1, 10 ** 60)
+    assert K.value_sign(value=sp.sqrt(2) - P).claim.want == 1
+    assert K.value_sign(value=P - sp.sqrt(2)).claim.want == -1
+    # sup over [0, 2] of x is >= P, shown at the point sqrt(2)
+    assert K.sup_lower_by_point(expr=x, var=x, point=sp.sqrt(2), bound=P, lo=I0, hi=I2, lo_open=False,
+                                hi_open=False).claim.other == R(P)
+    # E = s + sqrt(2) - P - 1 has E(1) = sqrt(2) - P > 0 and E' = 1
+    E = s + sp.sqrt(2) - P - 1
+    d = sturm(I1, s, 1, oo, hi_open=True)
+    assert K.sign_by_monotone(d, expr=E, var=s, R=I1).claim == sign(E, s, 1, oo, hi_open=True)
+
+
+def test_parse_design_scope_reaches_every_argument():
+    from uwmr_symbolic.kernel.parse import ParseError, parse
+    assert parse("Mul(Integer(-1), Max(Integer(1), Integer(2)))", design=True) == -2
+    assert parse("-Max(Integer(1), Integer(2))", design=True) == -2
+    assert parse("Add(Max(Integer(1), Integer(2)), Integer(1))", design=True) == 3
+    assert parse("Max(Integer(1), Min(Integer(2), Integer(3)))", design=True) == 2
+    import ast
+    text = "[Integer(1), Integer(2), Integer(3), Integer(4)]"
+    with pytest.raises(ParseError) as err:
+        parse(text)
+    assert str(err.value) == "syntax not allowed: " + ast.dump(ast.parse(text, mode="eval").body)[:60]
+
+
+def test_evaluator_refuses_nan():
+    with pytest.raises(Undefined, match="^not an exact real constant: nan$"):
+        evaluate(sp.nan)
+
+
+def test_boundaries_seen_by_the_mutants():
+    # sign_by_monotone with R = 1/2 < 1: E = 1 - 1/(4s), E(1/2) = 1/2 > 0, E' = s**-2/4 > 0
+    E = 1 - 1 / (4 * s)
+    dE = K.sign_of_product(sturm(s, s, Q(1, 2), oo, hi_open=True), expr=sp.diff(E, s))
+    assert K.sign_by_monotone(dE, expr=E, var=s, R=Q(1, 2)).claim == sign(E, s, Q(1, 2), oo, hi_open=True)
+    # the closed end 0 of a positive variable: continuity and a sup at the point 0 only evaluate
+    assert K.continuous_at_end(expr=s + 1, var=s, c=I0, width=I1).claim == \
+        Claim("limit", R(s + 1), R(s), R(I0), R(I1), other=R(I1))
+    assert K.sup_lower_by_point(expr=s, var=s, point=I0, bound=I0, lo=I0, hi=I1, lo_open=False,
+                                hi_open=False).claim == Claim("sup_lower", R(s), R(s), R(I0), R(I1), other=R(I0))
+    # an open right end is kept: sup over (0, oo) of s/(s**2 + 1) >= 1/2, at s = 1
+    E2 = s / (s ** 2 + 1)
+    assert K.sup_lower_by_point(expr=E2, var=s, point=I1, bound=Q(1, 2), lo=I0, hi=oo, lo_open=True,
+                                hi_open=True).claim == Claim("sup_lower", R(E2), R(s), R(I0), "oo", True, True,
+                                                             other=R(Q(1, 2)))
+    # -oo is no finite constant and no positive factor
+    assert why(K.value_sign, value=-oo) == "a finite constant"
+    up = K.sup_upper_by_cover(expr=x, var=x, cuts=[0, Q(1, 2)], bound=Q(1, 2))
+    assert why(K.sup_scaled, up, factor=-oo) == "factor must be a positive constant"
+    # k * U, not U / k or k / U: 4 * (x <= 1/2) is 4x <= 2
+    assert K.sup_scaled(up, factor=4 * I1).claim == Claim("sup_upper", R(4 * x), R(x), R(I0), R(Q(1, 2)), other=R(I2))
+    # x <= 1 + 1e-45 on [0, 1]: the box gives exactly 1, the bound's ball must be narrower than 1e-45
+    B = 1 + Q(1, 10 ** 45)
+    assert K.sup_upper_by_cover(expr=x, var=x, cuts=[0, 1], bound=B).claim.other == R(B)
+    # lim E_t(0) = 1 exactly; 1 + 1e-90 is inside Arb's 256-bit ball of E_t(0) - c but is not the limit
+    Et = 1 / sp.sqrt(t ** 2 + 1)
+    idt = K.identity(lhs=Et, rhs=(s / sp.sqrt(s ** 2 + 1)).subs(s, 1 / t), var=t, lo=I0, hi=oo, lo_open=True,
+                     hi_open=True)
+    c = 1 + Q(1, 10 ** 90)
+    assert why(K.sup_lower_by_limit, idt, expr=s / sp.sqrt(s ** 2 + 1), var=s, width=Q(1, 2), bound=c, lo=I0,
+               lo_open=True) == f"E_t(0) is not exactly {c}"
