@@ -720,17 +720,30 @@ def _cross_check(d, var, lo, hi):
         pts = [hi - sp.Rational(k, 3) for k in range(1, 10)]
     else:
         pts = [lo + (hi - lo) * sp.Rational(k, 10) for k in range(1, 10)]
-    ok = 0
     for p in pts:
         _need(p.is_Rational, "cross-check needs rational ends")
+    _vanishes_at([(f"{var} = {p}", lambda p=p: evaluate(d, var, p, p, bits=CROSS_CHECK_BITS)) for p in pts])
+
+
+def _vanishes_at(points):
+    """lhs - rhs encloses 0 with radius < 2^-250 at every (label, enclosure
+    thunk) that evaluates; at least 3 must evaluate."""
+    ok = 0
+    for where, enclosure in points:
         try:
-            v = evaluate(d, var, p, p, bits=CROSS_CHECK_BITS).hull()
+            v = enclosure().hull()
         except Undefined:
             continue
-        _need(v.contains(0), lambda: f"the identity fails at {var} = {p}: lhs - rhs = {v}")
-        _need(bool(v.rad() < arb(2) ** -250), lambda: f"cross-check at {var} = {p} not precise enough")
+        _need(v.contains(0), lambda: f"the identity fails at {where}: lhs - rhs = {v}")
+        _need(bool(v.rad() < arb(2) ** -250), lambda: f"cross-check at {where} not precise enough")
         ok += 1
     _need(ok >= 3, "fewer than 3 points to cross-check the identity")
+
+
+def _rational_over_q(d, *variables) -> bool:
+    """d is a rational function of the variables with rational coefficients."""
+    return d.is_rational_function(*variables) and all(a.is_Rational for a in d.atoms(sp.Number)) \
+        and not d.atoms(sp.NumberSymbol) and all(p.exp.is_Integer for p in d.atoms(sp.Pow))
 
 
 def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
@@ -743,10 +756,7 @@ def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
     l, r = _expr(lhs, var), _expr(rhs, var)
     d = l - r
     claim = Claim("identity", _s(l), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(r))
-    rational = d.is_rational_function(var) and all(
-        a.is_Rational for a in d.atoms(sp.Number)) and not d.atoms(sp.NumberSymbol) and all(
-        p.exp.is_Integer for p in d.atoms(sp.Pow))
-    if rational:
+    if _rational_over_q(d, var):
         _need(sp.cancel(sp.together(d)) == 0, "the rational functions differ")
         return claim, ("sympy-polys",)
     _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
@@ -780,21 +790,12 @@ def identity_plane(*, lhs, rhs, x, y):
     if l == r:
         return claim
     d = l - r
-    if d.is_rational_function(x, y) and all(a.is_Rational for a in d.atoms(sp.Number)) \
-            and not d.atoms(sp.NumberSymbol) and all(p.exp.is_Integer for p in d.atoms(sp.Pow)):
+    if _rational_over_q(d, x, y):
         _need(sp.cancel(sp.together(d)) == 0, "the rational functions differ")
         return claim, ("sympy-polys",)
     _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
-    ok = 0
-    for p, q in _PLANE_POINTS:
-        try:
-            v = evaluate(d.subs({x: p, y: q}), bits=CROSS_CHECK_BITS).hull()
-        except Undefined:
-            continue
-        _need(v.contains(0), lambda: f"the identity fails at ({p}, {q}): lhs - rhs = {v}")
-        _need(bool(v.rad() < arb(2) ** -250), lambda: f"cross-check at ({p}, {q}) not precise enough")
-        ok += 1
-    _need(ok >= 3, "fewer than 3 points to cross-check the identity")
+    _vanishes_at([(f"({p}, {q})", lambda p=p, q=q: evaluate(d.subs({x: p, y: q}), bits=CROSS_CHECK_BITS))
+                  for p, q in _PLANE_POINTS])
     return claim, ("sympy-simplify", "arb")
 identity_plane = rule("sympy-core")(identity_plane)
 
