@@ -31,7 +31,6 @@ import sympy as sp
 
 from .kernel import core as K
 from .kernel.arb import Undefined, evaluate
-from .kernel.certificate import to_certificate
 
 OO = sp.oo
 WIDTHS = [sp.Rational(1, 2 ** k) for k in range(1, 16, 2)]
@@ -509,8 +508,3 @@ def sup_upper_theorem(e, bound, var):
         return _rule(K.sup_upper_by_sign, parts[0], expr=e, bound=bound)
     except NoProof:
         return None
-
-
-def certificate(theorems) -> dict:
-    """The kernel certificate (version 1) of a list of theorems."""
-    return to_certificate(theorems)
