@@ -289,9 +289,9 @@ def verify_p1(a: Analysis) -> Verdict:
     F = _single_formula(a)
     if F is None or not kf.kernel:
         return _lemmas(v, v, "f is C^1 with kf finite (continuity and the bound are the search's)")
-    positive, _ = sign_theorems(sp.diff(F, S), S, 0, sp.oo)
+    positive, upper = kf.kernel[:2]     # F' > 0 and F' <= kf on (0, oo), from `certify.sup_theorems`
     return _lemmas(v, v, "f is C^1 (continuity at the origin)",
-                   lambda: [positive[0], *origin, kf.kernel[1]] if (origin := origin_theorems(F, S)) else [])
+                   lambda: [positive, *origin, upper] if (origin := origin_theorems(F, S)) else [])
 
 
 def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
