@@ -28,6 +28,26 @@ is accepted for lam).  Units: m, rad, m/s, rad/s.
 Checked against the exact law before it was written (see the C header):
 errors <= 1e-12 of the scale, bound (10), status 0 wherever the law is finite;
 errors (7) and the Tracker against (7) in mpmath, likewise.
+
+The same operations as the C double variant, so its certified accuracy
+holds here too, numpy's and scipy's functions assumed within the same ulps:
+Accuracy, certified (uwmr_symbolic/codegen/accuracy.py): a rigorous
+error analysis of the operations this code performs, in interval
+arithmetic over every region of m = max(|e1|, |e2|), proves for finite
+inputs with status 0 the bounds below.  It assumes IEEE arithmetic
+rounded to nearest without extended intermediates (FLT_EVAL_METHOD 0)
+and math-library functions within these ulps: acosh 4, asinh 4, atan 4,
+atanh 4, cos 4, cosh 4, erf 4, erfc 10, exp 4, expm1 4, gamma 10, log 4,
+log1p 4, pow 4, sin 4, sinh 4, tanh 10.  g = df/de2(e1, e2) as computed,
+term = lam vr g sin(e3)/e3.
+  double outside the ranges marked NOT CERTIFIED: |g^ - g| <= 4.2e-14
+    |g| and |term^ - term| <= 4.3e-14 |term| where the term is a normal
+    number; |v^ - v| <= 2.4e-15 (|vr| + k1), |w^ - w| <= 4.4e-14 (|wr| +
+    lam |vr| KF + k2) + 8.9e-308.
+      0 < m < 1e-100: g within 4.6e-15.
+      1e-100 <= m <= 1e+04: g within 4.2e-14.
+      m > 1e+04 (except below): g within 5.8e-15.
+      NOT CERTIFIED for m > 6.09e+307: a partial product may overflow.
 """
 import numpy
 

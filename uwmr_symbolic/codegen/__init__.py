@@ -25,7 +25,7 @@ import sympy as sp
 
 from .. import __version__
 from ..properties import PROPERTIES, Analysis
-from . import c_backend, python_backend
+from . import accuracy, c_backend, python_backend
 from .law import LawModel, build_model
 from .printers import Unsupported, double_literal
 
@@ -161,6 +161,9 @@ def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, st
     model.reasons = reasons
     env = _env()
     ctx = _context(design, model)
+    certified = [accuracy.certify(model, cfg.precision, cfg.sinc_cut) for cfg in (c_backend.DOUBLE, c_backend.FLOAT)]
+    ctx["accuracy"] = accuracy.contract_lines(certified)
+    ctx["accuracy_double"] = accuracy.contract_lines(certified[:1])
     files = {}
     try:
         files.update(python_backend.render(env, model, ctx))

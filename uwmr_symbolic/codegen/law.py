@@ -84,6 +84,7 @@ class LawModel:
     kf_text: str                           # how the verifier states kf
     reasons: list = field(default_factory=list)   # why not verified (empty: verified)
     tiny: tuple | None = None              # (a, j): F'(s) ~ a s**j as s -> 0+
+    tiny_source: sp.Expr | None = None     # F'(s) on the first piece (for the series' remainder)
     mid: list = field(default_factory=list)        # Branches in rho, g = e2 H(rho)
     far: list = field(default_factory=list)        # Branches in t, F'(1/t) = t**k D(t)
     general: sp.Expr | None = None         # non-radial: df/de2 in e1, e2
@@ -320,7 +321,7 @@ def build_model(design, analysis, report=None) -> LawModel:
         tiny_ok = j >= 0 and all(_next_ratio(dF0, S, a, j, math.sqrt(2) * th[0]) < SERIES_REL[prec]
                                  for prec, th in model.thresholds.items())
     if tiny_ok:
-        model.tiny = (a, j)
+        model.tiny, model.tiny_source = (a, j), dF0
     else:
         model.notes.append("no usable series of F' at 0: the mid-region form is used down to s = 0")
 

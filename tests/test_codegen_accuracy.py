@@ -1,0 +1,149 @@
+"""The certified accuracy of generated code (`codegen.accuracy`): the
+propagation rules against bounds derived by hand, and the certified bounds
+against the errors the compiled code really makes."""
+import math
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+import sympy as sp
+from flint import arb
+from sympy.codegen.cfunctions import log1p
+
+from uwmr_symbolic.codegen import accuracy, build
+from uwmr_symbolic.codegen.accuracy import Analysis, Uncertified, _iv, certify
+from uwmr_symbolic.codegen.c_backend import DOUBLE, FLOAT
+from uwmr_symbolic.codegen.harness import build_library
+from uwmr_symbolic.codegen.law import build_model
+from uwmr_symbolic.codegen.reference import mp_g
+from uwmr_symbolic.kernel.arb import precision
+from uwmr_symbolic.properties import Analysis as DesignAnalysis
+from uwmr_symbolic.verify import verify_design
+
+X, Y = sp.symbols("x y", positive=True)
+U = 2.0 ** -53
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _bound(expr, box, E=0.0, A=0.0, prec="double", relative=True):
+    with precision(128):
+        an = Analysis(prec, {X: (_iv(*box), arb(E), arb(A)), Y: (_iv(*box), arb(0), arb(0))})
+        if relative:
+            return float(an.relative(expr).upper())
+        return tuple(float(v.upper()) for v in an.error(expr))
+
+
+def test_one_rounding_per_operation():
+    # x + 1 (same signs): gamma_1 = u; x*y: u; sqrt(x): correctly rounded, u
+    assert _bound(X + 1, (1.0, 2.0)) == pytest.approx(U, rel=1e-12)
+    assert _bound(X * Y, (1.0, 2.0)) == pytest.approx(U, rel=1e-12)
+    assert _bound(sp.sqrt(X), (1.0, 2.0)) == pytest.approx(U, rel=1e-12)
+    # x**3 = x*x*x: two roundings; the input's error 1e-10 enters three times
+    assert _bound(X ** 3, (1.0, 2.0), E=1e-10) == pytest.approx((1 + 1e-10) ** 3 * (1 + U) ** 2 - 1, rel=1e-9)
+    # 1/x: (1 - E)^-1 (1 + u) - 1
+    assert _bound(1 / X, (1.0, 2.0), E=1e-10) == pytest.approx((1 - 1e-10) ** -1 * (1 + U) - 1, rel=1e-9)
+
+
+def test_literals_exact_or_rounded():
+    assert _bound(X * sp.Rational(1, 4), (1.0, 2.0)) == pytest.approx(U, rel=1e-12)        # 0.25 exact
+    assert _bound(X * sp.Rational(1, 3), (1.0, 2.0)) == pytest.approx(2 * U, rel=1e-6)     # 1/3 rounded
+
+
+def test_cancellation_is_not_certified():
+    # x - 1 vanishes at x = 1: no relative bound
+    with pytest.raises(Uncertified):
+        _bound(X - 1, (0.5, 2.0))
+    # log(1 + x) at x ~ 1e-20: 1 + x loses x; log1p keeps it (the issue's cancellation class)
+    assert _bound(sp.log(1 + X), (1e-20, 2e-20)) > 1e3
+    assert _bound(log1p(X), (1e-20, 2e-20)) < 40 * U
+
+
+def test_underflow_is_an_absolute_error():
+    # x*x for x ~ 1e-200 underflows: the relative part stays small, the absolute one is a subnormal
+    E, A = _bound(X * X, (1e-200, 2e-200), relative=False)
+    assert E < 2 * U and A == pytest.approx(2.0 ** -1074, rel=0.01)
+    # and no relative bound then (A / x^2 is huge)
+    assert _bound(X * X, (1e-200, 2e-200)) > 1e70
+
+
+def test_function_condition_number():
+    # exp(x) with x in [100, 200] and |dx| <= 1e-12 |x|: relative change up to 200 * 1e-12
+    E = _bound(sp.exp(X), (100.0, 200.0), E=1e-12)
+    assert 200e-12 < E < 1.2 * 200e-12 * math.exp(200 * 1e-12) + 16 * U
+    # tanh saturates: far out its argument's error does not matter
+    assert _bound(sp.tanh(X), (1e10, 1e12), E=0.1) < 30 * U
+
+
+def test_overflow_is_not_certified():
+    with pytest.raises(Uncertified):
+        _bound(X * X, (1e200, 1e201))
+
+
+@pytest.fixture(scope="module")
+def models():
+    out = {}
+    for name in ("design1_jiang", "design2_sqrt", "design3_logcosh", "design5_rational", "design4_cosine"):
+        rep = verify_design(ROOT / "designs" / f"{name}.py")
+        out[name] = (rep, build_model(rep.design, DesignAnalysis(rep.design), rep))
+    return out
+
+
+def test_paper_designs_certified_within_the_goals(models):
+    for name in ("design1_jiang", "design2_sqrt", "design3_logcosh", "design5_rational"):
+        _, model = models[name]
+        for cfg, goal in ((DOUBLE, 1e-9), (FLOAT, 1e-5)):
+            acc = certify(model, cfg.precision, cfg.sinc_cut)
+            assert acc.g is not None and acc.g <= goal, (name, cfg.precision, acc.lines())
+            assert acc.w <= (1e-12 if cfg.precision == "double" else 1e-5), (name, acc.lines())
+            # every region is certified except, at most, the last binades of the range
+            for r in acc.uncertified:
+                assert r.region == "far" and float(r.where.split("> ")[1]) > 1e37, (name, r)
+
+
+def test_vanishing_gradient_not_certified(models):
+    # design 4: F'(s) = sin(s) ds/dS vanishes at s = pi (m ~ 4.02), where the branches switch
+    _, model = models["design4_cosine"]
+    acc = certify(model, "double", DOUBLE.sinc_cut)
+    bad = [r for r in acc.uncertified if r.region == "mid"]
+    assert bad and any("4.02" in r.where for r in bad)
+    assert any("NOT CERTIFIED" in line for line in acc.lines())
+
+
+def _measured_g(files, stem, rows, f32):
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, text in files.items():
+            (Path(tmp) / name).write_text(text)
+        lib = build_library(tmp, stem, tmp)
+        v, w, st = lib.run(rows, f32=f32)
+    return w, st
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["design1_jiang", "design2_sqrt", "design3_logcosh", "design5_rational"])
+def test_certified_bound_holds_for_compiled_code(models, name):
+    """lam = vr = 1, e3 = wr = k2 = 0: w = g exactly, so the C output's
+    error against g in 50-digit mpmath must be within the certified bound
+    of its region, at random inputs of every magnitude."""
+    rep, model = models[name]
+    _, files = build(ROOT / "designs" / f"{name}.py", force=True, report=rep)
+    rng = np.random.default_rng(7)
+    for cfg, top in ((DOUBLE, 300), (FLOAT, 37)):
+        acc = certify(model, cfg.precision, cfg.sinc_cut)
+        mags = 10.0 ** rng.uniform(-top, top, 300)
+        angles = rng.uniform(0, 2 * np.pi, 300)
+        rows = np.zeros((300, 8))
+        rows[:, 0], rows[:, 1] = mags * np.cos(angles), mags * np.sin(angles)
+        rows[:, 3], rows[:, 7] = 1.0, 1.0
+        if cfg is FLOAT:
+            rows = rows.astype(np.float32).astype(np.float64)
+        w, st = _measured_g(files, model.stem, rows, cfg is FLOAT)
+        tiny_normal = accuracy.MIN_NORMAL[cfg.precision]
+        checked = 0
+        for (e1, e2), got, status in zip(rows[:, :2], w, st):
+            exact = float(mp_g(rep.design, e1, e2))
+            if status != 0 or abs(exact) < tiny_normal * 4 or max(abs(e1), abs(e2)) > 1e37:
+                continue
+            assert abs(got - exact) <= acc.g * abs(exact), (name, cfg.precision, e1, e2, got, exact, acc.g)
+            checked += 1
+        assert checked > 50
