@@ -57,6 +57,9 @@ UNIT = {"double": 2.0 ** -53, "float": 2.0 ** -24}
 MIN_NORMAL = {"double": 2.0 ** -1022, "float": 2.0 ** -126}
 MAX_FINITE = {"double": 1.7976931348623157e308, "float": 3.4028234663852886e38}
 SUBNORMAL = {"double": 2.0 ** -1074, "float": 2.0 ** -149}
+#: A literal is printed from a 40-digit value rounded to double, and the
+#: float literal from that double: beyond u, the first rounding adds this.
+LITERAL_EXTRA = {"double": arb(2.0 ** -120), "float": arb(2.0 ** -52)}
 #: Goal for g's relative error per precision: a box above it is split.
 GOAL = {"double": 1e-9, "float": 1e-5}
 
@@ -250,8 +253,8 @@ class Analysis:
         if e in self.env:
             return self.env[e][1], self.env[e][2]
         x = self.value(e)
-        if e.is_number:          # one literal, correctly rounded
-            return (arb(0) if _representable(e, self.p) else self.u), arb(0)
+        if e.is_number:          # one literal: 40 digits rounded to double (then to float)
+            return (arb(0) if _representable(e, self.p) else self.u + LITERAL_EXTRA[self.p]), arb(0)
         if e.is_Add:
             return self._sum(e, x)
         if e.is_Mul:
@@ -661,7 +664,7 @@ def _tiny(model, prec, reg, tiny):
         trunc = trunc / (1 - trunc)
         u = reg.u
         E_c = (1 + u) * (1 + reg.E_ir) * (1 + u) - 1
-        E_a = arb(0) if _representable(sp.sympify(a), prec) else u
+        E_a = arb(0) if _representable(sp.sympify(a), prec) else u + LITERAL_EXTRA[prec]
         E = _products([E_c, E_a] + [reg.E_r] * j, 2 * j + 1, u)
         return _up((1 + E) * (1 + trunc) - 1), []
 
