@@ -107,15 +107,15 @@ extern "C" {
  *     lam |vr| KF + k2) + 8.9e-308.
  *       0 < m < 1e-100: g within 4.6e-15.
  *       1e-100 <= m <= 1e+04: g within 4.2e-14.
- *       m > 1e+04 (except below): g within 5.8e-15.
+ *       m > 1e+04 (except as listed): g within 5.8e-15.
  *       NOT CERTIFIED for m > 6.09e+307: a partial product may overflow.
  *   float (_f32) outside the ranges marked NOT CERTIFIED: |g^ - g| <=
- *     5.4e-06 |g| and |term^ - term| <= 6.1e-06 |term| where the term is a
- *     normal number; |v^ - v| <= 1.3e-06 (|vr| + k1), |w^ - w| <= 6.2e-06
+ *     3.9e-06 |g| and |term^ - term| <= 4.6e-06 |term| where the term is a
+ *     normal number; |v^ - v| <= 1.3e-06 (|vr| + k1), |w^ - w| <= 4.7e-06
  *     (|wr| + lam |vr| KF + k2) + 4.7e-38.
  *       0 < m < 1e-12: g within 1.3e-06.
- *       1e-12 <= m <= 1e+04: g within 5.4e-06.
- *       m > 1e+04 (except below): g within 2.3e-06.
+ *       1e-12 <= m <= 1e+04: g within 3.9e-06.
+ *       m > 1e+04 (except as listed): g within 2.3e-06.
  *       NOT CERTIFIED for m > 1.15e+38: a partial product may overflow.
  * No dynamic memory, no mutable global state; reentrant (a tracker belongs
  * to one control loop).  libm may set errno on an underflow inside the

@@ -46,7 +46,7 @@ term = lam vr g sin(e3)/e3.
     lam |vr| KF + k2) + 8.9e-308.
       0 < m < 1e-100: g within 4.6e-15.
       1e-100 <= m <= 1e+04: g within 4.2e-14.
-      m > 1e+04 (except below): g within 5.8e-15.
+      m > 1e+04 (except as listed): g within 5.8e-15.
       NOT CERTIFIED for m > 6.09e+307: a partial product may overflow.
 """
 import numpy
