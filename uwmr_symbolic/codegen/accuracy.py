@@ -257,11 +257,9 @@ class Analysis:
             return (arb(0) if _representable(e, self.p) else self.u + LITERAL_EXTRA[self.p]), arb(0)
         if e.is_Add:
             return self._sum(e, x)
-        if e.is_Mul:
-            return self._product(e, x)
-        if e.is_Pow:
-            return self._power(e, x)
-        return self._call(e, x)
+        E, A = self._product(e, x) if e.is_Mul else self._power(e, x) if e.is_Pow else self._call(e, x)
+        self._no_overflow(_mag(x)[1] * (1 + E) + A, "a result")      # the value itself, rounded
+        return E, A
 
     def _sum(self, e, x: Iv):
         """gamma_{n-1} sum |x_i^| plus the terms' own errors (sums are exact below the normal range)."""
