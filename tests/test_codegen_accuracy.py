@@ -150,3 +150,10 @@ def test_certified_bound_holds_for_compiled_code(models, name):
             assert abs(got - exact) <= acc.g * abs(exact), (name, cfg.precision, e1, e2, got, exact, acc.g)
             checked += 1
         assert checked > 50
+
+
+def test_partial_product_underflow_counts():
+    # (x * y) * 1e300 with x, y ~ 1e-200: x*y underflows to 0 though the result 1e-100 is normal
+    assert _bound(X * Y * sp.Integer(10) ** 300, (1e-200, 2e-200)) > 1e50
+    # x*y*1e-10 at x, y ~ 1: nothing underflows, one relative rounding per product (+ the literal)
+    assert _bound(X * Y * sp.Rational(1, 10 ** 10), (1.0, 2.0)) < 4 * U

@@ -107,12 +107,12 @@ extern "C" {
  *       0 < m < 1e-100: g within 2.4e-15.
  *       1e-100 <= m <= 1e+04: g within 5.6e-16.
  *       m > 1e+04: g within 6.2e-15.
- *   float (_f32): |g^ - g| <= 1.8e-06 |g| and |term^ - term| <= 2.5e-06
+ *   float (_f32): |g^ - g| <= 1e-06 |g| and |term^ - term| <= 1.7e-06
  *     |term| where the term is a normal number; |v^ - v| <= 1.3e-06 (|vr|
- *     + k1), |w^ - w| <= 2.6e-06 (|wr| + lam |vr| KF + k2) + 4.7e-38.
+ *     + k1), |w^ - w| <= 1.8e-06 (|wr| + lam |vr| KF + k2) + 4.7e-38.
  *       0 < m < 1e-12: g within 7.2e-07.
  *       1e-12 <= m <= 1e+04: g within 3e-07.
- *       m > 1e+04: g within 1.8e-06.
+ *       m > 1e+04: g within 1e-06.
  * No dynamic memory, no mutable global state; reentrant (a tracker belongs
  * to one control loop).  libm may set errno on an underflow inside the
  * computation.  The gain field was called `lambda` before uwmr-symbolic

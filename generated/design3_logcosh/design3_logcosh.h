@@ -115,7 +115,7 @@ extern "C" {
  *     (|wr| + lam |vr| KF + k2) + 4.7e-38.
  *       0 < m < 1e-12: g within 1.3e-06.
  *       1e-12 <= m <= 1e+04: g within 3.9e-06.
- *       m > 1e+04 (except as listed): g within 2.3e-06.
+ *       m > 1e+04 (except as listed): g within 1.9e-06.
  *       NOT CERTIFIED for m > 1.15e+38: a partial product may overflow.
  * No dynamic memory, no mutable global state; reentrant (a tracker belongs
  * to one control loop).  libm may set errno on an underflow inside the

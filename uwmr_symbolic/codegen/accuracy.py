@@ -264,23 +264,24 @@ class Analysis:
     def _sum(self, e, x: Iv):
         """gamma_{n-1} sum |x_i^| plus the terms' own errors (sums are exact below the normal range)."""
         gamma = (1 + self.u) ** (len(e.args) - 1) - 1
-        total, worst_E, total_A, same_sign = arb(0), arb(0), arb(0), True
+        total, worst_E, total_A, sum_abs = arb(0), arb(0), arb(0), arb(0)
         signs = set()
         for a in e.args:
             E, A = self._error(a)
             v = self.value(a)
             hi = _mag(v)[1]
             total += hi * E + A + gamma * (hi * (1 + E) + A)
-            worst_E, total_A = worst_E.max(E), total_A + A
+            worst_E, total_A, sum_abs = worst_E.max(E), total_A + A, sum_abs + hi * (1 + E) + A
             signs.add(1 if v.nonnegative() else (-1 if v.nonpositive() else 0))
         lo, hi = _mag(x)
-        self._no_overflow(hi + total, "a sum")
+        self._no_overflow(sum_abs * (1 + self.u) ** len(e.args), "a partial sum")
+        general = (total / lo, arb(0)) if lo > 0 else (arb(0), total)
         if len(signs) == 1 and 0 not in signs:
             # terms of one sign: sum |x_i| = |sum x_i|, no cancellation
-            return worst_E * (1 + gamma) + gamma, total_A * (1 + gamma)
-        if lo > 0:
-            return total / lo, arb(0)
-        return arb(0), total
+            same = (worst_E * (1 + gamma) + gamma, total_A * (1 + gamma))
+            if not (lo > 0 and general[0] < same[0] + same[1] / lo):
+                return same
+        return general
 
     def _product(self, e, x: Iv):
         """Printed as (numerator product)/(denominator product), n - 1
@@ -289,7 +290,10 @@ class Analysis:
         coeff, rest = e.as_coeff_Mul()
         factors = list(sp.Mul.make_args(rest)) + ([] if abs(coeff) == 1 else [abs(coeff)])
         rel, core, mag = arb(1), arb(1), arb(1)
-        high_num, high_den, low_den, any_abs = arb(1), arb(1), arb(1), False
+        high_num, high_den, low_num, low_den, any_abs = arb(1), arb(1), arb(1), arb(1), False
+        if coeff.is_Rational and coeff.q != 1:     # SymPy prints p x / q: p joins the numerator, q the denominator
+            high_num *= max(1, abs(int(coeff.p)))
+            high_den *= int(coeff.q)
         for f in factors:
             E, A = self._error(f)
             lo, hi = _mag(self.value(f))
@@ -304,6 +308,7 @@ class Analysis:
                 low_den *= (1 / (2 * hi)).min(arb(1))
             else:
                 high_num *= (hi * (1 + E) + A).max(arb(1))
+                low_num *= (lo * (1 - E)).min(arb(1))
         self._no_overflow(high_num * (1 + self.u) ** len(factors), "a partial product")
         self._no_overflow(high_den * (1 + self.u) ** len(factors), "a partial denominator")
         if not low_den >= self.min:
@@ -312,8 +317,12 @@ class Analysis:
         E = rel * (1 + self.u) ** n - 1
         # |prod x^ - prod x (1 + e_i)| <= prod(|x_i|(1+E_i) + A_i) - prod |x_i|(1+E_i), largest at the top
         A = (mag - core).abs_upper() if any_abs else arb(0)
-        # a rounding below the normal range: half a subnormal, times the later factors
-        A_r = self._underflow(x, E, n) * high_num / low_den if n > 0 else arb(0)
+        # a rounding below the normal range (of a partial product or of the result): half a
+        # subnormal, times the later factors
+        partial_low = not (low_num >= self.min)
+        A_r = arb(0)
+        if n > 0 and (partial_low or not self._underflow(x, E, 1).is_zero()):
+            A_r = self.sub * n * high_num / low_den
         return E, A * (1 + self.u) ** n + A_r
 
     def _power(self, e, x: Iv):
