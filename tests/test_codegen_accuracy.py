@@ -157,3 +157,24 @@ def test_partial_product_underflow_counts():
     assert _bound(X * Y * sp.Integer(10) ** 300, (1e-200, 2e-200)) > 1e50
     # x*y*1e-10 at x, y ~ 1: nothing underflows, one relative rounding per product (+ the literal)
     assert _bound(X * Y * sp.Rational(1, 10 ** 10), (1.0, 2.0)) < 4 * U
+
+
+def test_first_violation_finds_a_broken_certificate(models):
+    """The validation's check of the certificate can fail: the true bounds
+    pass on the validation sample, bounds a million times too small do not."""
+    import dataclasses
+    from uwmr_symbolic.codegen import _kf_upper_double, reference
+    from uwmr_symbolic.codegen.validate import sample_inputs
+    rep, model = models["design1_jiang"]
+    _, files = build(ROOT / "designs" / "design1_jiang.py", report=rep)
+    acc = certify(model, "double", DOUBLE.sinc_cut)
+    x = sample_inputs(model, "double", (0.25, 0.7, 0.3), 200, 5)
+    ref = reference.table(reference.Law.of(rep.design), x)
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, text in files.items():
+            (Path(tmp) / name).write_text(text)
+        v, w, st = build_library(tmp, model.stem, tmp).run(x)
+    kf = _kf_upper_double(model.kf_upper)
+    assert accuracy.first_violation(acc, x, ref, v, w, st, kf) is None
+    tight = dataclasses.replace(acc, v=acc.v * 1e-6, w=acc.w * 1e-6, absolute=0.0)
+    assert accuracy.first_violation(tight, x, ref, v, w, st, kf) is not None

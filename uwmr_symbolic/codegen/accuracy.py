@@ -424,6 +424,7 @@ class RegionAccuracy:
     g: float | None
     term: float | None = None
     reason: str = ""
+    m_range: tuple = (0.0, math.inf)       # (lo, hi) of m covered by this entry
 
 
 @dataclass
@@ -716,17 +717,45 @@ def certify(model: LawModel, precision: str, sinc_cut: float) -> Accuracy:
             try:
                 E, bad = run()
             except Uncertified as exc:
-                acc.regions.append(RegionAccuracy(name, _range(lo, hi), None, reason=str(exc)))
+                acc.regions.append(RegionAccuracy(name, _range(lo, hi), None, reason=str(exc), m_range=(lo, hi)))
                 continue
             term = _up(_products([arb(E), E_sinc], 3, reg.u))
             bad = _merge(bad)
             where = _range(lo, hi) + (" (except as listed)" if bad else "")
-            acc.regions.append(RegionAccuracy(name, where, E, term))
-            acc.regions += [RegionAccuracy(name, _range(max(a, lo), min(b, hi)), None, reason=why)
-                            for a, b, why in bad]
+            acc.regions.append(RegionAccuracy(name, where, E, term, m_range=(lo, hi)))
+            acc.regions += [RegionAccuracy(name, _range(max(a, lo), min(b, hi)), None, reason=why,
+                                           m_range=(max(a, lo), min(b, hi))) for a, b, why in bad]
         worst = max((r.term for r in acc.regions if r.term is not None), default=0.0)
         acc.v, acc.w, acc.absolute = _template(precision, reg, worst)
     return acc
+
+
+def first_violation(acc: Accuracy, x, ref: dict, v, w, st, kf: float):
+    """The first row (index) where outputs with status 0 break the certified
+    bounds on v or w, skipping rows whose m lies in a NOT CERTIFIED range
+    (None if none): the translation validation checks the certificate too.
+    x: rows (e1, e2, e3, vr, wr, k1, k2, lam); ref: `reference.table`."""
+    import numpy as np
+    if acc.v is None or acc.w is None or not math.isfinite(kf):
+        return None
+    x = np.asarray(x, dtype=float)
+    m = np.maximum(np.abs(x[:, 0]), np.abs(x[:, 1]))
+    skip = np.zeros(len(x), dtype=bool)
+    for r in acc.uncertified:
+        lo, hi = r.m_range
+        skip |= (m >= lo * (1 - 1e-9)) & (m <= hi * (1 + 1e-9))
+    a = np.abs(x)
+    with np.errstate(all="ignore"):
+        bv = acc.v * (a[:, 3] + a[:, 5]) + acc.absolute
+        bw = acc.w * (a[:, 4] + a[:, 7] * a[:, 3] * kf + a[:, 6]) + acc.absolute
+        ev = np.abs((np.asarray(v, dtype=float) - ref["v_hi"]) - ref["v_lo"])
+        ew = np.abs((np.asarray(w, dtype=float) - ref["w_hi"]) - ref["w_lo"])
+        # the reference is double-double: allow for its own rounding (2^-100 relative)
+        slack_v, slack_w = np.abs(ref["v_hi"]) * 2.0 ** -100, np.abs(ref["w_hi"]) * 2.0 ** -100
+        bad = (np.asarray(st) == 0) & ~skip & np.isfinite(ref["v_hi"]) & np.isfinite(ref["w_hi"]) \
+            & ((ev > bv + slack_v) | (ew > bw + slack_w))
+    idx = np.flatnonzero(bad)
+    return int(idx[0]) if len(idx) else None
 
 
 def _range(lo, hi) -> str:
