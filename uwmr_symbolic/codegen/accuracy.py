@@ -643,33 +643,50 @@ def _far(model, prec, reg, far):
     return worst, [(1 / b / math.sqrt(2), min(1 / a, big), why) for a, b, why in bad]
 
 
-def _tiny(model, prec, reg, tiny):
-    """m < TINY: F'(s) ~ a s^j.  |F'(s) - a s^j| <= sup|F'^(j+1)| s^(j+1)/(j+1)!
-    on [0, sqrt(2) TINY] (Lagrange), given F'^(i)(0) = 0 exactly for i < j
-    (Arb's exact zero) and a = F'^(j)(0)/j!."""
+def _series_error(dF, a, j, delta, prec) -> arb:
+    """sup |F'(s)/(a s^j) - 1| over (0, delta], rigorously: Arb encloses
+    q = F'(s)/s^j over [0, delta] when q, simplified, is defined at 0
+    (s^9/(1 + s^10) -> 1/(1 + s^10)); otherwise Lagrange's remainder,
+    |F'(s) - a s^j| <= sup|F'^(j+1)| s^(j+1)/(j+1)! (j <= 4), given
+    F'^(i)(0) = 0 exactly for i < j (Arb's exact zero), F'^(j)(0)/j! near a."""
     from ..profile import S
+    aj = Analysis(prec, {}).value(sp.sympify(a)).hull()
+    if not aj.abs_lower() > 0:
+        raise Uncertified("leading coefficient not bounded away from 0")
+    box = {S: (_iv(0.0, delta), arb(0), arb(0))}
+    q = dF / S ** j
+    q = sp.cancel(q) if not q.has(sp.Function) else sp.powsimp(sp.expand_power_base(q))
+    try:
+        Q = Analysis(prec, box).value(plain(q))
+        return _mag(Iv(Q.lo - aj, Q.hi - aj))[1] / abs(aj)
+    except (Uncertified, Undefined):
+        pass
+    if j > 4:
+        raise Uncertified(f"F'(s)/s^{j} is not defined at 0 as written, and the remainder needs "
+                          f"F'^({j + 1})")
+    for i in range(j + 1):
+        c = Analysis(prec, {S: (_point(arb(0)), arb(0), arb(0))}).value(plain(sp.diff(dF, S, i)))
+        if i < j and not _is_zero(c):
+            raise Uncertified(f"F'^({i})(0) = 0 is not exact in Arb")
+    cj = _mag(Iv(c.lo - aj * math.factorial(j), c.hi - aj * math.factorial(j)))[1] / abs(aj)
+    try:
+        rem = Analysis(prec, box).value(plain(sp.diff(dF, S, j + 1)))
+    except (Uncertified, Undefined) as exc:
+        raise Uncertified(f"F'^({j + 1}) on [0, {_fmt(delta)}]: {exc}") from None
+    return cj / math.factorial(j) + _mag(rem)[1] * arb(delta) / (math.factorial(j + 1) * abs(aj))
+
+
+def _tiny(model, prec, reg, tiny):
+    """m < TINY: F'(s) replaced by a s^j, s^j = m^j r^j, e2/s = (e2/m)/r;
+    the truncation from `_series_error`."""
     a, j = model.tiny
-    dF = model.tiny_source
-    if dF is None:
+    if model.tiny_source is None:
         raise Uncertified("no expression of F' to bound the series")
     if SUBNORMAL[prec] / tiny < MIN_NORMAL[prec]:
         raise Uncertified("e2/m may be subnormal")
-    delta = math.sqrt(2) * tiny * (1 + 1e-12)
     with arb_precision(256):
-        for i in range(j + 1):
-            c = Analysis(prec, {S: (_point(arb(0)), arb(0), arb(0))}).value(plain(sp.diff(dF, S, i)))
-            if i < j and not _is_zero(c):
-                raise Uncertified(f"F'^({i})(0) = 0 is not exact in Arb")
-        aj = Analysis(prec, {}).value(sp.sympify(a)).hull()
-        if not aj.abs_lower() > 0:
-            raise Uncertified("leading coefficient not bounded away from 0")
-        cj = _mag(Iv(c.lo - aj * math.factorial(j), c.hi - aj * math.factorial(j)))[1] / abs(aj)
-        try:
-            rem = Analysis(prec, {S: (_iv(0.0, delta), arb(0), arb(0))}).value(plain(sp.diff(dF, S, j + 1)))
-        except (Uncertified, Undefined) as exc:
-            raise Uncertified(f"F'^({j + 1}) on [0, {_fmt(delta)}]: {exc}") from None
-        trunc = cj / math.factorial(j) + _mag(rem)[1] * arb(delta) / (math.factorial(j + 1) * abs(aj))
-        trunc = trunc / (1 - trunc)
+        trunc = _series_error(model.tiny_source, a, j, math.sqrt(2) * tiny * (1 + 1e-12), prec)
+        trunc = trunc / (1 - trunc)          # relative to F'(s), not to a s^j
         u = reg.u
         E_c = (1 + u) * (1 + reg.E_ir) * (1 + u) - 1
         E_a = arb(0) if _representable(sp.sympify(a), prec) else u + LITERAL_EXTRA[prec]
