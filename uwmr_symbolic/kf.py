@@ -14,7 +14,7 @@ from fractions import Fraction
 import sympy as sp
 
 from .interval import Interval
-from .limits import NoLimit, rational_poly
+from .limits import NoLimit, rational_parts
 from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
 from .certify import sign_theorems, sup_theorems
@@ -114,9 +114,10 @@ def _rational_critical(d, lo, hi):
     over Q of degree <= 4 (a higher one has no closed form worth offering,
     and SymPy's solveset would search it until the time limit): a FiniteSet,
     None (a factor could not be solved), or False (d is not rational)."""
-    poly = _numerator(d)
-    if poly is None:
+    parts = rational_parts(d, S)
+    if parts is None:
         return False
+    poly = parts[0]
     roots = set()
     for fac, _ in poly.factor_list()[1]:
         if fac.degree() > 4:
@@ -128,50 +129,6 @@ def _rational_critical(d, lo, hi):
             return None
         roots |= set(sol)
     return sp.FiniteSet(*roots)
-
-
-def _numerator(d) -> sp.Poly | None:
-    """A polynomial over Q vanishing wherever the rational d does, built term
-    by term in SymPy's polynomial arithmetic (together/cancel on the whole
-    sum expand it as an expression, which takes seconds at 16 terms); None
-    when a term is not rational over Q."""
-    num, den = None, None
-    for term in sp.Add.make_args(d):
-        n, m = sp.fraction(sp.together(term))
-        pn, pm = _poly(n), _poly(m)
-        if pn is None and n != 0 or pm is None:
-            return None
-        if pn is None:
-            continue
-        if num is None:
-            num, den = pn, pm
-        else:
-            num, den = num * pm + pn * den, den * pm
-            g = num.gcd(den)
-            num, den = num.exquo(g), den.exquo(g)
-    return num
-
-
-def _poly(e) -> sp.Poly | None:
-    """e as a polynomial in S over Q, built along e's tree with polynomial
-    arithmetic (Poly(e) would first expand e as an expression); None if e
-    is not one."""
-    if e == S:
-        return sp.Poly(S, S, domain=sp.QQ)
-    if e.is_Rational:
-        return sp.Poly(e, S, domain=sp.QQ)
-    if e.is_Add or e.is_Mul:
-        parts = [_poly(a) for a in e.args]
-        if any(q is None for q in parts):
-            return None
-        out = parts[0]
-        for q in parts[1:]:
-            out = out + q if e.is_Add else out * q
-        return out
-    if e.is_Pow and e.exp.is_Integer and e.exp >= 0:
-        base = _poly(e.base)
-        return None if base is None else base ** int(e.exp)
-    return None
 
 
 def _nesting(expr) -> int:

@@ -142,6 +142,44 @@ def rational_poly(expr, x) -> sp.Poly | None:
     return poly
 
 
+def poly_of(e, x) -> sp.Poly | None:
+    """e as a polynomial in x over Q, built along e's tree with polynomial
+    arithmetic (Poly(e) would first expand e as an expression, seconds on a
+    product of a dozen sums); None if e is not one."""
+    if e == x:
+        return sp.Poly(x, x, domain=sp.QQ)
+    if e.is_Rational:
+        return sp.Poly(e, x, domain=sp.QQ)
+    if e.is_Add or e.is_Mul:
+        parts = [poly_of(a, x) for a in e.args]
+        if any(q is None for q in parts):
+            return None
+        out = parts[0]
+        for q in parts[1:]:
+            out = out + q if e.is_Add else out * q
+        return out
+    if e.is_Pow and e.exp.is_Integer and e.exp >= 0:
+        base = poly_of(e.base, x)
+        return None if base is None else base ** int(e.exp)
+    return None
+
+
+def rational_parts(e, x) -> tuple[sp.Poly, sp.Poly] | None:
+    """(N, D) over Q, coprime, with e = N/D as rational functions of x,
+    summed term by term in polynomial arithmetic (what `cancel` computes,
+    without expanding e as an expression); None if e is not rational over Q."""
+    num, den = sp.Poly(0, x, domain=sp.QQ), sp.Poly(1, x, domain=sp.QQ)
+    for term in sp.Add.make_args(e):
+        n, m = sp.fraction(sp.together(term))
+        pn, pm = poly_of(n, x), poly_of(m, x)
+        if pn is None or pm is None or pm.is_zero:
+            return None
+        num, den = num * pm + pn * den, den * pm
+        g = num.gcd(den)
+        num, den = num.exquo(g), den.exquo(g)
+    return num, den
+
+
 def _polynomial_side(expr, x) -> int | None:
     """Sign of a polynomial p with rational coefficients and p(0) = 0 on
     (0, eps): the sign of its lowest nonzero coefficient; None otherwise."""

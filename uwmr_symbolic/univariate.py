@@ -31,7 +31,7 @@ import sympy as sp
 from flint import arb
 
 from .interval import Interval, IntervalFunction, Undefined
-from .limits import NoLimit, exact_sign, limit_right, rational_poly
+from .limits import NoLimit, exact_sign, limit_right, rational_parts, rational_poly
 from .verdict import Verdict, proved, refuted, unknown
 
 T = sp.Symbol("t", positive=True)       # t = 1/s on the unbounded part
@@ -190,7 +190,8 @@ def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
                   (1 / n.args[0]).count_ops() < n.args[0].count_ops(),
                   lambda n: sp.pi / 2 - sp.atan(sp.cancel(1 / n.args[0])))
     if not e.has(sp.Function, sp.Piecewise):
-        e = sp.cancel(e)
+        parts = rational_parts(e, T)
+        e = parts[0].as_expr() / parts[1].as_expr() if parts is not None else sp.cancel(e)
     return _checked_rewrite(expr.subs(s, 1 / T), e)
 
 
