@@ -133,6 +133,8 @@ _NEAR = sp.Rational(1, 64)
 
 def rational_poly(expr, x) -> sp.Poly | None:
     """expr as a nonzero polynomial in x with rational coefficients, or None."""
+    if expr.has(sp.Function, sp.Piecewise):      # never one; Poly would expand it first
+        return None
     try:
         poly = sp.Poly(expr, x)
     except (sp.PolynomialError, sp.GeneratorsError):
