@@ -201,7 +201,33 @@ def _t_power(expr) -> int:
 
 
 def _polish_tail(expr: sp.Expr) -> sp.Expr:
-    return use_log1p(stabilize(split_logs(prepare(expr)))).xreplace({1 / T: ST})
+    return absorb_t_powers(use_log1p(stabilize(split_logs(prepare(expr))))).xreplace({1 / T: ST})
+
+
+def absorb_t_powers(expr: sp.Expr, var=T) -> sp.Expr:
+    """Divide a product's negative power of t into its polynomial factors:
+    (2 - 3t)^2 / t^2 becomes (2/t - 3)^2, so that t^2, which underflows to 0
+    far out, is never formed and divided by (the 1/t left is s, computed
+    finite).  The same function for t > 0."""
+    def fix(node):
+        if not isinstance(node, sp.Mul):
+            return node
+        k = -_t_power(node)
+        if k <= 0:
+            return node
+        out = []
+        for f in sp.Mul.make_args(node):
+            base, ex = f.as_base_exp()
+            if base == var:
+                continue
+            if k > 0 and ex.is_Integer and ex > 0 and base.is_polynomial(var) and sp.degree(base, var) >= 1:
+                use = min(k, int(ex))
+                out.append(sp.expand(base / var) ** use * base ** (ex - use))
+                k -= use
+            else:
+                out.append(f)
+        return sp.Mul(*out) * var ** -k
+    return sp.bottom_up(expr, fix)
 
 
 def plain(expr: sp.Expr) -> sp.Expr:
