@@ -6,6 +6,7 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from uwmr_symbolic import cli
@@ -14,6 +15,7 @@ from uwmr_symbolic.verify import verify_design
 
 ROOT = Path(__file__).resolve().parent.parent
 D1 = ROOT / "designs/design1_jiang.py"
+D5 = ROOT / "designs/design5_rational.py"        # NOT VERIFIED (P3 refuted): needs --force
 pytestmark = [pytest.mark.slow, pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")]
 
 
@@ -22,14 +24,14 @@ def report():
     return verify_design(D1)
 
 
-def _corrupt(monkeypatch, backend, old, new, count=1):
+def _corrupt(monkeypatch, backend, old, new, count=1, stem=D1.stem):
     render = backend.render
 
     def bad(*args, **kwargs):
         files = render(*args, **kwargs)
         out = {}
         for name, text in files.items():
-            assert old in text or name != D1.stem + (".c" if backend is c_backend else ".py")
+            assert old in text or name != stem + (".c" if backend is c_backend else ".py")
             out[name] = text.replace(old, new, count)
         return out
     monkeypatch.setattr(backend, "render", bad)
@@ -96,3 +98,77 @@ def test_code_that_cannot_be_checked_is_not_written(report, tmp_path, monkeypatc
     with pytest.raises(CodegenInvalid, match="design1_jiang: the validation could not run: OSError: cannot load"):
         generate(D1, tmp_path / "d1", report=report)
     assert list(tmp_path.iterdir()) == []
+
+
+# --force lifts the refusal of an unverified design, never the validation gate
+
+
+@pytest.fixture(scope="module")
+def report5():
+    return verify_design(D5)
+
+
+def test_forced_unverified_design_is_validated_and_written(report5, tmp_path):
+    model, files = build(D5, force=True, report=report5)
+    assert not model.verified
+    res = validate_build(D5, model, files, report5)       # kf = None: no bound (10), the rest in full
+    assert [t.name for t in res.targets][:3] == ["C double", "C float", "Python"]
+    written = generate(D5, tmp_path / "d5", force=True, report=report5)
+    assert len(written) == 5 and all("NOT VERIFIED: P3 refuted" in p.read_text()[:400] for p in written)
+
+
+def test_forced_unverified_design_whose_c_disagrees_is_not_written(report5, tmp_path, monkeypatch, capsys):
+    # H = 2/(rho + 1)^2 of design 5 off by one part in 1e9, in the double variant only
+    _corrupt(monkeypatch, c_backend, "const double H = 2.0/", "const double H = 2.000000002/", stem=D5.stem)
+    out = tmp_path / "d5"
+    with pytest.raises(CodegenInvalid) as exc:
+        generate(D5, out, force=True, report=report5)
+    line = exc.value.reasons[0]
+    assert line.startswith("design5_rational: C double: error ") and "got v=" in line and "exact v=" in line
+    assert "\n" not in line
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+    assert "warning" not in capsys.readouterr().err          # refused, not a warning
+
+
+def test_forced_unverified_design_whose_python_disagrees_is_not_written(report5, tmp_path, monkeypatch):
+    _corrupt(monkeypatch, python_backend, "return 2.0/((rho*rho)", "return 2.5/((rho*rho)", stem=D5.stem)
+    with pytest.raises(CodegenInvalid, match=r"refused: design5_rational: Python: error .* above 1e-12"):
+        generate(D5, tmp_path / "d5", force=True, report=report5)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_forced_unverified_design_against_a_different_reference_is_not_written(report5, tmp_path, monkeypatch):
+    # the code is the one `make generate` writes; the law it is checked against says w is 1e-6 larger
+    from uwmr_symbolic.codegen import reference
+    table = reference.table
+
+    def scaled(law, x, cache=None):
+        ref = table(law, x, cache)
+        w = ref["w_hi"]
+        with np.errstate(over="ignore"):
+            return dict(ref, w_hi=np.where(np.abs(w) < 1e300, w * (1 + 1e-6), w))
+    monkeypatch.setattr(reference, "table", scaled)
+    with pytest.raises(CodegenInvalid, match="design5_rational: C double: error"):
+        generate(D5, tmp_path / "d5", force=True, report=report5)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_cli_force_exits_1_with_one_line_and_writes_nothing(tmp_path, monkeypatch, capsys):
+    _corrupt(monkeypatch, c_backend, "const double H = 2.0/", "const double H = 3.0/", stem=D5.stem)
+    out = tmp_path / "gen"
+    status = cli.main([str(D5), "--codegen", str(out), "--force", "--no-cache", "-q"])
+    err = capsys.readouterr().err
+    assert status == 1
+    lines = [ln for ln in err.splitlines() if "validation" in ln]
+    assert len(lines) == 1 and "design5_rational: C double: error" in lines[0], err
+    assert "Traceback" not in err and "warning" not in err and not out.exists()
+
+
+def test_module_entry_point_force_exits_1_and_writes_nothing(tmp_path, monkeypatch, capsys):
+    # `make generate` is `python -m uwmr_symbolic.codegen --force designs/*.py`
+    from uwmr_symbolic.codegen.__main__ import main
+    _corrupt(monkeypatch, c_backend, "const double H = 2.0/", "const double H = 3.0/", stem=D5.stem)
+    status = main(["--force", "--out", str(tmp_path), str(D5)])
+    err = capsys.readouterr().err
+    assert status == 1 and list(tmp_path.iterdir()) == []
+    assert "design5_rational: C double: error" in err and len(err.strip().splitlines()) == 1, err
