@@ -172,3 +172,16 @@ def test_module_entry_point_force_exits_1_and_writes_nothing(tmp_path, monkeypat
     err = capsys.readouterr().err
     assert status == 1 and list(tmp_path.iterdir()) == []
     assert "design5_rational: C double: error" in err and len(err.strip().splitlines()) == 1, err
+
+
+def test_cli_simulate_of_refused_code_is_one_line_not_a_traceback(tmp_path, monkeypatch, capsys):
+    # --simulate runs the generated code: refused code is reported, the verdict still printed
+    from uwmr_symbolic.simulation import controllers
+    monkeypatch.setattr(controllers, "_CACHE", {})
+    _corrupt(monkeypatch, c_backend, "const double H = 2.0/", "const double H = 3.0/", stem=D5.stem)
+    status = cli.main([str(D5), "--simulate", "--no-cache", "-q"])
+    out, err = capsys.readouterr()
+    assert status == 1 and "Traceback" not in err
+    lines = [ln for ln in err.splitlines() if "not simulated" in ln]
+    assert len(lines) == 1 and "design5_rational: C double: error" in lines[0], err
+    assert "P3" in out
