@@ -10,7 +10,8 @@ import numpy as np
 import pytest
 
 from uwmr_symbolic import cli
-from uwmr_symbolic.codegen import CodegenInvalid, build, c_backend, generate, python_backend, validate_build
+from uwmr_symbolic.codegen import (CodegenInvalid, CodegenRefused, build, c_backend, casadi_function, generate,
+                                    python_backend, validate_build)
 from uwmr_symbolic.verify import verify_design
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -185,3 +186,60 @@ def test_cli_simulate_of_refused_code_is_one_line_not_a_traceback(tmp_path, monk
     lines = [ln for ln in err.splitlines() if "not simulated" in ln]
     assert len(lines) == 1 and "design5_rational: C double: error" in lines[0], err
     assert "P3" in out
+
+
+# casadi_function: refused unless verified (or force=True), validated like generate's CasADi target
+
+
+def _wrong_casadi(monkeypatch, factor):
+    """The CasADi back-end made to return w * factor."""
+    import casadi as ca
+    from uwmr_symbolic.codegen import casadi_backend
+    orig = casadi_backend.casadi_function
+
+    def wrong(model, *args, **kwargs):
+        fn = orig(model, *args, **kwargs)
+        xs = fn.sx_in()
+        v, w = fn.call(xs)
+        return ca.Function(fn.name(), xs, [v, w * factor], fn.name_in(), fn.name_out())
+    monkeypatch.setattr(casadi_backend, "casadi_function", wrong)
+
+
+def test_casadi_function_is_validated_on_the_same_rows_as_generate(report):
+    from uwmr_symbolic.codegen import casadi_backend
+    from uwmr_symbolic.codegen.validate import validate_casadi
+    fn = casadi_function(D1, report)
+    assert fn.name_in() == ["e1", "e2", "e3", "vr", "wr", "k1", "k2", "lam"] and fn.name_out() == ["v", "w"]
+    model, files = build(D1, report=report)
+    full = {t.name: t for t in validate_build(D1, model, files, report).targets}["CasADi"]
+    kf = float(model.kf_upper)
+    alone = validate_casadi(report.design, model, casadi_backend.casadi_function(model), kf).targets
+    assert [t.name for t in alone] == ["CasADi"] and alone[0].rows == full.rows > 500
+    assert alone[0].worst == full.worst <= 1e-12
+
+
+def test_casadi_function_refuses_an_unverified_design_unless_forced(report5):
+    with pytest.raises(CodegenRefused) as exc:
+        casadi_function(D5, report5)
+    assert not isinstance(exc.value, CodegenInvalid) and exc.value.reasons[0].startswith("P3 refuted")
+    fn = casadi_function(D5, report5, force=True)
+    v, w = fn(0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)      # w = lam vr df/de2 = 2 e2/(rho + 1)^2
+    assert float(v) == 1.0 and float(w) == pytest.approx(0.5, rel=1e-15)
+
+
+@pytest.mark.parametrize("which", ["verified", "forced"])
+def test_casadi_function_that_disagrees_with_the_law_is_refused(which, report, report5, monkeypatch):
+    _wrong_casadi(monkeypatch, 1 + 1e-9)
+    path, rep, stem = (D1, report, "design1_jiang") if which == "verified" else (D5, report5, "design5_rational")
+    with pytest.raises(CodegenInvalid) as exc:
+        casadi_function(path, rep, force=which == "forced")
+    line = exc.value.reasons[0]
+    assert line.startswith(f"{stem}: CasADi: error ") and "got v=" in line and "exact v=" in line
+    assert "\n" not in line
+
+
+def test_generate_refuses_when_only_the_casadi_function_disagrees(report, tmp_path, monkeypatch):
+    _wrong_casadi(monkeypatch, 1.5)
+    with pytest.raises(CodegenInvalid, match="design1_jiang: CasADi: error"):
+        generate(D1, tmp_path / "d1", report=report)
+    assert list(tmp_path.iterdir()) == []

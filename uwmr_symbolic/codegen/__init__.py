@@ -1,7 +1,7 @@
 """Code generation: the control law (9) of a verified design as Python, C99 and CasADi.
 
     generate(design_path, out_dir=None, force=False, report=None) -> [Path]
-    casadi_function(design_path) -> casadi.Function
+    casadi_function(design_path, report=None, force=False) -> casadi.Function
 
 One back-end per language (`python_backend`, `c_backend`, `casadi_backend`),
 each with its own small printer (`printers`), a documented config dataclass
@@ -231,10 +231,36 @@ def generate(design_path, out_dir=None, force=False, report=None, validate=True)
     return written
 
 
-def casadi_function(design_path, report=None):
-    """control(e1,e2,e3,vr,wr,k1,k2,lam) -> (v, w) as a casadi.Function (SX)."""
+def casadi_function(design_path, report=None, force=False):
+    """control(e1,e2,e3,vr,wr,k1,k2,lam) -> (v, w) as a casadi.Function (SX).
+
+    Like `generate`: refuses (CodegenRefused(reasons)) unless P1..P8 are all
+    proved, force=True lifts that; `report` (from `verify.verify_design`)
+    avoids verifying again.  The function is then checked against the exact
+    law on the range it documents (max(|e1|, |e2|) <= FAR, the other inputs
+    <= 1e3; `validate.validate_casadi`, the same rows and checks as the
+    CasADi target of `generate`'s validation, bound (10) only for a verified
+    design); a disagreement raises CodegenInvalid with a one-line reason,
+    with force=True too.  A function CasADi lacks raises NotImplementedError."""
     from .casadi_backend import casadi_function as _cf
-    from ..design import load_design
-    design = load_design(design_path)
+    from .validate import ValidationFailed, validate_casadi
+    from ..verify import verify_design
+    if report is None:
+        report = verify_design(design_path)
+    reasons = not_verified_reasons(report)
+    if reasons and (not force or report.design is None):
+        raise CodegenRefused(reasons)
+    design = report.design
     model = build_model(design, Analysis(design), report)
-    return _cf(model)
+    model.reasons = reasons
+    fn = _cf(model)
+    kf = _kf_upper_double(model.kf_upper) if model.verified else None
+    try:
+        validate_casadi(design, model, fn, kf)
+    except ValidationFailed as exc:
+        raise CodegenInvalid(exc.line) from None
+    except Exception as exc:  # noqa: BLE001 - a function that could not be checked is not returned
+        first = (str(exc).splitlines() or [""])[0]
+        raise CodegenInvalid(f"{model.stem}: CasADi: the validation could not run: "
+                             f"{type(exc).__name__}: {first}") from None
+    return fn
