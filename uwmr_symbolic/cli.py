@@ -186,14 +186,22 @@ class Reports:
 
 def run_simulations(results, args, reports: Reports) -> int:
     """--simulate: attach result["simulation"]; 1 if a check failed."""
+    from .codegen import CodegenInvalid
     from .simulation import simulate_design
     refs = load_references(args.reference)
     status = 0
     for d in results:
         if d.get("error") is not None:
             continue
-        sim = simulate_design(d["design"], report=reports(d["design"]), monte_carlo=args.monte_carlo,
-                              seed=args.seed, references=refs or None, delay=args.delay)
+        try:
+            sim = simulate_design(d["design"], report=reports(d["design"]), monte_carlo=args.monte_carlo,
+                                  seed=args.seed, references=refs or None, delay=args.delay)
+        except CodegenInvalid as exc:
+            # the simulator runs the generated code, which the validation gate refused (--force or not)
+            print(f"{d['design']}: not simulated, the generated code failed its validation: {exc.reasons[0]}",
+                  file=sys.stderr)
+            status = 1
+            continue
         d["simulation"] = sim
         if not all(entry.get("ok", True) for entry in sim.values()):
             status = 1

@@ -1,7 +1,7 @@
 """Code generation: the control law (9) of a verified design as Python, C99 and CasADi.
 
     generate(design_path, out_dir=None, force=False, report=None) -> [Path]
-    casadi_function(design_path) -> casadi.Function
+    casadi_function(design_path, report=None, force=False) -> casadi.Function
 
 One back-end per language (`python_backend`, `c_backend`, `casadi_backend`),
 each with its own small printer (`printers`), a documented config dataclass
@@ -200,23 +200,21 @@ def generate(design_path, out_dir=None, force=False, report=None, validate=True)
     into place: a failure leaves out_dir as it was.  Before anything is
     written, every artifact is checked against the exact law
     (`validate.validate`); a failure raises CodegenInvalid (a CodegenRefused)
-    with a one-line reason and writes nothing.  `validate=False` skips the
-    check (tests of the writing machinery only)."""
+    with a one-line reason and writes nothing -- with force=True as well:
+    force only lifts the refusal of an unverified design (whose validation
+    skips bound (10), having no certified kf; status, finiteness and
+    accuracy must still pass).  `validate=False` skips the check (tests of
+    the writing machinery only)."""
     design_path = Path(design_path)
     if report is None:
         from ..verify import verify_design
         report = verify_design(design_path)
     model, files = build(design_path, force=force, report=report)
     if validate:
-        try:
-            validate_build(design_path, model, files, report)
-        except CodegenInvalid as exc:
-            if model.verified:
-                raise
-            # a NOT VERIFIED design (force=True): nothing was proved, every file says so;
-            # the disagreement is reported, the files are still written
-            print(f"warning: {exc.reasons[0]} (NOT VERIFIED design, written because of --force)",
-                  file=sys.stderr)
+        # the gate holds with force=True too: --force lifts the refusal of a design whose
+        # P1-P8 are not all proved, never the check that the code computes its law (for a
+        # NOT VERIFIED design only bound (10) is not checked: there is no certified kf)
+        validate_build(design_path, model, files, report)
     out = Path(out_dir) if out_dir is not None else Path("generated") / model.stem
     out.parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))
@@ -233,10 +231,36 @@ def generate(design_path, out_dir=None, force=False, report=None, validate=True)
     return written
 
 
-def casadi_function(design_path, report=None):
-    """control(e1,e2,e3,vr,wr,k1,k2,lam) -> (v, w) as a casadi.Function (SX)."""
+def casadi_function(design_path, report=None, force=False):
+    """control(e1,e2,e3,vr,wr,k1,k2,lam) -> (v, w) as a casadi.Function (SX).
+
+    Like `generate`: refuses (CodegenRefused(reasons)) unless P1..P8 are all
+    proved, force=True lifts that; `report` (from `verify.verify_design`)
+    avoids verifying again.  The function is then checked against the exact
+    law on the range it documents (max(|e1|, |e2|) <= FAR, the other inputs
+    <= 1e3; `validate.validate_casadi`, the same rows and checks as the
+    CasADi target of `generate`'s validation, bound (10) only for a verified
+    design); a disagreement raises CodegenInvalid with a one-line reason,
+    with force=True too.  A function CasADi lacks raises NotImplementedError."""
     from .casadi_backend import casadi_function as _cf
-    from ..design import load_design
-    design = load_design(design_path)
+    from .validate import ValidationFailed, validate_casadi
+    from ..verify import verify_design
+    if report is None:
+        report = verify_design(design_path)
+    reasons = not_verified_reasons(report)
+    if reasons and (not force or report.design is None):
+        raise CodegenRefused(reasons)
+    design = report.design
     model = build_model(design, Analysis(design), report)
-    return _cf(model)
+    model.reasons = reasons
+    fn = _cf(model)
+    kf = _kf_upper_double(model.kf_upper) if model.verified else None
+    try:
+        validate_casadi(design, model, fn, kf)
+    except ValidationFailed as exc:
+        raise CodegenInvalid(exc.line) from None
+    except Exception as exc:  # noqa: BLE001 - a function that could not be checked is not returned
+        first = (str(exc).splitlines() or [""])[0]
+        raise CodegenInvalid(f"{model.stem}: CasADi: the validation could not run: "
+                             f"{type(exc).__name__}: {first}") from None
+    return fn

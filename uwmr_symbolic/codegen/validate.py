@@ -27,7 +27,9 @@ not finite; the safe stop does not give v = w = 0; the error exceeds 1e-12
 verified design, bound (10) is violated by more than 4 ulps.  The first
 failing row raises `ValidationFailed` with one line naming the design, the
 target, the input and both values.  The CasADi function is checked on the
-range it documents (|e1|, |e2| <= FAR, the other inputs moderate).
+range it documents (|e1|, |e2| <= FAR, the other inputs moderate):
+`check_casadi`, also run alone by `validate_casadi` for
+`codegen.casadi_function`.
 
 The tests use the same functions (`check`, `sample_inputs`) on larger samples."""
 from __future__ import annotations
@@ -414,6 +416,47 @@ def _casadi_rows(x, far):
     return x[keep]
 
 
+def _law(design, stem):
+    try:
+        return reference.Law.of(design)
+    except NotImplementedError as exc:
+        raise ValidationFailed(f"{stem}: the exact law cannot be evaluated, so the code cannot be "
+                               f"validated ({exc})") from None
+
+
+def _nominal(design):
+    """(k1, k2, lam) of the design's first gain scenario (a default without one)."""
+    sc = next(iter(design.gains.values()), None) if design.gains else None
+    return tuple(float(sc[k]) for k in ("k1", "k2", "lam")) if sc else (0.25, 0.7, 0.3)
+
+
+def check_casadi(stem, fn, law, model: LawModel, xd, kf, cache=None) -> Target:
+    """The CasADi function `fn` on the rows of the double sample `xd` within
+    its documented range (`_casadi_rows`: max(|e1|, |e2|) <= FAR, the other
+    inputs <= 1e3), against the exact law (`check`, status 0 everywhere);
+    raises ValidationFailed or returns what was checked."""
+    xc = _casadi_rows(xd, model.thresholds["double"][1])
+    rc = _table(law, xc, {} if cache is None else cache, stem)
+    out = fn.map(len(xc))(*[xc[:, i][None, :] for i in range(8)])
+    v, w = np.asarray(out[0]).ravel(), np.asarray(out[1]).ravel()
+    worst = check(stem, "CasADi", xc, rc, v, w, np.zeros(len(xc), dtype=int), "double", kf)
+    return Target("CasADi", "double", len(xc), worst)
+
+
+def validate_casadi(design, model: LawModel, fn, kf: float | None, n_random: int = 2000,
+                    seed: int = 0) -> Result:
+    """Check a CasADi function of one design alone (`codegen.casadi_function`)
+    on the same double sample as `validate` (`check_casadi`); raises
+    ValidationFailed (one line) or returns what was checked."""
+    t0 = time.perf_counter()
+    stem = model.stem
+    law = _law(design, stem)
+    xd = sample_inputs(model, "double", _nominal(design), n_random, seed)
+    res = Result(stem, [check_casadi(stem, fn, law, model, xd, kf)])
+    res.seconds = time.perf_counter() - t0
+    return res
+
+
 def validate(design, model: LawModel, files: dict, kf: float | None, n_random: int = 2000,
              seed: int = 0, casadi=True) -> Result:
     """Check every artifact of one design (see the module doc); raises
@@ -421,13 +464,8 @@ def validate(design, model: LawModel, files: dict, kf: float | None, n_random: i
     from .harness import build_library
     t0 = time.perf_counter()
     stem = model.stem
-    try:
-        law = reference.Law.of(design)
-    except NotImplementedError as exc:
-        raise ValidationFailed(f"{stem}: the exact law cannot be evaluated, so the code cannot be "
-                               f"validated ({exc})") from None
-    sc = next(iter(design.gains.values()), None) if design.gains else None
-    nominal = tuple(float(sc[k]) for k in ("k1", "k2", "lam")) if sc else (0.25, 0.7, 0.3)
+    law = _law(design, stem)
+    nominal = _nominal(design)
     xd = sample_inputs(model, "double", nominal, n_random, seed)
     xf = sample_inputs(model, "float", nominal, n_random, seed + 1)
     cache = {}
@@ -490,12 +528,7 @@ def validate(design, model: LawModel, files: dict, kf: float | None, n_random: i
             fn = None      # no CasADi function exists for this design (casadi_function raises the same)
             res.targets.append(Target(f"CasADi: not available ({exc})", "double"))
     if casadi and fn is not None:
-        xc = _casadi_rows(xd, model.thresholds["double"][1])
-        rc = _table(law, xc, cache, stem)
-        out = fn.map(len(xc))(*[xc[:, i][None, :] for i in range(8)])
-        v, w = np.asarray(out[0]).ravel(), np.asarray(out[1]).ravel()
-        worst = check(stem, "CasADi", xc, rc, v, w, np.zeros(len(xc), dtype=int), "double", kf)
-        res.targets.append(Target("CasADi", "double", len(xc), worst))
+        res.targets.append(check_casadi(stem, fn, law, model, xd, kf, cache))
     res.seconds = time.perf_counter() - t0
     return res
 
