@@ -122,13 +122,11 @@ def test_series_at_zero_with_a_relative_next_term_of_order_s(tmp_path):
     _check_all(ROOT / "designs_codegen/c8_s_minus_log.py", tmp_path, rows, _law_rows([(0.0, 1e-40), (1e-13, 1e-13)]))
 
 
-@pytest.mark.xfail(strict=True, raises=AssertionError, reason=(
-    "found by make fuzz-codegen (Piecewise erf join): the tail form D(t) = (3 + e exp(-(3t - 2)^2/t^2))/2 "
-    "divides by tt*tt, which underflows to 0 for |e| > ~1e162 (float: ~1e23); the value is right "
-    "(exp(-inf) = 0) but -fsanitize=float-divide-by-zero stops; the fix belongs in codegen/law.py "
-    "(never form t^k)"))
 def test_piecewise_erf_join_tail_does_not_divide_by_zero(tmp_path):
-    """F = s^2 inside the unit circle, 3s/2 + (e sqrt(pi)/8) (erf(2s - 3) + erf(1)) - 1/2 outside
+    """Found by make fuzz-codegen: the tail form D(t) = (3 + e exp(-(3t - 2)^2/t^2))/2
+    divided by tt*tt, which underflows to 0 for |e| > ~1e162 (float ~1e23); now
+    (2 st - 3)^2 (`law.absorb_t_powers`).
+    F = s^2 inside the unit circle, 3s/2 + (e sqrt(pi)/8) (erf(2s - 3) + erf(1)) - 1/2 outside
     (an exact C^2 join of the fuzzer's grammar): the sanitizer build at |e| >= 1e162."""
     from codegen_fuzz_grammar import c2_join, design_source     # tests/ is on sys.path (rootdir conftest)
     from uwmr_symbolic.codegen.harness import build_executable, run_executable
