@@ -178,3 +178,20 @@ def test_first_violation_finds_a_broken_certificate(models):
     assert accuracy.first_violation(acc, x, ref, v, w, st, kf) is None
     tight = dataclasses.replace(acc, v=acc.v * 1e-6, w=acc.w * 1e-6, absolute=0.0)
     assert accuracy.first_violation(tight, x, ref, v, w, st, kf) is not None
+
+
+def test_generation_refuses_code_outside_its_certificate(models, tmp_path, monkeypatch):
+    """The validation checks the header's certified bounds: with bounds a
+    million times too small, generation is refused and nothing written."""
+    import dataclasses
+    from uwmr_symbolic.codegen import CodegenInvalid, generate
+    real = accuracy.certify
+
+    def too_tight(model, precision, cut):
+        acc = real(model, precision, cut)
+        return dataclasses.replace(acc, v=acc.v * 1e-6, w=acc.w * 1e-6, absolute=0.0)
+    monkeypatch.setattr(accuracy, "certify", too_tight)
+    rep, _ = models["design1_jiang"]
+    with pytest.raises(CodegenInvalid, match="outside the certified accuracy"):
+        generate(ROOT / "designs" / "design1_jiang.py", out_dir=tmp_path / "out", report=rep)
+    assert not (tmp_path / "out").exists()

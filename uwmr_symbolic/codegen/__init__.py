@@ -162,6 +162,7 @@ def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, st
     env = _env()
     ctx = _context(design, model)
     certified = [accuracy.certify(model, cfg.precision, cfg.sinc_cut) for cfg in (c_backend.DOUBLE, c_backend.FLOAT)]
+    model.accuracy = {acc.precision: acc for acc in certified}
     ctx["accuracy"] = accuracy.contract_lines(certified)
     ctx["accuracy_double"] = accuracy.contract_lines(certified[:1])
     files = {}

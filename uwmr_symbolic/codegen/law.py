@@ -90,6 +90,7 @@ class LawModel:
     general: sp.Expr | None = None         # non-radial: df/de2 in e1, e2
     notes: list = field(default_factory=list)      # numerical choices, for the banner
     thresholds: dict = field(default_factory=lambda: dict(THRESHOLDS))   # precision -> (TINY, FAR)
+    accuracy: dict = field(default_factory=dict)   # precision -> accuracy.Accuracy (set by codegen.build)
 
     @property
     def verified(self) -> bool:

@@ -401,6 +401,21 @@ def check(stem, target, x, ref, v, w, st, precision, kf=None):
     return float(err.max()) if len(err) else 0.0
 
 
+def check_certified(stem, target, model: LawModel, precision, x, ref, v, w, st, kf) -> None:
+    """The outputs against the certified accuracy of the header
+    (`accuracy.first_violation`): a violation means the error analysis is
+    wrong, and the code is not written."""
+    from .accuracy import first_violation
+    acc = model.accuracy.get(precision)
+    if acc is None or kf is None:
+        return
+    i = first_violation(acc, x, ref, v, w, st, kf)
+    if i is not None:
+        raise ValidationFailed(f"{stem}: {target}: outside the certified accuracy (v within {acc.v:.2g}, w within "
+                               f"{acc.w:.2g} of the bound (10) terms) at {_fmt(x[i])}: got v={v[i]:.17g}, "
+                               f"w={w[i]:.17g}; exact v={ref['v_hi'][i]:.17g}, w={ref['w_hi'][i]:.17g}")
+
+
 def load_module(path: Path, name: str):
     spec = importlib.util.spec_from_file_location(name, path)
     mod = importlib.util.module_from_spec(spec)
@@ -487,6 +502,7 @@ def validate(design, model: LawModel, files: dict, kf: float | None, n_random: i
             check_safe_stop(stem, target, xb, want, v, w, st)
             v, w, st = lib.run(x, f32=precision == "float")
             worst = check(stem, target, x, ref, v, w, st, precision, kf)
+            check_certified(stem, target, model, precision, x, ref, v, w, st, kf)
             res.targets.append(Target(target, precision, len(x), worst))
         modname = f"_uwmr_validate_{stem}_{id(files)}"
         try:
@@ -497,6 +513,7 @@ def validate(design, model: LawModel, files: dict, kf: float | None, n_random: i
             check(stem, "Python", xd, rd, v, w, st, "double", kf)
             v2, w2 = mod.control(*xd.T)
             worst = check(stem, "Python", xd, rd, v2, w2, st, "double", kf)
+            check_certified(stem, "Python", model, "double", xd, rd, v2, w2, st, kf)
             res.targets.append(Target("Python", "double", len(xd), worst))
             # the fast path on moderate rows, as one array and row by row
             mod_rows = np.flatnonzero(np.all((np.abs(xd) >= 1e-4) & (np.abs(xd) <= 1e4), axis=1))
