@@ -508,3 +508,92 @@ def sup_upper_theorem(e, bound, var):
         return _rule(K.sup_upper_by_sign, parts[0], expr=e, bound=bound)
     except NoProof:
         return None
+
+
+# ---------------------------------------------------------------- refutations
+
+_STEPS = [sp.Rational(1, 4 ** k) for k in (1, 2, 4, 7)]
+_JUMP_WIDTHS = [sp.Rational(1, 2), sp.Rational(1, 16), sp.Rational(1, 256)]
+
+
+def _exact_point(x, y):
+    """The exact point of a witness (its text, as the verdict gives it) in
+    the form the checker reads back, or None (a limit, oo, a float...)."""
+    try:
+        p = [sp.sympify(v) for v in (x, y)]
+        p = [K.parse(K._s(v)) for v in p]
+        if not all(K._number(v) not in (OO, -OO) for v in p):
+            return None
+    except (sp.SympifyError, K.KernelError, Undefined, TypeError, ValueError, SyntaxError):
+        return None
+    return tuple(p)
+
+
+def _witness_candidates(name, witness):
+    """Witness records to try for property `name`, from the search's witness."""
+    w = witness if isinstance(witness, dict) else {}
+    if name == "P2":
+        yield {"kind": "value", "points": [(sp.Integer(0), sp.Integer(0))]}
+    if name == "P4" and "point_a" in w and "point_b" in w:
+        a, b = _exact_point(*w["point_a"]), _exact_point(*w["point_b"])
+        if a is not None and b is not None:
+            yield {"kind": "circle", "points": [a, b]}
+    p = _exact_point(w.get("e1"), w.get("e2")) if "e1" in w and "e2" in w else None
+    if name == "P3" and p is not None:
+        yield {"kind": "value", "points": [p]}
+    at_origin = p is not None and p == (0, 0)
+    if name in ("P5", "P6") and p is not None and not at_origin:
+        yield {"kind": "slope", "points": [p]}
+        for d in _STEPS:
+            yield {"kind": "step", "points": [p, (p[0] + d, p[1])]}
+            yield {"kind": "step", "points": [(p[0] - d, p[1]), p]}
+    if str(w.get("e1")) == "0":          # at the origin (P8: e2 -> 0+ along e1 = 0)
+        for v in {"P1": ("e2", "e1"), "P7": ("e2",), "P8": ("e2",), "P5": ("e1",), "P6": ("e1",)}.get(name, ()):
+            yield {"kind": "origin_jump", "var": v}
+
+
+def _witness_theorems(f, record):
+    """Kernel theorems for one witness record (NoProof if the kernel refuses)."""
+    from .design_certificate import H, axis_derivative, witness_values
+    if record["kind"] != "origin_jump":
+        return [_rule(K.value_sign, value=v) for v in witness_values(record["kind"], f, record["points"])]
+    v = sp.Symbol(record["var"], real=True)
+    ends = [axis_derivative(f, v, side) for side in (1, -1)]
+    for w in _JUMP_WIDTHS:
+        try:
+            lims = [_rule(K.continuous_at_end, expr=e, var=H, c=0, width=w) for e in ends]
+        except NoProof:
+            continue
+        jump = K.parse(lims[0].claim.other) - K.parse(lims[1].claim.other)
+        return [*lims, _rule(K.value_sign, value=jump)]
+    raise NoProof("df/dv is not continuous up to the origin on either side")
+
+
+def refutation_theorems(name, verdict, f):
+    """A refuted property's witness, checked by the kernel: (theorems, the
+    witness record of the design certificate, "") for the first candidate
+    whose kernel theorems link to the property (`design_certificate.
+    link_refutation`), or (None, None, why) -- the refutation then rests on
+    the search's witness alone."""
+    from .design_certificate import CertificateError, link_refutation
+    why = "no witness of a kind the kernel checks"
+    deadline = time.process_time() + SECONDS
+    for record in _witness_candidates(name, verdict.witness):
+        if time.process_time() > deadline:
+            why = "the proposer's time budget is spent"
+            break
+        try:
+            theorems = _witness_theorems(f, record)
+            link_refutation(name, f, theorems, _encode_record(record))
+        except (NoProof, CertificateError, K.KernelError, Undefined, TypeError, ValueError) as exc:
+            why = f"{record['kind']}: {exc}"
+            continue
+        return theorems, _encode_record(record), ""
+    return None, None, why
+
+
+def _encode_record(record):
+    out = {k: v for k, v in record.items() if k != "points"}
+    if "points" in record:
+        out["points"] = [[K._s(c) for c in p] for p in record["points"]]
+    return out

@@ -32,10 +32,13 @@ from .profile import S
 
 FORMAT, VERSION = "uwmr-design-certificate", 1
 SEARCH_ONLY = "the whole argument (no kernel rules for it yet)"
+WITNESS_SEARCH = "the witness of the refutation (checked by the search's own high-precision arithmetic only)"
+H = sp.Symbol("h", positive=True)       # distance from the origin along an axis (kind "origin_jump")
 
 
 def build(report) -> dict:
     """The certificate of a verified `verify.Report` (any verdicts)."""
+    from .certify import refutation_theorems
     props = {}
     for name, v in report.properties.items():
         theorems = v.details.get("kernel") or []
@@ -45,6 +48,10 @@ def build(report) -> dict:
             "kernel": to_certificate(theorems) if theorems else None,
             "unchecked": list(v.details.get("unchecked", [SEARCH_ONLY])) if v.proved else [],
         }
+        if v.refuted:
+            theorems, witness, why = refutation_theorems(name, v, report.design.f)
+            props[name].update(kernel=to_certificate(theorems) if theorems else None, witness=witness,
+                               unchecked=[] if theorems else [f"{WITNESS_SEARCH} ({why})"])
     kf = report.kf
     if kf is not None and kf.exact is not None:
         props["kf"] = {"status": "proved", "reason": kf.reason, "exact": sp.srepr(kf.exact),
@@ -71,17 +78,19 @@ class PropertyCheck:
     assumptions: list = field(default_factory=list)
     unchecked: list = field(default_factory=list)
 
+    witness: str = ""           # refuted: what the kernel's conclusions show about f
+
     @property
     def kernel_checked(self) -> bool:
-        return self.status == "proved" and self.theorems > 0 and not self.unchecked
+        return self.status in ("proved", "refuted") and self.theorems > 0 and not self.unchecked
 
     def line(self) -> str:
-        if self.status != "proved":
+        if self.status not in ("proved", "refuted"):
             return f"{self.name}: {self.status} (nothing to check)"
-        head = (f"{self.name}: proved; {self.theorems} kernel theorem(s) re-checked"
-                f" (rests on {', '.join(self.assumptions)})" if self.theorems else f"{self.name}: proved")
+        head = (f"{self.name}: {self.status}; {self.theorems} kernel theorem(s) re-checked"
+                f" (rests on {', '.join(self.assumptions)})" if self.theorems else f"{self.name}: {self.status}")
         if not self.unchecked:
-            return head + "; kernel-checked"
+            return head + "; kernel-checked" + (f": {self.witness}" if self.witness else "")
         return head + "; still rests on the search for: " + "; ".join(self.unchecked)
 
 
@@ -186,6 +195,138 @@ def _link(name, f, theorems, exact=None) -> list[str]:
     return []
 
 
+# ---------------------------------------------------------------- refutations
+#
+# A refuted property's certificate holds a *witness record* {"kind": ...,
+# "points": [[x, y], ...] (srepr), "var": "e1" | "e2"} and kernel theorems.
+# The link below recomputes from f and the record the exact constants the
+# kernel's claims must be about, and checks that the signs claimed are the
+# negation the property needs.  Why each kind refutes (P_ = the property):
+#
+# value  f(p) for one exact point p.  P2: p = (0, 0) and f(p) != 0.  P3 (f > 0
+#        away from the origin): p != (0, 0) and f(p) <= 0.
+# circle f(q) - f(p) != 0 for rational p, q with |p| = |q|.  P4: if f were
+#        differentiable on the circle with e1 df/de2 - e2 df/de1 = 0 (the
+#        derivative of f along the circle), f would be constant on it.
+# slope  df/de1 (sympy.diff) at one exact point p = (x, y), x != 0, f without
+#        Piecewise, Max, Min or sign.  P5 needs df/de1 tanh(e1) > 0, i.e. the sign
+#        of df/de1 at p is sign(x): refuted by a sign 0 or -sign(x); P6
+#        (df/de1 = k e1 h, k > 0, 0 <= h <= 1) by the sign -sign(x).  Where
+#        df/de1 does not exist at p both properties fail anyway; where it
+#        exists, the derivative of the accepted constructs (the kernel's
+#        evaluator takes no other) is the value of SymPy's formula wherever that
+#        is defined ("sympy-diff").  Piecewise is excluded: a branch taken only
+#        at p (Eq conditions) has a derivative unrelated to f's.
+# step   f(q) - f(p) with p = (x1, y), q = (x2, y), x1 < x2 both > 0 or both
+#        < 0 (side = their sign): no derivative at all, so any f.  If P5
+#        held, g(t) = f(t, y) would be differentiable on [x1, x2] with g' of
+#        sign `side` (mean value theorem): f(q) - f(p) of sign 0 or -side
+#        refutes it; P6 (g' = k t h of sign 0 or side) is refuted by -side.
+# origin_jump  for v = e2 (or e1): E+(h) = df/dv at (0, h) (v = h, the other
+#        variable 0) and E-(h) = df/dv at (0, -h), h > 0, continuous on
+#        [0, w] with values L+, L- at 0 (`continuous_at_end`), and
+#        L+ - L- != 0.  If phi(t) = f(0, t) (f(t, 0) for e1) were
+#        differentiable near 0, the mean value theorem would give
+#        phi'(0) = L+ = L-.  So df/dv does not exist near the origin, or
+#        has no limit at it: v = e2 refutes P1 (df/de2 continuous), P7 (d2f/de2^2
+#        exists, so df/de2 does) and P8 (lim df/de2 = 0 as e2 -> 0 at e1 = 0);
+#        v = e1 refutes P1, P5 and P6 (both need df/de1 to exist everywhere).
+
+_SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
+_REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
+            "origin_jump": ("P1", "P5", "P6", "P7", "P8")}
+
+
+def _at(f, p):
+    return f.subs({E1: p[0], E2: p[1]})
+
+
+def axis_derivative(f, v, side):
+    """df/dv at distance h > 0 from the origin along the v axis, on the side
+    `side` (+1, -1), the other variable 0: an expression in H."""
+    other = E2 if v == E1 else E1
+    return sp.diff(f, v).subs({other: 0}).subs(v, side * H)
+
+
+def witness_values(kind, f, points) -> list:
+    """The exact constants whose signs the kernel must claim (kinds value,
+    circle, slope, step); the proposer uses this too."""
+    if kind == "value":
+        return [_at(f, points[0])]
+    if kind in ("circle", "step"):
+        return [_at(f, points[1]) - _at(f, points[0])]
+    if kind == "slope":
+        return [sp.diff(f, E1).subs({E1: points[0][0], E2: points[0][1]})]
+    raise CertificateError(f"unknown witness kind {kind!r}")
+
+
+def _sign(c) -> int:
+    from .kernel.core import KernelError, _const_sign
+    try:
+        return _const_sign(c)
+    except KernelError as exc:
+        raise CertificateError(f"witness: {exc}") from None
+
+
+def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
+    """Check that the kernel's conclusions refute property `name` of f (see
+    the table above); (what they show, whether the link used sympy.diff).
+    Raises CertificateError otherwise."""
+    if not isinstance(witness, dict) or witness.get("kind") not in _REFUTES:
+        raise CertificateError(f"{name}: no known witness kind")
+    kind = witness["kind"]
+    if name not in _REFUTES[kind]:
+        raise CertificateError(f"{name}: a witness of kind {kind!r} does not refute {name}")
+    claims = [t.claim for t in theorems]
+    bad = CertificateError(f"{name}: the kernel's conclusions are not the witness {kind!r} about this f")
+    if kind == "origin_jump":
+        v = {"e1": E1, "e2": E2}.get(witness.get("var"))
+        if v is None or name not in {E1: ("P1", "P5", "P6"), E2: ("P1", "P7", "P8")}[v]:
+            raise CertificateError(f"{name}: an origin jump of df/d{witness.get('var')} does not refute {name}")
+        ends = [axis_derivative(f, v, side) for side in (1, -1)]
+        if not (len(claims) == 3 and [(c.kind, c.expr, c.var, c.lo) for c in claims[:2]]
+                == [("limit", sp.srepr(e), sp.srepr(H), "Integer(0)") for e in ends]):
+            raise bad
+        jump = parse(claims[0].other) - parse(claims[1].other)
+        if not (claims[2].kind == "value_sign" and claims[2].expr == sp.srepr(jump) and claims[2].want != 0):
+            raise bad
+        return (f"df/d{v} -> {parse(claims[0].other)} and {parse(claims[1].other)} "
+                f"along the {v} axis on either side of the origin"), True
+    points = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
+    if kind == "slope" and f.has(*_SMOOTH_ONLY):
+        raise CertificateError(f"{name}: a slope witness needs an f without Piecewise, Max, Min or sign")
+    if len(points) != (2 if kind in ("circle", "step") else 1) or any(len(p) != 2 for p in points):
+        raise bad
+    values = witness_values(kind, f, points)
+    if not (len(claims) == 1 and claims[0].kind == "value_sign" and claims[0].expr == sp.srepr(values[0])):
+        raise bad
+    want = claims[0].want
+    p = points[0]
+    if kind == "value":
+        origin = _sign(p[0]) == 0 and _sign(p[1]) == 0
+        ok = (origin and want != 0) if name == "P2" else (not origin and want <= 0)
+        what = f"f{p} {'!= 0' if name == 'P2' else '<= 0'}"
+    elif kind == "circle":
+        q = points[1]
+        ok = (all(c.is_Rational for c in (*p, *q)) and p[0] ** 2 + p[1] ** 2 == q[0] ** 2 + q[1] ** 2
+              and want != 0)
+        what = f"f{q} != f{p} on the circle of radius {sp.sqrt(p[0] ** 2 + p[1] ** 2)}"
+    elif kind == "slope":
+        side = _sign(p[0])
+        ok = side != 0 and (want * side <= 0 if name == "P5" else want * side < 0)
+        what = f"df/de1{p} has sign {want}"
+    else:
+        q = points[1]
+        from .kernel.core import _lt
+        side = 1 if _lt(0, p[0]) else (-1 if _lt(q[0], 0) else 0)
+        ok = (p[1] == q[1] and _lt(p[0], q[0]) and side != 0
+              and (want * side <= 0 if name == "P5" else want * side < 0))
+        what = f"f{q} - f{p} has sign {want}"
+    if not ok:
+        raise CertificateError(f"{name}: the kernel's claim ({what}) does not refute {name}")
+    return what, kind == "slope"
+
+
 def check(data) -> list[PropertyCheck]:
     """Re-check a design certificate (a dict or JSON text).  Raises
     CertificateError naming the first property or step that fails."""
@@ -213,12 +354,19 @@ def check(data) -> list[PropertyCheck]:
                     raise CertificateError(f"{name}: {exc}") from None
                 pc.theorems = len(theorems)
                 pc.assumptions = sorted(set().union(*[t.assumptions for t in theorems]))
-                exact = parse(entry["exact"]) if name == "kf" else None
-                pc.unchecked += _link(name, f, theorems, exact)
-                if name not in ("P2", "P4"):        # the link differentiates F itself
-                    pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
-            elif pc.status == "proved" and not pc.unchecked:
-                raise CertificateError(f"{name}: proved with neither kernel theorems nor unchecked facts")
+                if pc.status == "refuted":
+                    pc.witness, diff = link_refutation(name, f, theorems, entry["witness"])
+                    if diff:                        # the link differentiates f itself
+                        pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
+                elif pc.status == "proved":
+                    exact = parse(entry["exact"]) if name == "kf" else None
+                    pc.unchecked += _link(name, f, theorems, exact)
+                    if name not in ("P2", "P4"):        # the link differentiates F itself
+                        pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
+                else:
+                    raise CertificateError(f"{name}: kernel theorems for a verdict {pc.status!r}")
+            elif pc.status in ("proved", "refuted") and not pc.unchecked:
+                raise CertificateError(f"{name}: {pc.status} with neither kernel theorems nor unchecked facts")
             out.append(pc)
         p4 = next((c for c in out if c.name == "P4"), None)
         if p4 is not None and p4.kernel_checked:        # the reduction is the identity P4 rests on

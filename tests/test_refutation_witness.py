@@ -1,0 +1,166 @@
+"""Refuted verdicts in design certificates (issue 9): the kernel re-checks
+the witness of a refutation, and the link (`design_certificate.
+link_refutation`) checks that the kernel's claim is exactly the negation the
+property needs about this f at that point.
+
+Hand-made f, values by hand:
+* f = e1^2 + e2^2 - 1: f(0, 0) = -1 != 0 (P2 fails); f(1/2, 0) = -3/4 <= 0
+  (P3 fails); f(2, 0) = 3 > 0 (no refutation); df/de1 = 2 e1.
+* g = 1 - e1^2 (not radial): df/de1(1, 0) = -2 < 0 (P5, P6 fail);
+  g(3/5, 4/5) = 16/25 != g(1, 0) = 0 on the unit circle (P4 fails);
+  g(1, 0) - g(1/2, 0) = -3/4 < 0 with 0 < 1/2 < 1 (P5, P6 fail).
+* n = sqrt(e1^2 + e2^2): df/de2(0, h) = 1, df/de2(0, -h) = -1 for h > 0
+  (P1, P7, P8 fail at the origin).
+"""
+import copy
+import json
+
+import pytest
+import sympy as sp
+
+from uwmr_symbolic import design_certificate as DC, e1, e2
+from uwmr_symbolic.certify import refutation_theorems
+from uwmr_symbolic.kernel import core as K
+from uwmr_symbolic.kernel.certificate import to_certificate
+from uwmr_symbolic.verdict import refuted
+
+F = e1 ** 2 + e2 ** 2 - 1
+G = 1 - e1 ** 2
+N = sp.sqrt(e1 ** 2 + e2 ** 2)
+
+
+def cert(f, name, theorems, record):
+    """A design certificate with one refuted property."""
+    return {"format": DC.FORMAT, "version": DC.VERSION,
+            "design": {"name": "t", "file": "t.py", "f": sp.srepr(f)},
+            "properties": {name: {"status": "refuted", "reason": "", "kernel": to_certificate(theorems),
+                                  "witness": record, "unchecked": []}}}
+
+
+def proposed(name, f, witness):
+    theorems, record, why = refutation_theorems(name, refuted("", witness), f)
+    assert theorems is not None, why
+    return cert(f, name, theorems, record)
+
+
+def checked(data):
+    (pc,) = DC.check(json.dumps(data))
+    return pc
+
+
+def test_value_witnesses_of_p2_and_p3():
+    pc = checked(proposed("P2", F, {"e1": "0", "e2": "0", "f": "-1"}))
+    assert pc.kernel_checked and pc.witness == "f(0, 0) != 0" and pc.assumptions == ["arb", "sympy-core"]
+    data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    assert data["properties"]["P3"]["witness"] == {"kind": "value", "points": [["Rational(1, 2)", "Integer(0)"]]}
+    assert checked(data).line() == ("P3: refuted; 1 kernel theorem(s) re-checked (rests on arb, sympy-core); "
+                                    "kernel-checked: f(1/2, 0) <= 0")
+
+
+def test_moved_point_or_flipped_sign_is_rejected():
+    data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    moved = copy.deepcopy(data)
+    moved["properties"]["P3"]["witness"]["points"][0][0] = "Rational(1, 3)"     # f(1/3, 0) = -8/9: another constant
+    with pytest.raises(DC.CertificateError, match="P3: the kernel's conclusions are not the witness 'value'"):
+        DC.check(moved)
+    flipped = copy.deepcopy(data)
+    flipped["properties"]["P3"]["kernel"]["theorems"][0]["claim"]["want"] = 1
+    with pytest.raises(DC.CertificateError, match="P3: theorem 0"):
+        DC.check(flipped)
+    # a true kernel claim that is no refutation: f(2, 0) = 3 > 0
+    two = (sp.Integer(2), sp.Integer(0))
+    good = cert(F, "P3", [K.value_sign(value=F.subs({e1: 2, e2: 0}))],
+                {"kind": "value", "points": [[sp.srepr(c) for c in two]]})
+    with pytest.raises(DC.CertificateError, match=r"P3: the kernel's claim \(f\(2, 0\) <= 0\) does not refute P3"):
+        DC.check(good)
+    # P2 at a point other than the origin; P3 at the origin
+    at_half = copy.deepcopy(data)
+    at_half["properties"]["P2"] = at_half["properties"].pop("P3")
+    with pytest.raises(DC.CertificateError, match="P2: the kernel's claim"):
+        DC.check(at_half)
+    origin = proposed("P2", F, {})
+    origin["properties"]["P3"] = origin["properties"].pop("P2")
+    with pytest.raises(DC.CertificateError, match="P3: the kernel's claim"):
+        DC.check(origin)
+
+
+def test_circle_witness_of_p4():
+    data = proposed("P4", G, {"point_a": ["1", "0"], "point_b": ["3/5", "4/5"]})
+    assert checked(data).witness == "f(3/5, 4/5) != f(1, 0) on the circle of radius 1"
+    off = copy.deepcopy(data)
+    off["properties"]["P4"]["witness"]["points"][1] = ["Rational(4, 5)", "Rational(3, 5)"]   # g = 9/25 there
+    with pytest.raises(DC.CertificateError, match="P4: the kernel's conclusions are not the witness 'circle'"):
+        DC.check(off)
+    off["properties"]["P4"]["witness"]["points"][1] = ["Rational(3, 5)", "Rational(3, 5)"]   # same g, off the circle
+    with pytest.raises(DC.CertificateError, match=r"P4: the kernel's claim \(f\(3/5, 3/5\) != f\(1, 0\) on the "
+                                                  r"circle of radius 1\) does not refute P4"):
+        DC.check(off)
+    # both points moved consistently, kernel claim remade: the link still wants one circle
+    p, q = (sp.Integer(1), sp.Integer(0)), (sp.Rational(1, 2), sp.Integer(0))
+    val = G.subs({e1: q[0], e2: q[1]}) - G.subs({e1: p[0], e2: p[1]})
+    bad = cert(G, "P4", [K.value_sign(value=val)], {"kind": "circle", "points": [[sp.srepr(c) for c in x] for x in (p, q)]})
+    with pytest.raises(DC.CertificateError, match="does not refute P4"):
+        DC.check(bad)
+
+
+def test_slope_and_step_witnesses_of_p5_and_p6():
+    for name in ("P5", "P6"):
+        data = proposed(name, G, {"e1": "1", "e2": "0"})
+        pc = checked(data)
+        assert pc.kernel_checked and pc.witness == "df/de1(1, 0) has sign -1" and "sympy-diff" in pc.assumptions
+    # df/de1 = 2 e1 > 0 at (1, 0) for F: no refutation
+    bad = cert(F, "P5", [K.value_sign(value=sp.Integer(2))], {"kind": "slope", "points": [["Integer(1)", "Integer(0)"]]})
+    with pytest.raises(DC.CertificateError, match="does not refute P5"):
+        DC.check(bad)
+    # on the other side of the axis df/de1 < 0 is what P5 needs: (-1, 0) for F
+    bad = cert(F, "P5", [K.value_sign(value=sp.Integer(-2))], {"kind": "slope", "points": [["Integer(-1)", "Integer(0)"]]})
+    with pytest.raises(DC.CertificateError, match="does not refute P5"):
+        DC.check(bad)
+    # a Piecewise f: no slope witness (a branch taken at one point only has an unrelated derivative)
+    pw = sp.Piecewise((2 - 5 * (e1 - 1), sp.Eq(e1, 1)), (1 + e1, True))       # f = 1 + e1, continuous
+    bad = cert(pw, "P5", [K.value_sign(value=sp.Integer(-5))], {"kind": "slope", "points": [["Integer(1)", "Integer(0)"]]})
+    with pytest.raises(DC.CertificateError, match="slope witness needs an f without Piecewise"):
+        DC.check(bad)
+    # step: g(1, 0) - g(1/2, 0) = -3/4 with 0 < 1/2 < 1
+    step = lambda p, q, g=G: cert(g, "P6", [K.value_sign(value=g.subs({e1: q[0], e2: q[1]}) - g.subs({e1: p[0], e2: p[1]}))],  # noqa: E731
+                                  {"kind": "step", "points": [[sp.srepr(sp.sympify(c)) for c in x] for x in (p, q)]})
+    assert checked(step((sp.Rational(1, 2), 0), (1, 0))).witness == "f(1, 0) - f(1/2, 0) has sign -1"
+    with pytest.raises(DC.CertificateError, match="does not refute P6"):
+        DC.check(step((-1, 0), (1, 0)))          # across e1 = 0: g(1) - g(-1) = 0 says nothing
+    with pytest.raises(DC.CertificateError, match="does not refute P6"):
+        DC.check(step((-1, 0), (sp.Rational(-1, 2), 0), F))   # F decreases for e1 < 0: what P6 needs there
+    assert checked(step((-1, 0), (sp.Rational(-1, 2), 0))).witness == "f(-1/2, 0) - f(-1, 0) has sign 1"
+    with pytest.raises(DC.CertificateError, match="does not refute P6"):
+        DC.check(step((sp.Rational(1, 2), 0), (1, 1)))     # not on one horizontal line
+
+
+def test_origin_jump_witness():
+    for name in ("P1", "P7", "P8"):
+        pc = checked(proposed(name, N, {"e1": "0", "e2": "0"}))
+        assert pc.kernel_checked and pc.theorems == 3
+        assert pc.witness == "df/de2 -> 1 and -1 along the e2 axis on either side of the origin"
+    data = proposed("P5", N, {"e1": "0", "e2": "0"})
+    assert data["properties"]["P5"]["witness"] == {"kind": "origin_jump", "var": "e1"}
+    assert checked(data).kernel_checked
+    wrong = copy.deepcopy(data)
+    wrong["properties"]["P8"] = wrong["properties"].pop("P5")       # a jump of df/de1 says nothing about P8
+    with pytest.raises(DC.CertificateError, match="P8: an origin jump of df/de1 does not refute P8"):
+        DC.check(wrong)
+    # f = e1^2 + e2^2 - 1 has no jump: no witness is found, the refutation would rest on the search
+    theorems, record, why = refutation_theorems("P8", refuted("", {"e1": "0", "e2": "-> 0+"}), F)
+    assert theorems is None and record is None and "origin_jump" in why
+
+
+def test_unknown_kind_and_unlinked_property_are_rejected():
+    data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    data["properties"]["P3"]["witness"]["kind"] = "guess"
+    with pytest.raises(DC.CertificateError, match="P3: no known witness kind"):
+        DC.check(data)
+    data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    data["properties"]["P5"] = data["properties"].pop("P3")
+    with pytest.raises(DC.CertificateError, match="P5: a witness of kind 'value' does not refute P5"):
+        DC.check(data)
+    data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    data["properties"]["P3"]["kernel"], data["properties"]["P3"]["unchecked"] = None, []
+    with pytest.raises(DC.CertificateError, match="P3: refuted with neither kernel theorems nor unchecked facts"):
+        DC.check(data)
