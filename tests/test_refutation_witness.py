@@ -119,7 +119,7 @@ def test_slope_and_step_witnesses_of_p5_and_p6():
     # a Piecewise f: no slope witness (a branch taken at one point only has an unrelated derivative)
     pw = sp.Piecewise((2 - 5 * (e1 - 1), sp.Eq(e1, 1)), (1 + e1, True))       # f = 1 + e1, continuous
     bad = cert(pw, "P5", [K.value_sign(value=sp.Integer(-5))], {"kind": "slope", "points": [["Integer(1)", "Integer(0)"]]})
-    with pytest.raises(DC.CertificateError, match="slope witness needs an f without Piecewise"):
+    with pytest.raises(DC.CertificateError, match="a slope witness needs an f without Piecewise"):
         DC.check(bad)
     # step: g(1, 0) - g(1/2, 0) = -3/4 with 0 < 1/2 < 1
     step = lambda p, q, g=G: cert(g, "P6", [K.value_sign(value=g.subs({e1: q[0], e2: q[1]}) - g.subs({e1: p[0], e2: p[1]}))],  # noqa: E731
@@ -146,6 +146,12 @@ def test_origin_jump_witness():
     wrong["properties"]["P8"] = wrong["properties"].pop("P5")       # a jump of df/de1 says nothing about P8
     with pytest.raises(DC.CertificateError, match="P8: an origin jump of df/de1 does not refute P8"):
         DC.check(wrong)
+    # the same for f written with a Piecewise: refused (no derivative witness for Piecewise f)
+    pw = sp.Piecewise((N, e1 > -1), (N + 1, True))        # = N near the origin
+    bad = copy.deepcopy(data)
+    bad["design"]["f"] = sp.srepr(pw)
+    with pytest.raises(DC.CertificateError, match="P5: a origin_jump witness needs an f without Piecewise"):
+        DC.check(bad)
     # f = e1^2 + e2^2 - 1 has no jump: no witness is found, the refutation would rest on the search
     theorems, record, why = refutation_theorems("P8", refuted("", {"e1": "0", "e2": "-> 0+"}), F)
     assert theorems is None and record is None and "origin_jump" in why

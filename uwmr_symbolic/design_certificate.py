@@ -231,6 +231,7 @@ def _link(name, f, theorems, exact=None) -> list[str]:
 #        has no limit at it: v = e2 refutes P1 (df/de2 continuous), P7 (d2f/de2^2
 #        exists, so df/de2 does) and P8 (lim df/de2 = 0 as e2 -> 0 at e1 = 0);
 #        v = e1 refutes P1, P5 and P6 (both need df/de1 to exist everywhere).
+#        Like slope, refused for f with Piecewise, Max, Min or sign.
 
 _SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
 _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
@@ -279,6 +280,8 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         raise CertificateError(f"{name}: a witness of kind {kind!r} does not refute {name}")
     claims = [t.claim for t in theorems]
     bad = CertificateError(f"{name}: the kernel's conclusions are not the witness {kind!r} about this f")
+    if kind in ("slope", "origin_jump") and f.has(*_SMOOTH_ONLY):
+        raise CertificateError(f"{name}: a {kind} witness needs an f without Piecewise, Max, Min or sign")
     if kind == "origin_jump":
         v = {"e1": E1, "e2": E2}.get(witness.get("var"))
         if v is None or name not in {E1: ("P1", "P5", "P6"), E2: ("P1", "P7", "P8")}[v]:
@@ -293,8 +296,6 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         return (f"df/d{v} -> {parse(claims[0].other)} and {parse(claims[1].other)} "
                 f"along the {v} axis on either side of the origin"), True
     points = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
-    if kind == "slope" and f.has(*_SMOOTH_ONLY):
-        raise CertificateError(f"{name}: a slope witness needs an f without Piecewise, Max, Min or sign")
     if len(points) != (2 if kind in ("circle", "step") else 1) or any(len(p) != 2 for p in points):
         raise bad
     values = witness_values(kind, f, points)
