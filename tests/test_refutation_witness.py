@@ -170,3 +170,43 @@ def test_unknown_kind_and_unlinked_property_are_rejected():
     data["properties"]["P3"]["kernel"], data["properties"]["P3"]["unchecked"] = None, []
     with pytest.raises(DC.CertificateError, match="P3: refuted with neither kernel theorems nor unchecked facts"):
         DC.check(data)
+
+
+B = 1 - 1 / (1 + e1 ** 2 + e2 ** 2)        # f -> 1 as |e| -> oo: B <= 2 on every ray
+Q = (e1 ** 2 + e2 ** 2) ** 2                # df/de2(0, h) = 4 h^3 -> oo; df/de1(h, 0)/h = 4 h^2 -> oo
+
+
+def test_bounded_ray_witness_of_p3():
+    data = proposed("P3", B, {"direction": "every", "limit": "1"})
+    assert data["properties"]["P3"]["witness"] == {"kind": "bounded", "direction": ["Integer(1)", "Integer(0)"]}
+    assert checked(data).witness == "f(h, 0) <= 2 for all h > 0"
+    data = proposed("P3", B, {"direction": [-1, 2], "limit": "1"})
+    assert checked(data).witness == "f(-h, 2*h) <= 2 for all h > 0"
+    zero = copy.deepcopy(data)
+    zero["properties"]["P3"]["witness"]["direction"] = ["Integer(0)", "Integer(0)"]
+    with pytest.raises(DC.CertificateError, match="P3: the kernel's conclusions are not the witness 'bounded'"):
+        DC.check(zero)
+    other = copy.deepcopy(data)
+    other["properties"]["P3"]["witness"]["direction"] = ["Integer(1)", "Integer(0)"]     # another ray
+    with pytest.raises(DC.CertificateError, match="P3: the kernel's conclusions are not the witness 'bounded'"):
+        DC.check(other)
+    # Q is unbounded on the ray: no witness is found
+    theorems, _, why = refutation_theorems("P3", refuted("", {"direction": "every", "limit": "1"}), Q)
+    assert theorems is None and "bounded" in why
+
+
+def test_unbounded_witness_of_p1_and_p6():
+    pc = checked(proposed("P1", Q, {"s": "oo", "limit": "oo"}))
+    assert pc.kernel_checked and pc.witness == "df/de2(0, h) -> oo as h -> oo" and "sympy-diff" in pc.assumptions
+    data = proposed("P6", Q, {"s": "oo", "limit": "oo"})
+    assert checked(data).witness == "df/de1(h, 0)/h -> oo as h -> oo"
+    swapped = copy.deepcopy(data)
+    swapped["properties"]["P1"] = swapped["properties"].pop("P6")
+    with pytest.raises(DC.CertificateError, match="P1: a divergence along the e1 axis does not refute P1"):
+        DC.check(swapped)
+    swapped["properties"]["P1"]["witness"]["var"] = "e2"      # df/de1(h, 0)/h is not df/de2(0, h)
+    with pytest.raises(DC.CertificateError, match="P1: the kernel's conclusions are not the witness 'unbounded'"):
+        DC.check(swapped)
+    # B' is bounded: no witness
+    theorems, _, why = refutation_theorems("P1", refuted("", {"s": "oo", "limit": "oo"}), B)
+    assert theorems is None and "unbounded" in why

@@ -547,6 +547,17 @@ def _witness_candidates(name, witness):
         for d in _STEPS:
             yield {"kind": "step", "points": [p, (p[0] + d, p[1])]}
             yield {"kind": "step", "points": [(p[0] - d, p[1]), p]}
+    if name == "P3" and "limit" in w and "direction" in w:     # f -> a finite limit along rays
+        d = (sp.Integer(1), sp.Integer(0)) if w["direction"] == "every" else _exact_point(*w["direction"])
+        try:
+            lim = sp.sympify(w["limit"])
+        except (sp.SympifyError, TypeError, SyntaxError):
+            lim = None
+        if d is not None and lim is not None and lim.is_real and lim.is_finite and not lim.has(sp.Float):
+            for m in (lim + 1, lim):
+                yield {"kind": "bounded", "direction": d, "bound": m}
+    if name in ("P1", "P6") and str(w.get("limit")) == "oo":   # kf, or F'(s)/s, unbounded
+        yield {"kind": "unbounded", "var": "e2" if name == "P1" else "e1"}
     if str(w.get("e1")) == "0":          # at the origin (P8: e2 -> 0+ along e1 = 0)
         for v in {"P1": ("e2", "e1"), "P7": ("e2",), "P8": ("e2",), "P5": ("e1",), "P6": ("e1",)}.get(name, ()):
             yield {"kind": "origin_jump", "var": v}
@@ -554,7 +565,17 @@ def _witness_candidates(name, witness):
 
 def _witness_theorems(f, record):
     """Kernel theorems for one witness record (NoProof if the kernel refuses)."""
-    from .design_certificate import H, axis_derivative, witness_values
+    from .design_certificate import H, along_ray, axis_derivative, growing, witness_values
+    if record["kind"] == "bounded":
+        th = sup_upper_theorem(along_ray(f, record["direction"]), record["bound"], H)
+        if th is None:
+            raise NoProof(f"f <= {record['bound']} along the ray not shown")
+        return [th]
+    if record["kind"] == "unbounded":
+        out = growth_theorems(growing(f, sp.Symbol(record["var"], real=True)), H)
+        if not out:
+            raise NoProof("no growth bound found")
+        return out
     if record["kind"] != "origin_jump":
         return [_rule(K.value_sign, value=v) for v in witness_values(record["kind"], f, record["points"])]
     v = sp.Symbol(record["var"], real=True)
@@ -593,7 +614,9 @@ def refutation_theorems(name, verdict, f):
 
 
 def _encode_record(record):
-    out = {k: v for k, v in record.items() if k != "points"}
+    out = {k: v for k, v in record.items() if k not in ("points", "direction", "bound")}
     if "points" in record:
         out["points"] = [[K._s(c) for c in p] for p in record["points"]]
+    if "direction" in record:
+        out["direction"] = [K._s(c) for c in record["direction"]]
     return out

@@ -232,10 +232,16 @@ def _link(name, f, theorems, exact=None) -> list[str]:
 #        exists, so df/de2 does) and P8 (lim df/de2 = 0 as e2 -> 0 at e1 = 0);
 #        v = e1 refutes P1, P5 and P6 (both need df/de1 to exist everywhere).
 #        Like slope, refused for f with Piecewise, Max, Min or sign.
+# bounded  f(h dx, h dy) <= M for all h > 0 (`sup_upper`, M finite), (dx, dy)
+#        != (0, 0): f does not tend to oo along that ray, so P3 fails.
+# unbounded  E(h) -> +oo as h -> oo (`diverges_by_growth`) for E = df/de2 at
+#        (0, h) (var e2): |df/de2| has no finite bound kf, P1 fails; or for
+#        E = df/de1 at (h, 0), divided by h (var e1): P6's df/de1 = k e1 h
+#        with 0 <= h <= 1 would give E <= k.  f without Piecewise, Max, Min, sign.
 
 _SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
 _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
-            "origin_jump": ("P1", "P5", "P6", "P7", "P8")}
+            "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P6")}
 
 
 def _at(f, p):
@@ -247,6 +253,17 @@ def axis_derivative(f, v, side):
     `side` (+1, -1), the other variable 0: an expression in H."""
     other = E2 if v == E1 else E1
     return sp.diff(f, v).subs({other: 0}).subs(v, side * H)
+
+
+def along_ray(f, direction):
+    """f(h dx, h dy) for h > 0: an expression in H."""
+    return f.subs({E1: direction[0] * H, E2: direction[1] * H}, simultaneous=True)
+
+
+def growing(f, v):
+    """The expression whose divergence refutes P1 (v = e2: df/de2 at (0, h))
+    or P6 (v = e1: df/de1 at (h, 0), divided by h)."""
+    return axis_derivative(f, v, 1) if v == E2 else axis_derivative(f, v, 1) / H
 
 
 def witness_values(kind, f, points) -> list:
@@ -280,7 +297,7 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         raise CertificateError(f"{name}: a witness of kind {kind!r} does not refute {name}")
     claims = [t.claim for t in theorems]
     bad = CertificateError(f"{name}: the kernel's conclusions are not the witness {kind!r} about this f")
-    if kind in ("slope", "origin_jump") and f.has(*_SMOOTH_ONLY):
+    if kind in ("slope", "origin_jump", "unbounded") and f.has(*_SMOOTH_ONLY):
         raise CertificateError(f"{name}: a {kind} witness needs an f without Piecewise, Max, Min or sign")
     if kind == "origin_jump":
         v = {"e1": E1, "e2": E2}.get(witness.get("var"))
@@ -295,6 +312,24 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
             raise bad
         return (f"df/d{v} -> {parse(claims[0].other)} and {parse(claims[1].other)} "
                 f"along the {v} axis on either side of the origin"), True
+    on_h = (sp.srepr(H), "Integer(0)", "oo", True)
+    if kind == "bounded":
+        d = tuple(parse(c, design=True) for c in witness.get("direction", ()))
+        if len(d) != 2 or (_sign(d[0]) == 0 and _sign(d[1]) == 0):
+            raise bad
+        if not (len(claims) == 1 and claims[0].kind == "sup_upper" and claims[0].expr == sp.srepr(along_ray(f, d))
+                and (claims[0].var, claims[0].lo, claims[0].hi, claims[0].lo_open) == on_h
+                and parse(claims[0].other) not in (sp.oo, -sp.oo)):
+            raise bad
+        return f"f({d[0] * H}, {d[1] * H}) <= {parse(claims[0].other)} for all h > 0", False
+    if kind == "unbounded":
+        v = {"e1": E1, "e2": E2}.get(witness.get("var"))
+        if v is None or name != {E1: "P6", E2: "P1"}[v]:
+            raise CertificateError(f"{name}: a divergence along the {witness.get('var')} axis does not refute {name}")
+        if not (len(claims) == 1 and claims[0].kind == "diverges" and claims[0].expr == sp.srepr(growing(f, v))
+                and claims[0].var == sp.srepr(H)):
+            raise bad
+        return (f"df/de2(0, h) -> oo" if v == E2 else f"df/de1(h, 0)/h -> oo") + " as h -> oo", True
     points = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
     if len(points) != (2 if kind in ("circle", "step") else 1) or any(len(p) != 2 for p in points):
         raise bad
