@@ -210,3 +210,36 @@ def test_unbounded_witness_of_p1_and_p6():
     # B' is bounded: no witness
     theorems, _, why = refutation_theorems("P1", refuted("", {"s": "oo", "limit": "oo"}), B)
     assert theorems is None and "unbounded" in why
+
+
+@pytest.mark.slow
+def test_no_witness_links_for_a_property_that_holds():
+    """For every property that holds (tests/expectations.py, derived by hand)
+    of every design file, made-up witnesses of every kind -- points of a
+    grid, pairs on circles, rays, the origin, divergence -- never give kernel
+    theorems that link as a refutation."""
+    import sys
+    from pathlib import Path
+    root = Path(__file__).resolve().parents[1]
+    sys.path.insert(0, str(root / "tests"))
+    from expectations import EXPECTATIONS
+    from uwmr_symbolic.design import load_design
+    grid = ["1/3", "-1/2", "1", "-5/2"]
+    witnesses = [{"e1": "0", "e2": "0"}, {"e1": "0", "e2": "-> 0+"}, {"s": "oo", "limit": "oo"},
+                 {"direction": [-1, 2], "limit": "1"},
+                 {"point_a": ["1", "0"], "point_b": ["3/5", "4/5"]}, {"point_a": ["0", "5/2"], "point_b": ["-3/2", "2"]},
+                 *[{"e1": x, "e2": y} for x in grid for y in ("0", "1/3")]]
+    tried = 0
+    for rel, exp in EXPECTATIONS.items():
+        path = root / rel
+        if not path.exists() or rel.startswith("tests/adversarial"):
+            continue
+        f = load_design(path).f
+        for name, verdict in exp["verdicts"].items():
+            if verdict != "proved":
+                continue
+            for w in witnesses:
+                theorems, record, _ = refutation_theorems(name, refuted("", w), f)
+                assert theorems is None, (rel, name, record)
+                tried += 1
+    assert tried > 500

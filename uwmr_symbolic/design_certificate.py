@@ -49,7 +49,10 @@ def build(report) -> dict:
             "unchecked": list(v.details.get("unchecked", [SEARCH_ONLY])) if v.proved else [],
         }
         if v.refuted:
-            theorems, witness, why = refutation_theorems(name, v, report.design.f)
+            try:
+                theorems, witness, why = refutation_theorems(name, v, report.design.f)
+            except Exception as exc:  # noqa: BLE001 - a proposer bug leaves the witness to the search, visibly
+                theorems, witness, why = None, None, f"internal error of the proposer: {type(exc).__name__}: {exc}"
             props[name].update(kernel=to_certificate(theorems) if theorems else None, witness=witness,
                                unchecked=[] if theorems else [f"{WITNESS_SEARCH} ({why})"])
     kf = report.kf
