@@ -167,8 +167,14 @@ def test_unknown_kind_and_unlinked_property_are_rejected():
     with pytest.raises(DC.CertificateError, match="P5: a witness of kind 'value' does not refute P5"):
         DC.check(data)
     data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    # a refutation without its witness (or written before witnesses were checked) rests on the search, visibly
     data["properties"]["P3"]["kernel"], data["properties"]["P3"]["unchecked"] = None, []
-    with pytest.raises(DC.CertificateError, match="P3: refuted with neither kernel theorems nor unchecked facts"):
+    pc = checked(data)
+    assert not pc.kernel_checked and pc.line() == f"P3: refuted; still rests on the search for: {DC.WITNESS_SEARCH}"
+    # a refutation's theorems under a verdict "unknown": rejected
+    data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    data["properties"]["P3"]["status"] = "unknown"
+    with pytest.raises(DC.CertificateError, match="P3: kernel theorems for a verdict 'unknown'"):
         DC.check(data)
 
 

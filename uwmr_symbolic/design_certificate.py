@@ -13,8 +13,11 @@ the property: that the claim proved is about this f —
 * P5: the claims are F'(s) > 0 on (0, oo) with F' = sympy.diff(F, s);
 
 (for a Piecewise F the link is left to the search and listed as such).  A
-property whose kernel part checks, links, and has no unchecked facts is
-"kernel-checked"; otherwise the checker says what it rests on.
+refuted property may carry a witness record and kernel theorems about it
+(`link_refutation`: the claims must be exactly the negation the property
+needs about this f at the witness).  A property whose kernel part checks,
+links, and has no unchecked facts is "kernel-checked"; otherwise the checker
+says what it rests on.
 """
 from __future__ import annotations
 
@@ -404,8 +407,10 @@ def check(data) -> list[PropertyCheck]:
                         pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
                 else:
                     raise CertificateError(f"{name}: kernel theorems for a verdict {pc.status!r}")
-            elif pc.status in ("proved", "refuted") and not pc.unchecked:
-                raise CertificateError(f"{name}: {pc.status} with neither kernel theorems nor unchecked facts")
+            elif pc.status == "refuted" and not pc.unchecked:     # as written before witnesses were checked
+                pc.unchecked = [WITNESS_SEARCH]
+            elif pc.status == "proved" and not pc.unchecked:
+                raise CertificateError(f"{name}: proved with neither kernel theorems nor unchecked facts")
             out.append(pc)
         p4 = next((c for c in out if c.name == "P4"), None)
         if p4 is not None and p4.kernel_checked:        # the reduction is the identity P4 rests on
