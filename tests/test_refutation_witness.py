@@ -208,7 +208,7 @@ def test_unbounded_witness_of_p1_and_p6():
     assert checked(data).witness == "df/de1(h, 0)/h -> oo as h -> oo"
     swapped = copy.deepcopy(data)
     swapped["properties"]["P1"] = swapped["properties"].pop("P6")
-    with pytest.raises(DC.CertificateError, match="P1: a divergence along the e1 axis does not refute P1"):
+    with pytest.raises(DC.CertificateError, match=r"P1: a divergence \('e1', 1, 'oo'\) does not refute P1"):
         DC.check(swapped)
     swapped["properties"]["P1"]["witness"]["var"] = "e2"      # df/de1(h, 0)/h is not df/de2(0, h)
     with pytest.raises(DC.CertificateError, match="P1: the kernel's conclusions are not the witness 'unbounded'"):
@@ -249,3 +249,28 @@ def test_no_witness_links_for_a_property_that_holds():
                 assert theorems is None, (rel, name, record)
                 tried += 1
     assert tried > 500
+
+
+R34 = (e1 ** 2 + e2 ** 2) ** sp.Rational(3, 4)     # F = s^(3/2): F'(s)/s = 3/(2 sqrt(s)), F'' = 3/(4 sqrt(s))
+
+
+def test_unbounded_near_the_origin_refutes_p6_and_p7():
+    data = proposed("P6", R34, {"e1": "h -> 0+", "e2": "0", "limit": "oo"})
+    assert data["properties"]["P6"]["witness"] == {"kind": "unbounded", "var": "e1", "order": 1, "at": "0"}
+    assert checked(data).witness == "df/de1(h, 0)/h -> oo as h -> 0+"
+    data = proposed("P7", R34, {"e1": "0", "e2": "h -> 0+", "limit": "oo"})
+    assert checked(data).witness == "d2f/de2^2(0, h) -> oo as h -> 0+"
+    at_oo = copy.deepcopy(data)
+    at_oo["properties"]["P7"]["witness"]["at"] = "oo"       # unbounded at infinity says nothing about P7
+    with pytest.raises(DC.CertificateError, match=r"P7: a divergence \('e2', 2, 'oo'\) does not refute P7"):
+        DC.check(at_oo)
+    as_p1 = copy.deepcopy(data)
+    as_p1["properties"]["P1"] = as_p1["properties"].pop("P7")
+    with pytest.raises(DC.CertificateError, match="P1: a divergence"):
+        DC.check(as_p1)
+    as_p1["properties"]["P1"]["witness"]["order"] = 1        # df/de2(0, h) = 3 sqrt(h)/2 -> 0: another expression
+    with pytest.raises(DC.CertificateError, match="P1: the kernel's conclusions are not the witness 'unbounded'"):
+        DC.check(as_p1)
+    # P1 fails too, but at infinity: df/de2(0, h) = 3 sqrt(h)/2 has no finite bound kf
+    data = proposed("P1", R34, {"e1": "0", "e2": "h -> 0+", "limit": "oo"})
+    assert checked(data).witness == "df/de2(0, h) -> oo as h -> oo"

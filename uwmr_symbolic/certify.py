@@ -556,8 +556,12 @@ def _witness_candidates(name, witness):
         if d is not None and lim is not None and lim.is_real and lim.is_finite and not lim.has(sp.Float):
             for m in (lim + 1, lim):
                 yield {"kind": "bounded", "direction": d, "bound": m}
-    if name in ("P1", "P6") and str(w.get("limit")) == "oo":   # kf, or F'(s)/s, unbounded
-        yield {"kind": "unbounded", "var": "e2" if name == "P1" else "e1"}
+    if name in ("P1", "P6", "P7") and str(w.get("limit")) == "oo":   # kf, F'(s)/s or F'' unbounded
+        near_zero = "0+" in str(w.get("e1")) + str(w.get("e2"))
+        for at in (("0", "oo") if near_zero else ("oo", "0")):
+            if name != "P7" or at == "0":
+                yield {"kind": "unbounded", "var": "e1" if name == "P6" else "e2", "order": 2 if name == "P7" else 1,
+                       "at": at}
     if str(w.get("e1")) == "0":          # at the origin (P8: e2 -> 0+ along e1 = 0)
         for v in {"P1": ("e2", "e1"), "P7": ("e2",), "P8": ("e2",), "P5": ("e1",), "P6": ("e1",)}.get(name, ()):
             yield {"kind": "origin_jump", "var": v}
@@ -572,7 +576,7 @@ def _witness_theorems(f, record):
             raise NoProof(f"f <= {record['bound']} along the ray not shown")
         return [th]
     if record["kind"] == "unbounded":
-        out = growth_theorems(growing(f, sp.Symbol(record["var"], real=True)), H)
+        out = growth_theorems(growing(f, sp.Symbol(record["var"], real=True), record["order"], record["at"]), H)
         if not out:
             raise NoProof("no growth bound found")
         return out

@@ -240,14 +240,19 @@ def _link(name, f, theorems, exact=None) -> list[str]:
 #        Like slope, refused for f with Piecewise, Max, Min or sign.
 # bounded  f(h dx, h dy) <= M for all h > 0 (`sup_upper`, M finite), (dx, dy)
 #        != (0, 0): f does not tend to oo along that ray, so P3 fails.
-# unbounded  E(h) -> +oo as h -> oo (`diverges_by_growth`) for E = df/de2 at
-#        (0, h) (var e2): |df/de2| has no finite bound kf, P1 fails; or for
-#        E = df/de1 at (h, 0), divided by h (var e1): P6's df/de1 = k e1 h
-#        with 0 <= h <= 1 would give E <= k.  f without Piecewise, Max, Min, sign.
+# unbounded  E(h) -> +oo as h -> oo (at "oo": `diverges_by_growth` of E) or
+#        as h -> 0+ (at "0": `diverges_by_growth` of E(1/h)), for E = df/de2 at
+#        (0, h) (var e2): |df/de2| has no finite bound kf, P1 fails; for E =
+#        df/de1 at (h, 0), divided by h (var e1): P6's df/de1 = k e1 h with
+#        0 <= h <= 1 would give E <= k; for E = d2f/de2^2 at (0, h) (var e2,
+#        order 2, at "0" only): not continuous at the origin, P7 fails.
+#        f without Piecewise, Max, Min, sign.
 
 _SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
 _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
-            "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P6")}
+            "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P6", "P7")}
+_UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo"), ("P6", "e1", 1, "0"),
+              ("P7", "e2", 2, "0")}
 
 
 def _at(f, p):
@@ -266,10 +271,13 @@ def along_ray(f, direction):
     return f.subs({E1: direction[0] * H, E2: direction[1] * H}, simultaneous=True)
 
 
-def growing(f, v):
-    """The expression whose divergence refutes P1 (v = e2: df/de2 at (0, h))
-    or P6 (v = e1: df/de1 at (h, 0), divided by h)."""
-    return axis_derivative(f, v, 1) if v == E2 else axis_derivative(f, v, 1) / H
+def growing(f, v, order=1, at="oo"):
+    """The expression whose divergence as h -> oo refutes P1 (v = e2: df/de2
+    at (0, h)), P6 (v = e1: df/de1 at (h, 0), divided by h) or P7 (order 2:
+    d2f/de2^2 at (0, h)); at "0", the same with h replaced by 1/h."""
+    e = axis_derivative(f if order == 1 else sp.diff(f, v), v, 1)
+    e = e if v == E2 else e / H
+    return e if at == "oo" else e.subs(H, 1 / H)
 
 
 def witness_values(kind, f, points) -> list:
@@ -329,13 +337,15 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
             raise bad
         return f"f({d[0] * H}, {d[1] * H}) <= {parse(claims[0].other)} for all h > 0", False
     if kind == "unbounded":
-        v = {"e1": E1, "e2": E2}.get(witness.get("var"))
-        if v is None or name != {E1: "P6", E2: "P1"}[v]:
-            raise CertificateError(f"{name}: a divergence along the {witness.get('var')} axis does not refute {name}")
-        if not (len(claims) == 1 and claims[0].kind == "diverges" and claims[0].expr == sp.srepr(growing(f, v))
-                and claims[0].var == sp.srepr(H)):
+        how = (name, witness.get("var"), witness.get("order", 1), witness.get("at", "oo"))
+        if how not in _UNBOUNDED:
+            raise CertificateError(f"{name}: a divergence {how[1:]} does not refute {name}")
+        v, order, at = {"e1": E1, "e2": E2}[how[1]], how[2], how[3]
+        if not (len(claims) == 1 and claims[0].kind == "diverges"
+                and claims[0].expr == sp.srepr(growing(f, v, order, at)) and claims[0].var == sp.srepr(H)):
             raise bad
-        return (f"df/de2(0, h) -> oo" if v == E2 else f"df/de1(h, 0)/h -> oo") + " as h -> oo", True
+        what = {(E2, 1): "df/de2(0, h)", (E1, 1): "df/de1(h, 0)/h", (E2, 2): "d2f/de2^2(0, h)"}[(v, order)]
+        return f"{what} -> oo as h -> {'oo' if at == 'oo' else '0+'}", True
     points = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
     if len(points) != (2 if kind in ("circle", "step") else 1) or any(len(p) != 2 for p in points):
         raise bad
