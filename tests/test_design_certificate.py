@@ -183,14 +183,14 @@ def refuted_certs():
 def test_certificates_of_refuted_designs_recheck(refuted_certs):
     """Every refuted design's certificate re-checks; each refuted property
     either has a kernel-checked witness or says it rests on the search."""
-    kernel_checked = set()
+    refutation_checked = set()
     for stem, cert in refuted_certs.items():
         checks = _by_name(DC.check(json.dumps(cert)))
         for name, c in checks.items():
             if c.status == "refuted":
-                assert c.kernel_checked or c.unchecked[0].startswith(DC.WITNESS_SEARCH), (stem, c.line())
-                if c.kernel_checked:
-                    kernel_checked.add((stem, name))
+                assert c.refutation_checked or c.unchecked[0].startswith(DC.WITNESS_SEARCH), (stem, c.line())
+                if c.refutation_checked:
+                    refutation_checked.add((stem, name))
     # by hand: r01 f(0, 1/3) != f(1/3, 0); r03 f = sqrt(1 + s^2) - 1 - log(1 + s^2) has F(2) < 0 and
     # F'(1) = 1/sqrt(2) - 1 < 0; r05 f(0, 0) = 1; r07 |e| has df/de -> +-1 on either side of the origin;
     # r09 F'(s) = 0 exactly at s = sqrt((1 + 2 pi)^2 - 1); design 4 drops from 2 to 1 past s = sqrt((1 + pi)^2 - 1);
@@ -199,7 +199,7 @@ def test_certificates_of_refuted_designs_recheck(refuted_certs):
             ("r03_negative_near_zero", "P6"), ("r05_offset", "P2"), ("r09_slope_zero", "P5"),
             ("design4_cosine", "P5"), ("design4_cosine", "P6"), ("r02_bounded", "P3"), ("r04_quartic", "P1"),
             ("r04_quartic", "P6"), ("r08_rho_three_quarters", "P6"),
-            *[("r07_norm", p) for p in ("P1", "P5", "P6", "P7", "P8")]} <= kernel_checked
+            *[("r07_norm", p) for p in ("P1", "P5", "P6", "P7", "P8")]} <= refutation_checked
     c = _by_name(DC.check(refuted_certs["r03_negative_near_zero"]))
     assert c["P3"].line() == ("P3: refuted; 1 kernel theorem(s) re-checked (rests on arb, sympy-core); "
                               "kernel-checked: f(2, 0) <= 0")
@@ -207,7 +207,7 @@ def test_certificates_of_refuted_designs_recheck(refuted_certs):
     # jumps of a Piecewise F, some infinite limits at the origin still rest on the search
     for stem, name in (("r06_jump", "P1"), ("r10_c1_piecewise", "P7"), ("r08_rho_three_quarters", "P7")):
         c = _by_name(DC.check(refuted_certs[stem]))[name]
-        assert not c.kernel_checked and c.theorems == 0 and c.line().startswith(f"{name}: refuted; still rests on")
+        assert not c.refutation_checked and c.theorems == 0 and c.line().startswith(f"{name}: refuted; still rests on")
 
 
 def test_tampered_refutation_witness_is_rejected(refuted_certs):

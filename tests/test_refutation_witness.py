@@ -50,7 +50,7 @@ def checked(data):
 
 def test_value_witnesses_of_p2_and_p3():
     pc = checked(proposed("P2", F, {"e1": "0", "e2": "0", "f": "-1"}))
-    assert pc.kernel_checked and pc.witness == "f(0, 0) != 0" and pc.assumptions == ["arb", "sympy-core"]
+    assert pc.refutation_checked and pc.witness == "f(0, 0) != 0" and pc.assumptions == ["arb", "sympy-core"]
     data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
     assert data["properties"]["P3"]["witness"] == {"kind": "value", "points": [["Rational(1, 2)", "Integer(0)"]]}
     assert checked(data).line() == ("P3: refuted; 1 kernel theorem(s) re-checked (rests on arb, sympy-core); "
@@ -107,7 +107,7 @@ def test_slope_and_step_witnesses_of_p5_and_p6():
     for name in ("P5", "P6"):
         data = proposed(name, G, {"e1": "1", "e2": "0"})
         pc = checked(data)
-        assert pc.kernel_checked and pc.witness == "df/de1(1, 0) has sign -1" and "sympy-diff" in pc.assumptions
+        assert pc.refutation_checked and pc.witness == "df/de1(1, 0) has sign -1" and "sympy-diff" in pc.assumptions
     # df/de1 = 2 e1 > 0 at (1, 0) for F: no refutation
     bad = cert(F, "P5", [K.value_sign(value=sp.Integer(2))], {"kind": "slope", "points": [["Integer(1)", "Integer(0)"]]})
     with pytest.raises(DC.CertificateError, match="does not refute P5"):
@@ -137,11 +137,11 @@ def test_slope_and_step_witnesses_of_p5_and_p6():
 def test_origin_jump_witness():
     for name in ("P1", "P7", "P8"):
         pc = checked(proposed(name, N, {"e1": "0", "e2": "0"}))
-        assert pc.kernel_checked and pc.theorems == 3
+        assert pc.refutation_checked and pc.theorems == 3
         assert pc.witness == "df/de2 -> 1 and -1 along the e2 axis on either side of the origin"
     data = proposed("P5", N, {"e1": "0", "e2": "0"})
     assert data["properties"]["P5"]["witness"] == {"kind": "origin_jump", "var": "e1"}
-    assert checked(data).kernel_checked
+    assert checked(data).refutation_checked
     wrong = copy.deepcopy(data)
     wrong["properties"]["P8"] = wrong["properties"].pop("P5")       # a jump of df/de1 says nothing about P8
     with pytest.raises(DC.CertificateError, match="P8: an origin jump of df/de1 does not refute P8"):
@@ -170,7 +170,7 @@ def test_unknown_kind_and_unlinked_property_are_rejected():
     # a refutation without its witness (or written before witnesses were checked) rests on the search, visibly
     data["properties"]["P3"]["kernel"], data["properties"]["P3"]["unchecked"] = None, []
     pc = checked(data)
-    assert not pc.kernel_checked and pc.line() == f"P3: refuted; still rests on the search for: {DC.WITNESS_SEARCH}"
+    assert not pc.refutation_checked and pc.line() == f"P3: refuted; still rests on the search for: {DC.WITNESS_SEARCH}"
     # a refutation's theorems under a verdict "unknown": rejected
     data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
     data["properties"]["P3"]["status"] = "unknown"
@@ -203,7 +203,7 @@ def test_bounded_ray_witness_of_p3():
 
 def test_unbounded_witness_of_p1_and_p6():
     pc = checked(proposed("P1", Q, {"s": "oo", "limit": "oo"}))
-    assert pc.kernel_checked and pc.witness == "df/de2(0, h) -> oo as h -> oo" and "sympy-diff" in pc.assumptions
+    assert pc.refutation_checked and pc.witness == "df/de2(0, h) -> oo as h -> oo" and "sympy-diff" in pc.assumptions
     data = proposed("P6", Q, {"s": "oo", "limit": "oo"})
     assert checked(data).witness == "df/de1(h, 0)/h -> oo as h -> oo"
     swapped = copy.deepcopy(data)
@@ -274,3 +274,14 @@ def test_unbounded_near_the_origin_refutes_p6_and_p7():
     # P1 fails too, but at infinity: df/de2(0, h) = 3 sqrt(h)/2 has no finite bound kf
     data = proposed("P1", R34, {"e1": "0", "e2": "h -> 0+", "limit": "oo"})
     assert checked(data).witness == "df/de2(0, h) -> oo as h -> oo"
+
+
+def test_a_refuted_p4_does_not_stand_for_the_radial_reduction():
+    """Only a *proved* P4 (the identity f = F(|e|)) discharges the reduction
+    that other properties rest on; a kernel-checked refutation of P4 must not."""
+    from uwmr_symbolic.certify import REDUCTION
+    data = proposed("P4", G, {"point_a": ["1", "0"], "point_b": ["3/5", "4/5"]})
+    data["properties"]["P5"] = {"status": "proved", "reason": "", "kernel": None, "unchecked": [REDUCTION]}
+    checks = {c.name: c for c in DC.check(json.dumps(data))}
+    assert checks["P4"].refutation_checked and not checks["P4"].kernel_checked
+    assert checks["P5"].unchecked == [REDUCTION]

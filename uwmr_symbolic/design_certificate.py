@@ -36,7 +36,7 @@ from .profile import S
 FORMAT, VERSION = "uwmr-design-certificate", 1
 SEARCH_ONLY = "the whole argument (no kernel rules for it yet)"
 WITNESS_SEARCH = "the witness of the refutation (checked by the search's own high-precision arithmetic only)"
-H = sp.Symbol("h", positive=True)       # distance from the origin along an axis (kind "origin_jump")
+H = sp.Symbol("h", positive=True)       # distance from the origin along an axis or a ray (refutation witnesses)
 
 
 def build(report) -> dict:
@@ -88,7 +88,13 @@ class PropertyCheck:
 
     @property
     def kernel_checked(self) -> bool:
-        return self.status in ("proved", "refuted") and self.theorems > 0 and not self.unchecked
+        """Proved, and nothing of the proof is left to the search."""
+        return self.status == "proved" and self.theorems > 0 and not self.unchecked
+
+    @property
+    def refutation_checked(self) -> bool:
+        """Refuted, with a witness the kernel checked and linked to f."""
+        return self.status == "refuted" and self.theorems > 0 and not self.unchecked
 
     def line(self) -> str:
         if self.status not in ("proved", "refuted"):
