@@ -194,18 +194,19 @@ def test_certificates_of_refuted_designs_recheck(refuted_certs):
     # by hand: r01 f(0, 1/3) != f(1/3, 0); r03 f = sqrt(1 + s^2) - 1 - log(1 + s^2) has F(2) < 0 and
     # F'(1) = 1/sqrt(2) - 1 < 0; r05 f(0, 0) = 1; r07 |e| has df/de -> +-1 on either side of the origin;
     # r09 F'(s) = 0 exactly at s = sqrt((1 + 2 pi)^2 - 1); design 4 drops from 2 to 1 past s = sqrt((1 + pi)^2 - 1);
-    # r02 F = 1 - exp(-s^2) <= 2; r04 F = s^4 has df/de2(0, h) = 4 h^3 and F'(h)/h = 4 h^2 -> oo
+    # r06 f = log(1 + rho) (+ 1 for rho > 4) jumps at t = 2 on the e1 axis; r02 F = 1 - exp(-s^2) <= 2; r04 F = s^4 has df/de2(0, h) = 4 h^3 and F'(h)/h = 4 h^2 -> oo
     assert {("r01_nonradial", "P4"), ("r03_negative_near_zero", "P3"), ("r03_negative_near_zero", "P5"),
             ("r03_negative_near_zero", "P6"), ("r05_offset", "P2"), ("r09_slope_zero", "P5"),
             ("design4_cosine", "P5"), ("design4_cosine", "P6"), ("r02_bounded", "P3"), ("r04_quartic", "P1"),
-            ("r04_quartic", "P6"), ("r08_rho_three_quarters", "P6"),
+            ("r04_quartic", "P6"), ("r08_rho_three_quarters", "P6"), ("design4_cosine", "P1"),
+            *[("r06_jump", p) for p in ("P1", "P5", "P6")],
             *[("r07_norm", p) for p in ("P1", "P5", "P6", "P7", "P8")]} <= refutation_checked
     c = _by_name(DC.check(refuted_certs["r03_negative_near_zero"]))
     assert c["P3"].line() == ("P3: refuted; 1 kernel theorem(s) re-checked (rests on arb, sympy-core); "
                               "kernel-checked: f(2, 0) <= 0")
     assert c["P5"].witness == "df/de1(1, 0) has sign -1"
-    # jumps of a Piecewise F, some infinite limits at the origin still rest on the search
-    for stem, name in (("r06_jump", "P1"), ("r10_c1_piecewise", "P7"), ("r08_rho_three_quarters", "P7")):
+    # jumps of F'' at a boundary, some infinite limits at the origin still rest on the search
+    for stem, name in (("r06_jump", "P7"), ("r10_c1_piecewise", "P7"), ("r08_rho_three_quarters", "P7")):
         c = _by_name(DC.check(refuted_certs[stem]))[name]
         assert not c.refutation_checked and c.theorems == 0 and c.line().startswith(f"{name}: refuted; still rests on")
 

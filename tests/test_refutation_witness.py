@@ -285,3 +285,49 @@ def test_a_refuted_p4_does_not_stand_for_the_radial_reduction():
     checks = {c.name: c for c in DC.check(json.dumps(data))}
     assert checks["P4"].refutation_checked and not checks["P4"].kernel_checked
     assert checks["P5"].unchecked == [REDUCTION]
+
+
+RHO = e1 ** 2 + e2 ** 2
+JUMP = sp.Piecewise((RHO, RHO <= 1), (RHO + 1, True))          # f(t, 0) -> 1 from the left of t = 1, -> 2 from the right
+POINT = sp.Piecewise((5, sp.Eq(e1, 1)), (1 + e1, True))         # the value 5 at t = 1 only; limits 2 both sides
+SMOOTH = sp.Piecewise((RHO, RHO <= 1), (2 * RHO - 1, True))      # continuous at t = 1 (a kink)
+
+
+def test_jump_of_a_piecewise_f_along_the_axis():
+    data = proposed("P1", JUMP, {"e1": "1", "e2": "0"})
+    w = data["properties"]["P1"]["witness"]
+    assert (w["kind"], w["branches"], w["compare"]) == ("jump", [0, 1], "sides")
+    pc = checked(data)
+    assert pc.refutation_checked and pc.theorems == 5
+    assert pc.witness == "f(t, 0) jumps at t = 1: left limit 1, right limit 2, value 1"
+    # Eq: the branch taken at t = 1 only; the value 5 differs from the limit 2 on the left
+    data = proposed("P1", POINT, {"e1": "1", "e2": "0"})
+    assert data["properties"]["P1"]["witness"]["compare"] == "left" and checked(data).refutation_checked
+    # (for P5 a step comes first: f(5/4, 0) - f(1, 0) = 9/4 - 5 < 0)
+    assert proposed("P5", POINT, {"e1": "1", "e2": "0"})["properties"]["P5"]["witness"]["kind"] == "step"
+    # a continuous f (a kink only): no jump witness; P5 holds for SMOOTH near t = 1 anyway
+    theorems, _, why = refutation_theorems("P1", refuted("", {"e1": "1", "e2": "0"}), SMOOTH)
+    assert theorems is None and "jump" in why
+
+
+def test_tampered_jump_witness_is_rejected():
+    data = proposed("P6", JUMP, {"e1": "1", "e2": "0"})
+    for key, value in (("branches", [1, 1]), ("branches", [0, 0]), ("compare", "left"), ("width", "Rational(1, 2)"),
+                       ("points", [["Integer(1)", "Integer(1)"]]), ("points", [["Rational(1, 2)", "Integer(0)"]])):
+        bad = copy.deepcopy(data)
+        bad["properties"]["P6"]["witness"][key] = value
+        with pytest.raises(DC.CertificateError, match="P6: (the kernel's conclusions are not the witness 'jump'|jump:)"):
+            DC.check(bad)
+    dropped = copy.deepcopy(data)        # without the theorem that the left branch applies
+    kernel = dropped["properties"]["P6"]["kernel"]
+    kernel["conclusions"] = kernel["conclusions"][1:]
+    with pytest.raises(DC.CertificateError, match="P6: the kernel's conclusions are not the witness 'jump'"):
+        DC.check(dropped)
+    other = copy.deepcopy(data)          # the same certificate about the continuous SMOOTH
+    other["design"]["f"] = sp.srepr(SMOOTH)
+    with pytest.raises(DC.CertificateError, match="P6: the kernel's conclusions are not the witness 'jump'"):
+        DC.check(other)
+    as_p3 = copy.deepcopy(data)
+    as_p3["properties"]["P3"] = as_p3["properties"].pop("P6")
+    with pytest.raises(DC.CertificateError, match="P3: a witness of kind 'jump' does not refute P3"):
+        DC.check(as_p3)

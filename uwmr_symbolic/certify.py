@@ -562,6 +562,8 @@ def _witness_candidates(name, witness):
             if name != "P7" or at == "0":
                 yield {"kind": "unbounded", "var": "e1" if name == "P6" else "e2", "order": 2 if name == "P7" else 1,
                        "at": at}
+    if name in ("P1", "P5", "P6") and p is not None and p[1] == 0:    # f(t, 0) jumps at t = e1?
+        yield {"kind": "jump", "points": [p]}
     if str(w.get("e1")) == "0":          # at the origin (P8: e2 -> 0+ along e1 = 0)
         for v in {"P1": ("e2", "e1"), "P7": ("e2",), "P8": ("e2",), "P5": ("e1",), "P6": ("e1",)}.get(name, ()):
             yield {"kind": "origin_jump", "var": v}
@@ -580,6 +582,8 @@ def _witness_theorems(f, record):
         if not out:
             raise NoProof("no growth bound found")
         return out
+    if record["kind"] == "jump":
+        return _jump_theorems(f, record)
     if record["kind"] != "origin_jump":
         return [_rule(K.value_sign, value=v) for v in witness_values(record["kind"], f, record["points"])]
     v = sp.Symbol(record["var"], real=True)
@@ -592,6 +596,58 @@ def _witness_theorems(f, record):
         jump = K.parse(lims[0].claim.other) - K.parse(lims[1].claim.other)
         return [*lims, _rule(K.value_sign, value=jump)]
     raise NoProof("df/dv is not continuous up to the origin on either side")
+
+
+def _jump_theorems(f, record):
+    """The jump witness (see `design_certificate`): the branch of the
+    Piecewise f on each side of (b, 0), its conditions' signs on (0, w], the
+    one-sided limits, a nonzero gap.  Fills in record's branches, width and
+    compare."""
+    from .design_certificate import CertificateError, H, branch_conditions, jump_parts
+    if not isinstance(f, sp.Piecewise):
+        raise NoProof("f is not a Piecewise")
+    b = record["points"][0][0]
+    for w in (sp.Rational(1, 4), sp.Rational(1, 64), sp.Rational(1, 1024)):
+        found = []
+        for side in (-1, 1):
+            for i in range(len(f.args)):
+                try:
+                    conds = [_claim_one(options, w) for options in branch_conditions(f, b, side, i, w)]
+                except (NoProof, CertificateError):
+                    continue
+                found.append((i, conds))
+                break
+        if len(found) < 2:
+            continue
+        branches = [found[0][0], found[1][0]]
+        try:
+            lims = [_rule(K.continuous_at_end, expr=e, var=H, c=0, width=w) for e in jump_parts(f, b, branches, w)]
+        except NoProof:
+            continue
+        left, right = (K.parse(t.claim.other) for t in lims)
+        value = f.subs({sp.Symbol("e1", real=True): b, sp.Symbol("e2", real=True): 0})
+        for compare, gap in (("sides", right - left), ("left", value - left), ("right", value - right)):
+            try:
+                th = _rule(K.value_sign, value=gap)
+            except NoProof:
+                continue
+            if th.claim.want != 0:
+                record.update(branches=branches, width=w, compare=compare)
+                return [*found[0][1], lims[0], *found[1][1], lims[1], th]
+    raise NoProof("no branch or no gap found on both sides")
+
+
+def _claim_one(options, w):
+    """A kernel sign theorem on (0, w] for one of the acceptable claims."""
+    from .design_certificate import H
+    last = None
+    for e, want, strict in options:
+        theorems, why = sign_theorems(e, H, 0, w, want=want, lo_open=True, hi_open=False, strict=strict,
+                                      seconds=SECONDS / 4)
+        if theorems is not None:
+            return theorems[0]
+        last = why
+    raise NoProof(f"condition not shown: {last}")
 
 
 def refutation_theorems(name, verdict, f):
@@ -618,7 +674,9 @@ def refutation_theorems(name, verdict, f):
 
 
 def _encode_record(record):
-    out = {k: v for k, v in record.items() if k not in ("points", "direction", "bound")}
+    out = {k: v for k, v in record.items() if k not in ("points", "direction", "bound", "width")}
+    if "width" in record:
+        out["width"] = K._s(record["width"])
     if "points" in record:
         out["points"] = [[K._s(c) for c in p] for p in record["points"]]
     if "direction" in record:

@@ -253,10 +253,20 @@ def _link(name, f, theorems, exact=None) -> list[str]:
 #        0 <= h <= 1 would give E <= k; for E = d2f/de2^2 at (0, h) (var e2,
 #        order 2, at "0" only): not continuous at the origin, P7 fails.
 #        f without Piecewise, Max, Min, sign.
+# jump   f a Piecewise (at the top), b exact, w > 0: for h in (0, w], branch
+#        iL of f applies at (b - h, 0) and branch iR at (b + h, 0) -- kernel
+#        sign theorems, on (0, w], that every earlier condition is false and
+#        that condition true (a relation l < r, l <= r, ... is true exactly
+#        where r - l has the matching sign; the first true condition picks
+#        the branch) --, the two branches tend to L-, L+ as h -> 0+
+#        (`continuous_at_end`), and L+ - L- (or f(b, 0) - L+, or f(b, 0) -
+#        L-) != 0.  Then t -> f(t, 0) is not continuous at b, so df/de1 does
+#        not exist at (b, 0): P1, P5, P6 fail.
 
 _SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
 _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
-            "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P6", "P7")}
+            "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P6", "P7"),
+            "jump": ("P1", "P5", "P6")}
 _UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo"), ("P6", "e1", 1, "0"),
               ("P7", "e2", 2, "0")}
 
@@ -284,6 +294,74 @@ def growing(f, v, order=1, at="oo"):
     e = axis_derivative(f if order == 1 else sp.diff(f, v), v, 1)
     e = e if v == E2 else e / H
     return e if at == "oo" else e.subs(H, 1 / H)
+
+
+_TRUE_WHEN = {sp.StrictLessThan: (1, True), sp.LessThan: (1, False),
+              sp.StrictGreaterThan: (-1, True), sp.GreaterThan: (-1, False)}
+
+
+def branch_conditions(f, b, side, i, w):
+    """For the jump witness: what the kernel must show so that branch i of
+    the Piecewise f applies at (b + side*h, 0) for every h in (0, w]: one
+    entry per condition up to i (none for a final True), each a list of the
+    acceptable (expression in H, want, strict) sign claims."""
+    if not isinstance(f, sp.Piecewise) or not 0 <= i < len(f.args):
+        raise CertificateError("jump: f is not a Piecewise with that branch")
+    at = {E1: b + side * H, E2: sp.Integer(0)}
+    out = []
+    for j, (_, cond) in enumerate(f.args[:i + 1]):
+        truth = j == i
+        if cond is sp.true:
+            if not truth:
+                raise CertificateError("jump: a condition True before the branch")
+            continue
+        if not isinstance(cond, (*_TRUE_WHEN, sp.Eq, sp.Ne)):
+            raise CertificateError(f"jump: condition {cond} is not a single relation")
+        d = cond.rhs.subs(at, simultaneous=True) - cond.lhs.subs(at, simultaneous=True)
+        if isinstance(cond, (sp.Eq, sp.Ne)):
+            if truth != isinstance(cond, sp.Ne):
+                raise CertificateError(f"jump: {cond} cannot be shown {truth} by a sign")
+            out.append([(d, 1, True), (d, -1, True)])
+        else:
+            want, strict = _TRUE_WHEN[type(cond)]
+            out.append([(d, want, strict)] if truth else [(d, -want, not strict)])
+    return out
+
+
+def jump_parts(f, b, branches, w):
+    """The one-sided branch expressions at (b - h, 0) and (b + h, 0)."""
+    return [f.args[i][0].subs({E1: b + side * H, E2: sp.Integer(0)}, simultaneous=True)
+            for i, side in zip(branches, (-1, 1))]
+
+
+def _link_jump(name, f, claims, witness, bad) -> str:
+    (b, y), = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
+    branches, w = witness.get("branches"), parse(witness.get("width"))
+    if y != 0 or not (isinstance(branches, list) and len(branches) == 2 and all(type(i) is int for i in branches)):
+        raise bad
+    on = (sp.srepr(H), "Integer(0)", sp.srepr(w), True, False)
+    k = 0
+    limits = []
+    for side, i, part in zip((-1, 1), branches, jump_parts(f, b, branches, w)):
+        for options in branch_conditions(f, b, side, i, w):
+            c = claims[k] if k < len(claims) else None
+            if c is None or c.kind != "sign" or (c.var, c.lo, c.hi, c.lo_open, c.hi_open) != on or not any(
+                    c.expr == sp.srepr(e) and c.want == want and (c.strict or not strict) for e, want, strict in options):
+                raise bad
+            k += 1
+        c = claims[k] if k < len(claims) else None
+        if c is None or (c.kind, c.expr, c.var, c.lo, c.hi) != ("limit", sp.srepr(part), sp.srepr(H), "Integer(0)",
+                                                                 sp.srepr(w)):
+            raise bad
+        limits.append(parse(c.other))
+        k += 1
+    value = _at(f, (b, y))
+    gaps = {"sides": limits[1] - limits[0], "left": value - limits[0], "right": value - limits[1]}
+    gap = gaps.get(witness.get("compare"))
+    if gap is None or len(claims) != k + 1 or claims[k].kind != "value_sign" or claims[k].expr != sp.srepr(gap) \
+            or claims[k].want == 0:
+        raise bad
+    return f"f(t, 0) jumps at t = {b}: left limit {limits[0]}, right limit {limits[1]}, value {value}"
 
 
 def witness_values(kind, f, points) -> list:
@@ -352,6 +430,8 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
             raise bad
         what = {(E2, 1): "df/de2(0, h)", (E1, 1): "df/de1(h, 0)/h", (E2, 2): "d2f/de2^2(0, h)"}[(v, order)]
         return f"{what} -> oo as h -> {'oo' if at == 'oo' else '0+'}", True
+    if kind == "jump":
+        return _link_jump(name, f, claims, witness, bad), False
     points = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
     if len(points) != (2 if kind in ("circle", "step") else 1) or any(len(p) != 2 for p in points):
         raise bad
