@@ -21,6 +21,7 @@ from _cli import ROOT  # noqa: E402
 from uwmr_symbolic import batch, cache  # noqa: E402
 from uwmr_symbolic.batch import Progress, expand_paths, worst_status  # noqa: E402
 from uwmr_symbolic.report import assignment_line  # noqa: E402
+from uwmr_symbolic.design import load_design  # noqa: E402
 
 pytestmark = pytest.mark.slow        # more than a few seconds: not in make test-fast
 
@@ -311,12 +312,18 @@ def test_changed_verifier_source_is_a_different_key(monkeypatch):
     assert cache.digest(cache.design_key(d)) != cache.digest(key)
 
 
-def test_a_result_with_an_expired_time_limit_is_not_cached(tmp_path):
+def test_a_result_with_an_expired_time_limit_answers_no_longer_run(tmp_path):
     """design 3 needs about a second: with --timeout 0.2 it ends inconclusive,
-    a result that depends on the time given, so it is not stored."""
+    a result that depends on the time given: it is stored with its timeout
+    and answers only runs with no more time (tests/test_cache.py has the
+    whole round)."""
     d = batch.check_file(str(ROOT / "designs/design3_logcosh.py"), 0.2, str(tmp_path), True)
     assert d["exit_status"] == 3 and d["cached"] is False
-    assert not list(tmp_path.glob("*.json"))
+    (entry,) = [json.loads(p.read_text()) for p in tmp_path.glob("*.json")]
+    assert (entry["timeout"], entry["timed_out"]) == (0.2, True)
+    key = cache.design_key(load_design(ROOT / "designs/design3_logcosh.py"))
+    assert cache.ResultCache(tmp_path).get(key, 0.2) is not None
+    assert cache.ResultCache(tmp_path).get(key, 1.0) is None
 
 
 def test_cache_put_into_an_unwritable_place_is_harmless(tmp_path):

@@ -168,3 +168,83 @@ def test_cache_hit_is_used_only_when_its_certificate_rechecks(tmp_path):
     cache.path_for(key).write_text(json.dumps(entry))
     third = check_file(str(DESIGN1), 60, str(tmp_path))
     assert third["cached"] is False and third["properties"]["P3"]["verdict"] == "proved"
+
+
+# ---------------------------------------------------------------- refuted designs
+
+REFUTED = sorted((ROOT / "tests" / "designs").glob("r*.py"))
+
+
+@pytest.fixture(scope="module")
+def refuted_certs():
+    return {p.stem: DC.build(verify_design(p)) for p in REFUTED + [ROOT / "designs" / "design4_cosine.py"]}
+
+
+def test_certificates_of_refuted_designs_recheck(refuted_certs):
+    """Every refuted design's certificate re-checks; each refuted property
+    either has a kernel-checked witness or says it rests on the search."""
+    refutation_checked = set()
+    for stem, cert in refuted_certs.items():
+        checks = _by_name(DC.check(json.dumps(cert)))
+        for name, c in checks.items():
+            if c.status == "refuted":
+                assert c.refutation_checked or c.unchecked[0].startswith(DC.WITNESS_SEARCH), (stem, c.line())
+                if c.refutation_checked:
+                    refutation_checked.add((stem, name))
+    # by hand: r01 f(0, 1/3) != f(1/3, 0); r03 f = sqrt(1 + s^2) - 1 - log(1 + s^2) has F(2) < 0 and
+    # F'(1) = 1/sqrt(2) - 1 < 0; r05 f(0, 0) = 1; r07 |e| has df/de -> +-1 on either side of the origin;
+    # r09 F'(s) = 0 exactly at s = sqrt((1 + 2 pi)^2 - 1); design 4 drops from 2 to 1 past s = sqrt((1 + pi)^2 - 1);
+    # r06 f = log(1 + rho) (+ 1 for rho > 4) jumps at t = 2 on the e1 axis; r02 F = 1 - exp(-s^2) <= 2; r04 F = s^4 has df/de2(0, h) = 4 h^3 and F'(h)/h = 4 h^2 -> oo
+    assert {("r01_nonradial", "P4"), ("r03_negative_near_zero", "P3"), ("r03_negative_near_zero", "P5"),
+            ("r03_negative_near_zero", "P6"), ("r05_offset", "P2"), ("r09_slope_zero", "P5"),
+            ("design4_cosine", "P5"), ("design4_cosine", "P6"), ("r02_bounded", "P3"), ("r04_quartic", "P1"),
+            ("r04_quartic", "P6"), ("r08_rho_three_quarters", "P6"), ("design4_cosine", "P1"),
+            *[("r06_jump", p) for p in ("P1", "P5", "P6")],
+            *[("r07_norm", p) for p in ("P1", "P5", "P6", "P7", "P8")]} <= refutation_checked
+    c = _by_name(DC.check(refuted_certs["r03_negative_near_zero"]))
+    assert c["P3"].line() == ("P3: refuted; 1 kernel theorem(s) re-checked (rests on arb, sympy-core); "
+                              "kernel-checked: f(2, 0) <= 0")
+    assert c["P5"].witness == "df/de1(1, 0) has sign -1"
+    # jumps of F'' at a boundary, some infinite limits at the origin still rest on the search
+    for stem, name in (("r06_jump", "P7"), ("r10_c1_piecewise", "P7"), ("r08_rho_three_quarters", "P7")):
+        c = _by_name(DC.check(refuted_certs[stem]))[name]
+        assert not c.refutation_checked and c.theorems == 0 and c.line().startswith(f"{name}: refuted; still rests on")
+
+
+def test_tampered_refutation_witness_is_rejected(refuted_certs):
+    cert = refuted_certs["r03_negative_near_zero"]
+    moved = copy.deepcopy(cert)
+    moved["properties"]["P3"]["witness"]["points"][0][0] = "Integer(3)"      # the kernel's claim is about f(2, 0)
+    with pytest.raises(DC.CertificateError, match="P3: the kernel's conclusions are not the witness 'value'"):
+        DC.check(moved)
+    # moved to (10, 0), where f = sqrt(101) - 1 - log(101) > 0, kernel step and claim changed to match
+    f10 = sp.srepr(sp.sqrt(101) - 1 - sp.log(101))
+    moved = copy.deepcopy(cert)
+    entry = moved["properties"]["P3"]
+    entry["witness"]["points"][0][0] = "Integer(10)"
+    entry["kernel"]["theorems"][0]["data"]["value"]["$"] = f10
+    entry["kernel"]["theorems"][0]["claim"]["expr"] = f10
+    with pytest.raises(DC.CertificateError, match="P3: theorem 0"):
+        DC.check(moved)
+    flipped = copy.deepcopy(cert)
+    flipped["properties"]["P5"]["kernel"]["theorems"][0]["claim"]["want"] = 1
+    with pytest.raises(DC.CertificateError, match="P5: theorem 0"):
+        DC.check(flipped)
+    jump = copy.deepcopy(refuted_certs["r07_norm"])
+    jump["properties"]["P8"]["kernel"]["theorems"][1]["claim"]["other"] = "Integer(1)"   # df/de2(0, -h) -> 1
+    with pytest.raises(DC.CertificateError, match="P8: theorem 1"):
+        DC.check(jump)
+
+
+def test_cache_rechecks_a_refutation_witness(tmp_path):
+    design = ROOT / "tests" / "designs" / "r03_negative_near_zero.py"
+    first = check_file(str(design), 60, str(tmp_path))
+    assert first["cached"] is False and first["properties"]["P3"]["verdict"] == "refuted"
+    assert check_file(str(design), 60, str(tmp_path))["cached"] is True
+    cache = ResultCache(tmp_path)
+    key = design_key(load_design(design))
+    entry = json.loads(cache.path_for(key).read_text())
+    entry["result"]["certificate"]["properties"]["P3"]["witness"]["points"][0][0] = "Integer(3)"
+    cache.path_for(key).write_text(json.dumps(entry))
+    again = check_file(str(design), 60, str(tmp_path))
+    assert again["cached"] is False and again["properties"]["P3"]["verdict"] == "refuted"

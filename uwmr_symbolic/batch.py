@@ -55,13 +55,13 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
     cache = ResultCache(cache_dir) if use_cache else None
     key = design_key(design) if use_cache else None
     if cache is not None:
-        hit = cache.get(key)
+        hit = cache.get(key, timeout)     # not if computed with less time while a limit expired
         if hit is not None and isinstance(hit.get("exit_status"), int) and rechecks(hit, design):
             return {**hit, **design_fields(design), "cached": True}
     report = verify_loaded(design, timeout, start)
     result = {**to_dict(report), "certificate": certificates.build(report)}
-    if cache is not None and not report.timed_out:
-        cache.put(key, result)
+    if cache is not None:
+        cache.put(key, result, timeout=timeout, timed_out=report.timed_out)
     return {**result, "cached": False}
 
 

@@ -14,9 +14,21 @@ Entries live in ``$UWMR_CACHE_DIR``, else ``$XDG_CACHE_HOME/uwmr-symbolic``,
 else ``~/.cache/uwmr-symbolic``; one file ``<sha256 of the key>.json`` each,
 written to a temporary file and renamed into place (atomic), so a reader sees
 either nothing or a whole entry.  An entry that does not parse, or whose
-stored key differs from the one asked for, is treated as missing.  A hit
-touches its entry; after each write the least recently used entries beyond
-`MAX_ENTRIES` are deleted, so results of old verifier versions do not pile up."""
+stored key differs from the one asked for, is treated as missing.
+
+The ``--timeout`` is not part of the key but of the entry, with whether a time
+limit expired while the result was computed (``timed_out``).  Time matters
+only there: the verdicts depend on the time given only through limits that
+expire (the kernel proposer's CPU budget changes what a certificate checks,
+never a verdict), so a result in which none expired is what any timeout
+gives and is served to every run, while one in which a limit expired (some
+verdict may be "unknown" for lack of time) is served only to a run with no
+more time than it had (`serves`); a run with more time verifies again and
+replaces the entry.
+
+A hit touches its entry; after each write the least recently used entries
+beyond `MAX_ENTRIES` are deleted, so results of old verifier versions do not
+pile up."""
 from __future__ import annotations
 
 import hashlib
@@ -32,7 +44,7 @@ import sympy as sp
 from . import __version__
 
 #: Bump when the layout of an entry changes.
-CACHE_FORMAT = 1
+CACHE_FORMAT = 2
 #: Entries kept (least recently used ones beyond this are evicted).
 MAX_ENTRIES = 2000
 PACKAGE_DIR = Path(__file__).resolve().parent
@@ -97,6 +109,18 @@ def design_key(design) -> dict:
     }
 
 
+def serves(entry: dict, timeout: float | None) -> bool:
+    """Whether a stored entry answers a run with `timeout` (seconds; None:
+    a run whose timeout is not known): always when no time limit expired
+    while its result was computed, else only when the entry's run had at
+    least `timeout` seconds."""
+    if entry.get("timed_out") is False:
+        return True
+    had = entry.get("timeout")
+    return (entry.get("timed_out") is True and timeout is not None and type(had) in (int, float)
+            and had >= timeout)
+
+
 def digest(key: dict) -> str:
     return hashlib.sha256(json.dumps(key, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
 
@@ -109,13 +133,16 @@ class ResultCache:
     def path_for(self, key: dict) -> Path:
         return self.directory / f"{digest(key)}.json"
 
-    def get(self, key: dict) -> dict | None:
-        """The stored result for `key`, or None (missing, unreadable or corrupt)."""
+    def get(self, key: dict, timeout: float | None = None) -> dict | None:
+        """The stored result for `key`, or None (missing, unreadable, corrupt,
+        or computed with less time than `timeout` while a time limit expired:
+        see `serves`)."""
         try:
             entry = json.loads(self.path_for(key).read_text())
         except (OSError, UnicodeDecodeError, ValueError):
             return None
-        if not isinstance(entry, dict) or entry.get("key") != key or not isinstance(entry.get("result"), dict):
+        if not isinstance(entry, dict) or entry.get("key") != key or not isinstance(entry.get("result"), dict) \
+                or not serves(entry, timeout):
             return None
         try:
             os.utime(self.path_for(key))      # recently used: evicted last
@@ -138,15 +165,18 @@ class ResultCache:
                 pass
         return removed
 
-    def put(self, key: dict, result: dict) -> bool:
-        """Store atomically; False (and no exception) when the cache is not writable."""
+    def put(self, key: dict, result: dict, timeout: float | None = None, timed_out: bool = False) -> bool:
+        """Store atomically (replacing an entry of the same key), with the
+        run's `timeout` and whether a time limit expired in it; False (and
+        no exception) when the cache is not writable."""
         target = self.path_for(key)
         tmp = None
         try:
             self.directory.mkdir(parents=True, exist_ok=True)
             fd, tmp = tempfile.mkstemp(dir=self.directory, prefix=".tmp-", suffix=".json")
             with os.fdopen(fd, "w") as fh:
-                json.dump({"key": key, "result": result}, fh, indent=1)  # key order kept: output order
+                json.dump({"key": key, "timeout": timeout, "timed_out": bool(timed_out), "result": result},
+                          fh, indent=1)  # key order kept: output order
                 fh.flush()
                 os.fsync(fh.fileno())
             os.replace(tmp, target)

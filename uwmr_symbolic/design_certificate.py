@@ -13,8 +13,11 @@ the property: that the claim proved is about this f —
 * P5: the claims are F'(s) > 0 on (0, oo) with F' = sympy.diff(F, s);
 
 (for a Piecewise F the link is left to the search and listed as such).  A
-property whose kernel part checks, links, and has no unchecked facts is
-"kernel-checked"; otherwise the checker says what it rests on.
+refuted property may carry a witness record and kernel theorems about it
+(`link_refutation`: the claims must be exactly the negation the property
+needs about this f at the witness).  A property whose kernel part checks,
+links, and has no unchecked facts is "kernel-checked"; otherwise the checker
+says what it rests on.
 """
 from __future__ import annotations
 
@@ -32,10 +35,13 @@ from .profile import S
 
 FORMAT, VERSION = "uwmr-design-certificate", 1
 SEARCH_ONLY = "the whole argument (no kernel rules for it yet)"
+WITNESS_SEARCH = "the witness of the refutation (checked by the search's own high-precision arithmetic only)"
+H = sp.Symbol("h", positive=True)       # distance from the origin along an axis or a ray (refutation witnesses)
 
 
 def build(report) -> dict:
     """The certificate of a verified `verify.Report` (any verdicts)."""
+    from .certify import refutation_theorems
     props = {}
     for name, v in report.properties.items():
         theorems = v.details.get("kernel") or []
@@ -45,6 +51,13 @@ def build(report) -> dict:
             "kernel": to_certificate(theorems) if theorems else None,
             "unchecked": list(v.details.get("unchecked", [SEARCH_ONLY])) if v.proved else [],
         }
+        if v.refuted:
+            try:
+                theorems, witness, why = refutation_theorems(name, v, report.design.f)
+            except Exception as exc:  # noqa: BLE001 - a proposer bug leaves the witness to the search, visibly
+                theorems, witness, why = None, None, f"internal error of the proposer: {type(exc).__name__}: {exc}"
+            props[name].update(kernel=to_certificate(theorems) if theorems else None, witness=witness,
+                               unchecked=[] if theorems else [f"{WITNESS_SEARCH} ({why})"])
     kf = report.kf
     if kf is not None and kf.exact is not None:
         props["kf"] = {"status": "proved", "reason": kf.reason, "exact": sp.srepr(kf.exact),
@@ -71,17 +84,25 @@ class PropertyCheck:
     assumptions: list = field(default_factory=list)
     unchecked: list = field(default_factory=list)
 
+    witness: str = ""           # refuted: what the kernel's conclusions show about f
+
     @property
     def kernel_checked(self) -> bool:
+        """Proved, and nothing of the proof is left to the search."""
         return self.status == "proved" and self.theorems > 0 and not self.unchecked
 
+    @property
+    def refutation_checked(self) -> bool:
+        """Refuted, with a witness the kernel checked and linked to f."""
+        return self.status == "refuted" and self.theorems > 0 and not self.unchecked
+
     def line(self) -> str:
-        if self.status != "proved":
+        if self.status not in ("proved", "refuted"):
             return f"{self.name}: {self.status} (nothing to check)"
-        head = (f"{self.name}: proved; {self.theorems} kernel theorem(s) re-checked"
-                f" (rests on {', '.join(self.assumptions)})" if self.theorems else f"{self.name}: proved")
+        head = (f"{self.name}: {self.status}; {self.theorems} kernel theorem(s) re-checked"
+                f" (rests on {', '.join(self.assumptions)})" if self.theorems else f"{self.name}: {self.status}")
         if not self.unchecked:
-            return head + "; kernel-checked"
+            return head + "; kernel-checked" + (f": {self.witness}" if self.witness else "")
         return head + "; still rests on the search for: " + "; ".join(self.unchecked)
 
 
@@ -186,6 +207,264 @@ def _link(name, f, theorems, exact=None) -> list[str]:
     return []
 
 
+# ---------------------------------------------------------------- refutations
+#
+# A refuted property's certificate holds a *witness record* {"kind": ...,
+# "points": [[x, y], ...] (srepr), "var": "e1" | "e2"} and kernel theorems.
+# The link below recomputes from f and the record the exact constants the
+# kernel's claims must be about, and checks that the signs claimed are the
+# negation the property needs.  Why each kind refutes (P_ = the property):
+#
+# value  f(p) for one exact point p.  P2: p = (0, 0) and f(p) != 0.  P3 (f > 0
+#        away from the origin): p != (0, 0) and f(p) <= 0.
+# circle f(q) - f(p) != 0 for rational p, q with |p| = |q|.  P4: if f were
+#        differentiable on the circle with e1 df/de2 - e2 df/de1 = 0 (the
+#        derivative of f along the circle), f would be constant on it.
+# slope  df/de1 (sympy.diff) at one exact point p = (x, y), x != 0, f without
+#        Piecewise, Max, Min or sign.  P5 needs df/de1 tanh(e1) > 0, i.e. the sign
+#        of df/de1 at p is sign(x): refuted by a sign 0 or -sign(x); P6
+#        (df/de1 = k e1 h, k > 0, 0 <= h <= 1) by the sign -sign(x).  Where
+#        df/de1 does not exist at p both properties fail anyway; where it
+#        exists, the derivative of the accepted constructs (the kernel's
+#        evaluator takes no other) is the value of SymPy's formula wherever that
+#        is defined ("sympy-diff").  Piecewise is excluded: a branch taken only
+#        at p (Eq conditions) has a derivative unrelated to f's.
+# step   f(q) - f(p) with p = (x1, y), q = (x2, y), x1 < x2 both > 0 or both
+#        < 0 (side = their sign): no derivative at all, so any f.  If P5
+#        held, g(t) = f(t, y) would be differentiable on [x1, x2] with g' of
+#        sign `side` (mean value theorem): f(q) - f(p) of sign 0 or -side
+#        refutes it; P6 (g' = k t h of sign 0 or side) is refuted by -side.
+# origin_jump  for v = e2 (or e1): E+(h) = df/dv at (0, h) (v = h, the other
+#        variable 0) and E-(h) = df/dv at (0, -h), h > 0, continuous on
+#        [0, w] with values L+, L- at 0 (`continuous_at_end`), and
+#        L+ - L- != 0.  If phi(t) = f(0, t) (f(t, 0) for e1) were
+#        differentiable near 0, the mean value theorem would give
+#        phi'(0) = L+ = L-.  So df/dv does not exist near the origin, or
+#        has no limit at it: v = e2 refutes P1 (df/de2 continuous), P7 (d2f/de2^2
+#        exists, so df/de2 does) and P8 (lim df/de2 = 0 as e2 -> 0 at e1 = 0);
+#        v = e1 refutes P1, P5 and P6 (both need df/de1 to exist everywhere).
+#        Like slope, refused for f with Piecewise, Max, Min or sign.
+# bounded  f(h dx, h dy) <= M for all h > 0 (`sup_upper`, M finite), (dx, dy)
+#        != (0, 0): f does not tend to oo along that ray, so P3 fails.
+# unbounded  E(h) -> +oo as h -> oo (at "oo": `diverges_by_growth` of E) or
+#        as h -> 0+ (at "0": `diverges_by_growth` of E(1/h)), for E = df/de2 at
+#        (0, h) (var e2): |df/de2| has no finite bound kf, P1 fails; for E =
+#        df/de1 at (h, 0), divided by h (var e1): P6's df/de1 = k e1 h with
+#        0 <= h <= 1 would give E <= k; for E = d2f/de2^2 at (0, h) (var e2,
+#        order 2, at "0" only): not continuous at the origin, P7 fails.
+#        f without Piecewise, Max, Min, sign.
+# jump   f a Piecewise (at the top), b exact, w > 0: for h in (0, w], branch
+#        iL of f applies at (b - h, 0) and branch iR at (b + h, 0) -- kernel
+#        sign theorems, on (0, w], that every earlier condition is false and
+#        that condition true (a relation l < r, l <= r, ... is true exactly
+#        where r - l has the matching sign; the first true condition picks
+#        the branch) --, the two branches tend to L-, L+ as h -> 0+
+#        (`continuous_at_end`), and L+ - L- (or f(b, 0) - L+, or f(b, 0) -
+#        L-) != 0.  Then t -> f(t, 0) is not continuous at b, so df/de1 does
+#        not exist at (b, 0): P1, P5, P6 fail.
+
+_SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
+_REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
+            "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P6", "P7"),
+            "jump": ("P1", "P5", "P6")}
+_UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo"), ("P6", "e1", 1, "0"),
+              ("P7", "e2", 2, "0")}
+
+
+def _at(f, p):
+    return f.subs({E1: p[0], E2: p[1]})
+
+
+def axis_derivative(f, v, side):
+    """df/dv at distance h > 0 from the origin along the v axis, on the side
+    `side` (+1, -1), the other variable 0: an expression in H."""
+    other = E2 if v == E1 else E1
+    return sp.diff(f, v).subs({other: 0}).subs(v, side * H)
+
+
+def along_ray(f, direction):
+    """f(h dx, h dy) for h > 0: an expression in H."""
+    return f.subs({E1: direction[0] * H, E2: direction[1] * H}, simultaneous=True)
+
+
+def growing(f, v, order=1, at="oo"):
+    """The expression whose divergence as h -> oo refutes P1 (v = e2: df/de2
+    at (0, h)), P6 (v = e1: df/de1 at (h, 0), divided by h) or P7 (order 2:
+    d2f/de2^2 at (0, h)); at "0", the same with h replaced by 1/h."""
+    e = axis_derivative(f if order == 1 else sp.diff(f, v), v, 1)
+    e = e if v == E2 else e / H
+    return e if at == "oo" else e.subs(H, 1 / H)
+
+
+_TRUE_WHEN = {sp.StrictLessThan: (1, True), sp.LessThan: (1, False),
+              sp.StrictGreaterThan: (-1, True), sp.GreaterThan: (-1, False)}
+
+
+def branch_conditions(f, b, side, i, w):
+    """For the jump witness: what the kernel must show so that branch i of
+    the Piecewise f applies at (b + side*h, 0) for every h in (0, w]: one
+    entry per condition up to i (none for a final True), each a list of the
+    acceptable (expression in H, want, strict) sign claims."""
+    if not isinstance(f, sp.Piecewise) or not 0 <= i < len(f.args):
+        raise CertificateError("jump: f is not a Piecewise with that branch")
+    at = {E1: b + side * H, E2: sp.Integer(0)}
+    out = []
+    for j, (_, cond) in enumerate(f.args[:i + 1]):
+        truth = j == i
+        if cond is sp.true:
+            if not truth:
+                raise CertificateError("jump: a condition True before the branch")
+            continue
+        if not isinstance(cond, (*_TRUE_WHEN, sp.Eq, sp.Ne)):
+            raise CertificateError(f"jump: condition {cond} is not a single relation")
+        d = cond.rhs.subs(at, simultaneous=True) - cond.lhs.subs(at, simultaneous=True)
+        if isinstance(cond, (sp.Eq, sp.Ne)):
+            if truth != isinstance(cond, sp.Ne):
+                raise CertificateError(f"jump: {cond} cannot be shown {truth} by a sign")
+            out.append([(d, 1, True), (d, -1, True)])
+        else:
+            want, strict = _TRUE_WHEN[type(cond)]
+            out.append([(d, want, strict)] if truth else [(d, -want, not strict)])
+    return out
+
+
+def jump_parts(f, b, branches, w):
+    """The one-sided branch expressions at (b - h, 0) and (b + h, 0)."""
+    return [f.args[i][0].subs({E1: b + side * H, E2: sp.Integer(0)}, simultaneous=True)
+            for i, side in zip(branches, (-1, 1))]
+
+
+def _link_jump(name, f, claims, witness, bad) -> str:
+    (b, y), = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
+    branches, w = witness.get("branches"), parse(witness.get("width"))
+    if y != 0 or not (isinstance(branches, list) and len(branches) == 2 and all(type(i) is int for i in branches)):
+        raise bad
+    on = (sp.srepr(H), "Integer(0)", sp.srepr(w), True, False)
+    k = 0
+    limits = []
+    for side, i, part in zip((-1, 1), branches, jump_parts(f, b, branches, w)):
+        for options in branch_conditions(f, b, side, i, w):
+            c = claims[k] if k < len(claims) else None
+            if c is None or c.kind != "sign" or (c.var, c.lo, c.hi, c.lo_open, c.hi_open) != on or not any(
+                    c.expr == sp.srepr(e) and c.want == want and (c.strict or not strict) for e, want, strict in options):
+                raise bad
+            k += 1
+        c = claims[k] if k < len(claims) else None
+        if c is None or (c.kind, c.expr, c.var, c.lo, c.hi) != ("limit", sp.srepr(part), sp.srepr(H), "Integer(0)",
+                                                                 sp.srepr(w)):
+            raise bad
+        limits.append(parse(c.other))
+        k += 1
+    value = _at(f, (b, y))
+    gaps = {"sides": limits[1] - limits[0], "left": value - limits[0], "right": value - limits[1]}
+    gap = gaps.get(witness.get("compare"))
+    if gap is None or len(claims) != k + 1 or claims[k].kind != "value_sign" or claims[k].expr != sp.srepr(gap) \
+            or claims[k].want == 0:
+        raise bad
+    return f"f(t, 0) jumps at t = {b}: left limit {limits[0]}, right limit {limits[1]}, value {value}"
+
+
+def witness_values(kind, f, points) -> list:
+    """The exact constants whose signs the kernel must claim (kinds value,
+    circle, slope, step); the proposer uses this too."""
+    if kind == "value":
+        return [_at(f, points[0])]
+    if kind in ("circle", "step"):
+        return [_at(f, points[1]) - _at(f, points[0])]
+    if kind == "slope":
+        return [sp.diff(f, E1).subs({E1: points[0][0], E2: points[0][1]})]
+    raise CertificateError(f"unknown witness kind {kind!r}")
+
+
+def _sign(c) -> int:
+    from .kernel.core import KernelError, _const_sign
+    try:
+        return _const_sign(c)
+    except KernelError as exc:
+        raise CertificateError(f"witness: {exc}") from None
+
+
+def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
+    """Check that the kernel's conclusions refute property `name` of f (see
+    the table above); (what they show, whether the link used sympy.diff).
+    Raises CertificateError otherwise."""
+    if not isinstance(witness, dict) or witness.get("kind") not in _REFUTES:
+        raise CertificateError(f"{name}: no known witness kind")
+    kind = witness["kind"]
+    if name not in _REFUTES[kind]:
+        raise CertificateError(f"{name}: a witness of kind {kind!r} does not refute {name}")
+    claims = [t.claim for t in theorems]
+    bad = CertificateError(f"{name}: the kernel's conclusions are not the witness {kind!r} about this f")
+    if kind in ("slope", "origin_jump", "unbounded") and f.has(*_SMOOTH_ONLY):
+        raise CertificateError(f"{name}: a {kind} witness needs an f without Piecewise, Max, Min or sign")
+    if kind == "origin_jump":
+        v = {"e1": E1, "e2": E2}.get(witness.get("var"))
+        if v is None or name not in {E1: ("P1", "P5", "P6"), E2: ("P1", "P7", "P8")}[v]:
+            raise CertificateError(f"{name}: an origin jump of df/d{witness.get('var')} does not refute {name}")
+        ends = [axis_derivative(f, v, side) for side in (1, -1)]
+        if not (len(claims) == 3 and [(c.kind, c.expr, c.var, c.lo) for c in claims[:2]]
+                == [("limit", sp.srepr(e), sp.srepr(H), "Integer(0)") for e in ends]):
+            raise bad
+        jump = parse(claims[0].other) - parse(claims[1].other)
+        if not (claims[2].kind == "value_sign" and claims[2].expr == sp.srepr(jump) and claims[2].want != 0):
+            raise bad
+        return (f"df/d{v} -> {parse(claims[0].other)} and {parse(claims[1].other)} "
+                f"along the {v} axis on either side of the origin"), True
+    on_h = (sp.srepr(H), "Integer(0)", "oo", True)
+    if kind == "bounded":
+        d = tuple(parse(c, design=True) for c in witness.get("direction", ()))
+        if len(d) != 2 or (_sign(d[0]) == 0 and _sign(d[1]) == 0):
+            raise bad
+        if not (len(claims) == 1 and claims[0].kind == "sup_upper" and claims[0].expr == sp.srepr(along_ray(f, d))
+                and (claims[0].var, claims[0].lo, claims[0].hi, claims[0].lo_open) == on_h
+                and parse(claims[0].other) not in (sp.oo, -sp.oo)):
+            raise bad
+        return f"f({d[0] * H}, {d[1] * H}) <= {parse(claims[0].other)} for all h > 0", False
+    if kind == "unbounded":
+        how = (name, witness.get("var"), witness.get("order", 1), witness.get("at", "oo"))
+        if how not in _UNBOUNDED:
+            raise CertificateError(f"{name}: a divergence {how[1:]} does not refute {name}")
+        v, order, at = {"e1": E1, "e2": E2}[how[1]], how[2], how[3]
+        if not (len(claims) == 1 and claims[0].kind == "diverges"
+                and claims[0].expr == sp.srepr(growing(f, v, order, at)) and claims[0].var == sp.srepr(H)):
+            raise bad
+        what = {(E2, 1): "df/de2(0, h)", (E1, 1): "df/de1(h, 0)/h", (E2, 2): "d2f/de2^2(0, h)"}[(v, order)]
+        return f"{what} -> oo as h -> {'oo' if at == 'oo' else '0+'}", True
+    if kind == "jump":
+        return _link_jump(name, f, claims, witness, bad), False
+    points = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
+    if len(points) != (2 if kind in ("circle", "step") else 1) or any(len(p) != 2 for p in points):
+        raise bad
+    values = witness_values(kind, f, points)
+    if not (len(claims) == 1 and claims[0].kind == "value_sign" and claims[0].expr == sp.srepr(values[0])):
+        raise bad
+    want = claims[0].want
+    p = points[0]
+    if kind == "value":
+        origin = _sign(p[0]) == 0 and _sign(p[1]) == 0
+        ok = (origin and want != 0) if name == "P2" else (not origin and want <= 0)
+        what = f"f{p} {'!= 0' if name == 'P2' else '<= 0'}"
+    elif kind == "circle":
+        q = points[1]
+        ok = (all(c.is_Rational for c in (*p, *q)) and p[0] ** 2 + p[1] ** 2 == q[0] ** 2 + q[1] ** 2
+              and want != 0)
+        what = f"f{q} != f{p} on the circle of radius {sp.sqrt(p[0] ** 2 + p[1] ** 2)}"
+    elif kind == "slope":
+        side = _sign(p[0])
+        ok = side != 0 and (want * side <= 0 if name == "P5" else want * side < 0)
+        what = f"df/de1{p} has sign {want}"
+    else:
+        q = points[1]
+        from .kernel.core import _lt
+        side = 1 if _lt(0, p[0]) else (-1 if _lt(q[0], 0) else 0)
+        ok = (p[1] == q[1] and _lt(p[0], q[0]) and side != 0
+              and (want * side <= 0 if name == "P5" else want * side < 0))
+        what = f"f{q} - f{p} has sign {want}"
+    if not ok:
+        raise CertificateError(f"{name}: the kernel's claim ({what}) does not refute {name}")
+    return what, kind == "slope"
+
+
 def check(data) -> list[PropertyCheck]:
     """Re-check a design certificate (a dict or JSON text).  Raises
     CertificateError naming the first property or step that fails."""
@@ -213,10 +492,19 @@ def check(data) -> list[PropertyCheck]:
                     raise CertificateError(f"{name}: {exc}") from None
                 pc.theorems = len(theorems)
                 pc.assumptions = sorted(set().union(*[t.assumptions for t in theorems]))
-                exact = parse(entry["exact"]) if name == "kf" else None
-                pc.unchecked += _link(name, f, theorems, exact)
-                if name not in ("P2", "P4"):        # the link differentiates F itself
-                    pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
+                if pc.status == "refuted":
+                    pc.witness, diff = link_refutation(name, f, theorems, entry["witness"])
+                    if diff:                        # the link differentiates f itself
+                        pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
+                elif pc.status == "proved":
+                    exact = parse(entry["exact"]) if name == "kf" else None
+                    pc.unchecked += _link(name, f, theorems, exact)
+                    if name not in ("P2", "P4"):        # the link differentiates F itself
+                        pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
+                else:
+                    raise CertificateError(f"{name}: kernel theorems for a verdict {pc.status!r}")
+            elif pc.status == "refuted" and not pc.unchecked:     # as written before witnesses were checked
+                pc.unchecked = [WITNESS_SEARCH]
             elif pc.status == "proved" and not pc.unchecked:
                 raise CertificateError(f"{name}: proved with neither kernel theorems nor unchecked facts")
             out.append(pc)

@@ -35,6 +35,8 @@ class Stats:
     true_proved: int = 0
     proved_total: int = 0       # proved properties plus exact kf claims
     kernel_checked: int = 0     # of those, checked by the kernel with nothing left to the search
+    refuted_total: int = 0
+    refutations_checked: int = 0    # refuted properties whose witness the kernel checked
     false_known: int = 0
     false_refuted: int = 0
     contradictions: list = field(default_factory=list)     # (path, case, Contradiction)
@@ -65,6 +67,7 @@ class Stats:
             f"wrong kf claims:    {self.count('wrong kf')}",
             f"certificates that do not re-check: {self.count('certificate')}",
             f"proved properties (and exact kf) kernel-checked: {self.kernel_checked}/{self.proved_total}",
+            f"refuted properties with a kernel-checked witness: {self.refutations_checked}/{self.refuted_total}",
             f"crashes / hangs / rejected: {self.count('crash')} / {self.count('hang')} / {self.count('unusable')}",
             f"hang/death only in a reused process (fine in a fresh one): {len(self.state_leaks)}",
             f"true properties (known by construction) proved: {self.true_proved}/{self.true_known} = {share:.1%}",
@@ -114,6 +117,9 @@ def run_profile(examples: int, seed: int | None = 0, timeout: float = 10.0, keep
                                       if v.get("status") == "proved")
             stats.proved_total += bool((result.get("kf") or {}).get("exact"))
             stats.kernel_checked += len(result.get("kernel_checked") or [])
+            stats.refuted_total += sum(1 for v in (result.get("properties") or {}).values()
+                                       if v.get("status") == "refuted")
+            stats.refutations_checked += len(result.get("refutations_checked") or [])
             for p in PROPS:
                 st = (result.get("properties") or {}).get(p, {}).get("status", "none")
                 stats.verdicts[p][st] += 1

@@ -43,15 +43,16 @@ def _answer(path: str, timeout: float) -> dict:
         return {"error": r.error}
     kf = r.kf
     from uwmr_symbolic import design_certificate
-    checked = []
+    checked, refutations = [], []
     try:                            # every certificate the prover emits must re-check
-        checked = [c.name for c in design_certificate.check(json.dumps(design_certificate.build(r)))
-                   if c.kernel_checked]
+        checks = design_certificate.check(json.dumps(design_certificate.build(r)))
+        checked = [c.name for c in checks if c.kernel_checked]
+        refutations = [c.name for c in checks if c.refutation_checked]
         cert = None
     except BaseException as exc:    # noqa: BLE001 -- reported as a contradiction by the oracle
         cert = f"{exc.__class__.__name__}: {exc}"
     return {
-        "certificate_error": cert, "kernel_checked": checked,
+        "certificate_error": cert, "kernel_checked": checked, "refutations_checked": refutations,
         "properties": {p: {"status": v.status, "reason": v.reason, "witness": _jsonable(v.witness)}
                        for p, v in r.properties.items()},
         "kf": None if kf is None else {

@@ -1,0 +1,333 @@
+"""Refuted verdicts in design certificates (issue 9): the kernel re-checks
+the witness of a refutation, and the link (`design_certificate.
+link_refutation`) checks that the kernel's claim is exactly the negation the
+property needs about this f at that point.
+
+Hand-made f, values by hand:
+* f = e1^2 + e2^2 - 1: f(0, 0) = -1 != 0 (P2 fails); f(1/2, 0) = -3/4 <= 0
+  (P3 fails); f(2, 0) = 3 > 0 (no refutation); df/de1 = 2 e1.
+* g = 1 - e1^2 (not radial): df/de1(1, 0) = -2 < 0 (P5, P6 fail);
+  g(3/5, 4/5) = 16/25 != g(1, 0) = 0 on the unit circle (P4 fails);
+  g(1, 0) - g(1/2, 0) = -3/4 < 0 with 0 < 1/2 < 1 (P5, P6 fail).
+* n = sqrt(e1^2 + e2^2): df/de2(0, h) = 1, df/de2(0, -h) = -1 for h > 0
+  (P1, P7, P8 fail at the origin).
+"""
+import copy
+import json
+
+import pytest
+import sympy as sp
+
+from uwmr_symbolic import design_certificate as DC, e1, e2
+from uwmr_symbolic.certify import refutation_theorems
+from uwmr_symbolic.kernel import core as K
+from uwmr_symbolic.kernel.certificate import to_certificate
+from uwmr_symbolic.verdict import refuted
+
+F = e1 ** 2 + e2 ** 2 - 1
+G = 1 - e1 ** 2
+N = sp.sqrt(e1 ** 2 + e2 ** 2)
+
+
+def cert(f, name, theorems, record):
+    """A design certificate with one refuted property."""
+    return {"format": DC.FORMAT, "version": DC.VERSION,
+            "design": {"name": "t", "file": "t.py", "f": sp.srepr(f)},
+            "properties": {name: {"status": "refuted", "reason": "", "kernel": to_certificate(theorems),
+                                  "witness": record, "unchecked": []}}}
+
+
+def proposed(name, f, witness):
+    theorems, record, why = refutation_theorems(name, refuted("", witness), f)
+    assert theorems is not None, why
+    return cert(f, name, theorems, record)
+
+
+def checked(data):
+    (pc,) = DC.check(json.dumps(data))
+    return pc
+
+
+def test_value_witnesses_of_p2_and_p3():
+    pc = checked(proposed("P2", F, {"e1": "0", "e2": "0", "f": "-1"}))
+    assert pc.refutation_checked and pc.witness == "f(0, 0) != 0" and pc.assumptions == ["arb", "sympy-core"]
+    data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    assert data["properties"]["P3"]["witness"] == {"kind": "value", "points": [["Rational(1, 2)", "Integer(0)"]]}
+    assert checked(data).line() == ("P3: refuted; 1 kernel theorem(s) re-checked (rests on arb, sympy-core); "
+                                    "kernel-checked: f(1/2, 0) <= 0")
+
+
+def test_moved_point_or_flipped_sign_is_rejected():
+    data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    moved = copy.deepcopy(data)
+    moved["properties"]["P3"]["witness"]["points"][0][0] = "Rational(1, 3)"     # f(1/3, 0) = -8/9: another constant
+    with pytest.raises(DC.CertificateError, match="P3: the kernel's conclusions are not the witness 'value'"):
+        DC.check(moved)
+    flipped = copy.deepcopy(data)
+    flipped["properties"]["P3"]["kernel"]["theorems"][0]["claim"]["want"] = 1
+    with pytest.raises(DC.CertificateError, match="P3: theorem 0"):
+        DC.check(flipped)
+    # a true kernel claim that is no refutation: f(2, 0) = 3 > 0
+    two = (sp.Integer(2), sp.Integer(0))
+    good = cert(F, "P3", [K.value_sign(value=F.subs({e1: 2, e2: 0}))],
+                {"kind": "value", "points": [[sp.srepr(c) for c in two]]})
+    with pytest.raises(DC.CertificateError, match=r"P3: the kernel's claim \(f\(2, 0\) <= 0\) does not refute P3"):
+        DC.check(good)
+    # P2 at a point other than the origin; P3 at the origin
+    at_half = copy.deepcopy(data)
+    at_half["properties"]["P2"] = at_half["properties"].pop("P3")
+    with pytest.raises(DC.CertificateError, match="P2: the kernel's claim"):
+        DC.check(at_half)
+    origin = proposed("P2", F, {})
+    origin["properties"]["P3"] = origin["properties"].pop("P2")
+    with pytest.raises(DC.CertificateError, match="P3: the kernel's claim"):
+        DC.check(origin)
+
+
+def test_circle_witness_of_p4():
+    data = proposed("P4", G, {"point_a": ["1", "0"], "point_b": ["3/5", "4/5"]})
+    assert checked(data).witness == "f(3/5, 4/5) != f(1, 0) on the circle of radius 1"
+    off = copy.deepcopy(data)
+    off["properties"]["P4"]["witness"]["points"][1] = ["Rational(4, 5)", "Rational(3, 5)"]   # g = 9/25 there
+    with pytest.raises(DC.CertificateError, match="P4: the kernel's conclusions are not the witness 'circle'"):
+        DC.check(off)
+    off["properties"]["P4"]["witness"]["points"][1] = ["Rational(3, 5)", "Rational(3, 5)"]   # same g, off the circle
+    with pytest.raises(DC.CertificateError, match=r"P4: the kernel's claim \(f\(3/5, 3/5\) != f\(1, 0\) on the "
+                                                  r"circle of radius 1\) does not refute P4"):
+        DC.check(off)
+    # both points moved consistently, kernel claim remade: the link still wants one circle
+    p, q = (sp.Integer(1), sp.Integer(0)), (sp.Rational(1, 2), sp.Integer(0))
+    val = G.subs({e1: q[0], e2: q[1]}) - G.subs({e1: p[0], e2: p[1]})
+    bad = cert(G, "P4", [K.value_sign(value=val)], {"kind": "circle", "points": [[sp.srepr(c) for c in x] for x in (p, q)]})
+    with pytest.raises(DC.CertificateError, match="does not refute P4"):
+        DC.check(bad)
+
+
+def test_slope_and_step_witnesses_of_p5_and_p6():
+    for name in ("P5", "P6"):
+        data = proposed(name, G, {"e1": "1", "e2": "0"})
+        pc = checked(data)
+        assert pc.refutation_checked and pc.witness == "df/de1(1, 0) has sign -1" and "sympy-diff" in pc.assumptions
+    # df/de1 = 2 e1 > 0 at (1, 0) for F: no refutation
+    bad = cert(F, "P5", [K.value_sign(value=sp.Integer(2))], {"kind": "slope", "points": [["Integer(1)", "Integer(0)"]]})
+    with pytest.raises(DC.CertificateError, match="does not refute P5"):
+        DC.check(bad)
+    # on the other side of the axis df/de1 < 0 is what P5 needs: (-1, 0) for F
+    bad = cert(F, "P5", [K.value_sign(value=sp.Integer(-2))], {"kind": "slope", "points": [["Integer(-1)", "Integer(0)"]]})
+    with pytest.raises(DC.CertificateError, match="does not refute P5"):
+        DC.check(bad)
+    # a Piecewise f: no slope witness (a branch taken at one point only has an unrelated derivative)
+    pw = sp.Piecewise((2 - 5 * (e1 - 1), sp.Eq(e1, 1)), (1 + e1, True))       # f = 1 + e1, continuous
+    bad = cert(pw, "P5", [K.value_sign(value=sp.Integer(-5))], {"kind": "slope", "points": [["Integer(1)", "Integer(0)"]]})
+    with pytest.raises(DC.CertificateError, match="a slope witness needs an f without Piecewise"):
+        DC.check(bad)
+    # step: g(1, 0) - g(1/2, 0) = -3/4 with 0 < 1/2 < 1
+    step = lambda p, q, g=G: cert(g, "P6", [K.value_sign(value=g.subs({e1: q[0], e2: q[1]}) - g.subs({e1: p[0], e2: p[1]}))],  # noqa: E731
+                                  {"kind": "step", "points": [[sp.srepr(sp.sympify(c)) for c in x] for x in (p, q)]})
+    assert checked(step((sp.Rational(1, 2), 0), (1, 0))).witness == "f(1, 0) - f(1/2, 0) has sign -1"
+    with pytest.raises(DC.CertificateError, match="does not refute P6"):
+        DC.check(step((-1, 0), (1, 0)))          # across e1 = 0: g(1) - g(-1) = 0 says nothing
+    with pytest.raises(DC.CertificateError, match="does not refute P6"):
+        DC.check(step((-1, 0), (sp.Rational(-1, 2), 0), F))   # F decreases for e1 < 0: what P6 needs there
+    assert checked(step((-1, 0), (sp.Rational(-1, 2), 0))).witness == "f(-1/2, 0) - f(-1, 0) has sign 1"
+    with pytest.raises(DC.CertificateError, match="does not refute P6"):
+        DC.check(step((sp.Rational(1, 2), 0), (1, 1)))     # not on one horizontal line
+
+
+def test_origin_jump_witness():
+    for name in ("P1", "P7", "P8"):
+        pc = checked(proposed(name, N, {"e1": "0", "e2": "0"}))
+        assert pc.refutation_checked and pc.theorems == 3
+        assert pc.witness == "df/de2 -> 1 and -1 along the e2 axis on either side of the origin"
+    data = proposed("P5", N, {"e1": "0", "e2": "0"})
+    assert data["properties"]["P5"]["witness"] == {"kind": "origin_jump", "var": "e1"}
+    assert checked(data).refutation_checked
+    wrong = copy.deepcopy(data)
+    wrong["properties"]["P8"] = wrong["properties"].pop("P5")       # a jump of df/de1 says nothing about P8
+    with pytest.raises(DC.CertificateError, match="P8: an origin jump of df/de1 does not refute P8"):
+        DC.check(wrong)
+    # the same for f written with a Piecewise: refused (no derivative witness for Piecewise f)
+    pw = sp.Piecewise((N, e1 > -1), (N + 1, True))        # = N near the origin
+    bad = copy.deepcopy(data)
+    bad["design"]["f"] = sp.srepr(pw)
+    with pytest.raises(DC.CertificateError, match="P5: a origin_jump witness needs an f without Piecewise"):
+        DC.check(bad)
+    # f = e1^2 + e2^2 - 1 has no jump: no witness is found, the refutation would rest on the search
+    theorems, record, why = refutation_theorems("P8", refuted("", {"e1": "0", "e2": "-> 0+"}), F)
+    assert theorems is None and record is None and "origin_jump" in why
+
+
+def test_unknown_kind_and_unlinked_property_are_rejected():
+    data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    data["properties"]["P3"]["witness"]["kind"] = "guess"
+    with pytest.raises(DC.CertificateError, match="P3: no known witness kind"):
+        DC.check(data)
+    data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    data["properties"]["P5"] = data["properties"].pop("P3")
+    with pytest.raises(DC.CertificateError, match="P5: a witness of kind 'value' does not refute P5"):
+        DC.check(data)
+    data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    # a refutation without its witness (or written before witnesses were checked) rests on the search, visibly
+    data["properties"]["P3"]["kernel"], data["properties"]["P3"]["unchecked"] = None, []
+    pc = checked(data)
+    assert not pc.refutation_checked and pc.line() == f"P3: refuted; still rests on the search for: {DC.WITNESS_SEARCH}"
+    # a refutation's theorems under a verdict "unknown": rejected
+    data = proposed("P3", F, {"e1": "1/2", "e2": "0"})
+    data["properties"]["P3"]["status"] = "unknown"
+    with pytest.raises(DC.CertificateError, match="P3: kernel theorems for a verdict 'unknown'"):
+        DC.check(data)
+
+
+B = 1 - 1 / (1 + e1 ** 2 + e2 ** 2)        # f -> 1 as |e| -> oo: B <= 2 on every ray
+Q = (e1 ** 2 + e2 ** 2) ** 2                # df/de2(0, h) = 4 h^3 -> oo; df/de1(h, 0)/h = 4 h^2 -> oo
+
+
+def test_bounded_ray_witness_of_p3():
+    data = proposed("P3", B, {"direction": "every", "limit": "1"})
+    assert data["properties"]["P3"]["witness"] == {"kind": "bounded", "direction": ["Integer(1)", "Integer(0)"]}
+    assert checked(data).witness == "f(h, 0) <= 2 for all h > 0"
+    data = proposed("P3", B, {"direction": [-1, 2], "limit": "1"})
+    assert checked(data).witness == "f(-h, 2*h) <= 2 for all h > 0"
+    zero = copy.deepcopy(data)
+    zero["properties"]["P3"]["witness"]["direction"] = ["Integer(0)", "Integer(0)"]
+    with pytest.raises(DC.CertificateError, match="P3: the kernel's conclusions are not the witness 'bounded'"):
+        DC.check(zero)
+    other = copy.deepcopy(data)
+    other["properties"]["P3"]["witness"]["direction"] = ["Integer(1)", "Integer(0)"]     # another ray
+    with pytest.raises(DC.CertificateError, match="P3: the kernel's conclusions are not the witness 'bounded'"):
+        DC.check(other)
+    # Q is unbounded on the ray: no witness is found
+    theorems, _, why = refutation_theorems("P3", refuted("", {"direction": "every", "limit": "1"}), Q)
+    assert theorems is None and "bounded" in why
+
+
+def test_unbounded_witness_of_p1_and_p6():
+    pc = checked(proposed("P1", Q, {"s": "oo", "limit": "oo"}))
+    assert pc.refutation_checked and pc.witness == "df/de2(0, h) -> oo as h -> oo" and "sympy-diff" in pc.assumptions
+    data = proposed("P6", Q, {"s": "oo", "limit": "oo"})
+    assert checked(data).witness == "df/de1(h, 0)/h -> oo as h -> oo"
+    swapped = copy.deepcopy(data)
+    swapped["properties"]["P1"] = swapped["properties"].pop("P6")
+    with pytest.raises(DC.CertificateError, match=r"P1: a divergence \('e1', 1, 'oo'\) does not refute P1"):
+        DC.check(swapped)
+    swapped["properties"]["P1"]["witness"]["var"] = "e2"      # df/de1(h, 0)/h is not df/de2(0, h)
+    with pytest.raises(DC.CertificateError, match="P1: the kernel's conclusions are not the witness 'unbounded'"):
+        DC.check(swapped)
+    # B' is bounded: no witness
+    theorems, _, why = refutation_theorems("P1", refuted("", {"s": "oo", "limit": "oo"}), B)
+    assert theorems is None and "unbounded" in why
+
+
+@pytest.mark.slow
+def test_no_witness_links_for_a_property_that_holds():
+    """For every property that holds (tests/expectations.py, derived by hand)
+    of every design file, made-up witnesses of every kind -- points of a
+    grid, pairs on circles, rays, the origin, divergence -- never give kernel
+    theorems that link as a refutation."""
+    import sys
+    from pathlib import Path
+    root = Path(__file__).resolve().parents[1]
+    sys.path.insert(0, str(root / "tests"))
+    from expectations import EXPECTATIONS
+    from uwmr_symbolic.design import load_design
+    grid = ["1/3", "-1/2", "1", "-5/2"]
+    witnesses = [{"e1": "0", "e2": "0"}, {"e1": "0", "e2": "-> 0+"}, {"s": "oo", "limit": "oo"},
+                 {"direction": [-1, 2], "limit": "1"},
+                 {"point_a": ["1", "0"], "point_b": ["3/5", "4/5"]}, {"point_a": ["0", "5/2"], "point_b": ["-3/2", "2"]},
+                 *[{"e1": x, "e2": y} for x in grid for y in ("0", "1/3")]]
+    tried = 0
+    for rel, exp in EXPECTATIONS.items():
+        path = root / rel
+        if not path.exists() or rel.startswith("tests/adversarial"):
+            continue
+        f = load_design(path).f
+        for name, verdict in exp["verdicts"].items():
+            if verdict != "proved":
+                continue
+            for w in witnesses:
+                theorems, record, _ = refutation_theorems(name, refuted("", w), f)
+                assert theorems is None, (rel, name, record)
+                tried += 1
+    assert tried > 500
+
+
+R34 = (e1 ** 2 + e2 ** 2) ** sp.Rational(3, 4)     # F = s^(3/2): F'(s)/s = 3/(2 sqrt(s)), F'' = 3/(4 sqrt(s))
+
+
+def test_unbounded_near_the_origin_refutes_p6_and_p7():
+    data = proposed("P6", R34, {"e1": "h -> 0+", "e2": "0", "limit": "oo"})
+    assert data["properties"]["P6"]["witness"] == {"kind": "unbounded", "var": "e1", "order": 1, "at": "0"}
+    assert checked(data).witness == "df/de1(h, 0)/h -> oo as h -> 0+"
+    data = proposed("P7", R34, {"e1": "0", "e2": "h -> 0+", "limit": "oo"})
+    assert checked(data).witness == "d2f/de2^2(0, h) -> oo as h -> 0+"
+    at_oo = copy.deepcopy(data)
+    at_oo["properties"]["P7"]["witness"]["at"] = "oo"       # unbounded at infinity says nothing about P7
+    with pytest.raises(DC.CertificateError, match=r"P7: a divergence \('e2', 2, 'oo'\) does not refute P7"):
+        DC.check(at_oo)
+    as_p1 = copy.deepcopy(data)
+    as_p1["properties"]["P1"] = as_p1["properties"].pop("P7")
+    with pytest.raises(DC.CertificateError, match="P1: a divergence"):
+        DC.check(as_p1)
+    as_p1["properties"]["P1"]["witness"]["order"] = 1        # df/de2(0, h) = 3 sqrt(h)/2 -> 0: another expression
+    with pytest.raises(DC.CertificateError, match="P1: the kernel's conclusions are not the witness 'unbounded'"):
+        DC.check(as_p1)
+    # P1 fails too, but at infinity: df/de2(0, h) = 3 sqrt(h)/2 has no finite bound kf
+    data = proposed("P1", R34, {"e1": "0", "e2": "h -> 0+", "limit": "oo"})
+    assert checked(data).witness == "df/de2(0, h) -> oo as h -> oo"
+
+
+def test_a_refuted_p4_does_not_stand_for_the_radial_reduction():
+    """Only a *proved* P4 (the identity f = F(|e|)) discharges the reduction
+    that other properties rest on; a kernel-checked refutation of P4 must not."""
+    from uwmr_symbolic.certify import REDUCTION
+    data = proposed("P4", G, {"point_a": ["1", "0"], "point_b": ["3/5", "4/5"]})
+    data["properties"]["P5"] = {"status": "proved", "reason": "", "kernel": None, "unchecked": [REDUCTION]}
+    checks = {c.name: c for c in DC.check(json.dumps(data))}
+    assert checks["P4"].refutation_checked and not checks["P4"].kernel_checked
+    assert checks["P5"].unchecked == [REDUCTION]
+
+
+RHO = e1 ** 2 + e2 ** 2
+JUMP = sp.Piecewise((RHO, RHO <= 1), (RHO + 1, True))          # f(t, 0) -> 1 from the left of t = 1, -> 2 from the right
+POINT = sp.Piecewise((5, sp.Eq(e1, 1)), (1 + e1, True))         # the value 5 at t = 1 only; limits 2 both sides
+SMOOTH = sp.Piecewise((RHO, RHO <= 1), (2 * RHO - 1, True))      # continuous at t = 1 (a kink)
+
+
+def test_jump_of_a_piecewise_f_along_the_axis():
+    data = proposed("P1", JUMP, {"e1": "1", "e2": "0"})
+    w = data["properties"]["P1"]["witness"]
+    assert (w["kind"], w["branches"], w["compare"]) == ("jump", [0, 1], "sides")
+    pc = checked(data)
+    assert pc.refutation_checked and pc.theorems == 5
+    assert pc.witness == "f(t, 0) jumps at t = 1: left limit 1, right limit 2, value 1"
+    # Eq: the branch taken at t = 1 only; the value 5 differs from the limit 2 on the left
+    data = proposed("P1", POINT, {"e1": "1", "e2": "0"})
+    assert data["properties"]["P1"]["witness"]["compare"] == "left" and checked(data).refutation_checked
+    # (for P5 a step comes first: f(5/4, 0) - f(1, 0) = 9/4 - 5 < 0)
+    assert proposed("P5", POINT, {"e1": "1", "e2": "0"})["properties"]["P5"]["witness"]["kind"] == "step"
+    # a continuous f (a kink only): no jump witness; P5 holds for SMOOTH near t = 1 anyway
+    theorems, _, why = refutation_theorems("P1", refuted("", {"e1": "1", "e2": "0"}), SMOOTH)
+    assert theorems is None and "jump" in why
+
+
+def test_tampered_jump_witness_is_rejected():
+    data = proposed("P6", JUMP, {"e1": "1", "e2": "0"})
+    for key, value in (("branches", [1, 1]), ("branches", [0, 0]), ("compare", "left"), ("width", "Rational(1, 2)"),
+                       ("points", [["Integer(1)", "Integer(1)"]]), ("points", [["Rational(1, 2)", "Integer(0)"]])):
+        bad = copy.deepcopy(data)
+        bad["properties"]["P6"]["witness"][key] = value
+        with pytest.raises(DC.CertificateError, match="P6: (the kernel's conclusions are not the witness 'jump'|jump:)"):
+            DC.check(bad)
+    dropped = copy.deepcopy(data)        # without the theorem that the left branch applies
+    kernel = dropped["properties"]["P6"]["kernel"]
+    kernel["conclusions"] = kernel["conclusions"][1:]
+    with pytest.raises(DC.CertificateError, match="P6: the kernel's conclusions are not the witness 'jump'"):
+        DC.check(dropped)
+    other = copy.deepcopy(data)          # the same certificate about the continuous SMOOTH
+    other["design"]["f"] = sp.srepr(SMOOTH)
+    with pytest.raises(DC.CertificateError, match="P6: the kernel's conclusions are not the witness 'jump'"):
+        DC.check(other)
+    as_p3 = copy.deepcopy(data)
+    as_p3["properties"]["P3"] = as_p3["properties"].pop("P6")
+    with pytest.raises(DC.CertificateError, match="P3: a witness of kind 'jump' does not refute P3"):
+        DC.check(as_p3)
