@@ -22,6 +22,7 @@ class GainCheck:
     W_margin: sp.Expr | None
     lam_max: sp.Expr | None     # largest lam keeping the W bound within Wmax
     kf_known: bool = True       # False: kf undecided, the W bound cannot be checked
+    W_margin_lower: sp.Expr | None = None   # the margin with kf's certified lower bound
 
     @property
     def V_ok(self) -> bool:
@@ -31,13 +32,20 @@ class GainCheck:
     def W_ok(self) -> bool | None:
         if not self.kf_known:
             return None
-        return self.W_margin is not None and bool(self.W_margin >= 0)
+        if self.W_margin is not None and bool(self.W_margin >= 0):
+            return True
+        if self.W_margin_lower is not None and bool(self.W_margin_lower >= 0):
+            return None         # the limit lies inside kf's enclosure: undecided, not a violation
+        return False
 
 
-def check_gains(gains: dict, kf_upper, kf_known: bool = True) -> dict[str, GainCheck]:
+def check_gains(gains: dict, kf_upper, kf_known: bool = True, kf_lower=None) -> dict[str, GainCheck]:
     """Bound (10) for every scenario.  kf_upper: exact SymPy number, or None
     with kf_known=True for an infinite kf (the W bound is then infinite and
-    only lam = 0 would do), or kf_known=False when kf is undecided."""
+    only lam = 0 would do), or kf_known=False when kf is undecided.
+    kf_lower: kf's certified lower bound when kf is only enclosed; a W bound
+    that fails with kf_upper but holds with kf_lower is undecided (W_ok None),
+    not failed: only the lower bound proves a violation."""
     out = {}
     for name, g in gains.items():
         V_bound = g["Vr_max"] + g["k1"]
@@ -50,5 +58,8 @@ def check_gains(gains: dict, kf_upper, kf_known: bool = True) -> dict[str, GainC
             W_margin = g["Wmax"] - W_bound
             room = g["Wmax"] - g["Wr_max"] - g["k2"]
             lam_max = sp.Max(0, room / (g["Vr_max"] * kf_upper)) if kf_upper != 0 else sp.oo
-        out[name] = GainCheck(name, V_bound, W_bound, V_margin, W_margin, lam_max, kf_known)
+        lower = None
+        if kf_upper is not None and kf_lower is not None:
+            lower = g["Wmax"] - (g["Wr_max"] + g["lam"] * g["Vr_max"] * kf_lower + g["k2"])
+        out[name] = GainCheck(name, V_bound, W_bound, V_margin, W_margin, lam_max, kf_known, lower)
     return out

@@ -152,7 +152,10 @@ def _verify(design: Design, timeout: float, start: float) -> Report:
     if kf is not None and kf.upper is not None:
         kf_for_gains = kf.exact if kf.exact is not None else sp.Rational(kf.upper.numerator, kf.upper.denominator)
     kf_known = kf_for_gains is not None or (kf is not None and kf.unbounded_witness is not None)
-    gains = check_gains(design.gains, kf_for_gains, kf_known)
+    kf_lower = None
+    if kf_for_gains is not None and kf.exact is None and kf.lower is not None:
+        kf_lower = sp.Rational(kf.lower.numerator, kf.lower.denominator)
+    gains = check_gains(design.gains, kf_for_gains, kf_known, kf_lower)
     timed_out = timed_out or timeouts.expired != expired_before
     return Report(path, design, props, kf, gains, proof, seconds=time.monotonic() - start,
                   timed_out=timed_out)
