@@ -140,3 +140,22 @@ def test_piecewise_erf_join_tail_does_not_divide_by_zero(tmp_path):
     for f32, rows in ((False, _law_rows(pairs)), (True, _law_rows([(0.0, 1e20), (1e30, 3e38)]))):
         v, w, st, res = run_executable(exe, rows, tmp_path, f32=f32)
         assert res.returncode == 0 and "runtime error" not in res.stderr, f"sanitizer: {res.stderr}"
+
+
+def test_piecewise_branch_chosen_from_the_exact_rho(tmp_path):
+    """Design 4 (NOT VERIFIED, f jumps at rho = (pi + 1)^2 - 1): in float, e2 =
+    4.0190534591674805 has rho 1e-6 above the switch, but rho rounded to float
+    equalled the rounded switch, and the inner branch was taken (error 0.2).
+    `rho_cmp` decides the branch from e1^2 + e2^2 without rounding."""
+    path = ROOT.parent / "designs" / "design4_cosine.py"
+    written = generate(path, tmp_path / path.stem, force=True)
+    assert written
+    lib = build_library(tmp_path / path.stem, path.stem, tmp_path)
+    law = reference.Law.of(load_design(path))
+    for f32, e2s in ((True, [4.0190534591674805, 4.019053]), (False, [4.0190534591674805, 4.019053459167480])):
+        rows = _law_rows([(0.0, e) for e in e2s] + [(e, 0.0) for e in e2s])
+        if f32:
+            rows = rows.astype(np.float32).astype(np.float64)
+        ref = reference.table(law, rows)
+        v, w, st = lib.run(rows, f32=f32)
+        check(path.stem, "C float" if f32 else "C double", rows, ref, v, w, st, "float" if f32 else "double")

@@ -50,6 +50,19 @@ static double prod_slow(const double *x, int n)
     return ldexp(mant, ex);
 }
 
+/* The sign of e1^2 + e2^2 - (bh + bl), for the branch of a Piecewise f:
+ * e_i^2 = p_i + q_i exactly (fma), p1 + p2 = s + t exactly (TwoSum), and
+ * s - bh is exact near the boundary (Sterbenz), so the branch is the exact
+ * law's unless |rho - b| is below about 2^-100 rho (float: 2^-44 rho). */
+static int rho_cmp(double e1, double e2, double bh, double bl)
+{
+    const double p1 = e1 * e1, q1 = fma(e1, e1, -p1);
+    const double p2 = e2 * e2, q2 = fma(e2, e2, -p2);
+    const double s = p1 + p2, z = s - p1, t = (p1 - (s - z)) + (p2 - z);
+    const double r = (s - bh) + (((t + q1) + q2) - bl);
+    return (r > 0.0) - (r < 0.0);
+}
+
 /* lam vr df/de2(e1, e2) sinc(e3) for finite inputs */
 static double gterm(double e1, double e2, double lam, double vr, double sinc)
 {
@@ -57,7 +70,7 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
     const double m = a1 > a2 ? a1 : a2;
     if (m >= 1e-100 && m <= 10000.0) {
         const double rho = e1 * e1 + e2 * e2;
-        if (rho <= 16.152789708268944) {
+        if (rho_cmp(e1, e2, 16.152789708268944, 8.714589107034418e-16) <= 0) {
             const double x0 = sqrt(rho + 1.0);
             const double H = sin(rho/(x0 + 1.0))/x0;
             const double p1 = lam * vr;
@@ -208,7 +221,7 @@ int uwmr_design4_cosine_control(double e1, double e2, double e3, double vr, doub
             & (fabs(lv) >= DBL_MIN) & (fabs(vr) + fabs(wr) + k1 + k2 <= 1.1235582092889474e+307)) {
             const double rho = e1 * e1 + e2 * e2;
             double H;
-            if (rho <= 16.152789708268944) {
+            if (rho_cmp(e1, e2, 16.152789708268944, 8.714589107034418e-16) <= 0) {
                 const double x0 = sqrt(rho + 1.0);
                 H = sin(rho/(x0 + 1.0))/x0;
             } else {
@@ -386,6 +399,19 @@ static float prod_slow_f32(const float *x, int n)
     return ldexpf(mant, ex);
 }
 
+/* The sign of e1^2 + e2^2 - (bh + bl), for the branch of a Piecewise f:
+ * e_i^2 = p_i + q_i exactly (fma), p1 + p2 = s + t exactly (TwoSum), and
+ * s - bh is exact near the boundary (Sterbenz), so the branch is the exact
+ * law's unless |rho - b| is below about 2^-100 rho (float: 2^-44 rho). */
+static int rho_cmp_f32(float e1, float e2, float bh, float bl)
+{
+    const float p1 = e1 * e1, q1 = fmaf(e1, e1, -p1);
+    const float p2 = e2 * e2, q2 = fmaf(e2, e2, -p2);
+    const float s = p1 + p2, z = s - p1, t = (p1 - (s - z)) + (p2 - z);
+    const float r = (s - bh) + (((t + q1) + q2) - bl);
+    return (r > 0.0F) - (r < 0.0F);
+}
+
 /* lam vr df/de2(e1, e2) sinc(e3) for finite inputs */
 static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
 {
@@ -393,7 +419,7 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
     const float m = a1 > a2 ? a1 : a2;
     if (m >= 1e-12F && m <= 10000.0F) {
         const float rho = e1 * e1 + e2 * e2;
-        if (rho <= 16.15279F) {
+        if (rho_cmp_f32(e1, e2, 16.15279F, -3.6131112e-07F) <= 0) {
             const float x0 = sqrtf(rho + 1.0F);
             const float H = sinf(rho/(x0 + 1.0F))/x0;
             const float p1 = lam * vr;
@@ -544,7 +570,7 @@ int uwmr_design4_cosine_control_f32(float e1, float e2, float e3, float vr, floa
             & (fabsf(lv) >= FLT_MIN) & (fabsf(vr) + fabsf(wr) + k1 + k2 <= 4.2535296e+37F)) {
             const float rho = e1 * e1 + e2 * e2;
             float H;
-            if (rho <= 16.15279F) {
+            if (rho_cmp_f32(e1, e2, 16.15279F, -3.6131112e-07F) <= 0) {
                 const float x0 = sqrtf(rho + 1.0F);
                 H = sinf(rho/(x0 + 1.0F))/x0;
             } else {

@@ -98,16 +98,31 @@ def _indent(lines, n):
     return [pad + ln if ln else ln for ln in lines]
 
 
+def _split_constant(value, cfg) -> tuple[str, str]:
+    """(hi, lo) literals with hi + lo = value to twice the type's precision."""
+    import numpy as np
+    exact = sp.N(value, 80)
+    hi = float(exact) if cfg.precision == "double" else float(np.float32(float(exact)))
+    lo = sp.N(exact - sp.Rational(hi), 40)
+    return cfg.lit(sp.Rational(hi)), cfg.lit(lo)
+
+
 def _chain(branches, var, cfg, body):
     """if/else chain over branches (sorted by increasing var); `body(branch)`
-    gives the lines of one branch."""
+    gives the lines of one branch.  A branch in rho is chosen by `rho_cmp`,
+    the sign of e1^2 + e2^2 - b without the rounding of rho."""
     if len(branches) == 1:
         return ["{", *_indent(body(branches[0]), 4), "}"]
     out = []
     for i, br in enumerate(branches):
         if i < len(branches) - 1:
             op = "<=" if br.hi_closed else "<"
-            head = ("if" if i == 0 else "} else if") + f" ({var} {op} {cfg.lit(br.hi)}) {{"
+            if var == "rho":
+                hi, lo = _split_constant(br.hi, cfg)
+                test = f"rho_cmp{cfg.suffix}(e1, e2, {hi}, {lo}) {op} 0"
+            else:
+                test = f"{var} {op} {cfg.lit(br.hi)}"
+            head = ("if" if i == 0 else "} else if") + f" ({test}) {{"
         else:
             head = "} else {"
         out.append(head)
@@ -281,6 +296,7 @@ def render(env, model: LawModel, context: dict) -> dict[str, str]:
         cfg = dataclasses.replace(base, tiny=model.thresholds[base.precision][0],
                                   far=model.thresholds[base.precision][1])
         variants.append(dict(cfg=cfg, body=gterm_lines(model, cfg, names), fast=fast_lines(model, cfg, names),
+                             rho_cmp=model.radial and len(model.mid) > 1,
                              tiny=cfg.lit(cfg.tiny), far=cfg.lit(cfg.far), cut=cfg.lit(cfg.sinc_cut),
                              zero=cfg.lit(0), one=cfg.lit(1), two=cfg.lit(2), half=cfg.lit(sp.Rational(1, 2)), huge="HUGE_VALF" if cfg.precision == "float" else "HUGE_VAL", c6=cfg.lit(sp.Rational(1, 6)),
                              c120=cfg.lit(sp.Rational(1, 120)), pi=cfg.lit(sp.pi), two_pi=cfg.lit(2 * sp.pi),
