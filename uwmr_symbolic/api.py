@@ -288,12 +288,13 @@ def generate(report: Report, out_dir: str | os.PathLike, targets: Iterable[str] 
                     out.mkdir(parents=True, exist_ok=True)
                     written.append(Path(shutil.copyfile(p, out / p.name)))
     if "casadi" in targets:
-        from .codegen.casadi_backend import casadi_function
+        from .codegen import casadi_function      # validated against the exact law, like the files
         model, _ = build(report.path, force=force, report=report)
         if model.verified:
+            fn = casadi_function(report.path, report=report)
             out.mkdir(parents=True, exist_ok=True)
             target = out / f"{model.stem}.casadi"
-            casadi_function(model).save(str(target))
+            fn.save(str(target))
             written.append(target)
         else:
             warnings.warn("no CasADi file for a NOT VERIFIED design", RuntimeWarning, stacklevel=2)

@@ -26,7 +26,8 @@ import time
 from contextlib import contextmanager
 
 #: How many limits set by `attempt` have expired in this process (a result
-#: computed while one expired depends on the time it was given: not cached).
+#: computed while one expired depends on the time it was given: the cache
+#: serves it only to runs with the same or a shorter --timeout).
 expired = 0
 
 

@@ -13,7 +13,6 @@ from __future__ import annotations
 import math
 import os
 import shutil
-import sys
 import tempfile
 import textwrap
 from fractions import Fraction
