@@ -108,7 +108,7 @@ extern "C" {
  *       0 < m < 1e-100: g within 4.6e-15.
  *       1e-100 <= m <= 1e+04: g within 4.2e-14.
  *       m > 1e+04 (except as listed): g within 5.8e-15.
- *       NOT CERTIFIED for m > 6.09e+307: a partial product may overflow.
+ *       NOT CERTIFIED for m > 4.49e+307: a partial product may overflow.
  *   float (_f32) outside the ranges marked NOT CERTIFIED: |g^ - g| <=
  *     3.9e-06 |g| and |term^ - term| <= 4.6e-06 |term| where the term is a
  *     normal number; |v^ - v| <= 1.3e-06 (|vr| + k1), |w^ - w| <= 4.7e-06
@@ -116,7 +116,7 @@ extern "C" {
  *       0 < m < 1e-12: g within 1.3e-06.
  *       1e-12 <= m <= 1e+04: g within 3.9e-06.
  *       m > 1e+04 (except as listed): g within 1.9e-06.
- *       NOT CERTIFIED for m > 1.15e+38: a partial product may overflow.
+ *       NOT CERTIFIED for m > 8.51e+37: a partial product may overflow.
  * No dynamic memory, no mutable global state; reentrant (a tracker belongs
  * to one control loop).  libm may set errno on an underflow inside the
  * computation.  The gain field was called `lambda` before uwmr-symbolic

@@ -47,7 +47,7 @@ term = lam vr g sin(e3)/e3.
       0 < m < 1e-100: g within 4.6e-15.
       1e-100 <= m <= 1e+04: g within 4.2e-14.
       m > 1e+04 (except as listed): g within 5.8e-15.
-      NOT CERTIFIED for m > 6.09e+307: a partial product may overflow.
+      NOT CERTIFIED for m > 4.49e+307: a partial product may overflow.
 """
 import numpy
 

@@ -392,6 +392,11 @@ class Analysis:
         log_rule = self._log_change(f, Iv(xa.lo - abs(xa.lo) * Ea, xa.hi + abs(xa.hi) * Ea), Ea)
         if log_rule is not None:
             E = E.min((1 + log_rule) * (1 + lib) - 1)
+        if not E < 1:
+            # no useful relative bound (exp(-x) with x ~ 1e36 and x's error): |phi^ - phi| <= |phi^| + |phi|,
+            # harmless where the value is negligible in a sum (3/2 + e exp(-(2 st - 3)^2))
+            far = _mag(Analysis(self.p, {_Z: (wide, arb(0), arb(0))}).value(f(_Z)))[1]
+            return arb(0), far * (1 + lib) + hi + self.sub * LIBM_U[name]
         return E, d * Aa * (1 + lib) + self._underflow(x, E, LIBM_U[name])
 
     def _log_change(self, f, wide: Iv, Ea) -> arb | None:
@@ -495,6 +500,7 @@ def _cover(lo, hi, analyse, goal, bad: list, depth=6) -> float:
             E, why = math.inf, str(exc)
         if E > goal and d > 0 and b > a * (1 + 1e-9):
             mid = math.sqrt(a) * math.sqrt(b)
+            d = min(d, 2) if why else d        # a box with no bound at all (overflow...): split little
             stack += [(mid, b, d - 1), (a, mid, d - 1)]
         elif E <= goal:
             worst = max(worst, E)
