@@ -178,8 +178,15 @@ def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
     common denominator so that powers of t cancel (sqrt(4/t**2 + 1) becomes
     sqrt(t**2 + 4)/t).  An identity for t > 0."""
     e = sp.expand_mul(expr).subs(s, 1 / T)
-    # radicands and function arguments over a common denominator...
-    e = sp.bottom_up(e, lambda node: node.func(*[sp.together(a) if isinstance(a, sp.Add) else a
+    # radicands and function arguments over a common denominator (memoised: the
+    # derivative of a nested profile repeats the same arguments many times)...
+    seen = {}
+
+    def together(a):
+        if a not in seen:
+            seen[a] = sp.together(a)
+        return seen[a]
+    e = sp.bottom_up(e, lambda node: node.func(*[together(a) if isinstance(a, sp.Add) else a
                                                  for a in node.args])
                      if isinstance(node, (sp.Pow, sp.Function)) and node.args else node)
     # ...and each term's rational factor cancelled on its own: merging the
