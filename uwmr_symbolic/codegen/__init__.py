@@ -147,17 +147,24 @@ def _context(design, model: LawModel) -> dict:
                 c_banner=_banner(model, source, "c"), py_banner=_banner(model, source, "py"), example=example)
 
 
-def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, str]]:
-    """The model and {file name: text} for one design (nothing written)."""
+def _model(design_path, force, report) -> tuple[LawModel, object]:
+    """(model, report) of one design, verifying it unless `report` is given;
+    CodegenRefused unless P1-P8 are proved or force=True."""
     from ..verify import verify_design
     if report is None:
         report = verify_design(design_path)
     reasons = not_verified_reasons(report)
     if reasons and (not force or report.design is None):
         raise CodegenRefused(reasons)
-    design = report.design
-    model = build_model(design, Analysis(design), report)
+    model = build_model(report.design, Analysis(report.design), report)
     model.reasons = reasons
+    return model, report
+
+
+def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, str]]:
+    """The model and {file name: text} for one design (nothing written)."""
+    model, report = _model(design_path, force, report)
+    design = report.design
     env = _env()
     ctx = _context(design, model)
     certified = [accuracy.certify(model, cfg.precision, cfg.sinc_cut) for cfg in (c_backend.DOUBLE, c_backend.FLOAT)]
@@ -244,15 +251,8 @@ def casadi_function(design_path, report=None, force=False):
     with force=True too.  A function CasADi lacks raises NotImplementedError."""
     from .casadi_backend import casadi_function as _cf
     from .validate import ValidationFailed, validate_casadi
-    from ..verify import verify_design
-    if report is None:
-        report = verify_design(design_path)
-    reasons = not_verified_reasons(report)
-    if reasons and (not force or report.design is None):
-        raise CodegenRefused(reasons)
+    model, report = _model(design_path, force, report)
     design = report.design
-    model = build_model(design, Analysis(design), report)
-    model.reasons = reasons
     fn = _cf(model)
     kf = _kf_upper_double(model.kf_upper) if model.verified else None
     try:
