@@ -76,3 +76,19 @@ def test_weak_claim_with_a_touching_zero():
     """(s - 1)^2 >= 0 on (0, oo): weak, Sturm ignores the even factor."""
     theorems, why = sign_theorems((S - 1) ** 2, S, 0, sp.oo, strict=False)
     assert theorems is not None and not theorems[0].claim.strict, why
+
+
+def test_side_theorems_only_beside_the_main_lemma():
+    """fuzz-findings radial_00032 (f = c - c exp(exp(-rho) - 1), floats): when the
+    proposer's budget ran out before F' > 0, P5 carried only the origin's limit
+    theorems, so its certificate failed to link; now it carries none, and both
+    facts are listed as resting on the search."""
+    from uwmr_symbolic.properties import _lemmas
+    from uwmr_symbolic.verdict import proved
+    side = ["a theorem about the origin"]
+    bare = _lemmas(proved("P5"), proved("F' > 0"), "the origin fact", lambda: side)
+    assert bare.details["kernel"] == [] and "the origin fact" in bare.details["unchecked"]
+    lemma = proved("F' > 0")
+    lemma.details["kernel"] = ["F' > 0 theorem"]
+    full = _lemmas(proved("P5"), lemma, "the origin fact", lambda: side)
+    assert full.details["kernel"] == ["F' > 0 theorem", *side] and "the origin fact" not in full.details["unchecked"]

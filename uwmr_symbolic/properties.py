@@ -215,7 +215,9 @@ def _lemmas(v: Verdict, lemma: Verdict, unchecked: str, extra=None) -> Verdict:
     """v with the kernel theorems of `lemma` and the facts still resting on
     the search alone: the radial reduction (P4) and `unchecked` -- unless
     `extra`, the proposer for that fact, gives kernel theorems for it."""
-    found = extra() if extra is not None else []
+    # a side fact's theorems (lemma is not v) only beside the main lemma's: alone
+    # they are not the claim the property's link expects first (P3, P5)
+    found = extra() if extra is not None and (lemma is v or lemma.details.get("kernel")) else []
     v.details["kernel"] = lemma.details.get("kernel", []) + found
     v.details["unchecked"] = [REDUCTION, *lemma.details.get("unchecked", []), *([] if found else [unchecked])]
     return v
