@@ -109,26 +109,30 @@ def _candidates(expr, lo, hi, interior=True):
     return out
 
 
+SHORT_RADICAL = 24     # operations in a root worth offering as an exact critical point
+
+
 def _rational_critical(d, lo, hi):
     """Zeros in (lo, hi) of a rational d, from the factors of its numerator
-    over Q of degree <= 2 (a cubic's or quartic's radicals are no closed
-    form worth offering and make radsimp crawl; SymPy's solveset would search
-    a higher one until the time limit): a FiniteSet, None (a factor could not
-    be solved), or False (d is not rational)."""
+    over Q of degree <= 4 (SymPy's solveset would search a higher one until
+    the time limit), keeping only short radicals (s^4 = 3 gives 3^(1/4);
+    Cardano's and Ferrari's formulas are no closed form worth offering and
+    make radsimp crawl): a FiniteSet, None (a factor could not be solved), or
+    False (d is not rational)."""
     parts = rational_parts(d, S)
     if parts is None:
         return False
     poly = parts[0]
     roots = set()
     for fac, _ in poly.factor_list()[1]:
-        if fac.degree() > 2:
+        if fac.degree() > 4:
             continue
         sol = attempt(lambda: sp.solveset(fac.as_expr(), S, sp.Interval.open(lo, hi)), 3.0)
         if sol is sp.S.EmptySet:
             continue
         if not isinstance(sol, sp.FiniteSet):
             return None
-        roots |= set(sol)
+        roots |= {r for r in sol if sp.count_ops(r) <= SHORT_RADICAL}
     return sp.FiniteSet(*roots)
 
 
