@@ -133,15 +133,8 @@ _NEAR = sp.Rational(1, 64)
 
 def rational_poly(expr, x) -> sp.Poly | None:
     """expr as a nonzero polynomial in x with rational coefficients, or None."""
-    if expr.has(sp.Function, sp.Piecewise):      # never one; Poly would expand it first
-        return None
-    try:
-        poly = sp.Poly(expr, x)
-    except (sp.PolynomialError, sp.GeneratorsError):
-        return None
-    if not (poly.domain.is_ZZ or poly.domain.is_QQ) or poly.is_zero:
-        return None
-    return poly
+    poly = poly_of(expr, x)
+    return None if poly is None or poly.is_zero else poly
 
 
 def poly_of(e, x) -> sp.Poly | None:
