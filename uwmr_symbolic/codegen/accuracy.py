@@ -380,7 +380,8 @@ class Analysis:
         # a^ lies in [a - |a| E - A, a + |a| E + A], increasing in a for E < 1
         if not Ea < 1:
             raise Uncertified(f"relative error of the argument of {name} >= 1")
-        wide = Iv(xa.lo - abs(xa.lo) * Ea - Aa, xa.hi + abs(xa.hi) * Ea + Aa)
+        rel = Iv(xa.lo - abs(xa.lo) * Ea, xa.hi + abs(xa.hi) * Ea)      # a (1 + e), |e| <= Ea
+        wide = Iv(rel.lo - Aa, rel.hi + Aa)
         d = _mag(Analysis(self.p, {_Z: (wide, arb(0), arb(0))}).value(_DERIVATIVE[f]))[1]
         lo, hi = _mag(x)
         lib = LIBM_U[name] * self.u
@@ -389,7 +390,7 @@ class Analysis:
             return lib, d * err * (1 + lib) + self.sub * LIBM_U[name]
         # the argument's relative part gives a relative change, its absolute part an absolute one
         E = (1 + d * _mag(xa)[1] * Ea / lo) * (1 + lib) - 1
-        log_rule = self._log_change(f, Iv(xa.lo - abs(xa.lo) * Ea, xa.hi + abs(xa.hi) * Ea), Ea)
+        log_rule = self._log_change(f, rel, Ea)
         if log_rule is not None:
             E = E.min((1 + log_rule) * (1 + lib) - 1)
         if not E < 1:
