@@ -38,7 +38,7 @@ TRUE = [
 
 @pytest.mark.parametrize("expr, lo, hi", TRUE, ids=[str(c[0])[:40] for c in TRUE])
 def test_true_strict_claims_are_proved_as_asked(expr, lo, hi):
-    theorems, why = sign_theorems(expr, S, lo, hi, seconds=120)
+    theorems, why = sign_theorems(expr, S, lo, hi, work=10**7)
     assert theorems is not None, why
     assert len(theorems) == 1
     assert theorems[0].claim.expr == sp.srepr(expr)
@@ -66,7 +66,7 @@ def test_false_claims_give_no_theorem(expr, lo, hi):
 
 def test_claim_except_at_exact_zeros_is_split_there():
     """(s - 1)^2 (s + 1) > 0 on (0, 1) and on (1, oo)."""
-    theorems, why = sign_theorems((S - 1) ** 2 * (S + 1), S, 0, sp.oo, zeros=(1,), seconds=120)
+    theorems, why = sign_theorems((S - 1) ** 2 * (S + 1), S, 0, sp.oo, zeros=(1,), work=10**7)
     assert theorems is not None, why
     assert [(t.claim.lo, t.claim.hi) for t in theorems] == [("Integer(0)", "Integer(1)"), ("Integer(1)", "oo")]
     assert all(t.claim.lo_open and t.claim.hi_open and t.claim.strict for t in theorems)
@@ -92,3 +92,28 @@ def test_side_theorems_only_beside_the_main_lemma():
     lemma.details["kernel"] = ["F' > 0 theorem"]
     full = _lemmas(proved("P5"), lemma, "the origin fact", lambda: side)
     assert full.details["kernel"] == ["F' > 0 theorem", *side] and "the origin fact" not in full.details["unchecked"]
+
+
+def test_the_budget_counts_work_not_time(monkeypatch):
+    """`certify.Budget` ends after its work units (one per Arb node, CLAIM_UNITS
+    per claim), whatever the clock says below its CPU backstop: the same
+    certificate on a fast and on a slow machine."""
+    import time
+
+    from uwmr_symbolic import certify
+    from uwmr_symbolic.kernel import arb
+    budget = certify.Budget(1000)
+    nominal = certify.CPU_CAP * certify.UNIT_SECONDS * 1000
+    clock = time.process_time()
+    monkeypatch.setattr(certify.time, "process_time", lambda: clock + 0.9 * nominal)  # a slow machine
+    assert not budget.spent()
+    start = arb.nodes
+    while arb.nodes - start <= 1000:
+        arb.evaluate(sp.log(1 + S ** 2), S, 0, 1)    # 5 nodes: log, Add, 1, Pow, S (the env)
+    assert arb.nodes - start in range(1001, 1006) and budget.spent()
+    outer = certify.Budget(10 ** 6)
+    assert certify.Budget(10 ** 9, outer).limit == outer.limit      # never beyond the enclosing budget
+    idle = certify.Budget(1000)
+    assert not idle.spent()
+    monkeypatch.setattr(certify.time, "process_time", lambda: clock + 2.1 * nominal)  # past the backstop
+    assert idle.spent()

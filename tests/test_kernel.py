@@ -66,6 +66,11 @@ def test_evaluator_domain_edges_are_not_clipped():
     assert evaluate(sp.Abs(x) - 1, x, -1, 2).lo.lower() >= -1
     assert evaluate(sp.cosh(x), x, -1, 2).lo.lower() >= 1
     assert evaluate(sp.log(x), x, Q(1, 10 ** 30), 1).hi.upper() >= 0
+    # powers of an end that is a ball around 0 ((x - 1/3) at x = 1/3; Arb's own b**n is NaN there)
+    at_zero = evaluate((x - Q(1, 3)) ** 4, x, Q(1, 3), Q(1, 3))
+    assert at_zero.lo.is_zero() and 0 <= at_zero.hi.upper() < Q(1, 10 ** 100)
+    odd = evaluate((x - Q(1, 3)) ** 3 + 2, x, 0, Q(1, 3))           # -1/27 + 2 <= e <= 2
+    assert abs(float(odd.lo.mid()) - 53 / 27) < 1e-14 and abs(float(odd.hi.mid()) - 2) < 1e-14
 
 
 # ------------------------------------------------------------------ theorems

@@ -1,6 +1,7 @@
 """Time limits outside the main thread (the watchdog thread of `timeouts`):
 they fire, they nest as SIGALRM limits do, and a limit that ends in time
-never leaves a stray TimeLimit behind."""
+never leaves a stray TimeLimit behind; one that is swallowed (as Python
+does in a garbage-collector callback) is raised again."""
 import threading
 import time
 
@@ -9,6 +10,11 @@ from uwmr_symbolic.timeouts import TimeLimit, _stack, attempt, no_signals, signa
 
 def _busy():
     while True:
+        pass
+
+
+def _busy_until(end):
+    while time.monotonic() < end:
         pass
 
 
@@ -26,6 +32,16 @@ def _exercise(out):
             _busy()                                             # ...and fires again at once outside it
     except TimeLimit:
         out["nested"] = time.monotonic() - start
+    start = time.monotonic()
+    try:
+        with time_limit(0.1):
+            try:
+                _busy_until(start + 5)
+            except TimeLimit:              # swallowed, as a garbage-collector callback does
+                out["swallowed"] = time.monotonic() - start
+            _busy_until(start + 5)
+    except TimeLimit:
+        out["again"] = time.monotonic() - start
     fired = 0
     for i in range(5000):
         try:
@@ -45,6 +61,8 @@ def _check(out):
     assert 0.3 <= out["single"] < 1.5, out
     assert out["inner"] == "gave up" and 0.3 <= out["nested"] < 1.5, out
     assert out["stack"] == [] and out["fired"] <= 2500, out
+    # a swallowed TimeLimit is raised again REFIRE = 0.25 s later
+    assert 0.1 <= out["swallowed"] < 1.0 and out["swallowed"] + 0.2 < out["again"] < 2.0, out
 
 
 def test_limits_in_another_thread():

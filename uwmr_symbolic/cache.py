@@ -19,8 +19,8 @@ stored key differs from the one asked for, is treated as missing.
 The ``--timeout`` is not part of the key but of the entry, with whether a time
 limit expired while the result was computed (``timed_out``).  Time matters
 only there: the verdicts depend on the time given only through limits that
-expire (the kernel proposer's CPU budget changes what a certificate checks,
-never a verdict), so a result in which none expired is what any timeout
+expire (the kernel proposer's budget counts work, not time, and never changes
+a verdict), so a result in which none expired is what any timeout
 gives and is served to every run, while one in which a limit expired (some
 verdict may be "unknown" for lack of time) is served only to a run with no
 more time than it had (`serves`); a run with more time verifies again and

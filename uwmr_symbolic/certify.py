@@ -29,7 +29,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from .kernel import core as K
+from .kernel import arb, core as K
 from .kernel.arb import Undefined, evaluate
 
 OO = sp.oo
@@ -37,22 +37,49 @@ WIDTHS = [sp.Rational(1, 2 ** k) for k in range(1, 16, 2)]
 TAYLOR_ORDER = 6
 BOX_BUDGET = 3000
 REDUCTION = "f(e1, e2) = F(sqrt(e1^2 + r e2^2)) (the reduction to one variable; P4 when r = 1)"
-SECONDS = 0.5           # CPU seconds of search for one lemma; the verdict does not depend on it
-DESIGN_SECONDS = 1.5    # CPU seconds of search for all the lemmas of one design (see `start_design`)
-_design_deadline = float("inf")
+# The proposer's budgets are counted in work units, not seconds, so that what
+# it certifies is the same on every machine: one unit per expression node Arb
+# evaluates (`arb.nodes`) and CLAIM_UNITS per sign claim tried (its SymPy work).
+# About 8 microseconds per unit here (4 to 24 measured); CPU_CAP is a backstop only.
+CLAIM_UNITS = 200
+WORK = 60_000           # for one lemma (about 0.5 s here); the verdict does not depend on it
+DESIGN_WORK = 200_000   # for all the lemmas of one design (see `design_budget`)
+CPU_CAP = 8.0           # a budget also ends after CPU_CAP times its nominal CPU seconds (backstop)
+UNIT_SECONDS = 8e-6
+_claims = 0
+
+
+def _work() -> int:
+    return arb.nodes + CLAIM_UNITS * _claims
+
+
+class Budget:
+    """A share of work (units above) ending no later than an enclosing one."""
+
+    def __init__(self, work, outer=None):
+        self.limit = _work() + work
+        self.cpu = time.process_time() + CPU_CAP * UNIT_SECONDS * work
+        if outer is not None:
+            self.limit, self.cpu = min(self.limit, outer.limit), min(self.cpu, outer.cpu)
+
+    def spent(self) -> bool:
+        return _work() > self.limit or time.process_time() > self.cpu
+
+
+_design = None      # the enclosing design's Budget, if any
 
 
 @contextmanager
-def design_budget(seconds=DESIGN_SECONDS):
-    """The proposer's time budget for one design's lemmas (`verify.verify_loaded`):
-    the kernel certification of a design costs at most about `seconds` of CPU
-    time beyond its search, whatever it fails to prove."""
-    global _design_deadline
-    old, _design_deadline = _design_deadline, time.process_time() + seconds
+def design_budget(work=DESIGN_WORK):
+    """The proposer's budget for one design's lemmas (`verify.verify_loaded`):
+    the kernel certification of a design costs at most about DESIGN_WORK units
+    beyond its search, whatever it fails to prove."""
+    global _design
+    old, _design = _design, Budget(work)
     try:
         yield
     finally:
-        _design_deadline = old
+        _design = old
 
 
 class NoProof(Exception):
@@ -126,15 +153,17 @@ class Prover:
     (>= 0) on I" (I = (lo, hi, lo_open, hi_open), hi may be oo) or raises
     NoProof.  Results and failures are memoised per claim."""
 
-    def __init__(self, seconds=SECONDS):
+    def __init__(self, work=WORK):
         self.memo = {}
-        self.deadline = min(time.process_time() + seconds, _design_deadline)   # CPU time: load-independent
-        self.spent = NoProof("the proposer's time budget is spent")
+        self.budget = Budget(work, _design)
+        self.spent = NoProof("the proposer's budget is spent")
 
     def prove(self, e, var, I, want, strict=True, depth=0, near=False):
         """`near`: I is a one-sided neighbourhood of its open end; no further
         splitting there, Taylor at that end instead."""
-        if time.process_time() > self.deadline:
+        global _claims
+        _claims += 1
+        if self.budget.spent():
             raise self.spent
         key = (e, var, I, want, strict, depth, near)
         if key not in self.memo:
@@ -358,13 +387,13 @@ def _unique(premises):
 _FOUND: dict = {}          # sign lemmas already proved in this process (failures depend on the budget: not kept)
 
 
-def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), strict=True, seconds=SECONDS):
+def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), strict=True, work=WORK):
     """Kernel theorems whose union is the sign lemma: one theorem on each
     part of <lo, hi> between the exact `zeros` (strict claims exclude them),
     or None with the reason when the kernel did not accept a step."""
     key = (e, var, lo, hi, want, lo_open, hi_open, tuple(zeros), strict)
     if key not in _FOUND:
-        theorems, why = _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, seconds)
+        theorems, why = _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work)
         if theorems is None:
             return None, why
         if len(_FOUND) > 512:
@@ -373,11 +402,11 @@ def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), 
     return _FOUND[key], ""
 
 
-def _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, seconds):
+def _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work):
     lo, hi = sp.sympify(lo), sp.sympify(hi)
     pts = sorted(set(map(sp.sympify, zeros)), key=float)
     ends = [lo, *pts, hi]
-    prover = Prover(seconds)
+    prover = Prover(work)
     try:
         return [prover.prove(sp.sympify(e), var, (ends[i], ends[i + 1], lo_open if i == 0 else True,
                                                   hi_open if i == len(ends) - 2 else True), want, strict)
@@ -398,7 +427,7 @@ def growth_theorems(F, var) -> list:
     """P3's "F(s) -> oo": `diverges_by_growth` from F' >= k or s F' >= k > 0
     on [R, oo) (the proposer picks R, the rate and k), or []."""
     d = sp.diff(F, var)
-    prover = Prover(SECONDS / 2)        # one time budget for every attempt
+    prover = Prover(WORK // 2)        # one budget for every attempt
     for R in (sp.Integer(4), sp.Integer(16)):
         for rate, g in (("log", var * d), ("linear", d)):
             try:
@@ -481,7 +510,7 @@ def sup_theorems(dF, c, point, var, positive):
     try:
         gap = sp.sympify(c) - dF
         zeros = (point,) if point is not None and point != 0 else ()
-        parts, why = sign_theorems(gap, var, 0, OO, zeros=zeros, strict=not zeros, seconds=SECONDS / 2)
+        parts, why = sign_theorems(gap, var, 0, OO, zeros=zeros, strict=not zeros, work=WORK // 2)
         if parts is None:
             raise NoProof(f"{c} - F' >= 0: {why}")
         upper = parts[0] if not zeros else _rule(K.join_at_zero, *parts)
@@ -643,7 +672,7 @@ def _claim_one(options, w):
     last = None
     for e, want, strict in options:
         theorems, why = sign_theorems(e, H, 0, w, want=want, lo_open=True, hi_open=False, strict=strict,
-                                      seconds=SECONDS / 4)
+                                      work=WORK // 4)
         if theorems is not None:
             return theorems[0]
         last = why
@@ -658,10 +687,10 @@ def refutation_theorems(name, verdict, f):
     the search's witness alone."""
     from .design_certificate import CertificateError, link_refutation
     why = "no witness of a kind the kernel checks"
-    deadline = time.process_time() + SECONDS
+    budget = Budget(WORK)
     for record in _witness_candidates(name, verdict.witness):
-        if time.process_time() > deadline:
-            why = "the proposer's time budget is spent"
+        if budget.spent():
+            why = "the proposer's budget is spent"
             break
         try:
             theorems = _witness_theorems(f, record)

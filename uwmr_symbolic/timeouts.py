@@ -12,6 +12,10 @@ Two ways of interrupting the block, with the same meaning:
   handler of the caller's process is touched.  The library (`api.verify`
   in-process) uses this one, inside `no_signals()`.
 
+A TimeLimit can be swallowed where Python ignores exceptions (a weakref or
+`__del__` callback run by the garbage collector inside the block).  Both ways
+therefore raise it again every `REFIRE` seconds until the block is left.
+
 Neither can interrupt one long call inside C code (the exception is raised
 when the interpreter runs Python code again); `api.verify` therefore runs in
 a worker process by default, which is killed when it outlives its limit."""
@@ -29,6 +33,9 @@ from contextlib import contextmanager
 #: computed while one expired depends on the time it was given: the cache
 #: serves it only to runs with the same or a shorter --timeout).
 expired = 0
+
+#: Seconds between two raises of one expired limit (one may be swallowed).
+REFIRE = 0.25
 
 
 class TimeLimit(BaseException):
@@ -72,7 +79,11 @@ def _arm_signal(deadlines):
 
 
 def _on_alarm(signum, frame):
-    raise TimeLimit()
+    now = time.monotonic()
+    if any(d <= now for d in _stack()):
+        signal.setitimer(signal.ITIMER_REAL, REFIRE)    # again, unless the block is left first
+        raise TimeLimit()
+    _arm_signal(_stack())           # early (a stale timer): wait for the nearest deadline
 
 
 # ---------------------------------------------------------------- watchdog thread
@@ -96,7 +107,7 @@ class _Watchdog:
 
     def __init__(self):
         self.armed: dict[int, tuple] = {}
-        self.fired: dict[int, tuple] = {}     # the entry of each thread that has fired (watchdog's own)
+        self.fired: dict[int, tuple] = {}     # tid -> (entry, when) of its last raise (watchdog's own)
         self.wake: queue.SimpleQueue = queue.SimpleQueue()
         self.thread: threading.Thread | None = None
 
@@ -121,13 +132,14 @@ class _Watchdog:
         now = time.monotonic()
         waiting = []
         for tid, entry in list(self.armed.items()):       # list(): one C call, no concurrent change
-            if self.fired.get(tid) is entry:
-                continue                                   # fired once, like the one-shot SIGALRM timer
-            if entry[0] > now:
-                waiting.append(entry[0])
+            last = self.fired.get(tid)
+            due = last[1] + REFIRE if last is not None and last[0] is entry else entry[0]
+            if due > now:
+                waiting.append(due)
                 continue
             _raise_in(tid, TimeLimit)
-            self.fired[tid] = entry
+            self.fired[tid] = (entry, now)
+            waiting.append(now + REFIRE)
             if self.armed.get(tid) is not entry:
                 _raise_in(tid, None)                       # the block ended meanwhile: take it back
         for tid in list(self.fired):
@@ -181,12 +193,17 @@ def time_limit(seconds: float):
 
 def attempt(fn, seconds: float, default=None):
     """fn() within `seconds`, or `default` if it times out or fails."""
+    depth = len(_stack())
     try:
         with time_limit(seconds):
             return fn()
     except TimeLimit:
         global expired
         expired += 1
+        deadlines = _stack()
+        if len(deadlines) > depth:       # a second raise cut time_limit's own cleanup short
+            del deadlines[depth:]
+            (_arm_signal if _local.signals else _arm_thread)(deadlines)
         return default   # an outer limit that also expired fires again at once
     except Exception:  # noqa: BLE001 - SymPy failures mean 'not found'
         return default

@@ -109,7 +109,7 @@ def verify_loaded(design: Design, timeout: float = DEFAULT_TIMEOUT, start: float
     """Decide P1-P8, kf, the proof replay and the gains of a loaded design;
     `start` (time.monotonic()) is when the `timeout` began to run."""
     start = time.monotonic() if start is None else start
-    with design_budget():       # the kernel proposer's CPU budget for this design
+    with design_budget():       # the kernel proposer's work budget for this design
         return _verify(design, timeout, start)
 
 

@@ -114,6 +114,18 @@ def _abs_like(x: Iv, g) -> Iv:
     return Iv(g(arb(0)), g(-x.lo).max(g(x.hi)))
 
 
+def _ipow(b: arb, n: int) -> arb:
+    """b**n for n >= 1 by products (Arb's b**n is NaN when the ball b holds 0)."""
+    out = None
+    while n:
+        if n & 1:
+            out = b if out is None else out * b
+        n >>= 1
+        if n:
+            b = b * b
+    return out
+
+
 def _pow(x: Iv, e: sp.Rational) -> Iv:
     if e.is_Integer:
         n = int(e)
@@ -122,8 +134,8 @@ def _pow(x: Iv, e: sp.Rational) -> Iv:
         if n < 0:
             return _inv(_pow(x, -e))
         if n % 2 == 0:
-            return _abs_like(x, lambda b: b ** n)
-        return _increasing(lambda b: b ** n, x)
+            return _abs_like(x, lambda b: _ipow(b, n))
+        return _increasing(lambda b: _ipow(b, n), x)
     r = arb(fmpq(int(e.p), int(e.q)))
     if e < 0:
         if not x.positive():
@@ -167,7 +179,14 @@ def _constant(e: sp.Expr) -> arb:
     raise Undefined(f"unsupported constant {e}")
 
 
+#: Expression nodes evaluated so far in this process: a measure of work that
+#: does not depend on the machine (the proposer's budget, `certify.Budget`).
+nodes = 0
+
+
 def _eval(e: sp.Expr, env: dict) -> Iv:
+    global nodes
+    nodes += 1
     if e in env:
         return env[e]
     if e.is_Symbol:
