@@ -40,7 +40,8 @@ class SupCertificate:
 
     def show(self) -> str:
         if self.exact is not None:
-            return f"{self.exact} = {float_of(self.exact):.10g}"
+            approx = f"{float_of(self.exact):.10g}"
+            return str(self.exact) if approx == str(self.exact) else f"{self.exact} = {approx}"
         if self.upper is None:
             return "unbounded" if self.unbounded_witness else "undecided"
         return f"[{float(self.lower):.10g}, {float(self.upper):.10g}]"

@@ -68,7 +68,7 @@ extern "C" {
  * Bound (10).  Law (9) gives, whatever the errors,
  *   |v| <= |vr| + k1,     |w| <= |wr| + lam |vr| KF + k2
  * with KF = sup |df/de2| when P1 holds.  This design is NOT VERIFIED:
- * UWMR_DESIGN4_COSINE_KF = 1 = 1
+ * UWMR_DESIGN4_COSINE_KF = 1
  * (certified upper bound) and the bound is not promised.
  *
  * Return value: UWMR_OK (0) on success, otherwise one of the codes below.
@@ -99,7 +99,7 @@ extern "C" {
 #define UWMR_ERR_RANGE 4
 #endif
 
-/* kf = sup |df/de2| over the plane: 1 = 1 (certified upper bound) */
+/* kf = sup |df/de2| over the plane: 1 (certified upper bound) */
 #define UWMR_DESIGN4_COSINE_KF 1.0
 #define UWMR_DESIGN4_COSINE_KF_F32 1.0F
 

@@ -42,7 +42,7 @@ NOT VERIFIED (--force): no accuracy is promised.
 import numpy
 
 NAME = "Design 4 (as printed)"
-#: kf = sup |df/de2| over the plane: 1 = 1 (certified upper bound)
+#: kf = sup |df/de2| over the plane: 1 (certified upper bound)
 KF = 1.0
 PARAMS = {}
 VERIFIED = False
