@@ -241,3 +241,46 @@ def test_no_simplify_on_what_is_numerically_no_identity(tmp_path):
     report, v = verify(tmp_path, "f = math.e*log(1 + e1**2) + 3 - 3*sp.exp(-e2**2)\n", timeout=10)
     assert v["P4"] == "refuted" and v["P3"] == "refuted" and v["P2"] == "proved"
     assert report.seconds < 10
+
+
+# ---------------------------------------------------------------- the search's rewrites at scale
+
+def test_tail_form_of_nested_logs_stays_small():
+    """F = log(1 + log(1 + ... log(1 + s^2))) (eight logs): F'(s) = 2s/((1 + s^2)
+    (1 + L1)...(1 + L7)).  Its s = 1/t form keeps that product: expanding the
+    denominator, as expand_mul did, gave 2^8 terms (11,010 operations; 680,000
+    for F'').  The form must still be F'(1/t) (compared at 50 digits)."""
+    import mpmath
+    from uwmr_symbolic.univariate import T, tail_form
+    F = S ** 2
+    for _ in range(8):
+        F = sp.log(1 + F)
+    for k, limit in ((1, 200), (2, 2000)):
+        d = sp.diff(F, S, k)
+        form = tail_form(d, S)
+        assert sp.count_ops(form) <= limit
+        mpmath.mp.dps = 50
+        for t in (sp.Rational(1, 3), sp.Rational(1, 7), sp.Integer(2)):
+            a, b = sp.N(form.subs(T, t), 50), sp.N(d.subs(S, 1 / t), 50)
+            assert abs(a - b) <= sp.Float(10) ** -40 * (1 + abs(b))
+
+
+def test_one_sided_values_by_continuity_and_by_limits():
+    """one_sided_value substitutes where interval evaluation proves the formula
+    continuous on a closed one-sided box, and falls back on the limit calculus:
+    at s = sqrt(3), log(1 + s^2) + (s^2 - 2)^3/(1 + (s^2 - 2)^3) = log 4 + 1/2 from
+    both sides; sqrt(s - 1) -> 0 from the right and is undefined on the left;
+    1/(s - 1) -> -oo, +oo (limits, not a value at 1)."""
+    from uwmr_symbolic.profile import one_sided_value
+    e = sp.log(1 + S ** 2) + (S ** 2 - 2) ** 3 / (1 + (S ** 2 - 2) ** 3)
+    for side in (-1, 1):
+        assert sp.simplify(one_sided_value(e, sp.sqrt(3), side) - (sp.log(4) + sp.Rational(1, 2))) == 0
+    assert one_sided_value(sp.sqrt(S - 1), 1, 1) == 0 and one_sided_value(sp.sqrt(S - 1), 1, -1) is None
+    assert one_sided_value(1 / (S - 1), 1, -1) == -sp.oo and one_sided_value(1 / (S - 1), 1, 1) == sp.oo
+
+
+def test_exact_value_of_a_bare_symbol_at_a_python_int():
+    """exact_value(s, s, 0) is SymPy's 0 (xreplace does not sympify what it puts in)."""
+    from uwmr_symbolic.univariate import exact_value
+    assert exact_value(S, S, 0) == 0 and isinstance(exact_value(S, S, 0), sp.Integer)
+    assert exact_value(S ** 2 + 1, S, sp.sqrt(2)) == 3

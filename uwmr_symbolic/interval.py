@@ -84,7 +84,15 @@ __all__ = ["Undefined", "Interval", "evaluate", "IntervalFunction"]
 
 class Undefined(Exception):
     """The expression is not defined (or, in 'continuous' mode, not provably
-    continuous) on the box; ``str(e)`` says which sub-expression and why."""
+    continuous) on the box; ``str(e)`` says which sub-expression and why
+    (printed only when asked for: the search raises thousands of these)."""
+
+    def __init__(self, why, expr=None):
+        super().__init__(why)
+        self.expr = expr
+
+    def __str__(self):
+        return self.args[0] if self.expr is None else f"{self.args[0]}: {_short(self.expr)}"
 
 
 # ---------------------------------------------------------------------------
@@ -130,7 +138,7 @@ def _short(e, n=160):
 
 
 def _undef(e, why):
-    return Undefined(f"{why}: {_short(e)}")
+    return Undefined(why, e)
 
 
 def _sub(a, b):

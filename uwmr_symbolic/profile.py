@@ -19,8 +19,8 @@ from . import e1 as E1, e2 as E2
 from .interval import Interval, IntervalFunction, Undefined
 from .limits import NoLimit, limit_right
 from .timeouts import attempt
-from .univariate import (X, certified_inside, exact_sign, exact_value, exact_zeros_in, numerically_equal, prepare,
-                         prove_sign, rational_between)
+from .univariate import (X, certified_inside, enclose, exact_sign, exact_value, exact_zeros_in, numerically_equal,
+                         prepare, prove_sign, rational_between, substitute)
 from .verdict import Verdict, proved, refuted, unknown
 
 S = sp.Symbol("s", nonnegative=True)     # the radius |(e1, e2)|
@@ -366,12 +366,24 @@ def continuous_on(expr, lo, hi, closed=True) -> Verdict:
     return proved("continuous")
 
 
+NEAR = sp.Rational(1, 1024)     # the one-sided box on which one_sided_value checks continuity
+
+
 def one_sided_value(expr, c, side: int):
     """lim expr as s -> c from the right (side=+1) or left (side=-1):
     an exact number, +-oo, or None when undecided.  Substitution when expr
     is continuous up to c; the limit calculus otherwise."""
+    expr = sp.sympify(expr)
+    lo, hi = (c, c + NEAR) if side > 0 else (c - NEAR, c)
+    try:       # continuous on the closed one-sided box (proved by interval evaluation): the limit is E(c)
+        enclose(expr, S, lo, hi, mode="continuous")
+        v = exact_value(expr, S, c)
+        if v is not None:
+            return v
+    except (Undefined, TypeError, ValueError):
+        pass
     try:
-        lim = limit_right(prepare(expr).subs(S, c + side * X), X)
+        lim = limit_right(substitute(prepare(expr), S, c + side * X), X)
         return None if lim.value.has(sp.nan, sp.zoo) else lim.value
     except NoLimit:
         return None
