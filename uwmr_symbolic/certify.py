@@ -39,18 +39,26 @@ BOX_BUDGET = 3000
 REDUCTION = "f(e1, e2) = F(sqrt(e1^2 + r e2^2)) (the reduction to one variable; P4 when r = 1)"
 # The proposer's budgets are counted in work units, not seconds, so that what
 # it certifies is the same on every machine: one unit per expression node Arb
-# evaluates (`arb.nodes`) and CLAIM_UNITS per sign claim tried (its SymPy work).
-# About 8 microseconds per unit here (4 to 24 measured); CPU_CAP is a backstop only.
+# evaluates (`arb.nodes`), CLAIM_UNITS per sign claim tried (its SymPy work),
+# and RATIONAL_UNITS * size^2.5 before factoring a rational function of
+# `count_ops` size or checking an identity (SymPy's factor and the kernel's
+# cancel grow so: 0.4 s at size 39, 2.3 s at 79); also STURM_UNITS * degree^2
+# per Sturm sequence and TAIL_UNITS * size^2 per s = 1/t form.  About 8
+# microseconds per unit here (4 to 24 measured); CPU_CAP is a backstop only.
 CLAIM_UNITS = 200
+RATIONAL_UNITS = 6
+STURM_UNITS = 2
+TAIL_UNITS = 2
+CHEAP_RATIONAL = 30     # larger rational functions try the sign rules of their parts first
 WORK = 60_000           # for one lemma (about 0.5 s here); the verdict does not depend on it
 DESIGN_WORK = 200_000   # for all the lemmas of one design (see `design_budget`)
 CPU_CAP = 8.0           # a budget also ends after CPU_CAP times its nominal CPU seconds (backstop)
 UNIT_SECONDS = 8e-6
-_claims = 0
+_charged = 0
 
 
 def _work() -> int:
-    return arb.nodes + CLAIM_UNITS * _claims
+    return arb.nodes + _charged
 
 
 class Budget:
@@ -161,10 +169,7 @@ class Prover:
     def prove(self, e, var, I, want, strict=True, depth=0, near=False):
         """`near`: I is a one-sided neighbourhood of its open end; no further
         splitting there, Taylor at that end instead."""
-        global _claims
-        _claims += 1
-        if self.budget.spent():
-            raise self.spent
+        self.charge(CLAIM_UNITS)
         key = (e, var, I, want, strict, depth, near)
         if key not in self.memo:
             self.memo[key] = _CYCLE
@@ -177,17 +182,33 @@ class Prover:
             raise out
         return out
 
+    def charge(self, units):
+        """Count `units` of work about to be done; stop instead if they would
+        overspend the budget (work not done is not counted)."""
+        global _charged
+        if self.budget.spent() or _work() + units > self.budget.limit:
+            raise self.spent
+        _charged += units
+
     def _prove(self, e, var, I, want, strict, depth, near):
         lo, hi, lo_open, hi_open = I
         last = None
         if e.is_polynomial(var) and all(x == OO or x.is_Rational for x in (lo, hi)):
             try:
+                self.charge(STURM_UNITS * sp.degree(e, var) ** 2)
                 return _rule(K.sign_by_sturm, expr=e, var=var, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open,
                              want=want, strict=strict)
             except NoProof as exc:
                 last = exc
         if e.is_rational_function(var) and not e.is_polynomial(var) and not e.has(sp.Float, sp.NumberSymbol):
+            size = sp.count_ops(e)
+            if size > CHEAP_RATIONAL:           # factoring a large sum costs seconds: its terms' signs first
+                try:
+                    return self._structure(e, var, I, want, strict, depth, near)
+                except NoProof as exc:
+                    last = exc
             try:                                # factored over Q: Sturm on each factor
+                self.charge(int(RATIONAL_UNITS * size ** 2.5))
                 return self._rewritten(e, sp.factor(sp.together(e)), var, I, want, strict, depth, near)
             except NoProof as exc:
                 last = exc
@@ -214,8 +235,13 @@ class Prover:
             raise NoProof("no other form")
         th = self.prove(form, var, I, want, strict, depth, near)
         lo, hi, lo_open, hi_open = I
-        ident = _rule(K.identity, lhs=e, rhs=form, var=var, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open)
+        ident = self._identity(lhs=e, rhs=form, var=var, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open)
         return _rule(K.sign_by_rewrite, th, ident)
+
+    def _identity(self, **claim):
+        """The kernel's `identity`, charged like factoring (its cancel costs so)."""
+        self.charge(int(RATIONAL_UNITS * max(sp.count_ops(claim["lhs"]), sp.count_ops(claim["rhs"])) ** 2.5))
+        return _rule(K.identity, **claim)
 
     def _weaken(self, th, I, strict):
         lo, hi, lo_open, hi_open = I
@@ -335,10 +361,11 @@ class Prover:
         R = tail_start(lo)
         tail = None
         try:
+            self.charge(TAIL_UNITS * sp.count_ops(e) ** 2)
             et = _tail_form(e, var)
             th = self.prove(et, T, (sp.Integer(0), 1 / R, True, False), want, strict, depth)
-            ident = _rule(K.identity, lhs=et, rhs=e.subs(var, 1 / T), var=T, lo=0, hi=1 / R,
-                          lo_open=True, hi_open=False)       # only now: simplify may be slow
+            ident = self._identity(lhs=et, rhs=e.subs(var, 1 / T), var=T, lo=0, hi=1 / R,
+                                   lo_open=True, hi_open=False)       # only now: simplify may be slow
             tail = _rule(K.sign_on_tail, th, ident, expr=e, var=var, R=R)
         except NoProof as exc:
             last = exc
@@ -427,7 +454,7 @@ def growth_theorems(F, var) -> list:
     """P3's "F(s) -> oo": `diverges_by_growth` from F' >= k or s F' >= k > 0
     on [R, oo) (the proposer picks R, the rate and k), or []."""
     d = sp.diff(F, var)
-    prover = Prover(WORK // 2)        # one budget for every attempt
+    prover = Prover(WORK)        # one budget for every attempt
     for R in (sp.Integer(4), sp.Integer(16)):
         for rate, g in (("log", var * d), ("linear", d)):
             try:
