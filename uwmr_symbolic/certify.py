@@ -70,8 +70,14 @@ class Budget:
         if outer is not None:
             self.limit, self.cpu = min(self.limit, outer.limit), min(self.cpu, outer.cpu)
 
-    def spent(self) -> bool:
-        return _work() > self.limit or time.process_time() > self.cpu
+    def spent(self, extra=0) -> bool:
+        """True if the budget is spent, or would be by `extra` more units."""
+        return _work() + extra > self.limit or time.process_time() > self.cpu
+
+
+def _rational_units(size) -> int:
+    """The estimated cost of factoring, or of an identity check, at `count_ops` size."""
+    return int(RATIONAL_UNITS * size ** 2.5)
 
 
 _design = None      # the enclosing design's Budget, if any
@@ -186,7 +192,7 @@ class Prover:
         """Count `units` of work about to be done; stop instead if they would
         overspend the budget (work not done is not counted)."""
         global _charged
-        if self.budget.spent() or _work() + units > self.budget.limit:
+        if self.budget.spent(units):
             raise self.spent
         _charged += units
 
@@ -208,7 +214,7 @@ class Prover:
                 except NoProof as exc:
                     last = exc
             try:                                # factored over Q: Sturm on each factor
-                self.charge(int(RATIONAL_UNITS * size ** 2.5))
+                self.charge(_rational_units(size))
                 return self._rewritten(e, sp.factor(sp.together(e)), var, I, want, strict, depth, near)
             except NoProof as exc:
                 last = exc
@@ -240,7 +246,7 @@ class Prover:
 
     def _identity(self, **claim):
         """The kernel's `identity`, charged like factoring (its cancel costs so)."""
-        self.charge(int(RATIONAL_UNITS * max(sp.count_ops(claim["lhs"]), sp.count_ops(claim["rhs"])) ** 2.5))
+        self.charge(_rational_units(max(sp.count_ops(claim["lhs"]), sp.count_ops(claim["rhs"]))))
         return _rule(K.identity, **claim)
 
     def _weaken(self, th, I, strict):
