@@ -628,11 +628,17 @@ def test_identity_claims_and_messages():
     assert trig.claim == Claim("identity", R(sp.sin(x) ** 2 + sp.cos(x) ** 2), R(x), R(-I1), R(I2), False, True,
                                other=R(I1))
     assert trig.assumptions == {"sympy-core", "sympy-simplify", "arb"}
-    # not rational functions over Q: a radical, pi, an irrational power -- simplify + cross-check
+    # a radical, pi, a function of x: rational over Q once each such subterm is a fresh symbol -- exact
     for l, r in ((sp.sqrt(2) * (x + 1), sp.sqrt(2) * x + sp.sqrt(2)), (sp.pi * (x + 1), sp.pi * x + sp.pi),
                  (sp.sqrt(x + 2) * (x + 1), sp.sqrt(x + 2) * x + sp.sqrt(x + 2)),
-                 (sp.exp(x) * (x + 1), x * sp.exp(x) + sp.exp(x))):
-        assert "sympy-simplify" in exact_identity(l, r, x, 0, 1).assumptions, l
+                 (sp.exp(x) * (x + 1), x * sp.exp(x) + sp.exp(x)),
+                 (1 / (sp.tanh(x) + 1) ** 2, 1 / (sp.tanh(x) ** 2 + 2 * sp.tanh(x) + 1))):
+        assert exact_identity(l, r, x, 0, 1).assumptions == {"sympy-core", "sympy-polys"}, l
+    # the generalised subterms need a relation between them (sqrt(s) sqrt(s + 1) = sqrt(s^2 + s)): simplify
+    assert "sympy-simplify" in exact_identity(sp.sqrt(s) * sp.sqrt(s + 1), sp.sqrt(s ** 2 + s), s, 0, 1, True).assumptions
+    # distinct subterms are distinct symbols: tanh(x) - tanh(2x) is not generalised to a - a = 0
+    for l, r in ((sp.tanh(x), sp.tanh(2 * x)), (sp.sqrt(2) * x, sp.sqrt(3) * x), (sp.exp(x) * (x + 1), sp.exp(x) * x)):
+        assert why(exact_identity, l, r, x, 0, 1) == "SymPy's simplify does not reduce lhs - rhs to 0"
     assert why(exact_identity, x ** 2, x, x, 0, 1) == "the rational functions differ"
     assert why(exact_identity, sp.sin(x), sp.cos(x), x, 0, 1) == "SymPy's simplify does not reduce lhs - rhs to 0"
     assert why(exact_identity, sp.sin(x) ** 2 + sp.cos(x) ** 2, I1, x, sp.sqrt(2), 2) == \
@@ -652,11 +658,16 @@ def test_identity_plane_claims_and_messages():
     assert same.assumptions == {"sympy-core"} and same.rule == "identity_plane"
     rat = P(lhs=(x ** 2 - y ** 2) / (x - y), rhs=x + y, x=x, y=y)
     assert rat.assumptions == {"sympy-core", "sympy-polys"}
-    # exact in x alone is not enough: y**(1/2) makes it irrational in y
+    # radicals, pi, functions of x or y: exact once generalised to fresh symbols
     for l, r in ((sp.sqrt(2) * (x + y), sp.sqrt(2) * x + sp.sqrt(2) * y), (sp.pi * (x + 1), sp.pi * x + sp.pi),
                  (sp.exp(y) * (x + 1), x * sp.exp(y) + sp.exp(y)), (sp.exp(x) * (y + 1), y * sp.exp(x) + sp.exp(x)),
                  (sp.sqrt(y ** 2 + 1) * (x + 1), x * sp.sqrt(y ** 2 + 1) + sp.sqrt(y ** 2 + 1))):
-        assert P(lhs=l, rhs=r, x=x, y=y).assumptions == {"sympy-core", "sympy-simplify", "arb"}, l
+        assert P(lhs=l, rhs=r, x=x, y=y).assumptions == {"sympy-core", "sympy-polys"}, l
+    # a relation between subterms is needed: simplify + cross-check
+    assert P(lhs=sp.exp(x) * sp.exp(y), rhs=sp.exp(x + y), x=x, y=y).assumptions == \
+        {"sympy-core", "sympy-simplify", "arb"}
+    assert why(P, lhs=sp.exp(x) * (y + 1), rhs=sp.exp(y) * (x + 1), x=x, y=y) == \
+        "SymPy's simplify does not reduce lhs - rhs to 0"
     assert why(P, lhs=x ** 2 + y, rhs=x ** 2 + y ** 2, x=x, y=y) == "the rational functions differ"
     assert why(P, lhs=sp.sin(x), rhs=sp.cos(y), x=x, y=y) == "SymPy's simplify does not reduce lhs - rhs to 0"
     assert why(P, lhs=x, rhs=x, x=x, y=x) == "two distinct variables"

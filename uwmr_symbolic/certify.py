@@ -43,12 +43,14 @@ REDUCTION = "f(e1, e2) = F(sqrt(e1^2 + r e2^2)) (the reduction to one variable; 
 # and RATIONAL_UNITS * size^2.5 before factoring a rational function of
 # `count_ops` size or checking an identity (SymPy's factor and the kernel's
 # cancel grow so: 0.4 s at size 39, 2.3 s at 79); also STURM_UNITS * degree^2
-# per Sturm sequence and TAIL_UNITS * size^2 per s = 1/t form.  About 8
+# per Sturm sequence and TAIL_UNITS * size^2 per s = 1/t form; an identity
+# the kernel checks by `cancel` alone (no simplify) CANCEL_UNITS * size^2.  About 8
 # microseconds per unit here (4 to 24 measured); CPU_CAP is a backstop only.
 CLAIM_UNITS = 200
 RATIONAL_UNITS = 6
 STURM_UNITS = 2
 TAIL_UNITS = 2
+CANCEL_UNITS = 4
 CHEAP_RATIONAL = 30     # larger rational functions try the sign rules of their parts first
 WORK = 60_000           # for one lemma (about 0.5 s here); the verdict does not depend on it
 DESIGN_WORK = 200_000   # for all the lemmas of one design (see `design_budget`)
@@ -168,7 +170,7 @@ class Prover:
     NoProof.  Results and failures are memoised per claim."""
 
     def __init__(self, work=WORK):
-        self.memo = {}
+        self.memo, self.factored, self.identities = {}, {}, {}
         self.budget = Budget(work, _design)
         self.spent = NoProof("the proposer's budget is spent")
 
@@ -214,8 +216,10 @@ class Prover:
                 except NoProof as exc:
                     last = exc
             try:                                # factored over Q: Sturm on each factor
-                self.charge(_rational_units(size))
-                return self._rewritten(e, sp.factor(sp.together(e)), var, I, want, strict, depth, near)
+                if e not in self.factored:
+                    self.charge(_rational_units(size))
+                    self.factored[e] = sp.factor(sp.together(e))
+                return self._rewritten(e, self.factored[e], var, I, want, strict, depth, near)
             except NoProof as exc:
                 last = exc
         if hi != OO:
@@ -245,8 +249,24 @@ class Prover:
         return _rule(K.sign_by_rewrite, th, ident)
 
     def _identity(self, **claim):
-        """The kernel's `identity`, charged like factoring (its cancel costs so)."""
-        self.charge(_rational_units(max(sp.count_ops(claim["lhs"]), sp.count_ops(claim["rhs"]))))
+        """The kernel's `identity`, charged like factoring (its cancel costs so).
+        For a positive variable it is first tried on all of (0, oo), where
+        it serves every later interval (`sign_by_rewrite` takes an identity
+        on a superset)."""
+        key = (claim["lhs"], claim["rhs"], claim["var"])
+        if key in self.identities:
+            return self.identities[key]
+        size = max(sp.count_ops(claim["lhs"]), sp.count_ops(claim["rhs"]))
+        g, extra = K._generalized(claim["lhs"] - claim["rhs"], (claim["var"],))
+        exact = K._rational_over_q(g, claim["var"], *extra)      # the kernel's cancel, not simplify
+        self.charge(CANCEL_UNITS * size ** 2 if exact else _rational_units(size))
+        if claim["var"].is_positive:
+            try:
+                th = _rule(K.identity, **{**claim, "lo": 0, "hi": OO, "lo_open": True, "hi_open": True})
+                self.identities[key] = th
+                return th
+            except NoProof:
+                pass
         return _rule(K.identity, **claim)
 
     def _weaken(self, th, I, strict):
@@ -543,7 +563,7 @@ def sup_theorems(dF, c, point, var, positive):
     try:
         gap = sp.sympify(c) - dF
         zeros = (point,) if point is not None and point != 0 else ()
-        parts, why = sign_theorems(gap, var, 0, OO, zeros=zeros, strict=not zeros, work=WORK // 2)
+        parts, why = sign_theorems(gap, var, 0, OO, zeros=zeros, strict=not zeros, work=WORK)
         if parts is None:
             raise NoProof(f"{c} - F' >= 0: {why}")
         upper = parts[0] if not zeros else _rule(K.join_at_zero, *parts)

@@ -746,10 +746,37 @@ def _rational_over_q(d, *variables) -> bool:
         and not d.atoms(sp.NumberSymbol) and all(p.exp.is_Integer for p in d.atoms(sp.Pow))
 
 
+def _generalized(d, variables):
+    """d with each maximal subterm that is not built from the variables and
+    rationals by +, * and integer powers (sqrt(3), pi, tanh(x), x**(1/2), ...)
+    replaced by a fresh symbol, one per distinct subterm.  If the result is 0
+    as a rational function over Q, d = 0 for every value of those subterms,
+    in particular for their true values, wherever d is defined."""
+    fresh = {}
+
+    def walk(e):
+        if e.is_Rational or e in variables:
+            return e
+        if e.is_Add or e.is_Mul:
+            return e.func(*map(walk, e.args))
+        if e.is_Pow and e.exp.is_Integer:
+            return walk(e.base) ** e.exp
+        return fresh.setdefault(e, sp.Dummy(real=True))
+    return walk(d), tuple(fresh.values())
+
+
+def _zero_when_generalized(d, *variables) -> bool:
+    """d with its non-rational subterms generalised is 0 by polynomial
+    arithmetic over Q (`cancel`), so d is identically 0 where defined."""
+    g, extra = _generalized(d, variables)
+    return bool(extra) and _rational_over_q(g, *variables, *extra) and sp.cancel(sp.together(g)) == 0
+
+
 def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
     """lhs = rhs wherever both are defined on I.  Exact when lhs - rhs is a
-    rational function with rational coefficients: sympy.cancel gives 0
-    (polynomial arithmetic over Q).  Otherwise SymPy's simplify must give 0
+    rational function with rational coefficients, or becomes one when its
+    non-rational subterms (sqrt(3), tanh(x), ...) are replaced by fresh
+    symbols: sympy.cancel gives 0 (polynomial arithmetic over Q).  Otherwise SymPy's simplify must give 0
     AND lhs - rhs must enclose 0 at fixed rational points of I in 320-bit
     Arb; the theorem then rests on "sympy-simplify"."""
     lo, hi = _interval(var, lo, hi, lo_open, hi_open)
@@ -758,6 +785,8 @@ def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
     claim = Claim("identity", _s(l), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(r))
     if _rational_over_q(d, var):
         _need(sp.cancel(sp.together(d)) == 0, "the rational functions differ")
+        return claim, ("sympy-polys",)
+    if _zero_when_generalized(d, var):
         return claim, ("sympy-polys",)
     _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
     _cross_check(d, var, lo, hi)
@@ -773,7 +802,8 @@ _PLANE_POINTS = [(sp.Rational(p), sp.Rational(q)) for p, q in
 def identity_plane(*, lhs, rhs, x, y):
     """lhs(x, y) = rhs(x, y) at every point of the plane where both are
     defined (x, y real variables).  Exact when both are the same expression,
-    or lhs - rhs is a rational function over Q (sympy.cancel gives 0);
+    or lhs - rhs is a rational function over Q, or becomes one when its
+    non-rational subterms are generalised (sympy.cancel gives 0);
     otherwise SymPy's simplify must give 0 AND lhs - rhs must enclose 0,
     with radius < 2^-250, at >= 3 of 10 fixed rational points in 320-bit
     Arb; the theorem then rests on "sympy-simplify".  (With lhs = f and
@@ -792,6 +822,8 @@ def identity_plane(*, lhs, rhs, x, y):
     d = l - r
     if _rational_over_q(d, x, y):
         _need(sp.cancel(sp.together(d)) == 0, "the rational functions differ")
+        return claim, ("sympy-polys",)
+    if _zero_when_generalized(d, x, y):
         return claim, ("sympy-polys",)
     _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
     _vanishes_at([(f"({p}, {q})", lambda p=p, q=q: evaluate(d.subs({x: p, y: q}), bits=CROSS_CHECK_BITS))
