@@ -10,7 +10,7 @@ import mpmath
 import pytest
 import sympy as sp
 
-from uwmr_symbolic.kernel import (RULES, VERSION, CertificateError, KernelError, Theorem, Undefined,
+from uwmr_symbolic.kernel import (RULES, VERSION, CertificateError, Claim, KernelError, Theorem, Undefined,
                                   check_certificate, evaluate, rules as K, to_certificate)
 from uwmr_symbolic.kernel.certificate import SCHEMA
 from uwmr_symbolic.kernel.core import _cross_check
@@ -190,6 +190,78 @@ def test_sign_of_sum():
     rejects(K.sign_of_sum, sq, expr=x ** 2 - 1, want=1)                          # constant -1
     rejects(K.sign_of_sum, sq, expr=x ** 2 + x + 1, want=1)                      # x uncovered
     rejects(K.sign_of_sum, sturm(x - 2, x, -1, 1, want=-1), expr=x ** 2 + x - 2, want=1)
+
+
+def test_sign_of_sum_over_groups_of_terms():
+    """x^2 - x + 2 on [-1, 1] from the groups 2 - x > 0 and x^2 >= 0."""
+    two_minus_x, sq = sturm(2 - x, x, -1, 1), sturm(x ** 2, x, -1, 1, strict=False)
+    thm = K.sign_of_sum(two_minus_x, sq, expr=x ** 2 - x + 2, want=1)
+    assert (thm.claim.expr, thm.claim.want, thm.claim.strict) == (sp.srepr(x ** 2 - x + 2), 1, True)
+    assert not K.sign_of_sum(sq, sturm(x ** 4, x, -1, 1, strict=False), expr=x ** 2 + x ** 4, want=1).claim.strict
+    rejects(K.sign_of_sum, sturm(3 - x, x, -1, 1), sq, expr=x ** 2 - x + 2, want=1)       # 3 is no term
+    rejects(K.sign_of_sum, two_minus_x, sturm(x ** 2 - x + 1, x, -1, 1), expr=x ** 2 - x + 2, want=1)  # -x twice
+    rejects(K.sign_of_sum, sq, expr=x ** 2 - x + 2, want=1)                               # -x uncovered
+
+
+def test_sign_below_sup():
+    """G(y) < sup G for every real y: tanh and erf below 1, atan below pi/2."""
+    pos = sturm(s, s, 0, 2, lo_open=True)
+    for e, g in ((1 - sp.tanh(s), sp.tanh(s)), (2 - 2 * sp.tanh(s), sp.tanh(s)), (Q(3, 2) - sp.erf(s), sp.erf(s)),
+                 (sp.pi / 2 - sp.atan(s), sp.atan(s))):
+        thm = K.sign_below_sup(pos, expr=e, bounded=g)
+        assert thm.claim == Claim("sign", sp.srepr(e), sp.srepr(s), sp.srepr(ZERO), sp.srepr(sp.Integer(2)),
+                                  True, False, 1, True)
+    for e, g in ((Q(99, 100) - sp.tanh(s), sp.tanh(s)),         # a + m sup G < 0
+                 (Q(3, 2) - sp.atan(s), sp.atan(s)),            # 3/2 < pi/2
+                 (1 + sp.tanh(s), sp.tanh(s)),                  # m > 0
+                 (1 - sp.tanh(s) ** 2, sp.tanh(s)),             # not a + m G
+                 (1 - s * sp.tanh(s), sp.tanh(s)),              # m depends on s
+                 (1 - sp.sinh(s), sp.sinh(s)),                  # sinh is unbounded
+                 (1 - sp.tanh(2 * s), sp.tanh(2 * s))):         # the premise is about s, not 2 s
+        rejects(K.sign_below_sup, pos, expr=e, bounded=g)
+
+
+def diverges_s():
+    """s -> oo: s' - 1/2 = 1/2 >= 0 on [1, oo)."""
+    half = K.sign_by_sturm(expr=Q(1, 2), var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
+                           want=1, strict=False)
+    return K.diverges_by_growth(half, expr=s, var=s, R=sp.Integer(1), rate="linear", k=Q(1, 2))
+
+
+def test_limit_rules():
+    """tanh(s) -> 1, s/sqrt(s^2 + 1) -> 1 (its tail form 1/sqrt(t^2 + 1) at t = 0), so
+    3 tanh(s) s/sqrt(s^2 + 1) -> 3 and its sup over (0, oo) is >= 3."""
+    E = s / sp.sqrt(s ** 2 + 1)
+    ident = K.identity(lhs=1 / sp.sqrt(t ** 2 + 1), rhs=E.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo,
+                       lo_open=True, hi_open=True)
+    lim_E = K.limit_at_infinity(ident, expr=E, var=s, width=Q(1, 2))
+    assert (lim_E.claim.kind, lim_E.claim.expr, lim_E.claim.other) == ("limit_oo", sp.srepr(E), sp.srepr(sp.Integer(1)))
+    lim_tanh = K.limit_of_bounded(diverges_s(), expr=sp.tanh(s))
+    assert (lim_tanh.claim.expr, lim_tanh.claim.other) == (sp.srepr(sp.tanh(s)), sp.srepr(sp.Integer(1)))
+    assert parse(K.limit_of_bounded(diverges_s(), expr=sp.atan(s)).claim.other) == sp.pi / 2
+    rejects(K.limit_of_bounded, diverges_s(), expr=sp.sinh(s))               # no finite limit
+    rejects(K.limit_of_bounded, diverges_s(), expr=sp.tanh(-s))              # -s -> -oo
+    rejects(K.limit_of_bounded, lim_E, expr=sp.tanh(s))                      # premise must diverge
+    prod = K.limit_of_product(lim_tanh, lim_E, expr=3 * sp.tanh(s) * E)
+    assert parse(prod.claim.other) == 3
+    rejects(K.limit_of_product, lim_tanh, lim_E, expr=s * sp.tanh(s) * E)    # the factor s is no constant
+    rejects(K.limit_of_product, lim_tanh, expr=sp.tanh(s) * E)               # E has no premise
+    ratio = K.identity(lhs=sp.sinh(s) / sp.cosh(s), rhs=sp.tanh(s), var=s, lo=ZERO, hi=sp.oo,
+                       lo_open=True, hi_open=True)
+    assert ratio.assumptions == {"sympy-core", "sympy-polys"}             # tanh = sinh/cosh, exactly
+    moved = K.limit_by_rewrite(lim_tanh, ratio)
+    assert (moved.claim.expr, parse(moved.claim.other)) == (sp.srepr(sp.sinh(s) / sp.cosh(s)), 1)
+    short = K.identity(lhs=sp.sinh(s) / sp.cosh(s), rhs=sp.tanh(s), var=s, lo=ZERO, hi=sp.Integer(5),
+                       lo_open=True, hi_open=False)
+    rejects(K.limit_by_rewrite, lim_tanh, short)                             # must reach oo
+    low = K.sup_lower_from_limit(prod, lo=ZERO, lo_open=True)
+    assert (low.claim.kind, low.claim.lo, low.claim.hi, parse(low.claim.other)) == ("sup_lower", sp.srepr(ZERO), "oo", 3)
+    rejects(K.sup_lower_from_limit, ident, lo=ZERO, lo_open=True)
+    cert = json.loads(json.dumps(to_certificate([low])))
+    assert [c.claim for c in check_certificate(cert)] == [low.claim]
+    cert["theorems"][-1]["claim"]["other"] = sp.srepr(sp.Integer(4))         # a larger sup claimed
+    with pytest.raises(CertificateError):
+        check_certificate(cert)
 
 
 def test_sign_through_increasing():

@@ -243,10 +243,7 @@ class Prover:
         """The sign of e from that of an identical form (`sign_by_rewrite`)."""
         if form == e:
             raise NoProof("no other form")
-        th = self.prove(form, var, I, want, strict, depth, near)
-        lo, hi, lo_open, hi_open = I
-        ident = self._identity(lhs=e, rhs=form, var=var, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open)
-        return _rule(K.sign_by_rewrite, th, ident)
+        return self._rewritten_by(e, form, self.prove(form, var, I, want, strict, depth, near), var, I)
 
     def _identity(self, **claim):
         """The kernel's `identity`, charged like factoring (its cancel costs so).
@@ -316,15 +313,59 @@ class Prover:
             prem = [sub(y - 1, want)] + ([] if want > 0 else [sub(y, 1, True)])
             return _rule(K.sign_through_increasing, *prem, expr=e)
         if e.is_Add:
-            premises = []
-            for t in e.args:
-                if t.has(var):
-                    try:
-                        premises.append(sub(t, want))
-                    except NoProof:
-                        premises.append(sub(t, want, False))
-            return _rule(K.sign_of_sum, *premises, expr=e, want=want)
+            try:
+                if any(_against(t, var, I, want) for t in e.args if t.has(var)):
+                    raise NoProof(f"a term of {e} has the other sign")
+                premises = []
+                for t in e.args:
+                    if t.has(var):
+                        try:
+                            premises.append(sub(t, want))
+                        except NoProof:
+                            premises.append(sub(t, want, False))
+                return _rule(K.sign_of_sum, *premises, expr=e, want=want)
+            except NoProof as exc:
+                if exc is self.spent or want < 0 or not e.has(sp.tanh, sp.sinh, sp.erf, sp.atan):
+                    raise
+                return self._below_sup(e, var, I, strict, depth, near)
         raise NoProof(f"no structural rule for {e}")
+
+    def _below_sup(self, e, var, I, strict, depth, near):
+        """e > 0 where e is a + m G(Y), G bounded above by sup G (tanh, erf,
+        atan; sinh(Y)/cosh(Y) read as tanh(Y)): `sign_below_sup`; or where a
+        term t = -M G(Y) of e, M >= 0, gives e = (e - t + t|G=sup G) +
+        M (sup G - G(Y)), each part signed."""
+        form = _with_tanh(e)
+        for g in sorted(form.atoms(*K._SUP), key=sp.count_ops):
+            a = form.xreplace({g: 0})
+            m = form.xreplace({g: 1}) - a
+            if not (a.has(var) or m.has(var)) and a + m * g == form:
+                y = g.args[0]
+                for w, st in ((1, False), (-1, False)):
+                    try:
+                        th = _rule(K.sign_below_sup, self.prove(y, var, I, w, st, depth, near), expr=form, bounded=g)
+                        break
+                    except NoProof:
+                        continue
+                else:
+                    continue
+                return th if form == e else self._rewritten_by(e, form, th, var, I)
+            for t in form.args:
+                if t.has(g) and not (t / g).has(g):
+                    parts = [form - t + t.xreplace({g: K._SUP[type(g)]}), (-t / g) * (K._SUP[type(g)] - g)]
+                    try:
+                        th = _rule(K.sign_of_sum, self.prove(parts[0], var, I, 1, False, depth, near),
+                                   self.prove(parts[1], var, I, 1, strict, depth, near), expr=sum(parts), want=1)
+                        return self._rewritten_by(e, sum(parts), th, var, I)
+                    except NoProof as exc:
+                        if exc is self.spent:
+                            raise
+        raise NoProof(f"no bound of a tanh, erf or atan makes {e} positive")
+
+    def _rewritten_by(self, e, form, th, var, I):
+        lo, hi, lo_open, hi_open = I
+        ident = self._identity(lhs=e, rhs=form, var=var, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open)
+        return _rule(K.sign_by_rewrite, th, ident)
 
     def _taylor(self, e, var, I, want):
         """Taylor at the open end c of a one-sided neighbourhood I."""
@@ -395,6 +436,12 @@ class Prover:
             tail = _rule(K.sign_on_tail, th, ident, expr=e, var=var, R=R)
         except NoProof as exc:
             last = exc
+        if tail is None and e.has(sp.tanh, sp.sinh, sp.erf, sp.atan):
+            try:                                # bounded functions beyond R, by the sign rules in s
+                tail = self._structure(e, var, (R, OO, False, True), want, strict, depth)
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
         if tail is None:
             if depth >= 1:
                 raise last
@@ -406,6 +453,30 @@ class Prover:
                 raise last from None
         head = self.prove(e, var, (lo, R, lo_open, False), want, strict, depth)
         return _rule(K.join, head, tail)
+
+
+def _against(t, var, I, want) -> bool:
+    """t has the sign -want at an inner point of I (Arb): no sum rule over t."""
+    lo, hi = I[0], I[1]
+    p = _mid(lo, hi) if hi != OO else lo + 1
+    try:
+        v = evaluate(t, var, p, p, bits=64)
+    except Undefined:
+        return False
+    return v.negative() if want > 0 else v.positive()
+
+
+def _with_tanh(e):
+    """e with each sinh(Y)/cosh(Y) in a product written tanh(Y)."""
+    def fix(m):
+        args = list(m.args)
+        for a in m.args:
+            if isinstance(a, sp.sinh) and 1 / sp.cosh(a.args[0]) in args:
+                args.remove(a)
+                args.remove(1 / sp.cosh(a.args[0]))
+                args.append(sp.tanh(a.args[0]))
+        return sp.Mul(*args)
+    return e.replace(lambda x: x.is_Mul, fix)
 
 
 def _ends(th):
@@ -573,12 +644,46 @@ def sup_theorems(dF, c, point, var, positive):
                           lo_open=point != 0, hi_open=True)
         else:
             w = sp.Rational(1, 4)
-            ident = _rule(K.identity, lhs=_tail_form(dF, var), rhs=dF.subs(var, 1 / T), var=T, lo=0, hi=w,
-                          lo_open=True, hi_open=False)
-            lower = _rule(K.sup_lower_by_limit, ident, expr=dF, var=var, width=w, bound=c, lo=0, lo_open=True)
+            try:
+                ident = _rule(K.identity, lhs=_tail_form(dF, var), rhs=dF.subs(var, 1 / T), var=T, lo=0, hi=w,
+                              lo_open=True, hi_open=False)
+                lower = _rule(K.sup_lower_by_limit, ident, expr=dF, var=var, width=w, bound=c, lo=0, lo_open=True)
+            except NoProof:
+                lower = _rule(K.sup_lower_from_limit, limit_at_infinity(dF, var), lo=0, lo_open=True)
+                if K.parse(lower.claim.other) != sp.sympify(c):
+                    raise NoProof(f"F' tends to {lower.claim.other}, not {c}") from None
         return [positive, upper, lower], ""
     except (NoProof, K.KernelError, Undefined) as exc:
         return None, str(exc)
+
+
+def limit_at_infinity(e, var, w=sp.Rational(1, 4)):
+    """E -> c as s -> oo as a kernel theorem: from the tail form's value at
+    t = 0 (`limit_at_infinity`), or for a product with tanh, erf or atan
+    factors of diverging arguments (sinh/cosh read as tanh) from their
+    limits and that of the rest (`limit_of_bounded`, `limit_of_product`)."""
+    from .univariate import T
+    form = _with_tanh(e)
+    bounded = [a for a in sp.Mul.make_args(form) if type(a) in K._SUP]
+    if not bounded:
+        ident = _rule(K.identity, lhs=_tail_form(form, var), rhs=form.subs(var, 1 / T), var=T, lo=0, hi=w,
+                      lo_open=True, hi_open=False)
+        lim = _rule(K.limit_at_infinity, ident, expr=form, var=var, width=w)
+    else:
+        premises = []
+        for g in bounded:
+            div = growth_theorems(g.args[0], var)
+            if not div:
+                raise NoProof(f"{g.args[0]} not shown to diverge")
+            premises.append(_rule(K.limit_of_bounded, div[0], expr=g))
+        rest = sp.Mul(*[a for a in sp.Mul.make_args(form) if type(a) not in K._SUP])
+        if rest.has(var):
+            premises.append(limit_at_infinity(rest, var, w))
+        lim = _rule(K.limit_of_product, *premises, expr=form)
+    if form != e:
+        ident = _rule(K.identity, lhs=e, rhs=form, var=var, lo=0, hi=OO, lo_open=True, hi_open=True)
+        lim = _rule(K.limit_by_rewrite, lim, ident)
+    return lim
 
 
 def sup_upper_theorem(e, bound, var):

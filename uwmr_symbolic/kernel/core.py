@@ -430,27 +430,29 @@ sign_of_product = rule("arb", "sympy-core")(sign_of_product)
 
 
 def sign_of_sum(*premises, expr, want):
-    """E = t1 + ... + tk.  Every non-constant term has a premise (same
-    interval I) with sign want, every constant term has sign want or is 0
-    (exact / Arb); E has sign want, strictly if some term does strictly."""
+    """E = t1 + ... + tk.  The premises (same interval I) have sign want and
+    are about disjoint groups of the terms: each premise's expression is a
+    term of E or a sum of terms of E.  Every term in no group is a constant
+    of sign want or 0 (exact / Arb).  E has sign want, strictly if some
+    premise or constant term does strictly."""
     _need(want in (1, -1), "want = +-1 needed")
     var = _signs_on_one_interval(premises).x()
     _need(all(p.claim.want == want for p in premises), "a premise has the other sign")
     e = _expr(expr, var)
     _need(e.is_Add, lambda: f"not a sum: {e}")
-    by_expr = {p.claim.expr: p for p in premises}
-    used, strict = set(), False
+    grouped = {}
+    for p in premises:
+        for t in sp.Add.make_args(p.claim.e()):
+            _need(t not in grouped, "premises share a term")
+            grouped[t] = p
+    _need(set(grouped) <= set(e.args), "a premise matches no term")
+    strict = any(p.claim.strict for p in premises)
     for t in e.args:
-        if not t.has(var):
+        if t not in grouped:
+            _need(not t.has(var), lambda: f"no premise for term {t}")
             s = _const_sign(t)
             _need(s in (0, want), lambda: f"constant term {t} has the wrong sign")
             strict = strict or s == want
-            continue
-        p = by_expr.get(_s(t))
-        _need(p is not None, lambda: f"no premise for term {t}")
-        used.add(_s(t))
-        strict = strict or p.claim.strict
-    _need(used == set(by_expr), "a premise matches no term")
     c = premises[0].claim
     lo, hi = c.ends()
     return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, want, strict)
@@ -487,6 +489,28 @@ def sign_through_increasing(*premises, expr):
         _need(q.expr == _s(y) and q.want > 0 and q.strict, "second premise must be Y > 0")
     return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, c.want, c.strict)
 sign_through_increasing = rule("sympy-core")(sign_through_increasing)
+
+
+_SUP = {sp.tanh: sp.Integer(1), sp.erf: sp.Integer(1), sp.atan: sp.pi / 2}   # sup over R, never attained
+
+
+def sign_below_sup(arg, *, expr, bounded):
+    """a + m G(Y) > 0 on I for exact constants a, m < 0 with a + m sup G >= 0,
+    G = tanh or erf (sup 1) or atan (sup pi/2): G(y) < sup G for every real
+    y.  `bounded` is G(Y); the premise, any sign theorem about Y on I, shows
+    Y defined there."""
+    c = arg.claim
+    _is_sign(arg)
+    var = c.x()
+    e, g = _expr(expr, var), _expr(bounded, var)
+    _need(type(g) in _SUP and c.expr == _s(g.args[0]), "bounded must be G(Y) and the premise about Y")
+    a = e.xreplace({g: 0})
+    m = e.xreplace({g: 1}) - a
+    _need(not (a.has(var) or m.has(var)) and a + m * g == e, lambda: f"{e} is not a + m {g}")
+    _need(_const_sign(m) < 0 and _const_sign(a + m * _SUP[type(g)]) >= 0, "needs m < 0 and a + m sup G >= 0")
+    lo, hi = c.ends()
+    return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, 1, True)
+sign_below_sup = rule("arb", "sympy-core")(sign_below_sup)
 
 
 def join(left, right):
@@ -761,6 +785,8 @@ def _generalized(d, variables):
             return e.func(*map(walk, e.args))
         if e.is_Pow and e.exp.is_Integer:
             return walk(e.base) ** e.exp
+        if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
+            return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
         return fresh.setdefault(e, sp.Dummy(real=True))
     return walk(d), tuple(fresh.values())
 
@@ -941,19 +967,17 @@ def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
 sup_lower_by_point = rule("arb", "sympy-core")(sup_lower_by_point)
 
 
-def sup_lower_by_limit(ident, *, expr, var, width, bound, lo, lo_open):
-    """sup over <lo, oo) of E >= c where c = lim E(s) as s -> oo: premise
-    E_t(t) = E(1/t) on a t-interval containing (0, w]; E_t defined (hence
-    continuous) on the closed [0, w] (Arb range evaluation); E_t(0) - c is
-    the literal 0 (Arb agrees); E defined for all s > 0 and lo >= 0.  Then
-    E(1/t) = E_t(t) -> c as t -> 0+, and 1/t lies in <lo, oo) for small t."""
+def _tail_limit(ident, expr, var, width):
+    """(E, c) with c = lim E(s) as s -> oo: the identity E_t(t) = E(1/t) on
+    a t-interval containing (0, w]; E_t defined (hence continuous) on the
+    closed [0, w] (Arb range evaluation); c = E_t(0) exactly (SymPy's value,
+    Arb agrees); E defined for all s > 0."""
     _need(ident.claim.kind == "identity", "premise must be an identity")
     ic = ident.claim
     t = ic.x()
     _need(t != var, "the tail variable must differ from the variable")
-    e, w, c = _expr(expr, var), _number(width), _number(bound)
-    lo = _number(lo)
-    _need(_lt(0, w) and w != OO and c not in (OO, -OO), "finite w > 0 and bound")
+    e, w = _expr(expr, var), _number(width)
+    _need(_lt(0, w) and w != OO, "finite w > 0")
     _need(ic.other == _s(e.subs(var, 1 / t)), "the identity must read E_t(t) = E(1/t)")
     ia, ib = ic.ends()
     _need((ia == 0 or _lt(ia, 0)) and (_lt(w, ib) or (ib == w and not ic.hi_open)),
@@ -961,15 +985,83 @@ def sup_lower_by_limit(ident, *, expr, var, width, bound, lo, lo_open):
     et = ic.e()
     try:
         evaluate(et, t, 0, w)
+        c = _number(et.subs(t, 0))
+        _need(c not in (OO, -OO), "finite E_t(0)")
         at0 = evaluate(et - c, t, 0, 0, bits=256)
     except Undefined as exc:
         raise KernelError(f"E_t not defined on [0, {w}]: {exc}") from None
-    _need(et.subs(t, 0) - c == 0 and at0.hull().contains(0), lambda: f"E_t(0) is not exactly {c}")
+    _need(at0.hull().contains(0), lambda: f"Arb disagrees with E_t(0) = {c}")
     _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    return e, c
+
+
+def sup_lower_by_limit(ident, *, expr, var, width, bound, lo, lo_open):
+    """sup over <lo, oo) of E >= c where c = lim E(s) as s -> oo (the premises
+    of `_tail_limit`), c the given bound exactly, lo >= 0: 1/t lies in
+    <lo, oo) for small t, where E(1/t) = E_t(t) -> c."""
+    e, c = _tail_limit(ident, expr, var, width)
+    _need(c - _number(bound) == 0, lambda: f"E_t(0) is not exactly {bound}")
+    lo = _number(lo)
     _interval(var, lo, OO, lo_open, True)
     _need(lo == 0 or _lt(0, lo), "lo >= 0")
     return Claim("sup_lower", _s(e), _s(var), _s(lo), "oo", lo_open, True, other=_s(c))
 sup_lower_by_limit = rule("arb", "sympy-core")(sup_lower_by_limit)
+
+
+def limit_at_infinity(ident, *, expr, var, width):
+    """E(s) -> c as s -> oo (the premises of `_tail_limit`).  Claim kind
+    "limit_oo" with other = c."""
+    e, c = _tail_limit(ident, expr, var, width)
+    return Claim("limit_oo", _s(e), _s(var), hi="oo", other=_s(c))
+limit_at_infinity = rule("arb", "sympy-core")(limit_at_infinity)
+
+
+def limit_of_bounded(div, *, expr):
+    """G(Y) -> sup G as x -> oo when Y -> +oo (a `diverges` theorem), for
+    G = tanh, erf (sup 1) or atan (sup pi/2), which tend to sup G at +oo."""
+    c = div.claim
+    _need(c.kind == "diverges", "premise must be a diverges theorem")
+    var = c.x()
+    e = _expr(expr, var)
+    _need(type(e) in _SUP and c.expr == _s(e.args[0]), lambda: f"{e} is not G(Y) with the premise about Y")
+    return Claim("limit_oo", _s(e), _s(var), hi="oo", other=_s(_SUP[type(e)]))
+limit_of_bounded = rule("sympy-core")(limit_of_bounded)
+
+
+def limit_of_product(*premises, expr):
+    """E = k * E1 * ... * En (k an exact constant, SymPy's product of the
+    premises' expressions) with Ei -> ci as x -> oo: E -> k c1 ... cn."""
+    _need(premises and all(p.claim.kind == "limit_oo" for p in premises), "premises must be limits at oo")
+    var = premises[0].claim.x()
+    _need(all(p.claim.var == _s(var) for p in premises), "premises about one variable")
+    e = _expr(expr, var)
+    prod = sp.Mul(*(p.claim.e() for p in premises))
+    k = e / prod
+    _need(not k.has(var) and k * prod == e, lambda: f"{e} is not a constant times the premises' product")
+    _need(_number(k) not in (OO, -OO), "a finite constant factor")
+    return Claim("limit_oo", _s(e), _s(var), hi="oo", other=_s(k * sp.Mul(*(parse(p.claim.other) for p in premises))))
+limit_of_product = rule("sympy-core")(limit_of_product)
+
+
+def limit_by_rewrite(lim, ident):
+    """R -> c as x -> oo and L = R on an interval reaching oo give L -> c."""
+    c, ic = lim.claim, ident.claim
+    _need(c.kind == "limit_oo" and ic.kind == "identity", "premises: a limit at oo and an identity")
+    _need(ic.other == c.expr and ic.var == c.var and ic.hi == "oo", "the identity must read L = R up to oo")
+    return dataclasses.replace(c, expr=ic.expr)
+limit_by_rewrite = rule()(limit_by_rewrite)
+
+
+def sup_lower_from_limit(lim, *, lo, lo_open):
+    """E -> c as x -> oo gives sup over <lo, oo) of E >= c (lo finite): E is
+    defined and within any eps of c on some [X, oo), which meets <lo, oo)."""
+    c = lim.claim
+    _need(c.kind == "limit_oo", "premise must be a limit at oo")
+    var, lo = c.x(), _number(lo)
+    _need(lo not in (OO, -OO), "finite lo")
+    _interval(var, lo, OO, lo_open, True)
+    return Claim("sup_lower", c.expr, c.var, _s(lo), "oo", bool(lo_open), True, other=c.other)
+sup_lower_from_limit = rule()(sup_lower_from_limit)
 
 
 def sup_upper_of_abs(up, down):
