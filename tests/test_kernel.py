@@ -221,6 +221,22 @@ def test_sign_below_sup():
         rejects(K.sign_below_sup, pos, expr=e, bounded=g)
 
 
+def test_sign_of_increasing_difference():
+    """G(Y) - G(c) has the sign of Y - c for G increasing: tanh(s) - tanh(1) on (1, 3]."""
+    above = sturm(s - 1, s, 1, 3, lo_open=True)
+    for G in (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf, sp.exp):
+        thm = K.sign_of_increasing_difference(above, expr=G(s) - G(1), inner=G(s), c=sp.Integer(1))
+        assert thm.claim == Claim("sign", sp.srepr(G(s) - G(1)), sp.srepr(s), sp.srepr(sp.Integer(1)),
+                                  sp.srepr(sp.Integer(3)), True, False, 1, True)
+    below = sturm(s - 3, s, 1, 3, hi_open=True, want=-1, strict=False)
+    weak = K.sign_of_increasing_difference(below, expr=sp.tanh(s) - sp.tanh(3), inner=sp.tanh(s), c=sp.Integer(3))
+    assert (weak.claim.want, weak.claim.strict) == (-1, False)
+    rejects(K.sign_of_increasing_difference, above, expr=sp.tanh(s) - sp.tanh(2), inner=sp.tanh(s), c=sp.Integer(2))
+    rejects(K.sign_of_increasing_difference, above, expr=sp.cos(s) - sp.cos(1), inner=sp.cos(s), c=sp.Integer(1))
+    rejects(K.sign_of_increasing_difference, above, expr=sp.tanh(s) - sp.atan(1), inner=sp.tanh(s), c=sp.Integer(1))
+    rejects(K.sign_of_increasing_difference, above, expr=sp.tanh(s) - sp.tanh(1), inner=sp.tanh(s), c=sp.oo)
+
+
 def diverges_s():
     """s -> oo: s' - 1/2 = 1/2 >= 0 on [1, oo)."""
     half = K.sign_by_sturm(expr=Q(1, 2), var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
@@ -246,14 +262,10 @@ def test_limit_rules():
     assert parse(prod.claim.other) == 3
     rejects(K.limit_of_product, lim_tanh, lim_E, expr=s * sp.tanh(s) * E)    # the factor s is no constant
     rejects(K.limit_of_product, lim_tanh, expr=sp.tanh(s) * E)               # E has no premise
-    ratio = K.identity(lhs=sp.sinh(s) / sp.cosh(s), rhs=sp.tanh(s), var=s, lo=ZERO, hi=sp.oo,
-                       lo_open=True, hi_open=True)
-    assert ratio.assumptions == {"sympy-core", "sympy-polys"}             # tanh = sinh/cosh, exactly
-    moved = K.limit_by_rewrite(lim_tanh, ratio)
-    assert (moved.claim.expr, parse(moved.claim.other)) == (sp.srepr(sp.sinh(s) / sp.cosh(s)), 1)
-    short = K.identity(lhs=sp.sinh(s) / sp.cosh(s), rhs=sp.tanh(s), var=s, lo=ZERO, hi=sp.Integer(5),
-                       lo_open=True, hi_open=False)
-    rejects(K.limit_by_rewrite, lim_tanh, short)                             # must reach oo
+    # the product is exact once tanh = sinh/cosh and the radical are generalised; sqrt(3) stays a constant
+    moved = K.limit_of_product(lim_tanh, lim_E, expr=sp.sqrt(3) * sp.sinh(s) * s / (sp.cosh(s) * sp.sqrt(s ** 2 + 1)))
+    assert parse(moved.claim.other) == sp.sqrt(3)
+    rejects(K.limit_of_product, lim_tanh, lim_E, expr=sp.sinh(s) * s / sp.sqrt(s ** 2 + 1))   # no cosh
     low = K.sup_lower_from_limit(prod, lo=ZERO, lo_open=True)
     assert (low.claim.kind, low.claim.lo, low.claim.hi, parse(low.claim.other)) == ("sup_lower", sp.srepr(ZERO), "oo", 3)
     rejects(K.sup_lower_from_limit, ident, lo=ZERO, lo_open=True)

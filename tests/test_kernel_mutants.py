@@ -285,8 +285,11 @@ def test_sign_of_sum_claims_and_messages():
     assert weak2.claim == sign(x ** 4 + x ** 2, x, -1, 1, strict=False)
     assert why(S, sq, expr=x ** 2 + 1, want=0) == "want = +-1 needed"
     assert why(S, sq, expr=x ** 2 + 1, want=2) == "want = +-1 needed"
-    assert why(S, sq, expr=x ** 2 - 1, want=1) == "constant term -1 has the wrong sign"
-    assert why(S, nq, expr=-x ** 2 + 1, want=-1) == "constant term 1 has the wrong sign"
+    assert why(S, sq, expr=x ** 2 - 1, want=1) == "the constant terms -1 have the wrong sign"
+    assert why(S, nq, expr=-x ** 2 + 1, want=-1) == "the constant terms 1 have the wrong sign"
+    # the constant terms count by their sum: tanh(1) - 1/2 > 0 (one term of each sign), tanh(1) - 1 < 0
+    assert S(sq, expr=x ** 2 + sp.tanh(1) - Q(1, 2), want=1).claim == sign(x ** 2 + sp.tanh(1) - Q(1, 2), x, -1, 1)
+    assert why(S, sq, expr=x ** 2 + sp.tanh(1) - 1, want=1) == "the constant terms -1 + tanh(1) have the wrong sign"
     assert why(S, sq, expr=-x ** 2 - 1, want=-1) == "a premise has the other sign"
     assert why(S, sq, expr=x ** 2, want=1) == "not a sum: x**2"
     assert why(S, sq, expr=x ** 2 + x, want=1) == "no premise for term x"

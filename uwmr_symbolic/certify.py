@@ -23,6 +23,7 @@ Strategy, per piece between the caller's exact zeros:
 """
 from __future__ import annotations
 
+import math
 import time
 from contextlib import contextmanager
 from fractions import Fraction
@@ -170,7 +171,7 @@ class Prover:
     NoProof.  Results and failures are memoised per claim."""
 
     def __init__(self, work=WORK):
-        self.memo, self.factored, self.identities = {}, {}, {}
+        self.memo, self.factored, self.identities, self.together = {}, {}, {}, {}
         self.budget = Budget(work, _design)
         self.spent = NoProof("the proposer's budget is spent")
 
@@ -231,6 +232,15 @@ class Prover:
             return self._structure(e, var, I, want, strict, depth, near)
         except NoProof as exc:
             last = exc
+        if e.is_Add and any(t.is_Mul and any(a.is_Pow and a.exp.is_negative for a in t.args) for t in e.args):
+            try:                                # over a common denominator: 1 - tanh(s)/s = (s - tanh(s))/s
+                if e not in self.together:
+                    self.charge(TAIL_UNITS * sp.count_ops(e) ** 2)
+                    self.together[e] = sp.together(e)
+                return self._rewritten(e, self.together[e], var, I, want, strict, depth, near)
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
         if near:
             return self._taylor(e, var, I, want)
         if hi == OO:
@@ -254,8 +264,8 @@ class Prover:
         if key in self.identities:
             return self.identities[key]
         size = max(sp.count_ops(claim["lhs"]), sp.count_ops(claim["rhs"]))
-        g, extra = K._generalized(claim["lhs"] - claim["rhs"], (claim["var"],))
-        exact = K._rational_over_q(g, claim["var"], *extra)      # the kernel's cancel, not simplify
+        g, fresh = K._generalized(claim["lhs"] - claim["rhs"], (claim["var"],))
+        exact = K._rational_over_q(g, claim["var"], *fresh.values())      # the kernel's cancel, not simplify
         self.charge(CANCEL_UNITS * size ** 2 if exact else _rational_units(size))
         if claim["var"].is_positive:
             try:
@@ -313,6 +323,10 @@ class Prover:
             prem = [sub(y - 1, want)] + ([] if want > 0 else [sub(y, 1, True)])
             return _rule(K.sign_through_increasing, *prem, expr=e)
         if e.is_Add:
+            diff = _increasing_difference(e, var)
+            if diff is not None:
+                g, c = diff
+                return _rule(K.sign_of_increasing_difference, sub(g.args[0] - c, want), expr=e, inner=g, c=c)
             try:
                 if any(_against(t, var, I, want) for t in e.args if t.has(var)):
                     raise NoProof(f"a term of {e} has the other sign")
@@ -325,10 +339,36 @@ class Prover:
                             premises.append(sub(t, want, False))
                 return _rule(K.sign_of_sum, *premises, expr=e, want=want)
             except NoProof as exc:
-                if exc is self.spent or want < 0 or not e.has(sp.tanh, sp.sinh, sp.erf, sp.atan):
+                if exc is self.spent or want < 0 or not e.has(*_INCREASING):
                     raise
-                return self._below_sup(e, var, I, strict, depth, near)
+                try:
+                    return self._below_sup(e, var, I, strict, depth, near)
+                except NoProof as exc:
+                    if exc is self.spent:
+                        raise
+                return self._above_floor(e, var, I, strict, depth, near)
         raise NoProof(f"no structural rule for {e}")
+
+    def _above_floor(self, e, var, I, strict, depth, near):
+        """e > 0 where a term t = M G(Y) of e, G increasing, M >= 0, and a
+        short rational c <= Y on I give e = (e - t + M G(c)) + M (G(Y) - G(c)),
+        each part signed (the second by `sign_of_increasing_difference`)."""
+        form = _with_tanh(e)
+        for g in sorted((g for g in form.atoms(*_INCREASING) if g.has(var)), key=sp.count_ops):
+            try:                                # Y's value at the left end (Y increasing there, or no proof)
+                low = evaluate(g.args[0], var, I[0], I[0], bits=64).lo.lower()
+            except Undefined:
+                continue
+            c = sp.Rational(math.floor(float(low) * 64) - 1, 64)
+            for t in form.args:
+                if t.has(g) and not (t / g).has(g):
+                    parts = [form - t + (t / g) * g.func(c), (t / g) * (g - g.func(c))]
+                    try:
+                        return self._sum_of_parts(e, parts, var, I, (strict, False), depth, near)
+                    except NoProof as exc:
+                        if exc is self.spent:
+                            raise
+        raise NoProof(f"no lower bound of an increasing function makes {e} positive")
 
     def _below_sup(self, e, var, I, strict, depth, near):
         """e > 0 where e is a + m G(Y), G bounded above by sup G (tanh, erf,
@@ -336,7 +376,7 @@ class Prover:
         term t = -M G(Y) of e, M >= 0, gives e = (e - t + t|G=sup G) +
         M (sup G - G(Y)), each part signed."""
         form = _with_tanh(e)
-        for g in sorted(form.atoms(*K._SUP), key=sp.count_ops):
+        for g in sorted((g for g in form.atoms(*K._SUP) if g.has(var)), key=sp.count_ops):
             a = form.xreplace({g: 0})
             m = form.xreplace({g: 1}) - a
             if not (a.has(var) or m.has(var)) and a + m * g == form:
@@ -354,13 +394,20 @@ class Prover:
                 if t.has(g) and not (t / g).has(g):
                     parts = [form - t + t.xreplace({g: K._SUP[type(g)]}), (-t / g) * (K._SUP[type(g)] - g)]
                     try:
-                        th = _rule(K.sign_of_sum, self.prove(parts[0], var, I, 1, False, depth, near),
-                                   self.prove(parts[1], var, I, 1, strict, depth, near), expr=sum(parts), want=1)
-                        return self._rewritten_by(e, sum(parts), th, var, I)
+                        return self._sum_of_parts(e, parts, var, I, (False, strict), depth, near)
                     except NoProof as exc:
                         if exc is self.spent:
                             raise
         raise NoProof(f"no bound of a tanh, erf or atan makes {e} positive")
+
+    def _sum_of_parts(self, e, parts, var, I, stricts, depth, near):
+        """e > 0 from parts, positive (strict as asked) unless constant, that
+        add up to e exactly: `sign_of_sum` over the parts, `sign_by_rewrite`."""
+        if any(_against(p, var, I, 1) for p in parts if p.has(var)):
+            raise NoProof("a part is negative somewhere")
+        premises = [self.prove(p, var, I, 1, st, depth, near) for p, st in zip(parts, stricts) if p.has(var)]
+        th = _rule(K.sign_of_sum, *premises, expr=sum(parts), want=1)
+        return self._rewritten_by(e, sum(parts), th, var, I)
 
     def _rewritten_by(self, e, form, th, var, I):
         lo, hi, lo_open, hi_open = I
@@ -453,6 +500,18 @@ class Prover:
                 raise last from None
         head = self.prove(e, var, (lo, R, lo_open, False), want, strict, depth)
         return _rule(K.join, head, tail)
+
+
+_INCREASING = (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf, sp.exp)
+
+
+def _increasing_difference(e, var):
+    """(G(Y), c) if e = G(Y) - G(c), G increasing, c constant; else None."""
+    if len(e.args) == 2:
+        for a, b in (e.args, e.args[::-1]):
+            if type(a) in _INCREASING and type(-b) is type(a) and not b.has(var) and a.has(var):
+                return a, (-b).args[0]
+    return None
 
 
 def _against(t, var, I, want) -> bool:
@@ -666,9 +725,9 @@ def limit_at_infinity(e, var, w=sp.Rational(1, 4)):
     form = _with_tanh(e)
     bounded = [a for a in sp.Mul.make_args(form) if type(a) in K._SUP]
     if not bounded:
-        ident = _rule(K.identity, lhs=_tail_form(form, var), rhs=form.subs(var, 1 / T), var=T, lo=0, hi=w,
+        ident = _rule(K.identity, lhs=_tail_form(e, var), rhs=e.subs(var, 1 / T), var=T, lo=0, hi=w,
                       lo_open=True, hi_open=False)
-        lim = _rule(K.limit_at_infinity, ident, expr=form, var=var, width=w)
+        lim = _rule(K.limit_at_infinity, ident, expr=e, var=var, width=w)
     else:
         premises = []
         for g in bounded:
@@ -679,10 +738,7 @@ def limit_at_infinity(e, var, w=sp.Rational(1, 4)):
         rest = sp.Mul(*[a for a in sp.Mul.make_args(form) if type(a) not in K._SUP])
         if rest.has(var):
             premises.append(limit_at_infinity(rest, var, w))
-        lim = _rule(K.limit_of_product, *premises, expr=form)
-    if form != e:
-        ident = _rule(K.identity, lhs=e, rhs=form, var=var, lo=0, hi=OO, lo_open=True, hi_open=True)
-        lim = _rule(K.limit_by_rewrite, lim, ident)
+        lim = _rule(K.limit_of_product, *premises, expr=e)
     return lim
 
 

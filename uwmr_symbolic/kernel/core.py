@@ -432,9 +432,9 @@ sign_of_product = rule("arb", "sympy-core")(sign_of_product)
 def sign_of_sum(*premises, expr, want):
     """E = t1 + ... + tk.  The premises (same interval I) have sign want and
     are about disjoint groups of the terms: each premise's expression is a
-    term of E or a sum of terms of E.  Every term in no group is a constant
-    of sign want or 0 (exact / Arb).  E has sign want, strictly if some
-    premise or constant term does strictly."""
+    term of E or a sum of terms of E.  Every term in no group is a constant,
+    and the sum of those constants has sign want or is 0 (exact / Arb).  E
+    has sign want, strictly if some premise or that sum does strictly."""
     _need(want in (1, -1), "want = +-1 needed")
     var = _signs_on_one_interval(premises).x()
     _need(all(p.claim.want == want for p in premises), "a premise has the other sign")
@@ -446,13 +446,12 @@ def sign_of_sum(*premises, expr, want):
             _need(t not in grouped, "premises share a term")
             grouped[t] = p
     _need(set(grouped) <= set(e.args), "a premise matches no term")
-    strict = any(p.claim.strict for p in premises)
-    for t in e.args:
-        if t not in grouped:
-            _need(not t.has(var), lambda: f"no premise for term {t}")
-            s = _const_sign(t)
-            _need(s in (0, want), lambda: f"constant term {t} has the wrong sign")
-            strict = strict or s == want
+    rest = [t for t in e.args if t not in grouped]
+    for t in rest:
+        _need(not t.has(var), lambda: f"no premise for term {t}")
+    s = _const_sign(sp.Add(*rest))
+    _need(s in (0, want), lambda: f"the constant terms {sp.Add(*rest)} have the wrong sign")
+    strict = s == want or any(p.claim.strict for p in premises)
     c = premises[0].claim
     lo, hi = c.ends()
     return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, want, strict)
@@ -511,6 +510,21 @@ def sign_below_sup(arg, *, expr, bounded):
     lo, hi = c.ends()
     return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, 1, True)
 sign_below_sup = rule("arb", "sympy-core")(sign_below_sup)
+
+
+def sign_of_increasing_difference(arg, *, expr, inner, c):
+    """G(Y) - G(c) has the sign (and strictness) of Y - c on I, the premise,
+    for G strictly increasing on R (tanh, atan, asinh, sinh, erf, exp) and
+    an exact constant c.  `inner` is G(Y)."""
+    _is_sign(arg)
+    p = arg.claim
+    var = p.x()
+    e, g, c = _expr(expr, var), _expr(inner, var), _number(c)
+    _need(type(g) in (*_ODD_INCREASING, sp.exp) and c not in (OO, -OO), "inner must be G(Y), c finite")
+    _need(e == g - g.func(c) and p.expr == _s(g.args[0] - c), lambda: f"{e} is not G(Y) - G(c) with the premise Y - c")
+    lo, hi = p.ends()
+    return _sign_claim(e, var, lo, hi, p.lo_open, p.hi_open, p.want, p.strict)
+sign_of_increasing_difference = rule("sympy-core")(sign_of_increasing_difference)
 
 
 def join(left, right):
@@ -788,14 +802,14 @@ def _generalized(d, variables):
         if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
             return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
         return fresh.setdefault(e, sp.Dummy(real=True))
-    return walk(d), tuple(fresh.values())
+    return walk(d), fresh
 
 
 def _zero_when_generalized(d, *variables) -> bool:
     """d with its non-rational subterms generalised is 0 by polynomial
     arithmetic over Q (`cancel`), so d is identically 0 where defined."""
-    g, extra = _generalized(d, variables)
-    return bool(extra) and _rational_over_q(g, *variables, *extra) and sp.cancel(sp.together(g)) == 0
+    g, fresh = _generalized(d, variables)
+    return bool(fresh) and _rational_over_q(g, *variables, *fresh.values()) and sp.cancel(sp.together(g)) == 0
 
 
 def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
@@ -1029,27 +1043,20 @@ limit_of_bounded = rule("sympy-core")(limit_of_bounded)
 
 
 def limit_of_product(*premises, expr):
-    """E = k * E1 * ... * En (k an exact constant, SymPy's product of the
-    premises' expressions) with Ei -> ci as x -> oo: E -> k c1 ... cn."""
+    """E = k * E1 * ... * En for an exact constant k (E over the product, its
+    non-rational subterms generalised, cancels to k over Q) with Ei -> ci as
+    x -> oo: E -> k c1 ... cn."""
     _need(premises and all(p.claim.kind == "limit_oo" for p in premises), "premises must be limits at oo")
     var = premises[0].claim.x()
     _need(all(p.claim.var == _s(var) for p in premises), "premises about one variable")
     e = _expr(expr, var)
-    prod = sp.Mul(*(p.claim.e() for p in premises))
-    k = e / prod
-    _need(not k.has(var) and k * prod == e, lambda: f"{e} is not a constant times the premises' product")
-    _need(_number(k) not in (OO, -OO), "a finite constant factor")
+    g, fresh = _generalized(e / sp.Mul(*(p.claim.e() for p in premises)), (var,))
+    _need(_rational_over_q(g, var, *fresh.values()), "E over the product is not rational in its subterms")
+    k = sp.cancel(sp.together(g)).xreplace({d: u for u, d in fresh.items()})
+    _need(not k.has(var, *fresh.values()) and _number(k) not in (OO, -OO),
+          lambda: f"{e} is not a constant times the premises' product")
     return Claim("limit_oo", _s(e), _s(var), hi="oo", other=_s(k * sp.Mul(*(parse(p.claim.other) for p in premises))))
 limit_of_product = rule("sympy-core")(limit_of_product)
-
-
-def limit_by_rewrite(lim, ident):
-    """R -> c as x -> oo and L = R on an interval reaching oo give L -> c."""
-    c, ic = lim.claim, ident.claim
-    _need(c.kind == "limit_oo" and ic.kind == "identity", "premises: a limit at oo and an identity")
-    _need(ic.other == c.expr and ic.var == c.var and ic.hi == "oo", "the identity must read L = R up to oo")
-    return dataclasses.replace(c, expr=ic.expr)
-limit_by_rewrite = rule()(limit_by_rewrite)
 
 
 def sup_lower_from_limit(lim, *, lo, lo_open):
