@@ -8,15 +8,17 @@ from functools import lru_cache
 
 import sympy as sp
 
+# Piecewise and its conditions are read (an identity between two identical
+# Piecewise expressions, or one with the same Piecewise on both sides, is
+# exact), but the Arb evaluator and `defined_for_positive` refuse them, so no
+# sign, limit or continuity rule accepts a claim that needs their values.
 _NAMES = ("Symbol Integer Rational Add Mul Pow exp log sin cos tanh atan asinh "
-          "sinh cosh erf Abs pi E oo Tuple").split()
-_SCOPE = {n: getattr(sp, n) for n in _NAMES}
+          "sinh cosh erf Abs pi E oo Tuple Piecewise Equality Unequality StrictGreaterThan "
+          "StrictLessThan GreaterThan LessThan And Or Not true false").split()
+_SCOPE = {n: getattr(sp, n) for n in _NAMES} | {"ExprCondPair": sp.functions.elementary.piecewise.ExprCondPair}
 # a design's f (design certificates) may use more; still constructors only
-_DESIGN_NAMES = ("Piecewise Max Min sign erfc erfi gamma acosh atanh asin acos tan "
-                 "sqrt Equality Unequality StrictGreaterThan StrictLessThan GreaterThan LessThan "
-                 "And Or Not true false").split()
-_DESIGN_SCOPE = {**_SCOPE, **{n: getattr(sp, n) for n in _DESIGN_NAMES},
-                 "ExprCondPair": sp.functions.elementary.piecewise.ExprCondPair}
+_DESIGN_NAMES = "Max Min sign erfc erfi gamma acosh atanh asin acos tan sqrt".split()
+_DESIGN_SCOPE = {**_SCOPE, **{n: getattr(sp, n) for n in _DESIGN_NAMES}}
 _ASSUMPTIONS = {"real", "positive", "nonnegative"}
 
 
