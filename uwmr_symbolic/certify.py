@@ -136,6 +136,12 @@ def _mid(a, b):
 
 def _cover(e, var, a, b, want, strict):
     """sign_by_cover on the closed [a, b] from a bisection (the search)."""
+    return _rule(K.sign_by_cover, expr=e, var=var, cuts=_cover_cuts(e, var, a, b, want, strict), want=want,
+                 strict=strict)
+
+
+def _cover_cuts(e, var, a, b, want, strict):
+    """Cut points a = c0 < ... < cn = b with e signed want on every [ci, ci+1] (Arb)."""
     leaves, stack, n = [], [(a, b)], 0
     while stack:
         u, v = stack.pop()
@@ -160,7 +166,7 @@ def _cover(e, var, a, b, want, strict):
             raise NoProof(f"cover of [{a}, {b}]: stuck near {float(u):.6g}")
         m = _mid(u, v)
         stack += [(m, v), (u, m)]
-    return _rule(K.sign_by_cover, expr=e, var=var, cuts=sorted(leaves, key=float) + [b], want=want, strict=strict)
+    return sorted(leaves, key=float) + [b]
 
 
 class Prover:
@@ -232,8 +238,9 @@ class Prover:
             return self._structure(e, var, I, want, strict, depth, near)
         except NoProof as exc:
             last = exc
-        if e.is_Add and any(t.is_Mul and any(a.is_Pow and a.exp.is_negative for a in t.args) for t in e.args):
-            try:                                # over a common denominator: 1 - tanh(s)/s = (s - tanh(s))/s
+        if near and e.is_Add and any(t.is_Mul and any(a.is_Pow and a.exp.is_negative for a in t.args)
+                                     for t in e.args):
+            try:                                # 0/0 at the end: 1 - tanh(s)/s = (s - tanh(s))/s
                 if e not in self.together:
                     self.charge(TAIL_UNITS * sp.count_ops(e) ** 2)
                     self.together[e] = sp.together(e)
@@ -421,7 +428,17 @@ class Prover:
         m, _ = _derivative_order(e, var, c)
         if m == 0:
             raise NoProof(f"{e} neither vanishes nor is defined at {c}")
-        th = _rule(K.sign_by_taylor, expr=e, var=var, c=c, side=side, width=hi - lo, order=m)
+        try:
+            th = _rule(K.sign_by_taylor, expr=e, var=var, c=c, side=side, width=hi - lo, order=m)
+        except NoProof:                         # the m-th derivative's sign on a finer cover of the box
+            d = e
+            for _ in range(m):                  # as the kernel differentiates: once at a time
+                d = sp.diff(d, var)
+            sigma = evaluate(d, var, c, c, bits=128)
+            if not (sigma.positive() or sigma.negative()):
+                raise
+            cuts = _cover_cuts(d, var, lo, hi, 1 if sigma.positive() else -1, True)
+            th = _rule(K.sign_by_taylor, expr=e, var=var, c=c, side=side, width=hi - lo, order=m, cuts=cuts)
         if th.claim.want != want:
             raise NoProof(f"{e} has the other sign beside {c}")
         return th

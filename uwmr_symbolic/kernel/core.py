@@ -799,6 +799,8 @@ def _generalized(d, variables):
             return e.func(*map(walk, e.args))
         if e.is_Pow and e.exp.is_Integer:
             return walk(e.base) ** e.exp
+        if e.is_Pow and e.exp.is_Rational:      # b^(p/q) = (b^(1/q))^p where b^(p/q) is real
+            return fresh.setdefault(e.base ** sp.Rational(1, e.exp.q), sp.Dummy(real=True)) ** e.exp.p
         if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
             return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
         return fresh.setdefault(e, sp.Dummy(real=True))
