@@ -430,11 +430,14 @@ class Prover:
             raise NoProof(f"{e} neither vanishes nor is defined at {c}")
         try:
             th = _rule(K.sign_by_taylor, expr=e, var=var, c=c, side=side, width=hi - lo, order=m)
-        except NoProof:                         # the m-th derivative's sign on a finer cover of the box
+        except NoProof as exc:                  # the m-th derivative's sign on a finer cover of the box
             d = e
             for _ in range(m):                  # as the kernel differentiates: once at a time
                 d = sp.diff(d, var)
-            sigma = evaluate(d, var, c, c, bits=128)
+            try:
+                sigma = evaluate(d, var, c, c, bits=128)
+            except Undefined:
+                raise exc from None
             if not (sigma.positive() or sigma.negative()):
                 raise
             cuts = _cover_cuts(d, var, lo, hi, 1 if sigma.positive() else -1, True)
