@@ -637,8 +637,20 @@ def test_identity_claims_and_messages():
                  (sp.exp(x) * (x + 1), x * sp.exp(x) + sp.exp(x)),
                  (1 / (sp.tanh(x) + 1) ** 2, 1 / (sp.tanh(x) ** 2 + 2 * sp.tanh(x) + 1))):
         assert exact_identity(l, r, x, 0, 1).assumptions == {"sympy-core", "sympy-polys"}, l
-    # the generalised subterms need a relation between them (sqrt(s) sqrt(s + 1) = sqrt(s^2 + s)): simplify
-    assert "sympy-simplify" in exact_identity(sp.sqrt(s) * sp.sqrt(s + 1), sp.sqrt(s ** 2 + s), s, 0, 1, True).assumptions
+    # powers of a positive variable leave a radical: sqrt(1 + 4/s^2) = sqrt(s^2 + 4)/s, (1 + 1/s)^(3/2) too
+    for l, r in ((sp.sqrt(1 + 4 / s ** 2), sp.sqrt(s ** 2 + 4) / s),
+                 ((1 + 1 / s) ** Q(3, 2), (s + 1) * sp.sqrt(s + 1) / (s * sp.sqrt(s)))):
+        assert exact_identity(l, r, s, 0, 1, True).assumptions == {"sympy-core", "sympy-polys"}, l
+    assert why(exact_identity, sp.sqrt(1 + 4 / s ** 2), sp.sqrt(s ** 2 + 4) / s ** 2, s, 0, 1, True) == \
+        "SymPy's simplify does not reduce lhs - rhs to 0"
+    # not for a real x: sqrt(x^2) is |x|, and the generalisation keeps sqrt(x^2) as one symbol
+    assert why(exact_identity, sp.sqrt(x ** 2), x, x, -1, 1) == "SymPy's simplify does not reduce lhs - rhs to 0"
+    # the generalised subterms need a relation between them (sqrt(s + 1) sqrt(s + 2) = sqrt(s^2 + 3 s + 2)):
+    # simplify; but sqrt(s) sqrt(s + 1) = sqrt(s^2 + s) is exact (s^2 + s = s (s + 1), s > 0)
+    assert "sympy-simplify" in exact_identity(sp.sqrt(s + 1) * sp.sqrt(s + 2), sp.sqrt(s ** 2 + 3 * s + 2),
+                                              s, 0, 1, True).assumptions
+    assert exact_identity(sp.sqrt(s) * sp.sqrt(s + 1), sp.sqrt(s ** 2 + s), s, 0, 1, True).assumptions == \
+        {"sympy-core", "sympy-polys"}
     # distinct subterms are distinct symbols: tanh(x) - tanh(2x) is not generalised to a - a = 0
     for l, r in ((sp.tanh(x), sp.tanh(2 * x)), (sp.sqrt(2) * x, sp.sqrt(3) * x), (sp.exp(x) * (x + 1), sp.exp(x) * x)):
         assert why(exact_identity, l, r, x, 0, 1) == "SymPy's simplify does not reduce lhs - rhs to 0"
@@ -820,7 +832,7 @@ def test_sup_lower_by_limit_and_sup_scaled_claims_and_messages():
     idt = ident()
     low = L(idt, expr=E, var=s, width=half, bound=I1, lo=I0, lo_open=True)
     assert low.claim == Claim("sup_lower", R(E), R(s), R(I0), "oo", True, True, other=R(I1))
-    assert low.assumptions == {"arb", "sympy-core", "sympy-simplify"} and low.rule == "sup_lower_by_limit"
+    assert low.assumptions == {"arb", "sympy-core", "sympy-polys"} and low.rule == "sup_lower_by_limit"
     assert L(idt, expr=E, var=s, width=half, bound=I1, lo=I3, lo_open=False).claim == \
         Claim("sup_lower", R(E), R(s), R(I3), "oo", False, True, other=R(I1))
     # the identity on exactly (0, 1/2] is enough; (0, 1/2) and (0, 1/4] are not

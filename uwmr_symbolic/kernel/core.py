@@ -792,6 +792,11 @@ def _generalized(d, variables):
     in particular for their true values, wherever d is defined."""
     fresh = {}
 
+    def power(b, p, q):                         # b^(p/q) = b^i (b^(1/q))^r, p = q i + r, 0 <= r < q
+        i, r = divmod(p, q)
+        rt = b ** sp.Rational(1, q)
+        return walk(b) ** i * (rt if rt.is_Rational else fresh.setdefault(rt, sp.Dummy(real=True))) ** r
+
     def walk(e):
         if e.is_Rational or e in variables:
             return e
@@ -800,11 +805,23 @@ def _generalized(d, variables):
         if e.is_Pow and e.exp.is_Integer:
             return walk(e.base) ** e.exp
         if e.is_Pow and e.exp.is_Rational:      # b^(p/q) = (b^(1/q))^p where b^(p/q) is real
-            return fresh.setdefault(e.base ** sp.Rational(1, e.exp.q), sp.Dummy(real=True)) ** e.exp.p
+            b, p, q = e.base, e.exp.p, e.exp.q
+            x = next((v for v in variables if v.is_positive and _rational_over_q(b, v)), None)
+            if x is not None:                   # b = x^k c, x > 0, so b^(p/q) = x^(kp/q) c^(p/q)
+                num, den = sp.fraction(sp.cancel(sp.together(b)))
+                k = _order_at_zero(num, x) - _order_at_zero(den, x)
+                return power(x, k * p, q) * power(sp.cancel(b / x ** k), p, q)
+            return power(b, p, q)
         if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
             return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
         return fresh.setdefault(e, sp.Dummy(real=True))
     return walk(d), fresh
+
+
+def _order_at_zero(poly, x) -> int:
+    """The largest k with x^k dividing the polynomial (0 for the zero polynomial)."""
+    terms = sp.Poly(poly, x).monoms()
+    return min(m[0] for m in terms) if terms else 0
 
 
 def _zero_when_generalized(d, *variables) -> bool:
