@@ -643,6 +643,13 @@ def test_identity_claims_and_messages():
         assert exact_identity(l, r, s, 0, 1, True).assumptions == {"sympy-core", "sympy-polys"}, l
     assert why(exact_identity, sp.sqrt(1 + 4 / s ** 2), sp.sqrt(s ** 2 + 4) / s ** 2, s, 0, 1, True) == \
         "SymPy's simplify does not reduce lhs - rhs to 0"
+    # a function of the same generalised argument up to sign: odd G(-u) = -G(u), even cosh(-u) = cosh(u)
+    u, w = 1 - sp.sqrt(s ** 2 + 4) / s, sp.sqrt(1 + 4 / s ** 2) - 1          # w = -u for s > 0
+    for l, r in ((sp.sinh(u), -sp.sinh(w)), (sp.cosh(u), sp.cosh(w)), (sp.atan(u) + sp.atan(w), sp.Integer(0)),
+                 (sp.tanh(u), -sp.sinh(w) / sp.cosh(w))):
+        assert exact_identity(l, r, s, 0, 1, True).assumptions == {"sympy-core", "sympy-polys"}, l
+    for l, r in ((sp.sinh(u), sp.sinh(w)), (sp.cosh(u), -sp.cosh(w)), (sp.exp(u), sp.exp(w))):
+        assert why(exact_identity, l, r, s, 0, 1, True) == "SymPy's simplify does not reduce lhs - rhs to 0", l
     # not for a real x: sqrt(x^2) is |x|, and the generalisation keeps sqrt(x^2) as one symbol
     assert why(exact_identity, sp.sqrt(x ** 2), x, x, -1, 1) == "SymPy's simplify does not reduce lhs - rhs to 0"
     # the generalised subterms need a relation between them (sqrt(s + 1) sqrt(s + 2) = sqrt(s^2 + 3 s + 2)):

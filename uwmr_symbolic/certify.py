@@ -271,7 +271,7 @@ class Prover:
         if key in self.identities:
             return self.identities[key]
         size = max(sp.count_ops(claim["lhs"]), sp.count_ops(claim["rhs"]))
-        g, fresh = K._generalized(claim["lhs"] - claim["rhs"], (claim["var"],))
+        g, fresh, _ = K._generalized(claim["lhs"] - claim["rhs"], (claim["var"],))
         exact = K._rational_over_q(g, claim["var"], *fresh.values())      # the kernel's cancel, not simplify
         self.charge(CANCEL_UNITS * size ** 2 if exact else _rational_units(size))
         if claim["var"].is_positive:

@@ -459,6 +459,7 @@ sign_of_sum = rule("arb", "sympy-core")(sign_of_sum)
 
 
 _ODD_INCREASING = (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf)
+_UNARY = (sp.sinh, sp.cosh, sp.exp, sp.log, sp.sin, sp.cos, sp.atan, sp.asinh, sp.erf)
 
 
 def sign_through_increasing(*premises, expr):
@@ -790,12 +791,17 @@ def _generalized(d, variables):
     replaced by a fresh symbol, one per distinct subterm.  If the result is 0
     as a rational function over Q, d = 0 for every value of those subterms,
     in particular for their true values, wherever d is defined."""
-    fresh = {}
+    fresh, roots = {}, {}
 
     def power(b, p, q):                         # b^(p/q) = b^i (b^(1/q))^r, p = q i + r, 0 <= r < q
         i, r = divmod(p, q)
         rt = b ** sp.Rational(1, q)
-        return walk(b) ** i * (rt if rt.is_Rational else fresh.setdefault(rt, sp.Dummy(real=True))) ** r
+        if rt.is_Rational:
+            return rt ** p
+        if rt not in fresh:
+            fresh[rt] = sp.Dummy(real=True)
+            roots[fresh[rt]] = (q, walk(b))     # (b^(1/q))^q = b where b^(1/q) is real
+        return walk(b) ** i * fresh[rt] ** r
 
     def walk(e):
         if e.is_Rational or e in variables:
@@ -814,8 +820,15 @@ def _generalized(d, variables):
             return power(b, p, q)
         if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
             return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
+        if isinstance(e, _UNARY) and len(e.args) == 1:  # G(u): one symbol per canonical generalised u
+            u = sp.cancel(sp.together(walk(e.args[0])))
+            v = sp.cancel(-u)
+            flip = isinstance(e, (sp.cosh, sp.cos, *_ODD_INCREASING, sp.sin)) and \
+                sp.default_sort_key(v) < sp.default_sort_key(u)     # G(-u) = -G(u), or = G(u) for cosh, cos
+            sign = -1 if flip and not isinstance(e, (sp.cosh, sp.cos)) else 1
+            return sign * fresh.setdefault(e.func(v if flip else u, evaluate=False), sp.Dummy(real=True))
         return fresh.setdefault(e, sp.Dummy(real=True))
-    return walk(d), fresh
+    return walk(d), fresh, roots
 
 
 def _order_at_zero(poly, x) -> int:
@@ -827,8 +840,15 @@ def _order_at_zero(poly, x) -> int:
 def _zero_when_generalized(d, *variables) -> bool:
     """d with its non-rational subterms generalised is 0 by polynomial
     arithmetic over Q (`cancel`), so d is identically 0 where defined."""
-    g, fresh = _generalized(d, variables)
-    return bool(fresh) and _rational_over_q(g, *variables, *fresh.values()) and sp.cancel(sp.together(g)) == 0
+    g, fresh, roots = _generalized(d, variables)
+    if not fresh or not _rational_over_q(g, *variables, *fresh.values()):
+        return False
+    num = sp.expand(sp.numer(sp.together(g)))
+    for _ in range(3):                          # r^k -> b^(k div q) r^(k mod q) for each root r = b^(1/q)
+        for r, (q, b) in roots.items():
+            num = sp.Add(*[c * b ** (k // q) * r ** (k % q) for (k,), c in sp.Poly(num, r).as_dict().items()])
+            num = sp.expand(sp.numer(sp.together(num)))
+    return sp.cancel(num) == 0
 
 
 def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
@@ -1069,7 +1089,7 @@ def limit_of_product(*premises, expr):
     var = premises[0].claim.x()
     _need(all(p.claim.var == _s(var) for p in premises), "premises about one variable")
     e = _expr(expr, var)
-    g, fresh = _generalized(e / sp.Mul(*(p.claim.e() for p in premises)), (var,))
+    g, fresh, _ = _generalized(e / sp.Mul(*(p.claim.e() for p in premises)), (var,))
     _need(_rational_over_q(g, var, *fresh.values()), "E over the product is not rational in its subterms")
     k = sp.cancel(sp.together(g)).xreplace({d: u for u, d in fresh.items()})
     _need(not k.has(var, *fresh.values()) and _number(k) not in (OO, -OO),
