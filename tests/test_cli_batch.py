@@ -387,3 +387,28 @@ def test_cache_key_is_the_same_in_every_process():
     outs = {subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, check=True,
                            env={**os.environ, "PYTHONHASHSEED": seed}).stdout for seed in ("1", "2")}
     assert len(outs) == 1 and len(outs.pop().split()) == len(list((ROOT / "designs").glob("*.py")))
+
+
+def test_the_kernel_line_says_what_the_certificate_rechecks(tmp_path):
+    """The result's "kernel" entry is read off the re-checked design
+    certificate: design 1 is kernel-checked throughout; r05's refuted P2
+    (f(0, 0) = 1/100) has a kernel-checked witness; every decided verdict is
+    in exactly one of the two lists, and a tampered certificate loses its
+    checks (the cache entry is not served)."""
+    designs = [ROOT / "designs/design1_jiang.py", ROOT / "tests/designs/r05_offset.py"]
+    proc = run([*designs, "--format", "json"], tmp_path / "cache")
+    one, offset = json.loads(proc.stdout)
+    assert one["kernel"] == {"checked": [*PROPS, "kf"], "search": []}
+    assert "P2" in offset["kernel"]["checked"] and offset["properties"]["P2"]["verdict"] == "refuted"
+    for d in (one, offset):
+        decided = {p for p, v in d["properties"].items() if v["verdict"] in ("proved", "refuted")}
+        lists = d["kernel"]["checked"] + d["kernel"]["search"]
+        assert len(lists) == len(set(lists)) and set(lists) - {"kf"} == decided
+    text = run([designs[0]], tmp_path / "cache").stdout
+    assert "kernel: re-checked P1 P2 P3 P4 P5 P6 P7 P8 kf (every decided verdict)" in text
+    entry = next((tmp_path / "cache").glob("*.json"))
+    data = json.loads(entry.read_text())
+    data["result"]["kernel"]["search"].append("P9")     # a summary the certificate does not give
+    entry.write_text(json.dumps(data))
+    again = json.loads(run([designs[0], "--format", "json"], tmp_path / "cache").stdout)
+    assert again["cached"] is False and again["kernel"] == one["kernel"]

@@ -59,10 +59,20 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
         if hit is not None and isinstance(hit.get("exit_status"), int) and rechecks(hit, design):
             return {**hit, **design_fields(design), "cached": True}
     report = verify_loaded(design, timeout, start)
-    result = {**to_dict(report), "certificate": certificates.build(report)}
+    cert = certificates.build(report)
+    result = {**to_dict(report), "certificate": cert, "kernel": kernel_summary(certificates.check(cert))}
     if cache is not None:
         cache.put(key, result, timeout=timeout, timed_out=report.timed_out)
     return {**result, "cached": False}
+
+
+def kernel_summary(checked) -> dict:
+    """Which verdicts the kernel checked (a proof with nothing left to the
+    search, a refutation with a kernel-checked witness), from the re-checked
+    design certificate, and which rest on the search."""
+    ok = [c.name for c in checked if c.kernel_checked or c.refutation_checked]
+    return {"checked": ok, "search": [c.name for c in checked if c.status in ("proved", "refuted") and
+                                      c.name not in ok]}
 
 
 def rechecks(hit: dict, design) -> bool:
@@ -74,7 +84,7 @@ def rechecks(hit: dict, design) -> bool:
     except certificates.CertificateError:
         return False
     verdicts = {p: str(v.get("verdict")) for p, v in hit.get("properties", {}).items()}
-    return (cert["design"]["f"] == sp.srepr(design.f)
+    return (cert["design"]["f"] == sp.srepr(design.f) and hit.get("kernel") == kernel_summary(checked)
             and {c.name: c.status for c in checked if c.name in PROPERTIES} == verdicts)
 
 

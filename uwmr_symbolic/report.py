@@ -154,6 +154,9 @@ def render_text(r) -> str:
             lam = _fmt(g["lam_max"], 8) if g["lam_max"] is not None else "?"
             lines.append(f"  {name:<12} {_fmt(g['V_bound'], 8):>10}  {g['V_margin_float']:+.3e} {v_ok}"
                          f"  {_fmt(g['W_bound'], 8):>10}  {w_margin} {w_ok}  {lam}")
+    if d.get("kernel") is not None:
+        lines.append("")
+        lines.append(f"  {kernel_text(d['kernel'])}")
     lines.append("")
     pr = d["proof_replay"]
     lines.append(f"  proof replay: {'ok' if pr.get('ok') else 'NOT ok'} — "
@@ -161,6 +164,15 @@ def render_text(r) -> str:
     served = ", served from the cache" if d.get("cached") else ""
     lines.append(f"  => {status_text(d)}  ({d['seconds']:.2f} s{served})")
     return "\n".join(lines)
+
+
+def kernel_text(k: dict) -> str:
+    """The kernel line of the text report (see `batch.kernel_summary`)."""
+    order = lambda names: " ".join(sorted(names, key=lambda n: (n == "kf", n)))   # noqa: E731
+    if not k["search"]:
+        return f"kernel: re-checked {order(k['checked'])} (every decided verdict)"
+    checked = f"re-checked {order(k['checked'])}; " if k["checked"] else ""
+    return f"kernel: {checked}resting on the search alone: {order(k['search'])} (--certificate FILE says why)"
 
 
 NO_GAINS = "no gain scenarios given, so bound (10) was not checked"
