@@ -62,6 +62,26 @@ def test_certificate_round_trips_and_names_what_it_rests_on(cert1):
     assert "sympy-diff" in checks["P7"].assumptions       # the link differentiates F
 
 
+def test_design3_is_kernel_checked_through_the_limit_rules():
+    """Design 3, f = log cosh(sqrt(4 rho + 1) - 1): kf = 2 is approached at
+    infinity, F' = 4 s tanh(Y)/sqrt(4 s^2 + 1) with Y = sqrt(4 s^2 + 1) - 1.
+    kf's lower bound comes from tanh(Y) -> 1 (Y diverges) times
+    4 s/sqrt(4 s^2 + 1) -> 2; its upper bound from 2 - F' =
+    (2 - 4 s/sqrt(.)) + 4 s/sqrt(.) (1 - tanh Y), tanh < 1.  Every verdict is
+    kernel-checked, none rests on simplify; a certificate claiming kf = 3
+    fails its link."""
+    cert = DC.build(verify_design(ROOT / "designs" / "design3_logcosh.py"))
+    checks = _by_name(DC.check(json.dumps(cert)))
+    assert all(c.kernel_checked for c in checks.values()), [c.name for c in checks.values() if not c.kernel_checked]
+    assert not any("sympy-simplify" in c.assumptions for c in checks.values())
+    rules = {n["rule"] for n in cert["properties"]["kf"]["kernel"]["theorems"]}
+    assert {"limit_of_bounded", "limit_of_product", "sup_lower_from_limit", "sign_below_sup"} <= rules
+    bad = copy.deepcopy(cert)
+    bad["properties"]["kf"]["exact"] = sp.srepr(sp.Integer(3))
+    with pytest.raises(DC.CertificateError, match="kf: the kernel's conclusions are not"):
+        DC.check(bad)
+
+
 def test_kf_and_p4_links(cert1):
     """A certificate whose kf is changed, or whose P4 identity is about
     another profile, fails its link to f."""
