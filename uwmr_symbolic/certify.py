@@ -367,15 +367,24 @@ class Prover:
             except Undefined:
                 continue
             c = sp.Rational(math.floor(float(low) * 64) - 1, 64)
-            for t in form.args:
-                if t.has(g) and not (t / g).has(g):
-                    parts = [form - t + (t / g) * g.func(c), (t / g) * (g - g.func(c))]
-                    try:
-                        return self._sum_of_parts(e, parts, var, I, (strict, False), depth, near)
-                    except NoProof as exc:
-                        if exc is self.spent:
-                            raise
+            try:
+                return self._split_term(e, form, g, lambda t, G=g.func(c): [form - t + (t / g) * G, (t / g) * (g - G)],
+                                        var, I, (strict, False), depth, near)
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
         raise NoProof(f"no lower bound of an increasing function makes {e} positive")
+
+    def _split_term(self, e, form, g, parts_of, var, I, stricts, depth, near):
+        """e > 0 from `parts_of(t)` for a term t of form = e that is linear in g."""
+        for t in form.args:
+            if t.has(g) and not (t / g).has(g):
+                try:
+                    return self._sum_of_parts(e, parts_of(t), var, I, stricts, depth, near)
+                except NoProof as exc:
+                    if exc is self.spent:
+                        raise
+        raise NoProof(f"no term of {e} is linear in {g}")
 
     def _below_sup(self, e, var, I, strict, depth, near):
         """e > 0 where e is a + m G(Y), G bounded above by sup G (tanh, erf,
@@ -397,14 +406,13 @@ class Prover:
                 else:
                     continue
                 return th if form == e else self._rewritten_by(e, form, th, var, I)
-            for t in form.args:
-                if t.has(g) and not (t / g).has(g):
-                    parts = [form - t + t.xreplace({g: K._SUP[type(g)]}), (-t / g) * (K._SUP[type(g)] - g)]
-                    try:
-                        return self._sum_of_parts(e, parts, var, I, (False, strict), depth, near)
-                    except NoProof as exc:
-                        if exc is self.spent:
-                            raise
+            top = K._SUP[type(g)]
+            try:
+                return self._split_term(e, form, g, lambda t: [form - t + t.xreplace({g: top}), (-t / g) * (top - g)],
+                                        var, I, (False, strict), depth, near)
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
         raise NoProof(f"no bound of a tanh, erf or atan makes {e} positive")
 
     def _sum_of_parts(self, e, parts, var, I, stricts, depth, near):
