@@ -543,14 +543,19 @@ def _increasing_difference(e, var):
 
 
 def _against(t, var, I, want) -> bool:
-    """t has the sign -want at an inner point of I (Arb): no sum rule over t."""
+    """t has the sign -want at one of three inner points of I (Arb): no sum
+    rule can use t."""
     lo, hi = I[0], I[1]
-    p = _mid(lo, hi) if hi != OO else lo + 1
-    try:
-        v = evaluate(t, var, p, p, bits=64)
-    except Undefined:
-        return False
-    return v.negative() if want > 0 else v.positive()
+    points = [lo + sp.Rational(1, 16), lo + 1, lo + 16] if hi == OO else \
+        [lo + (hi - lo) * sp.Rational(k, 8) for k in (1, 4, 7)]
+    for p in points:
+        try:
+            v = evaluate(t, var, p, p, bits=64)
+        except Undefined:
+            continue
+        if v.negative() if want > 0 else v.positive():
+            return True
+    return False
 
 
 def _with_tanh(e):
