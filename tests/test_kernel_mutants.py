@@ -1263,3 +1263,84 @@ def test_boundaries_seen_by_the_mutants():
     c = 1 + Q(1, 10 ** 90)
     assert why(K.sup_lower_by_limit, idt, expr=s / sp.sqrt(s ** 2 + 1), var=s, width=Q(1, 2), bound=c, lo=I0,
                lo_open=True) == f"E_t(0) is not exactly {c}"
+
+
+# ---------------------------------------------------------- bounded functions and limits at oo
+
+def test_sign_below_sup_claims_and_messages():
+    B = K.sign_below_sup
+    pos = sturm(s, s, 0, 2, lo_open=True)                  # (0, 2]
+    th = B(pos, expr=2 - 2 * sp.tanh(s), bounded=sp.tanh(s))
+    assert th.claim == sign(2 - 2 * sp.tanh(s), s, 0, 2, True, False) and th.assumptions == ARB | {"sympy-polys"}
+    closed = B(sturm(s, s, 1, 2), expr=sp.pi / 2 - sp.atan(s), bounded=sp.atan(s))
+    assert closed.claim == sign(sp.pi / 2 - sp.atan(s), s, 1, 2)
+    msg = "bounded must be G(Y) and the premise about Y"
+    assert why(B, pos, expr=1 - sp.sinh(s), bounded=sp.sinh(s)) == msg
+    assert why(B, pos, expr=1 - sp.tanh(2 * s), bounded=sp.tanh(2 * s)) == msg
+    assert why(B, pos, expr=1 - s * sp.tanh(s), bounded=sp.tanh(s)) == f"{1 - s * sp.tanh(s)} is not a + m tanh(s)"
+    assert why(B, pos, expr=s - sp.tanh(s), bounded=sp.tanh(s)) == f"{s - sp.tanh(s)} is not a + m tanh(s)"
+    assert why(B, pos, expr=1 - sp.tanh(s) ** 2, bounded=sp.tanh(s)) == f"{1 - sp.tanh(s) ** 2} is not a + m tanh(s)"
+    needs = "needs m < 0 and a + m sup G >= 0"
+    for e in (1 + sp.tanh(s), Q(99, 100) - sp.tanh(s), Q(3, 2) - sp.atan(s), sp.Integer(1) + 0 * sp.tanh(s) + s * 0):
+        if e.has(sp.tanh, sp.atan):
+            assert why(B, pos, expr=e, bounded=e.atoms(sp.tanh, sp.atan).pop()) == needs, e
+
+
+def test_sign_of_increasing_difference_claims_and_messages():
+    D = K.sign_of_increasing_difference
+    above = sturm(s - 1, s, 1, 3, lo_open=True, strict=False)          # s - 1 >= 0 on (1, 3]
+    th = D(above, expr=sp.exp(s) - sp.E, inner=sp.exp(s), c=I1)
+    assert th.claim == sign(sp.exp(s) - sp.E, s, 1, 3, True, False, strict=False)
+    assert th.assumptions == {"sympy-core", "sympy-polys"}
+    below = sturm(s - 3, s, 1, 3, hi_open=True, want=-1)
+    assert D(below, expr=sp.atan(s) - sp.atan(3), inner=sp.atan(s), c=I3).claim == \
+        sign(sp.atan(s) - sp.atan(3), s, 1, 3, False, True, want=-1)
+    assert why(D, above, expr=sp.cos(s) - sp.cos(1), inner=sp.cos(s), c=I1) == "inner must be G(Y), c finite"
+    assert why(D, above, expr=sp.tanh(s) - 1, inner=sp.tanh(s), c=oo) == "inner must be G(Y), c finite"
+    msg = lambda e: f"{e} is not G(Y) - G(c) with the premise Y - c"      # noqa: E731
+    assert why(D, above, expr=sp.tanh(s) - sp.tanh(2), inner=sp.tanh(s), c=I2) == msg(sp.tanh(s) - sp.tanh(2))
+    assert why(D, above, expr=sp.tanh(s) - sp.tanh(2), inner=sp.tanh(s), c=I1) == msg(sp.tanh(s) - sp.tanh(2))
+    assert why(D, above, expr=sp.tanh(2 * s) - sp.tanh(1), inner=sp.tanh(2 * s), c=I1) == \
+        msg(sp.tanh(2 * s) - sp.tanh(1))
+
+
+def _diverging_s():
+    half = K.sign_by_sturm(expr=Q(1, 2), var=s, lo=I1, hi=oo, lo_open=False, hi_open=True, want=1, strict=False)
+    return K.diverges_by_growth(half, expr=s, var=s, R=I1, rate="linear", k=Q(1, 2))
+
+
+def test_limit_rules_claims_and_messages():
+    E = s / sp.sqrt(s ** 2 + 1)
+    ident = K.identity(lhs=1 / sp.sqrt(t ** 2 + 1), rhs=E.subs(s, 1 / t), var=t, lo=I0, hi=oo,
+                       lo_open=True, hi_open=True)
+    lim = K.limit_at_infinity(ident, expr=E, var=s, width=Q(1, 2))
+    assert lim.claim == Claim("limit_oo", R(E), R(s), "", "oo", other=R(I1))
+    assert lim.assumptions == {"arb", "sympy-core", "sympy-polys"}
+    div = _diverging_s()
+    tanh = K.limit_of_bounded(div, expr=sp.tanh(s))
+    assert tanh.claim == Claim("limit_oo", R(sp.tanh(s)), R(s), "", "oo", other=R(I1))
+    assert K.limit_of_bounded(div, expr=sp.erf(s)).claim.other == R(I1)
+    assert why(K.limit_of_bounded, lim, expr=sp.tanh(s)) == "premise must be a diverges theorem"
+    assert why(K.limit_of_bounded, div, expr=sp.tanh(2 * s)) == "tanh(2*s) is not G(Y) with the premise about Y"
+    assert why(K.limit_of_bounded, div, expr=sp.exp(s)) == "exp(s) is not G(Y) with the premise about Y"
+    P = K.limit_of_product
+    prod = P(tanh, lim, expr=3 * sp.tanh(s) * E)
+    assert prod.claim == Claim("limit_oo", R(3 * sp.tanh(s) * E), R(s), "", "oo", other=R(sp.Integer(3)))
+    assert P(tanh, lim, expr=sp.tanh(s) * E / 2).claim.other == R(Q(1, 2))
+    assert why(P, expr=E) == "premises must be limits at oo"
+    assert why(P, tanh, ident, expr=E) == "premises must be limits at oo"
+    other = K.limit_of_bounded(K.diverges_by_growth(
+        K.sign_by_sturm(expr=Q(1, 2), var=t, lo=I1, hi=oo, lo_open=False, hi_open=True, want=1, strict=False),
+        expr=t, var=t, R=I1, rate="linear", k=Q(1, 2)), expr=sp.tanh(t))
+    assert why(P, tanh, other, expr=sp.tanh(s) * sp.tanh(t)) == "premises about one variable"
+    assert why(P, tanh, expr=s * sp.tanh(s)) == f"{s * sp.tanh(s)} is not a constant times the premises' product"
+    assert why(P, tanh, lim, expr=sp.sqrt(s) * sp.tanh(s) * E) == \
+        f"{sp.sqrt(s) * sp.tanh(s) * E} is not a constant times the premises' product"
+    F = K.sup_lower_from_limit
+    low = F(prod, lo=I2, lo_open=False)
+    assert low.claim == Claim("sup_lower", R(3 * sp.tanh(s) * E), R(s), R(I2), "oo", False, True,
+                              other=R(sp.Integer(3)))
+    assert F(prod, lo=I0, lo_open=True).claim.lo_open is True
+    assert why(F, ident, lo=I0, lo_open=True) == "premise must be a limit at oo"
+    assert why(F, prod, lo=oo, lo_open=True) == "finite lo"
+    assert why(F, prod, lo=-I1, lo_open=True) == "s > 0 assumed: interval must lie in (0, oo)"
