@@ -1344,3 +1344,18 @@ def test_limit_rules_claims_and_messages():
     assert why(F, ident, lo=I0, lo_open=True) == "premise must be a limit at oo"
     assert why(F, prod, lo=oo, lo_open=True) == "finite lo"
     assert why(F, prod, lo=-I1, lo_open=True) == "s > 0 assumed: interval must lie in (0, oo)"
+
+
+def test_continuous_on_positive_claim_and_message():
+    e = s / sp.sqrt(1 + s ** 2)
+    th = K.continuous_on_positive(expr=e, var=s)
+    assert th.claim == Claim("continuous", R(e), R(s), R(I0), "oo", True, True) and th.assumptions == {"sympy-core"}
+    assert why(K.continuous_on_positive, expr=1 / (s - 1), var=s) == f"{1 / (s - 1)} not shown defined for all s > 0"
+
+
+def test_sign_of_sum_groups_messages():
+    sq = sturm(x ** 2, x, -1, 1, strict=False)
+    assert why(K.sign_of_sum, sturm(2 - x, x, -1, 1), sturm(x ** 2 - x + 1, x, -1, 1), expr=x ** 2 - x + 2,
+               want=1) == "premises share a term"
+    grouped = K.sign_of_sum(sturm(2 - x, x, -1, 1), sq, expr=x ** 2 - x + 2, want=1)
+    assert grouped.claim == sign(x ** 2 - x + 2, x, -1, 1) and grouped.assumptions == ARB | {"sympy-polys"}

@@ -440,11 +440,11 @@ def sign_of_sum(*premises, expr, want):
     _need(all(p.claim.want == want for p in premises), "a premise has the other sign")
     e = _expr(expr, var)
     _need(e.is_Add, lambda: f"not a sum: {e}")
-    grouped = {}
+    grouped = set()
     for p in premises:
         for t in sp.Add.make_args(p.claim.e()):
             _need(t not in grouped, "premises share a term")
-            grouped[t] = p
+            grouped.add(t)
     _need(set(grouped) <= set(e.args), "a premise matches no term")
     rest = [t for t in e.args if t not in grouped]
     for t in rest:
