@@ -650,6 +650,15 @@ def test_identity_claims_and_messages():
         assert exact_identity(l, r, s, 0, 1, True).assumptions == {"sympy-core", "sympy-polys"}, l
     for l, r in ((sp.sinh(u), sp.sinh(w)), (sp.cosh(u), -sp.cosh(w)), (sp.exp(u), sp.exp(w))):
         assert why(exact_identity, l, r, s, 0, 1, True) == "SymPy's simplify does not reduce lhs - rhs to 0", l
+    # the radical's relation r^2 = s^2 + 4 is needed: (2 r - 4)/r = 2 - 4/(s sqrt(1 + 4/s^2)) = 2 - 4 r/(s^2 + 4)
+    assert exact_identity((2 * sp.sqrt(s ** 2 + 4) - 4) / sp.sqrt(s ** 2 + 4), 2 - 4 / (s * sp.sqrt(1 + 4 / s ** 2)),
+                          s, 0, 1, True).assumptions == {"sympy-core", "sympy-polys"}
+    # powers of a real (not positive) variable stay inside: sqrt(x^2 + x^4) = |x| sqrt(1 + x^2), not x sqrt(1 + x^2)
+    assert why(exact_identity, sp.sqrt(x ** 2 + x ** 4), x * sp.sqrt(1 + x ** 2), x, -1, 1) == \
+        "SymPy's simplify does not reduce lhs - rhs to 0"
+    # distinct subterms that are no radical or listed function are distinct symbols too
+    for l, r in ((sp.pi * x, sp.E * x), (sp.Abs(x), sp.Abs(x - 1)), (sp.pi + sp.Abs(x), sp.Abs(x) + sp.E)):
+        assert why(exact_identity, l, r, x, -1, 1) == "SymPy's simplify does not reduce lhs - rhs to 0", l
     # not for a real x: sqrt(x^2) is |x|, and the generalisation keeps sqrt(x^2) as one symbol
     assert why(exact_identity, sp.sqrt(x ** 2), x, x, -1, 1) == "SymPy's simplify does not reduce lhs - rhs to 0"
     # the generalised subterms need a relation between them (sqrt(s + 1) sqrt(s + 2) = sqrt(s^2 + 3 s + 2)):
@@ -1281,6 +1290,8 @@ def test_sign_below_sup_claims_and_messages():
     assert why(B, pos, expr=s - sp.tanh(s), bounded=sp.tanh(s)) == f"{s - sp.tanh(s)} is not a + m tanh(s)"
     assert why(B, pos, expr=1 - sp.tanh(s) ** 2, bounded=sp.tanh(s)) == f"{1 - sp.tanh(s) ** 2} is not a + m tanh(s)"
     needs = "needs m < 0 and a + m sup G >= 0"
+    for e in (sp.Integer(0), sp.Integer(1)):                       # m = 0: "0 > 0" must not follow
+        assert why(B, pos, expr=e, bounded=sp.tanh(s)) == needs
     for e in (1 + sp.tanh(s), Q(99, 100) - sp.tanh(s), Q(3, 2) - sp.atan(s), sp.Integer(1) + 0 * sp.tanh(s) + s * 0):
         if e.has(sp.tanh, sp.atan):
             assert why(B, pos, expr=e, bounded=e.atoms(sp.tanh, sp.atan).pop()) == needs, e
@@ -1327,6 +1338,10 @@ def test_limit_rules_claims_and_messages():
     prod = P(tanh, lim, expr=3 * sp.tanh(s) * E)
     assert prod.claim == Claim("limit_oo", R(3 * sp.tanh(s) * E), R(s), "", "oo", other=R(sp.Integer(3)))
     assert P(tanh, lim, expr=sp.tanh(s) * E / 2).claim.other == R(Q(1, 2))
+    E2 = 2 * s / sp.sqrt(s ** 2 + 1)                                       # -> 2
+    lim2 = K.limit_at_infinity(K.identity(lhs=2 / sp.sqrt(t ** 2 + 1), rhs=E2.subs(s, 1 / t), var=t, lo=I0, hi=oo,
+                                          lo_open=True, hi_open=True), expr=E2, var=s, width=Q(1, 2))
+    assert P(tanh, lim2, expr=3 * sp.tanh(s) * E2).claim.other == R(sp.Integer(6))
     assert why(P, expr=E) == "premises must be limits at oo"
     assert why(P, tanh, ident, expr=E) == "premises must be limits at oo"
     other = K.limit_of_bounded(K.diverges_by_growth(
