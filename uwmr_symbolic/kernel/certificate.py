@@ -59,6 +59,9 @@ def _shape(data):
             raise CertificateError(f"theorem {i}: needs id = {i}, rule, premises, data, claim")
 
 
+_CHECKED: dict = {}     # (rule, data, premises' claims and assumptions) -> the theorem it gave
+
+
 def check_certificate(data) -> list[Theorem]:
     """Re-apply every step; return the conclusions as kernel theorems.
     Raises CertificateError naming the first step that fails."""
@@ -77,10 +80,17 @@ def check_certificate(data) -> list[Theorem]:
         prem = node["premises"]
         if not all(isinstance(p, int) and not isinstance(p, bool) and 0 <= p < i for p in prem):
             raise CertificateError(f"theorem {i}: premises must be earlier theorems")
-        try:
-            t = fn(*[built[p] for p in prem], **{k: decode(v) for k, v in node["data"].items()})
-        except Exception as exc:   # noqa: BLE001 -- whatever goes wrong in a step, the step is rejected
-            raise CertificateError(f"theorem {i} ({node['rule']}) does not check: {exc}") from None
+        key = (node["rule"], json.dumps(node["data"], sort_keys=True),
+               tuple((built[p].claim, built[p].assumptions) for p in prem))
+        t = _CHECKED.get(key)
+        if t is None:                  # a rule's result depends only on the key: the same step is checked once
+            try:
+                t = fn(*[built[p] for p in prem], **{k: decode(v) for k, v in node["data"].items()})
+            except Exception as exc:   # noqa: BLE001 -- whatever goes wrong in a step, the step is rejected
+                raise CertificateError(f"theorem {i} ({node['rule']}) does not check: {exc}") from None
+            if len(_CHECKED) > 4096:
+                _CHECKED.clear()
+            _CHECKED[key] = t
         try:
             claimed = Claim(**node["claim"])
         except TypeError as exc:

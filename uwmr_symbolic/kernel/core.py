@@ -815,14 +815,14 @@ def _generalized(d, variables):
             b, p, q = e.base, e.exp.p, e.exp.q
             x = next((v for v in variables if v.is_positive and _rational_over_q(b, v)), None)
             if x is not None:                   # b = x^k c, x > 0, so b^(p/q) = x^(kp/q) c^(p/q)
-                num, den = sp.fraction(sp.cancel(sp.together(b)))
+                num, den = (b, 1) if b.is_polynomial(x) else sp.fraction(sp.cancel(sp.together(b)))
                 k = _order_at_zero(num, x) - _order_at_zero(den, x)
-                return power(x, k * p, q) * power(sp.cancel(b / x ** k), p, q)
+                return power(x, k * p, q) * power(sp.cancel(b / x ** k) if k else b, p, q)
             return power(b, p, q)
         if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
             return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
         if isinstance(e, _UNARY) and len(e.args) == 1:  # G(u): one symbol per canonical generalised u
-            u = sp.cancel(sp.together(walk(e.args[0])))
+            u = sp.cancel(walk(e.args[0]))
             v = sp.cancel(-u)
             flip = isinstance(e, (sp.cosh, sp.cos, *_ODD_INCREASING, sp.sin)) and \
                 sp.default_sort_key(v) < sp.default_sort_key(u)     # G(-u) = -G(u), or = G(u) for cosh, cos
@@ -850,6 +850,9 @@ def _zero_when_generalized(d, *variables) -> bool:
             num = sp.Add(*[c * b ** (k // q) * r ** (k % q) for (k,), c in sp.Poly(num, r).as_dict().items()])
             num = sp.expand(sp.numer(sp.together(num)))
     return sp.cancel(num) == 0
+
+
+_zero_when_generalized = functools.lru_cache(maxsize=1024)(_zero_when_generalized)   # pure: see core.rule
 
 
 def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
