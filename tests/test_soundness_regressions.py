@@ -284,3 +284,16 @@ def test_exact_value_of_a_bare_symbol_at_a_python_int():
     from uwmr_symbolic.univariate import exact_value
     assert exact_value(S, S, 0) == 0 and isinstance(exact_value(S, S, 0), sp.Integer)
     assert exact_value(S ** 2 + 1, S, sp.sqrt(2)) == 3
+
+
+def test_radicals_with_a_huge_denominator_are_not_expanded(tmp_path):
+    """Fuzz finding (seed 2873870014, float-power): rho**0.99999999999999978 is
+    read exactly, an exponent p/q with q = 2^52.  The kernel's identity
+    generalisation wrote b^(p/q) as (b^(1/q))^p and expanded a polynomial of
+    degree about 2^52; now only small p, q are split, so the design is
+    decided within its time limit, with F = (5/3) s^(2 - 4.4e-16): F' -> oo
+    (P1), F'(s)/s -> oo as s -> 0+ (P6), F'' -> oo at 0+ (P7)."""
+    report, v = verify(tmp_path, "f = 5 * rho**0.99999999999999978 / 3\n", timeout=30)
+    assert not report.timed_out
+    assert v == {"P1": "refuted", "P2": "proved", "P3": "proved", "P4": "proved", "P5": "proved",
+                 "P6": "refuted", "P7": "refuted", "P8": "proved"}

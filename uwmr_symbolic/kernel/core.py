@@ -811,13 +811,14 @@ def _generalized(d, variables):
             return e.func(*map(walk, e.args))
         if e.is_Pow and e.exp.is_Integer:
             return walk(e.base) ** e.exp
-        if e.is_Pow and e.exp.is_Rational:      # b^(p/q) = (b^(1/q))^p where b^(p/q) is real
-            b, p, q = e.base, e.exp.p, e.exp.q
+        if e.is_Pow and e.exp.is_Rational and e.exp.q <= 12 and abs(e.exp.p) <= 48:
+            b, p, q = e.base, e.exp.p, e.exp.q  # b^(p/q) = (b^(1/q))^p where b^(p/q) is real; small p, q only
             x = next((v for v in variables if v.is_positive and _rational_over_q(b, v)), None)
             if x is not None:                   # b = x^k c, x > 0, so b^(p/q) = x^(kp/q) c^(p/q)
                 num, den = (b, 1) if b.is_polynomial(x) else sp.fraction(sp.cancel(sp.together(b)))
                 k = _order_at_zero(num, x) - _order_at_zero(den, x)
-                return power(x, k * p, q) * power(sp.cancel(b / x ** k) if k else b, p, q)
+                if abs(k * p) <= 48:
+                    return power(x, k * p, q) * power(sp.cancel(b / x ** k) if k else b, p, q)
             return power(b, p, q)
         if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
             return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
