@@ -7,6 +7,8 @@ proves, in one process after import, median of three:
 * prove  -- `verify_design` (the search, plus the proposer's kernel steps);
 * check  -- `design_certificate.check` of its certificate (kernel only, no search);
 
+each run with the verifier's and the kernel's memos emptied first (`_forget`);
+
 and how much of the report the kernel has checked (properties and kf with
 nothing left to the search)."""
 from __future__ import annotations
@@ -20,13 +22,24 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from uwmr_symbolic import design_certificate as DC  # noqa: E402
+from uwmr_symbolic import certify, design_certificate as DC  # noqa: E402
+from uwmr_symbolic.kernel import certificate as kernel_certificate, core  # noqa: E402
 from uwmr_symbolic.verify import verify_design      # noqa: E402
+
+
+def _forget():
+    """Empty the memos that would make a second run cheaper than a first:
+    the proposer's proved lemmas, the checker's checked steps, the kernel's
+    zero tests (SymPy's own cache stays warm, as in any long process)."""
+    certify._FOUND.clear()
+    kernel_certificate._CHECKED.clear()
+    core._zero_when_generalized.cache_clear()
 
 
 def _median(fn, n=3):
     times, out = [], None
     for _ in range(n):
+        _forget()
         t = time.perf_counter()
         out = fn()
         times.append(time.perf_counter() - t)
