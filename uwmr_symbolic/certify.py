@@ -264,7 +264,7 @@ class Prover:
 
     def _identity(self, **claim):
         """The kernel's `identity`, charged like factoring (its cancel costs so).
-        For a positive variable it is first tried on all of (0, oo), where
+        For a nonnegative variable it is first tried on all of (0, oo), where
         it serves every later interval (`sign_by_rewrite` takes an identity
         on a superset)."""
         key = (claim["lhs"], claim["rhs"], claim["var"])
@@ -275,7 +275,7 @@ class Prover:
         d = claim["lhs"] - claim["rhs"]
         if not (K._rational_over_q(d, claim["var"]) or K._zero_when_generalized(d, claim["var"])):
             self.charge(_rational_units(size))          # the kernel will try simplify
-        if claim["var"].is_positive:
+        if claim["var"].is_nonnegative:
             try:
                 th = _rule(K.identity, **{**claim, "lo": 0, "hi": OO, "lo_open": True, "hi_open": True})
                 self.identities[key] = th
