@@ -780,9 +780,11 @@ def _vanishes_at(points):
 
 
 def _rational_over_q(d, *variables) -> bool:
-    """d is a rational function of the variables with rational coefficients."""
+    """d is a rational function of the variables with rational coefficients
+    and integer powers of at most 64 (higher ones are left to other routes:
+    polynomial arithmetic in such degrees can run for hours)."""
     return d.is_rational_function(*variables) and all(a.is_Rational for a in d.atoms(sp.Number)) \
-        and not d.atoms(sp.NumberSymbol) and all(p.exp.is_Integer for p in d.atoms(sp.Pow))
+        and not d.atoms(sp.NumberSymbol) and all(p.exp.is_Integer and abs(p.exp) <= 64 for p in d.atoms(sp.Pow))
 
 
 def _generalized(d, variables):
@@ -809,7 +811,7 @@ def _generalized(d, variables):
             return e
         if e.is_Add or e.is_Mul:
             return e.func(*map(walk, e.args))
-        if e.is_Pow and e.exp.is_Integer:
+        if e.is_Pow and e.exp.is_Integer and abs(e.exp) <= 64:
             return walk(e.base) ** e.exp
         if e.is_Pow and e.exp.is_Rational and e.exp.q <= 12 and abs(e.exp.p) <= 48:
             b, p, q = e.base, e.exp.p, e.exp.q  # b^(p/q) = (b^(1/q))^p where b^(p/q) is real; small p, q only
