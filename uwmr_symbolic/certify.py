@@ -398,9 +398,9 @@ class Prover:
             m = form.xreplace({g: 1}) - a
             if not (a.has(var) or m.has(var)) and a + m * g == form:
                 y = g.args[0]
-                for w, st in ((1, False), (-1, False)):
+                for w in (1, -1):                # any sign of Y on I shows Y defined there
                     try:
-                        th = _rule(K.sign_below_sup, self.prove(y, var, I, w, st, depth, near), expr=form, bounded=g)
+                        th = _rule(K.sign_below_sup, self.prove(y, var, I, w, False, depth, near), expr=form, bounded=g)
                         break
                     except NoProof:
                         continue
