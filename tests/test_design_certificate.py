@@ -268,3 +268,35 @@ def test_cache_rechecks_a_refutation_witness(tmp_path):
     cache.path_for(key).write_text(json.dumps(entry))
     again = check_file(str(design), 60, str(tmp_path))
     assert again["cached"] is False and again["properties"]["P3"]["verdict"] == "refuted"
+
+
+def test_piecewise_profiles_are_kernel_checked_through_their_branches(refuted_certs):
+    """Piecewise F (hand facts in the design files):
+    * r10: F = s^2/2 (s <= 1), s - 1/2 (s > 1); F' = s, 1 agree at 1 (C^1), F'' does not;
+    * v05: F = 1 - cos(u) (u <= pi/2), u - pi/2 + 1 beyond, u = sqrt(s^2 + 1) - 1: C^2;
+    * design 4: F = 1 - cos(u) up to u = pi, then u - pi + 1: F jumps from 2 to 1;
+    * r06: F = log(1 + s^2), + 1 beyond s = 2: F jumps.
+    P3 (F > 0, F -> oo) is a claim about the Piecewise F itself for all four.
+    P5 and P8 need F (and F') continuous across the boundary: kernel-checked
+    for r10 and v05 (P7 too for v05), left to the search for design 4 and
+    r06, whose F the kernel must not call continuous."""
+    certs = {**refuted_certs, "v05_cosine_c2": DC.build(verify_design(ROOT / "tests" / "designs" / "v05_cosine_c2.py"))}
+    checked = {(stem, c.name) for stem, cert in certs.items() for c in DC.check(cert) if c.kernel_checked}
+    for stem in ("r10_c1_piecewise", "v05_cosine_c2", "design4_cosine", "r06_jump"):
+        assert (stem, "P3") in checked
+    assert {("r10_c1_piecewise", p) for p in ("P5", "P8")} <= checked
+    assert {("v05_cosine_c2", p) for p in ("P5", "P7", "P8")} <= checked
+    assert not {("design4_cosine", "P8"), ("r06_jump", "P8")} & checked
+    rules = {n["rule"] for n in certs["v05_cosine_c2"]["properties"]["P7"]["kernel"]["theorems"]}
+    assert {"continuous_piecewise", "select_branch"} <= rules
+    # P5 without the continuity of F and F' across s = 1: the derivative's existence there is the search's
+    bad = copy.deepcopy(certs["r10_c1_piecewise"])
+    kernel = bad["properties"]["P5"]["kernel"]
+    kernel["conclusions"] = kernel["conclusions"][:3]
+    c = _by_name(DC.check(bad))["P5"]
+    assert not c.kernel_checked and c.unchecked == ["F' exists at the boundaries of F's pieces (the search's)"]
+    # P8 with the continuity of the Piecewise F left out fails its link
+    bad = copy.deepcopy(certs["r10_c1_piecewise"])
+    bad["properties"]["P8"]["kernel"]["conclusions"] = bad["properties"]["P8"]["kernel"]["conclusions"][:-1]
+    with pytest.raises(DC.CertificateError, match="P8: the kernel's conclusions are not the ones P8 needs"):
+        DC.check(bad)

@@ -632,6 +632,70 @@ def _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work):
         return None, str(exc)
 
 
+def piecewise_sign_theorem(P, ends, var, want=1):
+    """want*P > 0 on (0, oo) for a Piecewise P as one kernel theorem, or
+    (None, why).  `ends`: the search's boundaries 0 < b1 < ... < oo.  On
+    each open piece the branch that applies is signed (`on_branch`);
+    `join_at_point` joins the pieces through P's value at each boundary."""
+    if not isinstance(P, sp.Piecewise):
+        return None, f"{P} is not a Piecewise"
+    prover = Prover(WORK * (len(ends) - 1))
+    try:
+        whole = None
+        for lo, hi in zip(ends, ends[1:]):
+            I = (lo, hi, True, True)
+            th = on_branch(P, var, I, prover, lambda g: prover.prove(g, var, I, want, True))
+            whole = th if whole is None else _rule(K.join_at_point, whole, th)
+        return whole, ""
+    except (NoProof, K.KernelError, Undefined) as exc:
+        return None, str(exc)
+
+
+def on_branch(P, var, I, prover, about):
+    """A kernel claim about the Piecewise P on I from `about(G)`, a theorem
+    about the branch G that applies on I: the relations r - l of P's
+    conditions are signed on I (strict, the sign at an inner point), the
+    kernel picks the branch from them (`select_branch`)."""
+    signs = _relation_signs(P, var, I, prover)
+    have = {(t.claim.expr, t.claim.want) for t in signs}
+    branch = K._branch(P, lambda d, w, st: K._sign_ok(K._const_sign(d), w, st) if not d.has(var)
+                       else (K._s(d), w) in have)
+    return _rule(K.select_branch, about(branch), *signs, expr=P)
+
+
+def _relation_signs(P, var, I, prover):
+    """Strict sign theorems on I of every relation r - l of P's conditions
+    (the sign at an inner point)."""
+    lo, hi = I[:2]
+    inner = _mid(lo, hi) if hi != OO else lo + 1
+    signs = []
+    for d in dict.fromkeys(r.rhs - r.lhs for _, c in P.args for r in _relationals(c)):
+        if d.has(var):
+            box = evaluate(d, var, inner, inner, bits=128)
+            signs.append(prover.prove(d, var, I, 1 if box.positive() else -1, True))
+    return signs
+
+
+def continuity_theorem(P, ends, var):
+    """P (a Piecewise) continuous on (0, oo) as a kernel theorem
+    (`continuous_piecewise`, the relations signed on each open piece
+    between the search's `ends` 0 < b1 < ... < oo), or None."""
+    if not isinstance(P, sp.Piecewise):
+        return None
+    prover = Prover(WORK * (len(ends) - 1))
+    try:
+        signs = [t for lo, hi in zip(ends, ends[1:]) for t in _relation_signs(P, var, (lo, hi, True, True), prover)]
+        return _rule(K.continuous_piecewise, *signs, expr=P, var=var, cuts=list(ends[1:-1]))
+    except (NoProof, K.KernelError, Undefined):
+        return None
+
+
+def _relationals(cond):
+    if isinstance(cond, sp.core.relational.Relational):
+        return [cond]
+    return [r for a in cond.args for r in _relationals(a)] if isinstance(cond, (sp.And, sp.Or, sp.Not)) else []
+
+
 def radial_theorems(f, F, x, y, var) -> list:
     """P4: the kernel's `identity_plane` f(x, y) = F(sqrt(x^2 + y^2)), or []."""
     try:
@@ -640,12 +704,25 @@ def radial_theorems(f, F, x, y, var) -> list:
         return []
 
 
-def growth_theorems(F, var) -> list:
+def growth_theorems(F, var, last=None) -> list:
     """P3's "F(s) -> oo": `diverges_by_growth` from F' >= k or s F' >= k > 0
-    on [R, oo) (the proposer picks R, the rate and k), or []."""
+    on [R, oo) (the proposer picks R, the rate and k), or [].  For a
+    Piecewise F, `last` is the start of its last piece: R lies beyond it and
+    the divergence of the branch there becomes F's (`on_branch`)."""
+    if isinstance(F, sp.Piecewise):
+        R = sp.Integer(4 ** math.ceil(math.log(max(float(last), 1) + 1, 4)))
+        prover = Prover(WORK)
+        try:
+            return [on_branch(F, var, (R, OO, False, True), prover, lambda g: _diverges(g, var, (R,))[0])]
+        except (NoProof, IndexError, K.KernelError, Undefined):
+            return []
+    return _diverges(F, var, (sp.Integer(4), sp.Integer(16)))
+
+
+def _diverges(F, var, starts) -> list:
     d = sp.diff(F, var)
     prover = Prover(WORK)        # one budget for every attempt
-    for R in (sp.Integer(4), sp.Integer(16)):
+    for R in starts:
         for rate, g in (("log", var * d), ("linear", d)):
             try:
                 lo = float(evaluate(g, var, R, R, bits=128).lo.lower())
@@ -667,15 +744,18 @@ def growth_theorems(F, var) -> list:
     return []
 
 
-def origin_theorems(F, var) -> list:
+def origin_theorems(F, var, ends=None) -> list:
     """P5 at the origin: F and F' continuous on [0, w] with F'(0) = 0
     (`continuous_at_end`), so F'(0+) = 0 and F has the one-sided derivative
-    0 at s = 0 (mean value theorem), or []."""
+    0 at s = 0 (mean value theorem), or [].  For a Piecewise F (boundaries
+    `ends`) also F and F' continuous on (0, oo), so that F' is F's derivative
+    across the boundaries too."""
     d = sp.diff(F, var)
     for w in (sp.Rational(1, 2), sp.Rational(1, 16)):
         try:
-            out = [_rule(K.continuous_at_end, expr=F, var=var, c=0, width=w),
-                   _rule(K.continuous_at_end, expr=d, var=var, c=0, width=w)]
+            out = [_limit_at_zero(F, var, w), _limit_at_zero(d, var, w)]
+            if isinstance(F, sp.Piecewise):
+                out += [_continuous(F, var, ends), _continuous(d, var, ends)]
         except NoProof:
             continue
         if out[1].claim.other == K._s(0):
@@ -683,28 +763,50 @@ def origin_theorems(F, var) -> list:
     return []
 
 
-def smoothness_theorems(F, var, order) -> list:
+def smoothness_theorems(F, var, order, ends=None) -> list:
     """P8 (order 1): F' continuous on (0, oo) and at 0+ with F'(0) = 0.
     P7 (order 2): also F'' continuous on (0, oo) and at 0+ (value L), so that
     F'(s)/s = F''(xi) -> L too (mean value theorem), and F continuous at 0+.
-    [] if not shown."""
+    For a Piecewise F (boundaries `ends`) also F continuous on (0, oo), so
+    that F' and F'' are derivatives across the boundaries.  [] if not shown."""
     d1 = sp.diff(F, var)
     d2 = sp.diff(d1, var)
     try:
-        out = [_rule(K.continuous_on_positive, expr=d1, var=var)]
-        if order == 2:
-            out.append(_rule(K.continuous_on_positive, expr=d2, var=var))
+        out = [_continuous(d, var, ends) for d in (d1, d2)[:order]]
+        whole = [_continuous(F, var, ends)] if isinstance(F, sp.Piecewise) else []
     except NoProof:
         return []
     for w in (sp.Rational(1, 2), sp.Rational(1, 16)):
         try:
-            ends = [_rule(K.continuous_at_end, expr=d, var=var, c=0, width=w)
-                    for d in (d1, d2, F)[:1 if order == 1 else 3]]
+            limits = [_limit_at_zero(d, var, w) for d in (d1, d2, F)[:1 if order == 1 else 3]]
         except NoProof:
             continue
-        if ends[0].claim.other == K._s(0):
-            return out + ends
+        if limits[0].claim.other == K._s(0):
+            return out + limits + whole
     return []
+
+
+def _continuous(e, var, ends):
+    """E continuous on (0, oo): `continuous_on_positive`, or for a Piecewise
+    `continuity_theorem`."""
+    if not isinstance(e, sp.Piecewise):
+        return _rule(K.continuous_on_positive, expr=e, var=var)
+    th = continuity_theorem(e, ends, var)
+    if th is None:
+        raise NoProof(f"{e} not shown continuous")
+    return th
+
+
+def _limit_at_zero(e, var, w):
+    """E(0+) = E(0) (`continuous_at_end` on [0, w]; for a Piecewise, of the
+    branch that applies there)."""
+    if not isinstance(e, sp.Piecewise):
+        return _rule(K.continuous_at_end, expr=e, var=var, c=0, width=w)
+    try:
+        return on_branch(e, var, (sp.Integer(0), w, False, False), Prover(WORK),
+                         lambda g: _rule(K.continuous_at_end, expr=g, var=var, c=0, width=w))
+    except (K.KernelError, Undefined) as exc:
+        raise NoProof(str(exc)) from None
 
 
 def origin_value_theorems(value) -> list:

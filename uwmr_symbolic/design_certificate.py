@@ -150,12 +150,17 @@ def _link_smooth(name, F, claims) -> list[str]:
     -> 0 as e2 -> 0 (|e2|/s <= 1; at e1 = 0 it is F'(|e2|) sign(e2) -> 0).
     P7: also F'' continuous on (0, oo) and at 0+ (value L), F continuous at
     0+; then F'(s)/s = F''(xi) -> L, so the Hessian F'' e e^T/s^2 + (F'/s)(I - e e^T/s^2) of
-    f = F(|e|) is continuous on R^2 \\ {0} and tends to L I at the origin."""
+    f = F(|e|) is continuous on R^2 \\ {0} and tends to L I at the origin.
+    For a Piecewise F, also F continuous on (0, oo): a continuous function
+    whose derivative off finitely many points (the boundaries) extends
+    continuously is C^1 with that derivative (mean value theorem), so F'
+    and F'' above are F's derivatives everywhere."""
     d1 = sp.diff(F, S)
     order = 1 if name == "P8" else 2
     ds = [d1, sp.diff(d1, S)][:order]
     want = [("continuous", sp.srepr(d), "Integer(0)") for d in ds] + [
-        ("limit", sp.srepr(d), "Integer(0)") for d in ([d1] if order == 1 else [*ds, F])]
+        ("limit", sp.srepr(d), "Integer(0)") for d in ([d1] if order == 1 else [*ds, F])] + [
+        ("continuous", sp.srepr(F), "Integer(0)")] * F.has(sp.Piecewise)
     got = [(c.kind, c.expr, c.lo) for c in claims]
     if got != want or claims[order].other != "Integer(0)" or any(c.var != sp.srepr(S) for c in claims):
         raise CertificateError(f"{name}: the kernel's conclusions are not the ones {name} needs for this f")
@@ -180,7 +185,8 @@ def _link(name, f, theorems, exact=None) -> list[str]:
     if name not in ("P1", "P3", "P5", "P6", "P7", "P8", "kf"):
         return []
     F = _profile(f)
-    if F.has(sp.Piecewise):
+    piecewise = F.has(sp.Piecewise)
+    if piecewise and name not in ("P3", "P5", "P7", "P8"):
         return ["the kernel's claims are about the pieces of F (the split of F is the search's)"]
     if name == "kf":
         return _link_kf(sp.diff(F, S), exact, claims)
@@ -190,6 +196,15 @@ def _link(name, f, theorems, exact=None) -> list[str]:
         return _link_smooth(name, F, claims)
     dF = sp.diff(F, S)
     want = F if name == "P3" else dF
+    if piecewise and not (claims and claims[0].expr == sp.srepr(want)):
+        return ["the kernel's claims are about the pieces of F (the split of F is the search's)"]
+    gap = []
+    if name == "P5" and piecewise:           # F, F' continuous on (0, oo): F' is F's derivative there
+        whole = [("continuous", sp.srepr(e), sp.srepr(S), "Integer(0)", "oo") for e in (F, dF)]
+        if [(c.kind, c.expr, c.var, c.lo, c.hi) for c in claims[3:]] == whole:
+            claims = claims[:3]
+        else:
+            gap = ["F' exists at the boundaries of F's pieces (the search's)"]
     ok = len(claims) in (1, 2, 3) and claims[0].kind == "sign" and (
         claims[0].expr, claims[0].var, claims[0].lo, claims[0].hi, claims[0].lo_open, claims[0].hi_open,
         claims[0].want, claims[0].strict) == (sp.srepr(want), sp.srepr(S), "Integer(0)", "oo", True, True, 1, True)
@@ -204,7 +219,7 @@ def _link(name, f, theorems, exact=None) -> list[str]:
                                                          ("limit", sp.srepr(dF), sp.srepr(S), "Integer(0)")]
             and claims[2].other == "Integer(0)"):
         raise CertificateError("P5: the further conclusions are not F, F' continuous at 0+ with F'(0+) = 0")
-    return []
+    return gap
 
 
 # ---------------------------------------------------------------- refutations

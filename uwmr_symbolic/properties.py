@@ -28,7 +28,8 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .design import Design
 from .interval import Interval, IntervalFunction, Undefined
-from .certify import (REDUCTION, growth_theorems, origin_theorems, origin_value_theorems, radial_theorems,
+from .certify import (REDUCTION, growth_theorems, origin_theorems, origin_value_theorems, piecewise_sign_theorem,
+                      radial_theorems,
                       sign_theorems, smoothness_theorems, sup_upper_theorem)
 from .kf import KfCertificate, certify_kf, certify_sup, scale
 from .limits import NoLimit, limit_right
@@ -228,6 +229,11 @@ def _single_formula(a: Analysis):
     return a.F if len(a.profile.pieces) == 1 and not a.F.has(sp.Piecewise) else None
 
 
+def _ends(a: Analysis) -> list:
+    """0, the boundaries of F's pieces, oo (for the kernel's Piecewise rules)."""
+    return [*(p.lo for p in a.profile.pieces), sp.oo]
+
+
 def _all(parts, what) -> Verdict:
     for v in parts:
         if v.refuted:
@@ -299,18 +305,12 @@ def verify_p1(a: Analysis) -> Verdict:
 def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
     """F^(k) > 0 on every open piece and at every boundary point."""
     prof = a.profile
-    kernel, unchecked = [], []
     for piece in prof.pieces:
-        e = a.derivative(piece.expr, k)
-        v = prove_sign(e, S, piece.lo, piece.hi, want=1, lo_open=True, hi_open=True)
+        v = prove_sign(a.derivative(piece.expr, k), S, piece.lo, piece.hi, want=1, lo_open=True, hi_open=True)
         if v.refuted:
             return refuted(f"{what} fails at |e| = {v.witness}: {v.reason}", _at(v.witness))
         if not v.proved:
             return unknown(f"{what} on ({piece.lo}, {piece.hi}): {v.reason}")
-        theorems, gap = sign_theorems(sp.diff(piece.expr, S, k), S, piece.lo, piece.hi)
-        kernel += theorems or []
-        if theorems is None:
-            unchecked.append(f"{what} on ({piece.lo}, {piece.hi}) (kernel: {gap})")
     for b in prof.boundaries:
         e = a.derivative(prof.at_point[b], k) if k == 0 else a.derivative(
             next(p.expr for p in prof.pieces if p.lo == b), k)
@@ -320,9 +320,27 @@ def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
             return unknown(f"cannot decide the sign of {what} at the boundary s = {b}")
         if sgn <= 0:
             return refuted(f"{what} fails at the boundary |e| = {b} (value {val})", _at(b))
-        unchecked.append(f"{what} at the boundary s = {b} (one-sided limit)")
     return proved(f"{what} on (0, oo) (interval arithmetic, s = 1/t on the tail, Taylor at zeros)",
-                  kernel=kernel, unchecked=unchecked)
+                  **_piece_theorems(a, k, what))
+
+
+def _piece_theorems(a: Analysis, k: int, what: str) -> dict:
+    """The kernel's part of `_positive_on_pieces`: one theorem about the
+    Piecewise F^(k) on (0, oo) when the kernel takes it, else one per piece
+    with the boundaries left to the search."""
+    prof = a.profile
+    if len(prof.pieces) > 1:
+        whole, _ = piecewise_sign_theorem(sp.diff(a.F, S, k), [*(p.lo for p in prof.pieces), sp.oo], S)
+        if whole is not None and whole.claim.strict:
+            return {"kernel": [whole], "unchecked": []}
+    kernel, unchecked = [], []
+    for piece in prof.pieces:
+        theorems, gap = sign_theorems(sp.diff(piece.expr, S, k), S, piece.lo, piece.hi)
+        kernel += theorems or []
+        if theorems is None:
+            unchecked.append(f"{what} on ({piece.lo}, {piece.hi}) (kernel: {gap})")
+    return {"kernel": kernel,
+            "unchecked": unchecked + [f"{what} at the boundary s = {b} (one-sided limit)" for b in prof.boundaries]}
 
 
 def verify_p3(a: Analysis) -> Verdict:
@@ -358,6 +376,8 @@ def verify_p3(a: Analysis) -> Verdict:
 
 
 def _growth(a: Analysis) -> list:
+    if len(a.profile.pieces) > 1:
+        return growth_theorems(a.F, S, a.profile.pieces[-1].lo)
     F = _single_formula(a)
     return growth_theorems(F, S) if F is not None else []
 
@@ -394,7 +414,7 @@ def verify_p5(a: Analysis) -> Verdict:
     return _lemmas(proved(f"df/de1 tanh(e1) = F'(s) e1 tanh(e1)/s with {pos.reason}; "
                           "df/de1 = 0 on e1 = 0 (F'(0+) = 0 at the origin)"), pos,
                    "df/de1 exists on R^2 (F'(0+) = 0 at the origin)",
-                   lambda: origin_theorems(F, S) if (F := _single_formula(a)) is not None else [])
+                   lambda: origin_theorems(a.F, S, _ends(a)))
 
 
 def verify_p6(a: Analysis) -> Verdict:
@@ -469,7 +489,7 @@ def verify_p7(a: Analysis) -> Verdict:
         return v
     v = proved(v.reason, **v.details)
     return _lemmas(v, v, "f is C^2 (continuity of F'' and F'/s, also at the origin)",
-                   lambda: smoothness_theorems(F, S, 2) if (F := _single_formula(a)) is not None else [])
+                   lambda: smoothness_theorems(a.F, S, 2, _ends(a)))
 
 
 def verify_p8(a: Analysis) -> Verdict:
@@ -496,7 +516,7 @@ def verify_p8(a: Analysis) -> Verdict:
             return unknown(f"F' on ({piece.lo}, {piece.hi}): {cont.reason}")
     v = proved("F'(0+) = 0, and F' is bounded near every s > 0, so F'(s) e2/s -> 0 as e2 -> 0")
     return _lemmas(v, v, "F' bounded near every s > 0 and F'(0+) = 0",
-                   lambda: smoothness_theorems(F, S, 1) if (F := _single_formula(a)) is not None else [])
+                   lambda: smoothness_theorems(a.F, S, 1, _ends(a)))
 
 
 # --------------------------------------------------------------------------

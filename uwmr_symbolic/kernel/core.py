@@ -542,23 +542,152 @@ def join(left, right):
 join = rule()(join)
 
 
-def join_at_zero(left, right):
-    """Same E, variable and sign on <a, m) and (m, b>, and E(m) = 0:
-    exactly (SymPy's evaluation gives the literal 0) with E defined at m
-    (Arb evaluates it, enclosing 0).  Then want*E >= 0 on <a, b> (weak)."""
+def _join_at_point(left, right):
+    """(claim on <a, b>, value E(m)) for `join_at_zero` and `join_at_point`."""
     _is_sign(left)
     _is_sign(right)
     l, r = left.claim, right.claim
     _need((l.expr, l.var, l.want) == (r.expr, r.var, r.want), "different claims")
     _need(l.hi == r.lo, "not adjacent")
     e, var, m = l.e(), l.x(), parse(l.hi)
-    _need(e.subs(var, m) == 0, lambda: f"E({m}) is not exactly 0")
+    if isinstance(e, sp.Piecewise):
+        e = _branch(e, lambda d, want, strict: _sign_ok(_const_sign(d.subs(var, m)), want, strict))
+    v = e.subs(var, m)
     try:
-        _need(evaluate(e, var, m, m, bits=256).hull().contains(0), "Arb disagrees with exact 0")
+        box = evaluate(e, var, m, m, bits=256)          # also: E defined at m
     except Undefined as exc:
         raise KernelError(f"E undefined at {m}: {exc}") from None
-    return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, False)
+    _need(v != 0 or box.hull().contains(0), "Arb disagrees with exact 0")
+    return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, False), v, box
+
+
+def join_at_zero(left, right):
+    """Same E, variable and sign on <a, m) and (m, b>, and E(m) = 0:
+    exactly (SymPy's evaluation gives the literal 0) with E defined at m
+    (Arb evaluates it, enclosing 0).  Then want*E >= 0 on <a, b> (weak)."""
+    claim, v, _ = _join_at_point(left, right)
+    _need(v == 0, lambda: f"E({parse(left.claim.hi)}) is not exactly 0")
+    return claim
 join_at_zero = rule("arb", "sympy-core")(join_at_zero)
+
+
+def join_at_point(left, right):
+    """Same E, variable and sign on <a, m) and (m, b>, and the value of E at
+    m: for a Piecewise E the branch that applies at m (`_branch`, each
+    condition decided by the sign of its constant r - l at m), E defined
+    at m (Arb).  E(m) exactly 0 gives want*E >= 0 on <a, b>; E(m) with the
+    premises' sign (Arb) keeps them: strict iff both are."""
+    claim, v, box = _join_at_point(left, right)
+    if v == 0:
+        return claim
+    _need(box.positive() if claim.want > 0 else box.negative(), lambda: f"E({parse(left.claim.hi)}) = {v} has not the sign")
+    return dataclasses.replace(claim, strict=left.claim.strict and right.claim.strict)
+join_at_point = rule("arb", "sympy-core")(join_at_point)
+
+
+_TRUE_WHEN = {sp.StrictLessThan: (1, True), sp.LessThan: (1, False),
+              sp.StrictGreaterThan: (-1, True), sp.GreaterThan: (-1, False)}
+
+
+def _sign_ok(s, want, strict) -> bool:
+    """A sign s (+1, 0, -1) satisfies want*E > 0 (>= 0 if not strict)."""
+    return s == want or (not strict and s == 0)
+
+
+def _holds(cond, truth, sign_ok) -> bool:
+    """cond has the truth value `truth` wherever the facts `sign_ok(d, want,
+    strict)` ("want*d > 0", ">= 0" if not strict) hold.  A relation l < r
+    (<=, >, >=) is true where r - l > 0 (>= 0, < 0, <= 0) and false where
+    the opposite weak/strict sign holds; l = r is true where r - l >= 0 and
+    <= 0, false where r - l has a strict sign; Ne, Not, And, Or accordingly."""
+    if cond in (sp.true, sp.false):
+        return bool(cond) == truth
+    if isinstance(cond, sp.Not):
+        return _holds(cond.args[0], not truth, sign_ok)
+    if isinstance(cond, (sp.And, sp.Or)):
+        each = (_holds(a, truth, sign_ok) for a in cond.args)
+        return all(each) if isinstance(cond, sp.And) == truth else any(each)
+    _need(type(cond) in (*_TRUE_WHEN, sp.Eq, sp.Ne), lambda: f"condition {cond} is not a relation")
+    d = cond.rhs - cond.lhs
+    if isinstance(cond, (sp.Eq, sp.Ne)):
+        if truth == isinstance(cond, sp.Eq):
+            return sign_ok(d, 1, False) and sign_ok(d, -1, False)
+        return sign_ok(d, 1, True) or sign_ok(d, -1, True)
+    want, strict = _TRUE_WHEN[type(cond)]
+    return sign_ok(d, want, strict) if truth else sign_ok(d, -want, not strict)
+
+
+def _branch(pw, sign_ok):
+    """The branch of the Piecewise pw that applies wherever the facts
+    `sign_ok` hold: its condition holds there and every earlier one fails."""
+    for value, cond in pw.args:
+        if _holds(cond, True, sign_ok):
+            return value
+        _need(_holds(cond, False, sign_ok), lambda: f"condition {cond} not decided")
+    raise KernelError("no branch applies")
+
+
+def select_branch(thm, *signs, expr):
+    """A claim (sign, sup, limit at the left end, divergence) about G on I
+    gives the same claim about the Piecewise P when G is the branch of P
+    that applies at every point of I (`_branch`): P = G on I.  Each
+    condition is decided by sign theorems (`signs`) about its r - l on
+    intervals containing I, or by the exact sign of a constant r - l."""
+    c = thm.claim
+    _need(c.kind in ("sign", "sup_upper", "sup_lower", "limit", "diverges"), "premise has no interval")
+    var = c.x()
+    pw = _expr(expr, var)
+    _need(isinstance(pw, sp.Piecewise), "expr is not a Piecewise")
+    lo, hi = c.ends()
+    _need(_branch(pw, _decided_by(signs, var, lo, hi, c.lo_open, c.hi_open)) == c.e(),
+          "the premise is not about the branch that applies on I")
+    return dataclasses.replace(c, expr=_s(pw))
+select_branch = rule("sympy-core")(select_branch)
+
+
+def _decided_by(signs, var, lo, hi, lo_open, hi_open):
+    """`sign_ok` for `_branch` on the interval <lo, hi>: from the sign
+    theorems `signs` on intervals containing it, or a constant's exact sign."""
+    for p in signs:
+        _is_sign(p)
+
+    def sign_ok(d, want, strict):
+        if not d.has(var):
+            return _sign_ok(_const_sign(d), want, strict)
+        return any(p.claim.expr == _s(d) and p.claim.var == _s(var) and p.claim.want == want
+                   and (p.claim.strict or not strict) and _within(p.claim, lo, hi, lo_open, hi_open)
+                   for p in signs)
+    return sign_ok
+
+
+def continuous_piecewise(*signs, expr, var, cuts):
+    """The Piecewise P is continuous on (0, oo).  cuts 0 < b1 < ... < bn
+    exact: on each open piece between 0, the cuts and oo the branch that
+    applies (`_branch`, by the sign theorems `signs`) is defined, hence
+    continuous, for every x > 0 (`defined_for_positive`); at each cut b the
+    branches of both sides and the branch that applies at b have one value
+    (their differences at b are exactly 0: SymPy's evaluation, or polynomial
+    arithmetic with pi and the like as symbols; defined at b by Arb).
+    Claim kind "continuous" on (0, oo)."""
+    pw = _expr(expr, var)
+    _need(isinstance(pw, sp.Piecewise), "expr is not a Piecewise")
+    ends = [sp.Integer(0), *(_cuts(var, cuts) if len(cuts) > 1 else [_number(c) for c in cuts]), OO]
+    _interval(var, 0, OO, True, True)
+    _need(len(cuts) == 0 or _lt(0, ends[1]), "cuts must be positive")
+    branches = [_branch(pw, _decided_by(signs, var, a, b, True, True)) for a, b in zip(ends, ends[1:])]
+    for g in branches:
+        _need(defined_for_positive(g, var), lambda: f"{g} not shown defined for all {var} > 0")
+    for b, left, right in zip(ends[1:-1], branches, branches[1:]):
+        at = _branch(pw, lambda d, want, strict: _sign_ok(_const_sign(d.subs(var, b)), want, strict))
+        for g in (left, right):
+            d = g.subs(var, b) - at.subs(var, b)
+            _need(d == 0 or _zero_when_generalized(d), lambda: f"the branches differ at {b}")
+        try:
+            _need(evaluate(at - left, var, b, b, bits=256).hull().contains(0), "Arb disagrees with exact 0")
+        except Undefined as exc:
+            raise KernelError(f"P undefined at {b}: {exc}") from None
+    return Claim("continuous", _s(pw), _s(var), _s(0), "oo", True, True)
+continuous_piecewise = rule("arb", "sympy-core", "sympy-polys")(continuous_piecewise)
 
 
 def weaken(thm, *, lo, hi, lo_open, hi_open, strict):

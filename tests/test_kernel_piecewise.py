@@ -1,0 +1,183 @@
+"""The kernel's Piecewise rules (issue 9): `select_branch`, `join_at_point`,
+`continuous_piecewise`.  Every case below is decided by hand:
+
+* P = x^2 for x < 1, 2x - 1 otherwise: on (0, 1) the first branch applies
+  (1 - x > 0), on [1, 2] the second (1 - x <= 0); P(1) = 1 from the second.
+* Q = -5 at x = 1 (Eq), x elsewhere: positive on (0, 1) and (1, 2), but
+  Q(1) = -5, so no sign on (0, 2) -- the branch taken only at a point.
+* C = s^2/2 for s^2 <= 1, s - 1/2 otherwise is continuous (1/2 = 1/2 at 1);
+  J = s^2/2 for s^2 <= 1, s otherwise jumps (1/2 vs 1) at s = 1.
+"""
+import pytest
+import sympy as sp
+
+from uwmr_symbolic.kernel import KernelError, check_certificate, rules as K, to_certificate
+from uwmr_symbolic.kernel.certificate import CertificateError
+
+x = sp.Symbol("x", real=True)
+s = sp.Symbol("s", positive=True)
+Q = sp.Rational
+ZERO = sp.Integer(0)
+
+P = sp.Piecewise((x ** 2, x < 1), (2 * x - 1, True))
+
+
+def sturm(e, var, lo, hi, lo_open=False, hi_open=False, want=1, strict=True):
+    return K.sign_by_sturm(expr=e, var=var, lo=sp.sympify(lo), hi=sp.sympify(hi),
+                           lo_open=lo_open, hi_open=hi_open, want=want, strict=strict)
+
+
+def why(fn, *args, **kw):
+    with pytest.raises(KernelError) as exc:
+        fn(*args, **kw)
+    return str(exc.value)
+
+
+# ------------------------------------------------------------ select_branch
+
+def test_select_branch_moves_a_claim_to_the_piecewise():
+    inner = sturm(x ** 2, x, 0, 1, lo_open=True, hi_open=True)
+    cond = sturm(1 - x, x, 0, 1, lo_open=True, hi_open=True)            # x < 1 true: 1 - x > 0
+    th = K.select_branch(inner, cond, expr=P)
+    c = th.claim
+    assert (c.kind, c.expr, c.lo, c.hi, c.lo_open, c.hi_open, c.want, c.strict) == (
+        "sign", sp.srepr(P), "Integer(0)", "Integer(1)", True, True, 1, True)
+    # the second branch on [1, 2]: x < 1 is false where 1 - x <= 0 (weak suffices)
+    outer = sturm(2 * x - 1, x, 1, 2)
+    false = sturm(1 - x, x, 1, 2, want=-1, strict=False)
+    assert K.select_branch(outer, false, expr=P).claim.expr == sp.srepr(P)
+    # a premise on a larger interval decides the condition on a smaller one
+    wide = sturm(1 - x, x, -1, 1, hi_open=True)
+    assert K.select_branch(inner, wide, expr=P).claim.lo == "Integer(0)"
+
+
+def test_select_branch_refuses_what_does_not_follow():
+    inner = sturm(x ** 2, x, 0, 1, lo_open=True, hi_open=True)
+    cond = sturm(1 - x, x, 0, 1, lo_open=True, hi_open=True)
+    # the wrong branch: 2x - 1 > 0 on (1/2, 1) says nothing about P there
+    wrong = sturm(2 * x - 1, x, Q(1, 2), 1, lo_open=True, hi_open=True)
+    assert why(K.select_branch, wrong, sturm(1 - x, x, Q(1, 2), 1, True, True), expr=P) == \
+        "the premise is not about the branch that applies on I"
+    # no fact about the condition
+    assert why(K.select_branch, inner, expr=P) == "condition x < 1 not decided"
+    # the condition decided on a smaller interval only
+    part = sturm(1 - x, x, Q(1, 2), 1, hi_open=True)
+    assert why(K.select_branch, inner, part, expr=P) == "condition x < 1 not decided"
+    # x < 1 true needs 1 - x > 0 strictly; 1 - x >= 0 on (0, 1] does not exclude x = 1
+    weak = sturm(1 - x, x, 0, 1, lo_open=True, want=1, strict=False)
+    whole = sturm(x ** 2, x, 0, 1, lo_open=True)
+    assert why(K.select_branch, whole, weak, expr=P) == "condition x < 1 not decided"
+    # on [1, 2] the condition is false (1 - x <= 0): x^2 is not the branch there
+    assert why(K.select_branch, sturm(x ** 2, x, 1, 2), sturm(1 - x, x, 1, 2, want=-1, strict=False),
+               expr=P) == "the premise is not about the branch that applies on I"
+    ident = K.identity(lhs=x, rhs=x, var=x, lo=ZERO, hi=sp.Integer(1), lo_open=False, hi_open=False)
+    assert why(K.select_branch, ident, cond, expr=P) == "premise has no interval"
+    assert why(K.select_branch, inner, cond, expr=x ** 2) == "expr is not a Piecewise"
+    assert why(K.select_branch, inner, ident, expr=P) == "premise is a identity theorem, not a sign theorem"
+
+
+def test_select_branch_reads_eq_and_or_not():
+    # Eq(x, 0) is false on (0, 1) because 0 - x < 0 there; Ne(x, 0) is true for the same reason
+    minus = sturm(-x, x, 0, 1, lo_open=True, want=-1)
+    inner = sturm(x, x, 0, 1, lo_open=True)
+    assert K.select_branch(inner, minus, expr=sp.Piecewise((0, sp.Eq(x, 0)), (x, True))).claim.kind == "sign"
+    assert K.select_branch(inner, minus, expr=sp.Piecewise((x, sp.Ne(x, 0)), (0, True))).claim.kind == "sign"
+    # x > 0 and x < 2 on (0, 1): both true; Or(x < 0, x > 3) false: both false
+    both = sp.Piecewise((x, (x > 0) & (x < 2)), (-1, True))
+    assert K.select_branch(inner, sturm(-x, x, 0, 1, lo_open=True, want=-1), sturm(2 - x, x, 0, 1, lo_open=True),
+                           expr=both).claim.expr == sp.srepr(both)
+    # And(x > 0, x < 2) needs both: with the fact about x < 2 missing it is undecided
+    assert why(K.select_branch, inner, sturm(-x, x, 0, 1, lo_open=True, want=-1), expr=both).startswith("condition")
+    neither = sp.Piecewise((-1, (x < 0) | (x > 3)), (x, True))
+    facts = [sturm(-x, x, 0, 1, lo_open=True, want=-1, strict=False), sturm(3 - x, x, 0, 1, lo_open=True)]
+    assert K.select_branch(inner, *facts, expr=neither).claim.expr == sp.srepr(neither)
+    assert why(K.select_branch, inner, facts[0], expr=neither).startswith("condition")
+    negated = sp.Piecewise((x, sp.Not(x > 3)), (-1, True))
+    assert K.select_branch(inner, facts[1], expr=negated).claim.expr == sp.srepr(negated)
+
+
+def test_select_branch_moves_sup_and_limit_claims():
+    up = K.sup_upper_by_cover(expr=x ** 2, var=x, cuts=[ZERO, Q(1, 2)], bound=Q(1, 4))
+    th = K.select_branch(up, sturm(1 - x, x, 0, Q(1, 2)), expr=P)
+    assert (th.claim.kind, th.claim.other) == ("sup_upper", "Rational(1, 4)")
+    lim = K.continuous_at_end(expr=x ** 2, var=x, c=ZERO, width=Q(1, 2))
+    assert K.select_branch(lim, sturm(1 - x, x, 0, Q(1, 2)), expr=P).claim.other == "Integer(0)"
+
+
+# ------------------------------------------------------------ join_at_point
+
+def test_join_at_point_through_the_value_at_the_boundary():
+    left = K.select_branch(sturm(x ** 2, x, 0, 1, lo_open=True, hi_open=True),
+                           sturm(1 - x, x, 0, 1, lo_open=True, hi_open=True), expr=P)
+    right = K.select_branch(sturm(2 * x - 1, x, 1, 2, lo_open=True),
+                            sturm(1 - x, x, 1, 2, lo_open=True, want=-1), expr=P)
+    j = K.join_at_point(left, right)                     # P(1) = 2*1 - 1 = 1 > 0
+    assert (j.claim.lo, j.claim.hi, j.claim.lo_open, j.claim.hi_open, j.claim.strict) == (
+        "Integer(0)", "Integer(2)", True, False, True)
+    # a value 0 at the point gives the weak sign
+    e = (x - 1) ** 2
+    assert not K.join_at_point(sturm(e, x, 0, 1, hi_open=True), sturm(e, x, 1, 2, lo_open=True)).claim.strict
+
+
+def test_join_at_point_sees_a_branch_taken_only_at_the_point():
+    Qx = sp.Piecewise((-5, sp.Eq(x, 1)), (x, True))
+    sides = []
+    for lo, hi, d_want in ((0, 1, 1), (1, 2, -1)):       # Eq(x, 1) false: 1 - x has a strict sign
+        sides.append(K.select_branch(sturm(x, x, lo, hi, lo_open=True, hi_open=True),
+                                     sturm(1 - x, x, lo, hi, lo_open=True, hi_open=True, want=d_want), expr=Qx))
+    assert why(K.join_at_point, *sides) == "E(1) = -5 has not the sign"
+    assert why(K.join_at_zero, *sides) == "E(1) is not exactly 0"
+    f = x ** 2 - 2 * x + 2                                # f(1) = 1 > 0 but not 0
+    assert K.join_at_point(sturm(f, x, 0, 1, hi_open=True), sturm(f, x, 1, 2, lo_open=True)).claim.strict
+    assert why(K.join_at_point, sturm(f, x, 0, 1, hi_open=True), sturm(f + 1, x, 1, 2, lo_open=True)) == \
+        "different claims"
+
+
+# ------------------------------------------------------------ continuous_piecewise
+
+C = sp.Piecewise((s ** 2 / 2, s ** 2 <= 1), (s - Q(1, 2), True))
+
+
+def test_continuous_piecewise_accepts_a_continuous_join():
+    facts = [sturm(1 - s ** 2, s, 0, 1, lo_open=True, hi_open=True), sturm(1 - s ** 2, s, 1, sp.oo, True, True, -1)]
+    th = K.continuous_piecewise(*facts, expr=C, var=s, cuts=[sp.Integer(1)])
+    assert (th.claim.kind, th.claim.expr, th.claim.lo, th.claim.hi) == ("continuous", sp.srepr(C), "Integer(0)", "oo")
+    # equal values at the cut only by polynomial arithmetic with pi as a symbol
+    E = sp.Piecewise(((s + 1) ** 2 / (sp.pi ** 2 + 2 * sp.pi + 1), s <= sp.pi), (1, True))
+    d = sp.pi - s
+    th = K.continuous_piecewise(sturm_free(d, 0, sp.pi, 1), sturm_free(d, sp.pi, sp.oo, -1), expr=E, var=s,
+                                cuts=[sp.pi])
+    assert "sympy-polys" in th.assumptions
+
+
+def sturm_free(d, lo, hi, want):
+    """A strict sign of d on the open (lo, hi), from the proposer (d = pi - s
+    has an irrational coefficient: Sturm does not apply)."""
+    from uwmr_symbolic.certify import Prover
+    return Prover().prove(d, s, (sp.sympify(lo), sp.sympify(hi), True, True), want, True)
+
+
+def test_continuous_piecewise_refuses_jumps_points_and_gaps():
+    facts = [sturm(1 - s ** 2, s, 0, 1, lo_open=True, hi_open=True), sturm(1 - s ** 2, s, 1, sp.oo, True, True, -1)]
+    J = sp.Piecewise((s ** 2 / 2, s ** 2 <= 1), (s, True))
+    assert why(K.continuous_piecewise, *facts, expr=J, var=s, cuts=[sp.Integer(1)]) == "the branches differ at 1"
+    # a branch taken only at the cut
+    D = sp.Piecewise((5, sp.Eq(s, 1)), (s, True))
+    eq = [sturm(1 - s, s, 0, 1, True, True), sturm(1 - s, s, 1, sp.oo, True, True, -1)]
+    assert why(K.continuous_piecewise, *eq, expr=D, var=s, cuts=[sp.Integer(1)]) == "the branches differ at 1"
+    # the cut left out: on (0, oo) the condition changes truth and is not decided
+    assert why(K.continuous_piecewise, *facts, expr=C, var=s, cuts=[]).startswith("condition")
+    # a branch that is not defined for every s > 0 (log(s - 1) near 0)
+    L = sp.Piecewise((sp.log(s + 1), s ** 2 <= 1), (sp.log(s - Q(1, 2)) + sp.log(4), True))
+    assert "not shown defined" in why(K.continuous_piecewise, *facts, expr=L, var=s, cuts=[sp.Integer(1)])
+
+
+def test_piecewise_certificate_round_trips_and_tampering_is_rejected():
+    facts = [sturm(1 - s ** 2, s, 0, 1, lo_open=True, hi_open=True), sturm(1 - s ** 2, s, 1, sp.oo, True, True, -1)]
+    th = K.continuous_piecewise(*facts, expr=C, var=s, cuts=[sp.Integer(1)])
+    cert = to_certificate([th])
+    assert [t.claim for t in check_certificate(cert)] == [th.claim]
+    jump = sp.srepr(sp.Piecewise((s ** 2 / 2, s ** 2 <= 1), (s, True)))
+    cert["theorems"][-1]["data"]["expr"] = {"$": jump}
+    with pytest.raises(CertificateError, match="the branches differ at 1"):
+        check_certificate(cert)
