@@ -277,16 +277,18 @@ def test_piecewise_profiles_are_kernel_checked_through_their_branches(refuted_ce
     * design 4: F = 1 - cos(u) up to u = pi, then u - pi + 1: F jumps from 2 to 1;
     * r06: F = log(1 + s^2), + 1 beyond s = 2: F jumps.
     P3 (F > 0, F -> oo) is a claim about the Piecewise F itself for all four.
-    P5 and P8 need F (and F') continuous across the boundary: kernel-checked
-    for r10 and v05 (P7 too for v05), left to the search for design 4 and
-    r06, whose F the kernel must not call continuous."""
+    P1, P5, P6, P8 and kf need F (and F') continuous across the boundary:
+    kernel-checked for r10 and v05 (P7 too for v05), left to the search for
+    design 4 and r06, whose F the kernel must not call continuous."""
     certs = {**refuted_certs, "v05_cosine_c2": DC.build(verify_design(ROOT / "tests" / "designs" / "v05_cosine_c2.py"))}
     checked = {(stem, c.name) for stem, cert in certs.items() for c in DC.check(cert) if c.kernel_checked}
     for stem in ("r10_c1_piecewise", "v05_cosine_c2", "design4_cosine", "r06_jump"):
         assert (stem, "P3") in checked
-    assert {("r10_c1_piecewise", p) for p in ("P5", "P8")} <= checked
-    assert {("v05_cosine_c2", p) for p in ("P5", "P7", "P8")} <= checked
-    assert not {("design4_cosine", "P8"), ("r06_jump", "P8")} & checked
+    # kf = 1 for both: r10 F' = 1 beyond s = 1; v05 F' = q(s) = s/sqrt(s^2 + 1) -> 1 outside, sin(u) q < 1 inside;
+    # P1 (C^1, kf finite) and P6 (F'(s)/s = 1 and 1/s, resp. sin(u)/sqrt(s^2 + 1) and 1/sqrt(s^2 + 1), <= 1)
+    assert {("r10_c1_piecewise", p) for p in ("P1", "P5", "P6", "P8", "kf")} <= checked
+    assert {("v05_cosine_c2", p) for p in ("P1", "P5", "P6", "P7", "P8", "kf")} <= checked
+    assert not {("design4_cosine", "P8"), ("r06_jump", "P8"), ("design4_cosine", "kf"), ("r06_jump", "kf")} & checked
     rules = {n["rule"] for n in certs["v05_cosine_c2"]["properties"]["P7"]["kernel"]["theorems"]}
     assert {"continuous_piecewise", "select_branch"} <= rules
     # P5 without the continuity of F and F' across s = 1: the derivative's existence there is the search's

@@ -72,7 +72,7 @@ def test_select_branch_refuses_what_does_not_follow():
                expr=P) == "the premise is not about the branch that applies on I"
     ident = K.identity(lhs=x, rhs=x, var=x, lo=ZERO, hi=sp.Integer(1), lo_open=False, hi_open=False)
     assert why(K.select_branch, ident, cond, expr=P) == "premise has no interval"
-    assert why(K.select_branch, inner, cond, expr=x ** 2) == "expr is not a Piecewise"
+    assert why(K.select_branch, inner, cond, expr=x ** 2) == "x**2 is not a Piecewise"
     assert why(K.select_branch, inner, ident, expr=P) == "premise is a identity theorem, not a sign theorem"
 
 
@@ -102,6 +102,28 @@ def test_select_branch_moves_sup_and_limit_claims():
     assert (th.claim.kind, th.claim.other) == ("sup_upper", "Rational(1, 4)")
     lim = K.continuous_at_end(expr=x ** 2, var=x, c=ZERO, width=Q(1, 2))
     assert K.select_branch(lim, sturm(1 - x, x, 0, Q(1, 2)), expr=P).claim.other == "Integer(0)"
+
+
+def test_select_branch_reads_an_expression_of_a_piecewise():
+    # 2 - P on (0, 1) is 2 - x^2 (piecewise_fold), > 0 there
+    gap = K.select_branch(sturm(2 - x ** 2, x, 0, 1, True, True), sturm(1 - x, x, 0, 1, True, True), expr=2 - P)
+    assert gap.claim.expr == sp.srepr(2 - P)
+    assert why(K.select_branch, sturm(2 - x ** 2, x, 0, 1, True, True), sturm(1 - x, x, 0, 1, True, True),
+               expr=3 - P) == "the premise is not about the branch that applies on I"
+
+
+def test_widen_a_lower_bound_of_the_sup():
+    low = K.sup_lower_by_point(expr=x ** 2, var=x, point=Q(1, 2), bound=Q(1, 4), lo=ZERO, hi=sp.Integer(1),
+                               lo_open=True, hi_open=True)
+    wide = K.widen(low, lo=ZERO, hi=sp.oo, lo_open=False, hi_open=True)
+    assert (wide.claim.lo, wide.claim.hi, wide.claim.lo_open, wide.claim.other) == ("Integer(0)", "oo", False,
+                                                                                    "Rational(1, 4)")
+    # a smaller interval may miss the point where the bound is reached
+    assert why(K.widen, low, lo=Q(1, 2), hi=sp.oo, lo_open=False, hi_open=True) == "J does not contain I"
+    assert K.widen(low, lo=ZERO, hi=sp.Integer(1), lo_open=True, hi_open=True).claim == low.claim
+    assert why(K.widen, low, lo=ZERO, hi=Q(3, 4), lo_open=True, hi_open=True) == "J does not contain I"
+    assert why(K.widen, sturm(x, x, 1, 2), lo=ZERO, hi=sp.Integer(3), lo_open=False, hi_open=False) == \
+        "premise must be a sup_lower theorem"
 
 
 # ------------------------------------------------------------ join_at_point

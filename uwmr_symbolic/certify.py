@@ -632,19 +632,20 @@ def _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work):
         return None, str(exc)
 
 
-def piecewise_sign_theorem(P, ends, var, want=1):
-    """want*P > 0 on (0, oo) for a Piecewise P as one kernel theorem, or
-    (None, why).  `ends`: the search's boundaries 0 < b1 < ... < oo.  On
-    each open piece the branch that applies is signed (`on_branch`);
-    `join_at_point` joins the pieces through P's value at each boundary."""
-    if not isinstance(P, sp.Piecewise):
+def piecewise_sign_theorem(P, ends, var, want=1, strict=True):
+    """want*P > 0 (>= 0 if not strict) on (0, oo) for P a Piecewise or an
+    expression of one, as one kernel theorem, or (None, why).  `ends`: the
+    search's boundaries 0 < b1 < ... < oo.  On each open piece the branch
+    that applies is signed (`on_branch`); `join_at_point` joins the pieces
+    through P's value at each boundary."""
+    if not isinstance(sp.piecewise_fold(P), sp.Piecewise):
         return None, f"{P} is not a Piecewise"
     prover = Prover(WORK * (len(ends) - 1))
     try:
         whole = None
         for lo, hi in zip(ends, ends[1:]):
             I = (lo, hi, True, True)
-            th = on_branch(P, var, I, prover, lambda g: prover.prove(g, var, I, want, True))
+            th = on_branch(P, var, I, prover, lambda g: prover.prove(g, var, I, want, strict))
             whole = th if whole is None else _rule(K.join_at_point, whole, th)
         return whole, ""
     except (NoProof, K.KernelError, Undefined) as exc:
@@ -652,13 +653,13 @@ def piecewise_sign_theorem(P, ends, var, want=1):
 
 
 def on_branch(P, var, I, prover, about):
-    """A kernel claim about the Piecewise P on I from `about(G)`, a theorem
-    about the branch G that applies on I: the relations r - l of P's
-    conditions are signed on I (strict, the sign at an inner point), the
-    kernel picks the branch from them (`select_branch`)."""
+    """A kernel claim about P (a Piecewise or an expression of one) on I from
+    `about(G)`, a theorem about the branch G that applies on I: the
+    relations r - l of P's conditions are signed on I (strict, the sign at
+    an inner point), the kernel picks the branch from them (`select_branch`)."""
     signs = _relation_signs(P, var, I, prover)
     have = {(t.claim.expr, t.claim.want) for t in signs}
-    branch = K._branch(P, lambda d, w, st: K._sign_ok(K._const_sign(d), w, st) if not d.has(var)
+    branch = K._branch(K._folded(P), lambda d, w, st: K._sign_ok(K._const_sign(d), w, st) if not d.has(var)
                        else (K._s(d), w) in have)
     return _rule(K.select_branch, about(branch), *signs, expr=P)
 
@@ -669,11 +670,54 @@ def _relation_signs(P, var, I, prover):
     lo, hi = I[:2]
     inner = _mid(lo, hi) if hi != OO else lo + 1
     signs = []
-    for d in dict.fromkeys(r.rhs - r.lhs for _, c in P.args for r in _relationals(c)):
+    for d in dict.fromkeys(r.rhs - r.lhs for _, c in K._folded(P).args for r in _relationals(c)):
         if d.has(var):
             box = evaluate(d, var, inner, inner, bits=128)
             signs.append(prover.prove(d, var, I, 1 if box.positive() else -1, True))
     return signs
+
+
+def piecewise_sup_theorems(F, c, point, var, ends):
+    """kf = sup F' = c on (0, oo) for a Piecewise F (`ends` its boundaries):
+    the conclusions of `sup_theorems` -- F' > 0, c - F' >= 0, sup F' >= c
+    (the value at `point` or the limit at oo of the branch there, `widen`ed
+    to (0, oo)) -- then F and F' continuous on (0, oo); or (None, why)."""
+    dF = sp.diff(F, var)
+    try:
+        positive, why = piecewise_sign_theorem(dF, ends, var)
+        upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False)
+                      if positive else (None, why))
+        if upper is None:
+            raise NoProof(why)
+        upper = _rule(K.sup_upper_by_sign, upper, expr=dF, bound=c)
+        lower = _rule(K.widen, _piecewise_lower(dF, c, point, var, ends), lo=0, hi=OO, lo_open=True, hi_open=True)
+        return [positive, upper, lower, _continuous(F, var, ends), _continuous(dF, var, ends)], ""
+    except (NoProof, K.KernelError, Undefined) as exc:
+        return None, str(exc)
+
+
+def _piecewise_lower(dF, c, point, var, ends):
+    """sup F' >= c on a piece: F'(point) = c when the point lies inside a
+    piece, else (a boundary point, or c approached) c = lim F' at oo."""
+    prover = Prover(WORK)
+    inside = [(a, b) for a, b in zip(ends, ends[1:]) if point is not None and K._lt(a, point) and K._lt(point, b)]
+    for lo, hi in inside:
+        try:
+            return on_branch(dF, var, (lo, hi, True, True), prover, lambda g: _rule(
+                K.sup_lower_by_point, expr=g, var=var, point=point, bound=c, lo=lo, hi=hi, lo_open=True, hi_open=True))
+        except (NoProof, K.KernelError, Undefined):
+            pass
+    R = _beyond(ends[-2])
+    lower = on_branch(dF, var, (R, OO, False, True), prover, lambda g: _rule(
+        K.sup_lower_from_limit, limit_at_infinity(g, var), lo=R, lo_open=False))
+    if K.parse(lower.claim.other) != sp.sympify(c):
+        raise NoProof(f"F' tends to {lower.claim.other}, not {c}")
+    return lower
+
+
+def _beyond(b):
+    """A power of 4 greater than b >= 0 (the start of a tail past every boundary)."""
+    return sp.Integer(4 ** math.ceil(math.log(max(float(b), 1) + 1, 4)))
 
 
 def continuity_theorem(P, ends, var):
@@ -710,7 +754,7 @@ def growth_theorems(F, var, last=None) -> list:
     Piecewise F, `last` is the start of its last piece: R lies beyond it and
     the divergence of the branch there becomes F's (`on_branch`)."""
     if isinstance(F, sp.Piecewise):
-        R = sp.Integer(4 ** math.ceil(math.log(max(float(last), 1) + 1, 4)))
+        R = _beyond(last)
         prover = Prover(WORK)
         try:
             return [on_branch(F, var, (R, OO, False, True), prover, lambda g: _diverges(g, var, (R,))[0])]
@@ -878,9 +922,10 @@ def limit_at_infinity(e, var, w=sp.Rational(1, 4)):
     return lim
 
 
-def sup_upper_theorem(e, bound, var):
-    """E <= bound on (0, oo) (`sup_upper_by_sign` over bound - E >= 0), or None."""
-    parts, _ = sign_theorems(sp.sympify(bound) - e, var, 0, OO, strict=False)
+def sup_upper_theorem(e, bound, var, gap=None):
+    """E <= bound on (0, oo) (`sup_upper_by_sign` over bound - E >= 0, a
+    theorem `gap` or one proved here), or None."""
+    parts = [gap] if gap is not None else sign_theorems(sp.sympify(bound) - e, var, 0, OO, strict=False)[0]
     if parts is None:
         return None
     try:

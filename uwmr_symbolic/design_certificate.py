@@ -12,7 +12,10 @@ the property: that the claim proved is about this f —
 * P3: the claims are F(s) > 0 on (0, oo) with F(s) = f(s, 0);
 * P5: the claims are F'(s) > 0 on (0, oo) with F' = sympy.diff(F, s);
 
-(for a Piecewise F the link is left to the search and listed as such).  A
+for a Piecewise F the claims are about the Piecewise itself (`select_branch`
+and the other Piecewise rules of the kernel), and wherever the argument
+differentiates F they include F and F' continuous on (0, oo); claims about
+its pieces only leave the split of F to the search, and say so.  A
 refuted property may carry a witness record and kernel theorems about it
 (`link_refutation`: the claims must be exactly the negation the property
 needs about this f at the witness).  A property whose kernel part checks,
@@ -128,7 +131,9 @@ def _link_p1_p6(name, F, claims) -> list[str]:
     functions continuous where defined (the rules accept no others), so F' is
     continuous on (0, oo); with F'(0+) = 0 the gradient F'(|e|) e/|e| of
     f = F(|e|) is continuous on R^2, and |df/de2| <= U: P1.
-    P6: F' > 0 and F'(s)/s <= k with k > 0: h = F'/(k s) lies in [0, 1]."""
+    P6: F' > 0 and F'(s)/s <= k with k > 0: h = F'/(k s) lies in [0, 1].
+    (For a Piecewise F the continuity comes from a pair of claims instead:
+    see `_link`.)"""
     dF = sp.diff(F, S)
     on = (sp.srepr(S), "Integer(0)", "oo", True, True)
     got = [(c.kind, c.expr, (c.var, c.lo, c.hi, c.lo_open, c.hi_open)) for c in claims]
@@ -185,26 +190,26 @@ def _link(name, f, theorems, exact=None) -> list[str]:
     if name not in ("P1", "P3", "P5", "P6", "P7", "P8", "kf"):
         return []
     F = _profile(f)
-    piecewise = F.has(sp.Piecewise)
-    if piecewise and name not in ("P3", "P5", "P7", "P8"):
-        return ["the kernel's claims are about the pieces of F (the split of F is the search's)"]
-    if name == "kf":
-        return _link_kf(sp.diff(F, S), exact, claims)
-    if name in ("P1", "P6"):
-        return _link_p1_p6(name, F, claims)
-    if name in ("P7", "P8"):
-        return _link_smooth(name, F, claims)
     dF = sp.diff(F, S)
     want = F if name == "P3" else dF
-    if piecewise and not (claims and claims[0].expr == sp.srepr(want)):
+    piecewise = F.has(sp.Piecewise)
+    if piecewise and name not in ("P7", "P8") and not (claims and claims[0].expr == sp.srepr(want)):
         return ["the kernel's claims are about the pieces of F (the split of F is the search's)"]
     gap = []
-    if name == "P5" and piecewise:           # F, F' continuous on (0, oo): F' is F's derivative there
-        whole = [("continuous", sp.srepr(e), sp.srepr(S), "Integer(0)", "oo") for e in (F, dF)]
-        if [(c.kind, c.expr, c.var, c.lo, c.hi) for c in claims[3:]] == whole:
-            claims = claims[:3]
+    if piecewise and name in ("P1", "P5", "P6", "kf"):
+        # F and F' continuous on (0, oo): F is C^1 with derivative F' across the boundaries too
+        # (a continuous function whose derivative off finitely many points extends continuously)
+        pair = [("continuous", sp.srepr(e), sp.srepr(S), "Integer(0)", "oo") for e in (F, dF)]
+        if [(c.kind, c.expr, c.var, c.lo, c.hi) for c in claims[-2:]] == pair:
+            claims = claims[:-2]
         else:
             gap = ["F' exists at the boundaries of F's pieces (the search's)"]
+    if name == "kf":
+        return gap + _link_kf(dF, exact, claims)
+    if name in ("P1", "P6"):
+        return gap + _link_p1_p6(name, F, claims)
+    if name in ("P7", "P8"):
+        return _link_smooth(name, F, claims)
     ok = len(claims) in (1, 2, 3) and claims[0].kind == "sign" and (
         claims[0].expr, claims[0].var, claims[0].lo, claims[0].hi, claims[0].lo_open, claims[0].hi_open,
         claims[0].want, claims[0].strict) == (sp.srepr(want), sp.srepr(S), "Integer(0)", "oo", True, True, 1, True)

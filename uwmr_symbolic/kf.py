@@ -17,7 +17,7 @@ from .interval import Interval
 from .limits import NoLimit, rational_parts
 from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
-from .certify import sign_theorems, sup_theorems
+from .certify import piecewise_sup_theorems, sign_theorems, sup_theorems
 from .univariate import (certified_inside, enclose_sup, exact_sign, exact_value, limit_at_infinity, prepare,
                          prove_sign)
 
@@ -246,20 +246,25 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
                           f"interval branch and bound: sup {name} in [{float(lower):.10g}, {float(upper):.10g}]")
 
 
-def _with_kernel(cert: SupCertificate, pieces) -> SupCertificate:
-    """cert with the kernel's theorems of an exact kf = sup F' on one piece
-    (F' > 0, F' <= kf, sup F' >= kf), or the reason it has none."""
-    if cert.exact is None or len(pieces) != 1 or cert.attained is None:
-        cert.unchecked = ["kf: " + ("no exact value" if cert.exact is None else
-                                    "Piecewise profile" if len(pieces) != 1 else "attainment undecided")]
+def _with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
+    """cert with the kernel's theorems of an exact kf = sup F' (F' > 0,
+    F' <= kf, sup F' >= kf; for a Piecewise F also F and F' continuous), or
+    the reason it has none."""
+    pieces = analysis.profile.pieces
+    if cert.exact is None or cert.attained is None:
+        cert.unchecked = ["kf: " + ("no exact value" if cert.exact is None else "attainment undecided")]
         return cert
-    dF = sp.diff(pieces[0].expr, S)
     point = None
     if cert.attained:
-        point = next((p for v, p in _candidates(dF, pieces[0].lo, pieces[0].hi)
+        point = next((p for piece in pieces for v, p in _candidates(sp.diff(piece.expr, S), piece.lo, piece.hi)
                       if p is not None and exact_sign(v - cert.exact) == 0), None)
-    positive, why = sign_theorems(dF, S, 0, sp.oo)
-    theorems, why = sup_theorems(dF, cert.exact, point, S, positive[0]) if positive else (None, why)
+    if len(pieces) == 1:
+        dF = sp.diff(pieces[0].expr, S)
+        positive, why = sign_theorems(dF, S, 0, sp.oo)
+        theorems, why = sup_theorems(dF, cert.exact, point, S, positive[0]) if positive else (None, why)
+    else:
+        theorems, why = piecewise_sup_theorems(analysis.F, cert.exact, point, S,
+                                               [*(p.lo for p in pieces), sp.oo])
     cert.kernel, cert.unchecked = (theorems, []) if theorems else ([], [f"kf = {cert.exact} (kernel: {why})"])
     return cert
 
@@ -273,7 +278,7 @@ def certify_kf(analysis) -> SupCertificate:
         return pos
     if all(prove_sign(e, S, p.lo, p.hi, want=1, strict=False, budget=1500).proved
            for e, p in zip(dF, pieces)):
-        return _with_kernel(pos, pieces)      # F' >= 0 everywhere: sup |F'| = sup F'
+        return _with_kernel(pos, analysis)    # F' >= 0 everywhere: sup |F'| = sup F'
     neg = certify_sup(analysis, [-e for e in dF], "-F'")
     if neg.upper is None:
         return neg

@@ -294,12 +294,12 @@ def verify_p1(a: Analysis) -> Verdict:
     if kf.upper is None:
         return unknown(f"C^1 proved, but no finite bound on |df/de2| found: {kf.reason}")
     v = proved(f"{c1.reason}; kf = sup|F'| in [{float(kf.lower):.9g}, {float(kf.upper):.9g}]")
-    F = _single_formula(a)
-    if F is None or not kf.kernel:
+    if not kf.kernel:
         return _lemmas(v, v, "f is C^1 with kf finite (continuity and the bound are the search's)")
     positive, upper = kf.kernel[:2]     # F' > 0 and F' <= kf on (0, oo), from `certify.sup_theorems`
-    return _lemmas(v, v, "f is C^1 (continuity at the origin)",
-                   lambda: [positive, *origin, upper] if (origin := origin_theorems(F, S)) else [])
+    return _lemmas(v, v, "f is C^1 (continuity at the origin)",     # (Piecewise: F, F' continuous at the end)
+                   lambda: [positive, *origin[:2], upper, *origin[2:]]
+                   if (origin := origin_theorems(a.F, S, _ends(a))) else [])
 
 
 def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
@@ -466,10 +466,21 @@ def _p6_theorems(a: Analysis, k) -> list:
     would need a cover of ever finer boxes near the maximum)."""
     F = _single_formula(a)
     if F is None:
-        return []
+        return _piecewise_p6(a, k)
     dF = sp.diff(F, S)
     positive, _ = sign_theorems(dF, S, 0, sp.oo)
     return [positive[0], upper] if positive and (upper := sup_upper_theorem(dF / S, k, S)) else []
+
+
+def _piecewise_p6(a: Analysis, k) -> list:
+    """`_p6_theorems` for a Piecewise F: F' > 0 and k - F'/s >= 0 through
+    its branches, then F and F' continuous on (0, oo)."""
+    dF, ends = sp.diff(a.F, S), _ends(a)
+    positive, _ = piecewise_sign_theorem(dF, ends, S)
+    gap, _ = piecewise_sign_theorem(k - dF / S, ends, S, strict=False) if positive else (None, "")
+    upper = sup_upper_theorem(dF / S, k, S, gap) if gap else None
+    whole = origin_theorems(a.F, S, ends)[2:] if upper else []
+    return [positive, upper, *whole] if whole else []
 
 
 def round_up(x: Fraction, digits: int = 7) -> sp.Rational:

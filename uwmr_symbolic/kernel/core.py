@@ -550,8 +550,8 @@ def _join_at_point(left, right):
     _need((l.expr, l.var, l.want) == (r.expr, r.var, r.want), "different claims")
     _need(l.hi == r.lo, "not adjacent")
     e, var, m = l.e(), l.x(), parse(l.hi)
-    if isinstance(e, sp.Piecewise):
-        e = _branch(e, lambda d, want, strict: _sign_ok(_const_sign(d.subs(var, m)), want, strict))
+    if e.has(sp.Piecewise):
+        e = _branch(_folded(e), lambda d, want, strict: _sign_ok(_const_sign(d.subs(var, m)), want, strict))
     v = e.subs(var, m)
     try:
         box = evaluate(e, var, m, m, bits=256)          # also: E defined at m
@@ -617,6 +617,14 @@ def _holds(cond, truth, sign_ok) -> bool:
     return sign_ok(d, want, strict) if truth else sign_ok(d, -want, not strict)
 
 
+def _folded(e):
+    """e as one Piecewise (SymPy's `piecewise_fold`: operations applied to a
+    Piecewise are applied to each branch, the conditions kept)."""
+    pw = sp.piecewise_fold(e)
+    _need(isinstance(pw, sp.Piecewise), lambda: f"{e} is not a Piecewise")
+    return pw
+
+
 def _branch(pw, sign_ok):
     """The branch of the Piecewise pw that applies wherever the facts
     `sign_ok` hold: its condition holds there and every earlier one fails."""
@@ -629,19 +637,19 @@ def _branch(pw, sign_ok):
 
 def select_branch(thm, *signs, expr):
     """A claim (sign, sup, limit at the left end, divergence) about G on I
-    gives the same claim about the Piecewise P when G is the branch of P
-    that applies at every point of I (`_branch`): P = G on I.  Each
+    gives the same claim about P (a Piecewise, or an expression of one:
+    `_folded`) when G is the branch of P that applies at every point of I
+    (`_branch`): P = G on I.  Each
     condition is decided by sign theorems (`signs`) about its r - l on
     intervals containing I, or by the exact sign of a constant r - l."""
     c = thm.claim
     _need(c.kind in ("sign", "sup_upper", "sup_lower", "limit", "diverges"), "premise has no interval")
     var = c.x()
-    pw = _expr(expr, var)
-    _need(isinstance(pw, sp.Piecewise), "expr is not a Piecewise")
+    e = _expr(expr, var)
     lo, hi = c.ends()
-    _need(_branch(pw, _decided_by(signs, var, lo, hi, c.lo_open, c.hi_open)) == c.e(),
+    _need(_branch(_folded(e), _decided_by(signs, var, lo, hi, c.lo_open, c.hi_open)) == c.e(),
           "the premise is not about the branch that applies on I")
-    return dataclasses.replace(c, expr=_s(pw))
+    return dataclasses.replace(c, expr=_s(e))
 select_branch = rule("sympy-core")(select_branch)
 
 
@@ -661,7 +669,7 @@ def _decided_by(signs, var, lo, hi, lo_open, hi_open):
 
 
 def continuous_piecewise(*signs, expr, var, cuts):
-    """The Piecewise P is continuous on (0, oo).  cuts 0 < b1 < ... < bn
+    """P (a Piecewise, or an expression of one: `_folded`) is continuous on (0, oo).  cuts 0 < b1 < ... < bn
     exact: on each open piece between 0, the cuts and oo the branch that
     applies (`_branch`, by the sign theorems `signs`) is defined, hence
     continuous, for every x > 0 (`defined_for_positive`); at each cut b the
@@ -669,8 +677,8 @@ def continuous_piecewise(*signs, expr, var, cuts):
     (their differences at b are exactly 0: SymPy's evaluation, or polynomial
     arithmetic with pi and the like as symbols; defined at b by Arb).
     Claim kind "continuous" on (0, oo)."""
-    pw = _expr(expr, var)
-    _need(isinstance(pw, sp.Piecewise), "expr is not a Piecewise")
+    e = _expr(expr, var)
+    pw = _folded(e)
     ends = [sp.Integer(0), *(_cuts(var, cuts) if len(cuts) > 1 else [_number(c) for c in cuts]), OO]
     _interval(var, 0, OO, True, True)
     _need(len(cuts) == 0 or _lt(0, ends[1]), "cuts must be positive")
@@ -686,7 +694,7 @@ def continuous_piecewise(*signs, expr, var, cuts):
             _need(evaluate(at - left, var, b, b, bits=256).hull().contains(0), "Arb disagrees with exact 0")
         except Undefined as exc:
             raise KernelError(f"P undefined at {b}: {exc}") from None
-    return Claim("continuous", _s(pw), _s(var), _s(0), "oo", True, True)
+    return Claim("continuous", _s(e), _s(var), _s(0), "oo", True, True)
 continuous_piecewise = rule("arb", "sympy-core", "sympy-polys")(continuous_piecewise)
 
 
@@ -1242,6 +1250,19 @@ def sup_lower_from_limit(lim, *, lo, lo_open):
     _interval(var, lo, OO, lo_open, True)
     return Claim("sup_lower", c.expr, c.var, _s(lo), "oo", bool(lo_open), True, other=c.other)
 sup_lower_from_limit = rule()(sup_lower_from_limit)
+
+
+def widen(thm, *, lo, hi, lo_open, hi_open):
+    """sup over I of E >= L gives sup over any J containing I of E >= L."""
+    c = thm.claim
+    _need(c.kind == "sup_lower", "premise must be a sup_lower theorem")
+    var = c.x()
+    lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
+    a, b = c.ends()
+    _need(_within(Claim("", "", c.var, _s(lo), _s(hi), lo_open, hi_open), a, b, c.lo_open, c.hi_open),
+          "J does not contain I")
+    return dataclasses.replace(c, lo=_s(lo), hi=_s(hi), lo_open=bool(lo_open), hi_open=bool(hi_open))
+widen = rule("arb")(widen)
 
 
 def sup_upper_of_abs(up, down):
