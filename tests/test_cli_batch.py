@@ -413,3 +413,38 @@ def test_the_kernel_line_says_what_the_certificate_rechecks(tmp_path):
     entry.write_text(json.dumps(data))
     again = json.loads(run([designs[0], "--format", "json"], tmp_path / "cache").stdout)
     assert again["cached"] is False and again["kernel"] == one["kernel"]
+
+
+def test_kernel_only_counts_what_the_kernel_rechecked(tmp_path):
+    """--kernel-only: r09 (F = u - sin u, u = sqrt(1 + s^2) - 1) has P5
+    refuted with a kernel-checked witness (F' = 0 exactly at u = 2 pi) and
+    P1, P3, P6 proved by the search alone (its sin tail has no kernel
+    lemma): those three become unknown, the exit status stays 1 from P5.
+    Design 1 is kernel-checked throughout and keeps exit 0."""
+    designs = [ROOT / "designs/design1_jiang.py", ROOT / "tests/designs/r09_slope_zero.py"]
+    proc = run([*designs, "--format", "json", "--kernel-only"], tmp_path / "cache")
+    one, slope = json.loads(proc.stdout)
+    assert one["exit_status"] == 0 and {v["verdict"] for v in one["properties"].values()} == {"proved"}
+    verdicts = {p: v["verdict"] for p, v in slope["properties"].items()}
+    assert verdicts == {"P1": "unknown", "P2": "proved", "P3": "unknown", "P4": "proved", "P5": "refuted",
+                        "P6": "unknown", "P7": "proved", "P8": "proved"}
+    assert slope["properties"]["P3"]["reason"].startswith("not re-checked by the kernel (the search says proved: ")
+    assert slope["exit_status"] == 1 and proc.returncode == 1
+
+
+def test_kernel_only_exit_status():
+    """All proved by the search, P3 and kf not by the kernel: inconclusive
+    (3); a gain check failing on a kf the kernel did not certify does not
+    refute (3), on a kernel-checked kf it does (1)."""
+    d = {"properties": {p: {"verdict": "proved", "reason": "r"} for p in PROPS}, "exit_status": 0,
+         "kernel": {"checked": [p for p in PROPS if p != "P3"], "search": ["P3", "kf"]},
+         "gains": {"circle": {"V_ok": True, "W_ok": True}}}
+    out = batch.kernel_only(d)
+    assert out["exit_status"] == 3 and out["properties"]["P3"]["verdict"] == "unknown"
+    assert d["properties"]["P3"]["verdict"] == "proved"            # the input is not changed
+    failing = dict(d, exit_status=1, gains={"circle": {"V_ok": True, "W_ok": False}})
+    assert batch.kernel_only(failing)["exit_status"] == 3
+    checked = dict(failing, kernel={"checked": [*PROPS, "kf"], "search": []})
+    assert batch.kernel_only(checked)["exit_status"] == 1
+    assert batch.kernel_only(dict(checked, exit_status=0, gains={}))["exit_status"] == 0
+    assert batch.kernel_only({"error": "x", "exit_status": 2}) == {"error": "x", "exit_status": 2}

@@ -203,3 +203,29 @@ def test_piecewise_certificate_round_trips_and_tampering_is_rejected():
     cert["theorems"][-1]["data"]["expr"] = {"$": jump}
     with pytest.raises(CertificateError, match="the branches differ at 1"):
         check_certificate(cert)
+
+
+# ------------------------------------------------------------ identities of Piecewise expressions
+
+def test_piecewise_identities_branch_by_branch():
+    """f(x, y) = F(sqrt(x^2 + y^2)) for a Piecewise f written with 4x^2 + 4y^2
+    where F gives 4(x^2 + y^2): the same conditions, each pair of branches
+    equal as rational functions.  A different condition (< 1/4 against <= 1/4)
+    or branch is refused at once, without SymPy's simplify (a Piecewise cannot
+    be cross-checked by the evaluator)."""
+    X, Y = sp.symbols("x y", real=True)
+    rho = X ** 2 + Y ** 2
+    f = sp.Piecewise(((4 * X ** 2 + 4 * Y ** 2) / (2 * (4 * rho + 1)), rho < Q(1, 4)), (sp.log(1 + rho), True))
+    F = sp.Piecewise((4 * s ** 2 / (2 * (4 * s ** 2 + 1)), s ** 2 < Q(1, 4)), (sp.log(1 + s ** 2), True))
+    rhs = F.subs(s, sp.sqrt(rho))
+    assert f != rhs
+    th = K.identity_plane(lhs=f, rhs=rhs, x=X, y=Y)
+    assert th.assumptions == {"sympy-core", "sympy-polys"}
+    other = rhs.subs(sp.Rational(1, 4), sp.Rational(1, 3))
+    assert why(K.identity_plane, lhs=f, rhs=other, x=X, y=Y) == "the Piecewise sides differ in a condition or a branch"
+    G = sp.Piecewise((x ** 2 - 1, x < 1), (x + 1, True))
+    H = sp.Piecewise(((x - 1) * (x + 1), x < 1), (1 + x, True))
+    assert K.identity(lhs=G, rhs=H, var=x, lo=ZERO, hi=sp.Integer(2), lo_open=False, hi_open=False).claim.kind == \
+        "identity"
+    assert why(K.identity, lhs=G, rhs=H + 1, var=x, lo=ZERO, hi=sp.Integer(2), lo_open=False, hi_open=False) == \
+        "the Piecewise sides differ in a condition or a branch"

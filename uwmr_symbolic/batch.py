@@ -23,7 +23,7 @@ from .cache import ResultCache, design_key, source_hash
 from .report import design_fields, to_dict
 from .properties import PROPERTIES
 from .verdict import unknown
-from .verify import Report, load_with_limit, verify_loaded
+from .verify import EXIT_INCONCLUSIVE, EXIT_OK, EXIT_REFUTED, Report, load_with_limit, verify_loaded
 
 GLOB_CHARS = set("*?[")
 
@@ -73,6 +73,29 @@ def kernel_summary(checked) -> dict:
     ok = [c.name for c in checked if c.kernel_checked or c.refutation_checked]
     return {"checked": ok, "search": [c.name for c in checked if c.status in ("proved", "refuted") and
                                       c.name not in ok]}
+
+
+def kernel_only(d: dict) -> dict:
+    """The result counting only what the kernel re-checked (`--kernel-only`):
+    a verdict resting on the search alone (`kernel_summary`) becomes
+    "unknown", a gain check of bound (10) counts only with a kernel-checked
+    kf, and the exit status follows (0 only when every property and kf are
+    kernel-checked and the gains pass)."""
+    if d.get("error") is not None or "kernel" not in d:
+        return d
+    search, checked = set(d["kernel"]["search"]), set(d["kernel"]["checked"])
+    props = {p: dict(v, verdict="unknown", reason=f"not re-checked by the kernel (the search says {v['verdict']}: "
+                                                   f"{v['reason']})") if p in search else v
+             for p, v in d["properties"].items()}
+    verdicts = {v["verdict"] for v in props.values()}
+    gains_fail = "kf" in checked and any(not g["V_ok"] or g["W_ok"] is False for g in d["gains"].values())
+    if "refuted" in verdicts or gains_fail:
+        status = EXIT_REFUTED
+    elif d["exit_status"] == EXIT_OK and verdicts == {"proved"} and "kf" in checked:
+        status = EXIT_OK
+    else:
+        status = EXIT_INCONCLUSIVE
+    return dict(d, properties=props, exit_status=status)
 
 
 def rechecks(hit: dict, design) -> bool:

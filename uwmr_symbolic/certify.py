@@ -640,7 +640,7 @@ def piecewise_sign_theorem(P, ends, var, want=1, strict=True):
     through P's value at each boundary."""
     if not isinstance(sp.piecewise_fold(P), sp.Piecewise):
         return None, f"{P} is not a Piecewise"
-    prover = Prover(WORK * (len(ends) - 1))
+    prover = Prover(WORK)
     try:
         whole = None
         for lo, hi in zip(ends, ends[1:]):
@@ -726,7 +726,7 @@ def continuity_theorem(P, ends, var):
     between the search's `ends` 0 < b1 < ... < oo), or None."""
     if not isinstance(P, sp.Piecewise):
         return None
-    prover = Prover(WORK * (len(ends) - 1))
+    prover = Prover(WORK)
     try:
         signs = [t for lo, hi in zip(ends, ends[1:]) for t in _relation_signs(P, var, (lo, hi, True, True), prover)]
         return _rule(K.continuous_piecewise, *signs, expr=P, var=var, cuts=list(ends[1:-1]))

@@ -1009,12 +1009,30 @@ def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
     if _rational_over_q(d, var):
         _need(sp.cancel(sp.together(d)) == 0, "the rational functions differ")
         return claim, ("sympy-polys",)
-    if _zero_when_generalized(d, var):
+    if _zero_when_generalized(d, var) or _same_branches(l, r, (var,)):
         return claim, ("sympy-polys",)
     _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
     _cross_check(d, var, lo, hi)
     return claim, ("sympy-simplify", "arb")
 identity = rule("sympy-core")(identity)
+
+
+def _same_branches(l, r, variables) -> bool:
+    """l and r (`piecewise_fold`ed) are Piecewise with the same conditions in
+    the same order and, branch by branch, the same expression or an exact
+    identity (as in `identity`): then l = r wherever both are defined.  A
+    difference with a Piecewise that is not of this form is refused at once
+    (KernelError): the evaluator cannot cross-check a Piecewise, so no
+    simplification could be accepted either."""
+    if not (l - r).has(sp.Piecewise):
+        return False
+    l, r = sp.piecewise_fold(l), sp.piecewise_fold(r)
+    _need(isinstance(l, sp.Piecewise) and isinstance(r, sp.Piecewise) and len(l.args) == len(r.args)
+          and all(cl == cr and (el == er or (sp.cancel(sp.together(el - er)) == 0 if _rational_over_q(el - er, *variables)
+                                             else _zero_when_generalized(el - er, *variables)))
+                  for (el, cl), (er, cr) in zip(l.args, r.args)),
+          "the Piecewise sides differ in a condition or a branch")
+    return True
 
 
 _PLANE_POINTS = [(sp.Rational(p), sp.Rational(q)) for p, q in
@@ -1046,7 +1064,7 @@ def identity_plane(*, lhs, rhs, x, y):
     if _rational_over_q(d, x, y):
         _need(sp.cancel(sp.together(d)) == 0, "the rational functions differ")
         return claim, ("sympy-polys",)
-    if _zero_when_generalized(d, x, y):
+    if _zero_when_generalized(d, x, y) or _same_branches(l, r, (x, y)):
         return claim, ("sympy-polys",)
     _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
     _vanishes_at([(f"({p}, {q})", lambda p=p, q=q: evaluate(d.subs({x: p, y: q}), bits=CROSS_CHECK_BITS))
