@@ -684,6 +684,7 @@ def piecewise_sup_theorems(F, c, point, var, ends):
     to (0, oo)) -- then F and F' continuous on (0, oo); or (None, why)."""
     dF = sp.diff(F, var)
     try:
+        whole = [_continuous(F, var, ends), _continuous(dF, var, ends)]    # first: cheap, and often what fails
         positive, why = piecewise_sign_theorem(dF, ends, var)
         upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False)
                       if positive else (None, why))
@@ -691,7 +692,7 @@ def piecewise_sup_theorems(F, c, point, var, ends):
             raise NoProof(why)
         upper = _rule(K.sup_upper_by_sign, upper, expr=dF, bound=c)
         lower = _rule(K.widen, _piecewise_lower(dF, c, point, var, ends), lo=0, hi=OO, lo_open=True, hi_open=True)
-        return [positive, upper, lower, _continuous(F, var, ends), _continuous(dF, var, ends)], ""
+        return [positive, upper, lower, *whole], ""
     except (NoProof, K.KernelError, Undefined) as exc:
         return None, str(exc)
 
