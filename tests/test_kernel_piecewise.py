@@ -229,3 +229,10 @@ def test_piecewise_identities_branch_by_branch():
         "identity"
     assert why(K.identity, lhs=G, rhs=H + 1, var=x, lo=ZERO, hi=sp.Integer(2), lo_open=False, hi_open=False) == \
         "the Piecewise sides differ in a condition or a branch"
+
+
+def test_continuous_piecewise_cuts_are_finite_positive_and_increasing():
+    facts = [sturm(1 - s ** 2, s, 0, 1, lo_open=True, hi_open=True), sturm(1 - s ** 2, s, 1, sp.oo, True, True, -1)]
+    for cuts, msg in (([sp.oo], "cut points are finite"), ([ZERO], "cut points not increasing: 0, 0"),
+                      ([sp.Integer(2), sp.Integer(1)], "cut points not increasing: 2, 1")):
+        assert why(K.continuous_piecewise, *facts, expr=C, var=s, cuts=cuts) == msg

@@ -684,7 +684,7 @@ def piecewise_sup_theorems(F, c, point, var, ends):
     to (0, oo)) -- then F and F' continuous on (0, oo); or (None, why)."""
     dF = sp.diff(F, var)
     try:
-        whole = [_continuous(F, var, ends), _continuous(dF, var, ends)]    # first: cheap, and often what fails
+        whole = continuity_pair(F, var, ends)       # first: cheap, and often what fails
         positive, why = piecewise_sign_theorem(dF, ends, var)
         upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False)
                       if positive else (None, why))
@@ -800,7 +800,7 @@ def origin_theorems(F, var, ends=None) -> list:
         try:
             out = [_limit_at_zero(F, var, w), _limit_at_zero(d, var, w)]
             if isinstance(F, sp.Piecewise):
-                out += [_continuous(F, var, ends), _continuous(d, var, ends)]
+                out += continuity_pair(F, var, ends)
         except NoProof:
             continue
         if out[1].claim.other == K._s(0):
@@ -829,6 +829,12 @@ def smoothness_theorems(F, var, order, ends=None) -> list:
         if limits[0].claim.other == K._s(0):
             return out + limits + whole
     return []
+
+
+def continuity_pair(F, var, ends) -> list:
+    """F and F' continuous on (0, oo) (for a Piecewise F: the links' proof
+    that F' is F's derivative across the boundaries too); NoProof if not shown."""
+    return [_continuous(F, var, ends), _continuous(sp.diff(F, var), var, ends)]
 
 
 def _continuous(e, var, ends):

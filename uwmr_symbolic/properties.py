@@ -28,9 +28,8 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .design import Design
 from .interval import Interval, IntervalFunction, Undefined
-from .certify import (REDUCTION, growth_theorems, origin_theorems, origin_value_theorems, piecewise_sign_theorem,
-                      radial_theorems,
-                      sign_theorems, smoothness_theorems, sup_upper_theorem)
+from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, origin_theorems, origin_value_theorems,
+                      piecewise_sign_theorem, radial_theorems, sign_theorems, smoothness_theorems, sup_upper_theorem)
 from .kf import KfCertificate, certify_kf, certify_sup, scale
 from .limits import NoLimit, limit_right
 from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
@@ -330,7 +329,7 @@ def _piece_theorems(a: Analysis, k: int, what: str) -> dict:
     with the boundaries left to the search."""
     prof = a.profile
     if len(prof.pieces) > 1:
-        whole, _ = piecewise_sign_theorem(sp.diff(a.F, S, k), [*(p.lo for p in prof.pieces), sp.oo], S)
+        whole, _ = piecewise_sign_theorem(sp.diff(a.F, S, k), _ends(a), S)
         if whole is not None and whole.claim.strict:
             return {"kernel": [whole], "unchecked": []}
     kernel, unchecked = [], []
@@ -479,8 +478,10 @@ def _piecewise_p6(a: Analysis, k) -> list:
     positive, _ = piecewise_sign_theorem(dF, ends, S)
     gap, _ = piecewise_sign_theorem(k - dF / S, ends, S, strict=False) if positive else (None, "")
     upper = sup_upper_theorem(dF / S, k, S, gap) if gap else None
-    whole = origin_theorems(a.F, S, ends)[2:] if upper else []
-    return [positive, upper, *whole] if whole else []
+    try:
+        return [positive, upper, *continuity_pair(a.F, S, ends)] if upper else []
+    except NoProof:
+        return []
 
 
 def round_up(x: Fraction, digits: int = 7) -> sp.Rational:

@@ -669,8 +669,8 @@ def _decided_by(signs, var, lo, hi, lo_open, hi_open):
 
 
 def continuous_piecewise(*signs, expr, var, cuts):
-    """P (a Piecewise, or an expression of one: `_folded`) is continuous on (0, oo).  cuts 0 < b1 < ... < bn
-    exact: on each open piece between 0, the cuts and oo the branch that
+    """P (a Piecewise, or an expression of one: `_folded`) is continuous on
+    (0, oo).  cuts 0 < b1 < ... < bn finite and exact: on each open piece between 0, the cuts and oo the branch that
     applies (`_branch`, by the sign theorems `signs`) is defined, hence
     continuous, for every x > 0 (`defined_for_positive`); at each cut b the
     branches of both sides and the branch that applies at b have one value
@@ -679,9 +679,9 @@ def continuous_piecewise(*signs, expr, var, cuts):
     Claim kind "continuous" on (0, oo)."""
     e = _expr(expr, var)
     pw = _folded(e)
-    ends = [sp.Integer(0), *(_cuts(var, cuts) if len(cuts) > 1 else [_number(c) for c in cuts]), OO]
+    _need(isinstance(cuts, list), "cuts must be a list")
+    ends = [*(_cuts(var, [0, *cuts]) if cuts else [sp.Integer(0)]), OO]
     _interval(var, 0, OO, True, True)
-    _need(len(cuts) == 0 or _lt(0, ends[1]), "cuts must be positive")
     branches = [_branch(pw, _decided_by(signs, var, a, b, True, True)) for a, b in zip(ends, ends[1:])]
     for g in branches:
         _need(defined_for_positive(g, var), lambda: f"{g} not shown defined for all {var} > 0")
