@@ -302,3 +302,14 @@ def test_piecewise_profiles_are_kernel_checked_through_their_branches(refuted_ce
     bad["properties"]["P8"]["kernel"]["conclusions"] = bad["properties"]["P8"]["kernel"]["conclusions"][:-1]
     with pytest.raises(DC.CertificateError, match="P8: the kernel's conclusions are not the ones P8 needs"):
         DC.check(bad)
+
+
+def test_kf_of_a_constant_derivative_is_kernel_checked(refuted_certs):
+    """r07, f = |e|: F(s) = s, F' = 1 everywhere, kf = 1.  The gap 1 - F' is
+    the zero polynomial: weakly signed (Sturm), and sup F' >= 1 comes from
+    F' -> 1 at infinity (the candidate point s = 0 lies outside (0, oo))."""
+    kf = _by_name(DC.check(refuted_certs["r07_norm"]))["kf"]
+    assert kf.kernel_checked
+    kernel = refuted_certs["r07_norm"]["properties"]["kf"]["kernel"]
+    lower = kernel["theorems"][kernel["conclusions"][2]]["claim"]
+    assert (lower["kind"], lower["lo"], lower["lo_open"], lower["other"]) == ("sup_lower", "Integer(0)", True, "Integer(1)")

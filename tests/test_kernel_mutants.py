@@ -225,7 +225,9 @@ def test_sign_by_sturm_claims_and_messages():
     assert why(sturm, x, x, -sp.sqrt(2), 1) == "Sturm needs rational ends"
     assert why(sturm, 1 / x, x, 1, 2) == "not a polynomial: 1/x"
     assert why(sturm, sp.sqrt(2) * x, x, 1, 2) == "coefficients are not rational"
-    assert why(sturm, I0, x, 1, 2) == "the zero polynomial"
+    assert why(sturm, I0, x, 1, 2) == "the zero polynomial has no strict sign"
+    zero = sturm(I0, x, 1, sp.oo, hi_open=True, want=-1, strict=False)          # 0 <= 0 on [1, oo)
+    assert (zero.claim.expr, zero.claim.want, zero.claim.strict, zero.claim.hi) == ("Integer(0)", -1, False, "oo")
     assert why(sturm, x ** 2 - 2, x, 1, 2) == "factor x**2 - 2 has a root in the interval"
     # roots at both ends of a closed interval, strict: both counted
     assert why(sturm, x * (x - 1), x, 0, 1, lo_open=True) == "factor x**2 - x has a root in the interval"

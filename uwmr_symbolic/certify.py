@@ -871,6 +871,7 @@ def origin_value_theorems(value) -> list:
 def sup_theorems(dF, c, point, var, positive):
     """kf = sup F' = c on (0, oo) (bound (10)) as kernel theorems, or (None,
     reason).  `point`: where c is attained (None: approached as s -> oo);
+    the upper bound is weak, so that F' = c on a whole interval is allowed;
     `positive`: a kernel theorem F' > 0 on (0, oo), so that sup |F'| = sup F'.
     Upper: c - F' >= 0, by sign lemmas on both sides of the touching point
     joined there (`join_at_zero`), then `sup_upper_by_sign`.  Lower: the value
@@ -880,14 +881,14 @@ def sup_theorems(dF, c, point, var, positive):
     try:
         gap = sp.sympify(c) - dF
         zeros = (point,) if point is not None and point != 0 else ()
-        parts, why = sign_theorems(gap, var, 0, OO, zeros=zeros, strict=not zeros, work=WORK)
+        parts, why = sign_theorems(gap, var, 0, OO, zeros=zeros, strict=False, work=WORK)
         if parts is None:
             raise NoProof(f"{c} - F' >= 0: {why}")
         upper = parts[0] if not zeros else _rule(K.join_at_zero, *parts)
         upper = _rule(K.sup_upper_by_sign, upper, expr=dF, bound=c)
-        if point is not None:
+        if zeros:                   # (attained at s = 0 only: a sup over (0, oo), so a limit below)
             lower = _rule(K.sup_lower_by_point, expr=dF, var=var, point=point, bound=c, lo=0, hi=OO,
-                          lo_open=point != 0, hi_open=True)
+                          lo_open=True, hi_open=True)
         else:
             w = sp.Rational(1, 4)
             try:

@@ -356,7 +356,9 @@ def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
     except sp.PolynomialError:
         raise KernelError(f"not a polynomial: {e}") from None
     _need(poly.domain.is_ZZ or poly.domain.is_QQ, "coefficients are not rational")
-    _need(not poly.is_zero, "the zero polynomial")
+    if poly.is_zero:                            # 0 >= 0 and 0 <= 0 everywhere, never > 0
+        _need(not strict, "the zero polynomial has no strict sign")
+        return _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict)
     coeff, factors = poly.sqf_list()
     lo_f, hi_f = (None if lo == -OO else lo), (None if hi == OO else hi)
     for q, m in factors:
