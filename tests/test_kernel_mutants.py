@@ -1376,3 +1376,31 @@ def test_sign_of_sum_groups_messages():
                want=1) == "premises share a term"
     grouped = K.sign_of_sum(sturm(2 - x, x, -1, 1), sq, expr=x ** 2 - x + 2, want=1)
     assert grouped.claim == sign(x ** 2 - x + 2, x, -1, 1) and grouped.assumptions == ARB | {"sympy-polys"}
+
+
+def test_sign_below_sup_of_sin_and_cos_is_weak_at_the_maximum():
+    """sin and cos reach their maximum 1: 1 - sin(Y) >= 0 only weakly,
+    2 - cos(Y) > 0 strictly, 1/2 - sin(Y) has no sign."""
+    B = K.sign_below_sup
+    pos = sturm(s, s, 0, 2, lo_open=True)
+    weak = B(pos, expr=1 - sp.sin(s), bounded=sp.sin(s))
+    assert weak.claim == sign(1 - sp.sin(s), s, 0, 2, True, False, strict=False)
+    assert B(pos, expr=2 - 3 * sp.cos(s) / 2, bounded=sp.cos(s)).claim == sign(2 - 3 * sp.cos(s) / 2, s, 0, 2, True, False)
+    assert why(B, pos, expr=Q(1, 2) - sp.sin(s), bounded=sp.sin(s)) == "needs m < 0 and a + m sup G >= 0"
+    assert why(B, pos, expr=1 + sp.sin(s), bounded=sp.sin(s)) == "needs m < 0 and a + m sup G >= 0"
+
+
+def test_sign_of_sum_counts_the_premises_constants():
+    """E = x^2 + 3 on [-1, 1] from x^2 + 1 > 0: E = (x^2 + 1) + 2, strict.
+    From x^2 + 5 > 0 the rest would be 3 - 5 = -2: refused.  And
+    sqrt(x^2 + 1) - 1 - sin(x) from sqrt(x^2 + 1) - 2 > 0 and 1 - sin(x) >= 0
+    (their constants -2 and 1 make up E's -1 exactly: r = 0)."""
+    three = K.sign_of_sum(sturm(x ** 2 + 1, x, -1, 1), expr=x ** 2 + 3, want=1)
+    assert three.claim == sign(x ** 2 + 3, x, -1, 1)
+    assert why(K.sign_of_sum, sturm(x ** 2 + 5, x, -1, 1), expr=x ** 2 + 3, want=1) == \
+        "the constant terms -2 have the wrong sign"
+    r = sp.sqrt(s ** 2 + 1)
+    far = K.sign_by_cover(expr=r - 2, var=s, cuts=[I3, sp.Integer(4)], want=1)
+    bound = K.sign_below_sup(sturm(s, s, 3, 4), expr=1 - sp.sin(s), bounded=sp.sin(s))
+    th = K.sign_of_sum(far, bound, expr=r - 1 - sp.sin(s), want=1)
+    assert th.claim == sign(r - 1 - sp.sin(s), s, 3, 4)

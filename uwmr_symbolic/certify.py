@@ -347,7 +347,7 @@ class Prover:
                             premises.append(sub(t, want, False))
                 return _rule(K.sign_of_sum, *premises, expr=e, want=want)
             except NoProof as exc:
-                if exc is self.spent or want < 0 or not e.has(*_INCREASING):
+                if exc is self.spent or want < 0 or not e.has(*_INCREASING, sp.sin, sp.cos):
                     raise
                 try:
                     return self._below_sup(e, var, I, strict, depth, near)
@@ -389,11 +389,12 @@ class Prover:
 
     def _below_sup(self, e, var, I, strict, depth, near):
         """e > 0 where e is a + m G(Y), G bounded above by sup G (tanh, erf,
-        atan; sinh(Y)/cosh(Y) read as tanh(Y)): `sign_below_sup`; or where a
+        atan, sin, cos; sinh(Y)/cosh(Y) read as tanh(Y)): `sign_below_sup`; or where a
         term t = -M G(Y) of e, M >= 0, gives e = (e - t + t|G=sup G) +
-        M (sup G - G(Y)), each part signed."""
+        M (sup G - G(Y)), each part signed (sup G - G(Y) > 0 for tanh, erf,
+        atan; >= 0 only for sin and cos, whose maximum is attained)."""
         form = _with_tanh(e)
-        for g in sorted((g for g in form.atoms(*K._SUP) if g.has(var)), key=sp.count_ops):
+        for g in sorted((g for g in form.atoms(*K._SUP, *K._MAX) if g.has(var)), key=sp.count_ops):
             a = form.xreplace({g: 0})
             m = form.xreplace({g: 1}) - a
             if not (a.has(var) or m.has(var)) and a + m * g == form:
@@ -401,20 +402,22 @@ class Prover:
                 for w in (1, -1):                # any sign of Y on I shows Y defined there
                     try:
                         th = _rule(K.sign_below_sup, self.prove(y, var, I, w, False, depth, near), expr=form, bounded=g)
+                        if strict and not th.claim.strict:
+                            raise NoProof(f"{form} reaches 0")
                         break
                     except NoProof:
                         continue
                 else:
                     continue
                 return th if form == e else self._rewritten_by(e, form, th, var, I)
-            top = K._SUP[type(g)]
+            top = {**K._SUP, **K._MAX}[type(g)]
             try:
                 return self._split_term(e, form, g, lambda t: [form - t + t.xreplace({g: top}), (-t / g) * (top - g)],
-                                        var, I, (False, strict), depth, near)
+                                        var, I, (False, strict) if type(g) in K._SUP else (strict, False), depth, near)
             except NoProof as exc:
                 if exc is self.spent:
                     raise
-        raise NoProof(f"no bound of a tanh, erf or atan makes {e} positive")
+        raise NoProof(f"no bound of a tanh, erf, atan, sin or cos makes {e} positive")
 
     def _sum_of_parts(self, e, parts, var, I, stricts, depth, near):
         """e > 0 from parts, positive (strict as asked) unless constant, that
@@ -512,7 +515,7 @@ class Prover:
             tail = _rule(K.sign_on_tail, th, ident, expr=e, var=var, R=R)
         except NoProof as exc:
             last = exc
-        if tail is None and e.has(sp.tanh, sp.sinh, sp.erf, sp.atan):
+        if tail is None and e.has(sp.tanh, sp.sinh, sp.erf, sp.atan, sp.sin, sp.cos):
             try:                                # bounded functions beyond R, by the sign rules in s
                 tail = self._structure(e, var, (R, OO, False, True), want, strict, depth)
             except NoProof as exc:

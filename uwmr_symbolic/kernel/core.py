@@ -434,25 +434,29 @@ sign_of_product = rule("arb", "sympy-core")(sign_of_product)
 def sign_of_sum(*premises, expr, want):
     """E = t1 + ... + tk.  The premises (same interval I) have sign want and
     are about disjoint groups of the terms: each premise's expression is a
-    term of E or a sum of terms of E.  Every term in no group is a constant,
-    and the sum of those constants has sign want or is 0 (exact / Arb).  E
-    has sign want, strictly if some premise or that sum does strictly."""
+    term of E or a sum of terms of E, plus constants c_p.  Every term in no
+    group is a constant; E = (sum of the premises) + r with r = (those
+    constants) - (sum of the c_p), and r has sign want or is 0 (exact /
+    Arb).  E has sign want, strictly if some premise or r does strictly."""
     _need(want in (1, -1), "want = +-1 needed")
     var = _signs_on_one_interval(premises).x()
     _need(all(p.claim.want == want for p in premises), "a premise has the other sign")
     e = _expr(expr, var)
     _need(e.is_Add, lambda: f"not a sum: {e}")
-    grouped = set()
+    grouped, taken = set(), sp.Integer(0)
     for p in premises:
         for t in sp.Add.make_args(p.claim.e()):
+            if not t.has(var):
+                taken += t
+                continue
             _need(t not in grouped, "premises share a term")
             grouped.add(t)
     _need(set(grouped) <= set(e.args), "a premise matches no term")
     rest = [t for t in e.args if t not in grouped]
     for t in rest:
         _need(not t.has(var), lambda: f"no premise for term {t}")
-    s = _const_sign(sp.Add(*rest))
-    _need(s in (0, want), lambda: f"the constant terms {sp.Add(*rest)} have the wrong sign")
+    s = _const_sign(sp.Add(*rest) - taken)
+    _need(s in (0, want), lambda: f"the constant terms {sp.Add(*rest) - taken} have the wrong sign")
     strict = s == want or any(p.claim.strict for p in premises)
     c = premises[0].claim
     lo, hi = c.ends()
@@ -494,24 +498,28 @@ sign_through_increasing = rule("sympy-core")(sign_through_increasing)
 
 
 _SUP = {sp.tanh: sp.Integer(1), sp.erf: sp.Integer(1), sp.atan: sp.pi / 2}   # sup over R, never attained
+_MAX = {sp.sin: sp.Integer(1), sp.cos: sp.Integer(1)}                       # max over R, attained
 
 
 def sign_below_sup(arg, *, expr, bounded):
     """a + m G(Y) > 0 on I for exact constants a, m < 0 with a + m sup G >= 0,
     G = tanh or erf (sup 1) or atan (sup pi/2): G(y) < sup G for every real
-    y.  `bounded` is G(Y); the premise, any sign theorem about Y on I, shows
-    Y defined there."""
+    y.  For G = sin or cos (max 1, attained) a + m G(Y) >= a + m, so the
+    claim is strict only when a + m > 0, else weak.  `bounded` is G(Y); the
+    premise, any sign theorem about Y on I, shows Y defined there."""
     c = arg.claim
     _is_sign(arg)
     var = c.x()
     e, g = _expr(expr, var), _expr(bounded, var)
-    _need(type(g) in _SUP and c.expr == _s(g.args[0]), "bounded must be G(Y) and the premise about Y")
+    top = {**_SUP, **_MAX}.get(type(g))
+    _need(top is not None and c.expr == _s(g.args[0]), "bounded must be G(Y) and the premise about Y")
     a = e.xreplace({g: 0})
     m = e.xreplace({g: 1}) - a
     _need(not (a.has(var) or m.has(var)) and a + m * g == e, lambda: f"{e} is not a + m {g}")
-    _need(_const_sign(m) < 0 and _const_sign(a + m * _SUP[type(g)]) >= 0, "needs m < 0 and a + m sup G >= 0")
+    margin = _const_sign(a + m * top)
+    _need(_const_sign(m) < 0 and margin >= 0, "needs m < 0 and a + m sup G >= 0")
     lo, hi = c.ends()
-    return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, 1, True)
+    return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, 1, type(g) in _SUP or margin > 0)
 sign_below_sup = rule("arb", "sympy-core")(sign_below_sup)
 
 
