@@ -8,6 +8,8 @@
 * C = s^2/2 for s^2 <= 1, s - 1/2 otherwise is continuous (1/2 = 1/2 at 1);
   J = s^2/2 for s^2 <= 1, s otherwise jumps (1/2 vs 1) at s = 1.
 """
+import dataclasses
+
 import pytest
 import sympy as sp
 
@@ -116,8 +118,8 @@ def test_widen_a_lower_bound_of_the_sup():
     low = K.sup_lower_by_point(expr=x ** 2, var=x, point=Q(1, 2), bound=Q(1, 4), lo=ZERO, hi=sp.Integer(1),
                                lo_open=True, hi_open=True)
     wide = K.widen(low, lo=ZERO, hi=sp.oo, lo_open=False, hi_open=True)
-    assert (wide.claim.lo, wide.claim.hi, wide.claim.lo_open, wide.claim.other) == ("Integer(0)", "oo", False,
-                                                                                    "Rational(1, 4)")
+    assert wide.claim == dataclasses.replace(low.claim, lo="Integer(0)", hi="oo", lo_open=False, hi_open=True)
+    assert wide.assumptions == low.assumptions
     # a smaller interval may miss the point where the bound is reached
     assert why(K.widen, low, lo=Q(1, 2), hi=sp.oo, lo_open=False, hi_open=True) == "J does not contain I"
     assert K.widen(low, lo=ZERO, hi=sp.Integer(1), lo_open=True, hi_open=True).claim == low.claim
@@ -163,20 +165,15 @@ C = sp.Piecewise((s ** 2 / 2, s ** 2 <= 1), (s - Q(1, 2), True))
 def test_continuous_piecewise_accepts_a_continuous_join():
     facts = [sturm(1 - s ** 2, s, 0, 1, lo_open=True, hi_open=True), sturm(1 - s ** 2, s, 1, sp.oo, True, True, -1)]
     th = K.continuous_piecewise(*facts, expr=C, var=s, cuts=[sp.Integer(1)])
-    assert (th.claim.kind, th.claim.expr, th.claim.lo, th.claim.hi) == ("continuous", sp.srepr(C), "Integer(0)", "oo")
-    # equal values at the cut only by polynomial arithmetic with pi as a symbol
-    E = sp.Piecewise(((s + 1) ** 2 / (sp.pi ** 2 + 2 * sp.pi + 1), s <= sp.pi), (1, True))
-    d = sp.pi - s
-    th = K.continuous_piecewise(sturm_free(d, 0, sp.pi, 1), sturm_free(d, sp.pi, sp.oo, -1), expr=E, var=s,
-                                cuts=[sp.pi])
+    assert th.claim == K.Claim("continuous", sp.srepr(C), sp.srepr(s), "Integer(0)", "oo", True, True)
+    assert th.assumptions == {"arb", "sympy-core", "sympy-polys"}
+    # equal values at the cut only by polynomial arithmetic with pi as a symbol:
+    # (1 + pi)^2 / (pi^2 + 2 pi + 1), which SymPy leaves as it is
+    E = sp.Piecewise(((s + sp.pi) ** 2 / (sp.pi ** 2 + 2 * sp.pi + 1), s <= 1), (1, True))
+    assert E.args[0][0].subs(s, 1) != 1
+    cut = [sturm(1 - s, s, 0, 1, True, True), sturm(1 - s, s, 1, sp.oo, True, True, -1)]
+    th = K.continuous_piecewise(*cut, expr=E, var=s, cuts=[sp.Integer(1)])
     assert "sympy-polys" in th.assumptions
-
-
-def sturm_free(d, lo, hi, want):
-    """A strict sign of d on the open (lo, hi), from the proposer (d = pi - s
-    has an irrational coefficient: Sturm does not apply)."""
-    from uwmr_symbolic.certify import Prover
-    return Prover().prove(d, s, (sp.sympify(lo), sp.sympify(hi), True, True), want, True)
 
 
 def test_continuous_piecewise_refuses_jumps_points_and_gaps():
@@ -236,3 +233,94 @@ def test_continuous_piecewise_cuts_are_finite_positive_and_increasing():
     for cuts, msg in (([sp.oo], "cut points are finite"), ([ZERO], "cut points not increasing: 0, 0"),
                       ([sp.Integer(2), sp.Integer(1)], "cut points not increasing: 2, 1")):
         assert why(K.continuous_piecewise, *facts, expr=C, var=s, cuts=cuts) == msg
+
+
+# ------------------------------------------------------------ the truth of a condition, relation by relation
+
+def _facts(*known):
+    """sign_ok from facts (d, want, strict); a strict fact gives the weak one too."""
+    have = set(known)
+    return lambda d, w, st: (d, w, True) in have or (not st and (d, w, False) in have)
+
+
+D = 1 - x           # r - l for every relation x REL 1 below
+
+
+@pytest.mark.parametrize("cond, truth, known, holds", [
+    (x < 1, True, [(D, 1, True)], True), (x < 1, True, [(D, 1, False)], False),
+    (x < 1, False, [(D, -1, False)], True), (x < 1, False, [(D, 1, True)], False),
+    (x <= 1, True, [(D, 1, False)], True), (x <= 1, True, [(D, -1, True)], False),
+    (x <= 1, False, [(D, -1, True)], True), (x <= 1, False, [(D, -1, False)], False),
+    (x > 1, True, [(D, -1, True)], True), (x > 1, True, [(D, -1, False)], False),
+    (x > 1, False, [(D, 1, False)], True), (x > 1, False, [(D, -1, True)], False),
+    (x >= 1, True, [(D, -1, False)], True), (x >= 1, True, [(D, 1, True)], False),
+    (x >= 1, False, [(D, 1, True)], True), (x >= 1, False, [(D, 1, False)], False),
+    (sp.Eq(x, 1), True, [(D, 1, False), (D, -1, False)], True), (sp.Eq(x, 1), True, [(D, 1, False)], False),
+    (sp.Eq(x, 1), False, [(D, -1, True)], True), (sp.Eq(x, 1), False, [(D, 1, True)], True),
+    (sp.Eq(x, 1), False, [(D, 1, False)], False),
+    (sp.Ne(x, 1), True, [(D, 1, True)], True), (sp.Ne(x, 1), True, [(D, 1, False)], False),
+    (sp.Ne(x, 1), False, [(D, 1, False), (D, -1, False)], True), (sp.Ne(x, 1), False, [(D, -1, True)], False),
+    (sp.true, True, [], True), (sp.true, False, [], False), (sp.false, False, [], True), (sp.false, True, [], False),
+    (sp.Or(x < 1, x > 3), True, [(D, 1, True)], True), (sp.Or(x < 1, x > 3), False, [(D, -1, False)], False),
+    (sp.And(x < 1, x > 3), False, [(3 - x, 1, False)], True), (sp.And(x < 1, x > 3), True, [(D, 1, True)], False),
+    (sp.Not(x < 1), True, [(D, -1, False)], True), (sp.Not(x < 1), False, [(D, 1, True)], True),
+    (sp.Not(x < 1), True, [(D, 1, True)], False),
+])
+def test_the_truth_of_a_condition(cond, truth, known, holds):
+    from uwmr_symbolic.kernel.core import _holds
+    assert _holds(cond, truth, _facts(*known)) is holds
+
+
+def test_a_condition_that_is_no_relation_is_refused():
+    from uwmr_symbolic.kernel.core import _holds
+    p = sp.Symbol("p")
+    with pytest.raises(KernelError, match="condition p is not a relation"):
+        _holds(p, True, _facts())
+
+
+def test_select_branch_needs_the_variable_and_the_sign_of_the_premise():
+    inner = sturm(x ** 2, x, 0, 1, True, True)
+    t_fact = sturm(1 - s, s, 0, 1, True, True)                      # about s, not x
+    assert why(K.select_branch, inner, t_fact, expr=P) == "condition x < 1 not decided"
+    wrong_sign = sturm(x - 1, x, 0, 1, True, True, want=-1)         # x - 1 < 0 is not a fact about 1 - x
+    assert why(K.select_branch, inner, wrong_sign, expr=P) == "condition x < 1 not decided"
+
+
+def test_select_branch_moves_a_divergence_and_a_lower_sup():
+    above = sturm(Q(1, 2) + 0 * s, s, 4, sp.oo, False, True)        # F' - 1/2 = 1/2 >= 0 on [4, oo) for F = s
+    div = K.diverges_by_growth(K.weaken(above, lo=sp.Integer(4), hi=sp.oo, lo_open=False, hi_open=True,
+                                        strict=False), expr=s, var=s, R=sp.Integer(4), rate="linear", k=Q(1, 2))
+    Ps = sp.Piecewise((s, s > 1), (0, True))
+    th = K.select_branch(div, sturm(1 - s, s, 4, sp.oo, False, True, want=-1), expr=Ps)
+    assert (th.claim.kind, th.claim.expr, th.claim.lo, th.claim.hi) == ("diverges", sp.srepr(Ps), "Integer(4)", "oo")
+    low = K.sup_lower_by_point(expr=s, var=s, point=sp.Integer(5), bound=sp.Integer(5), lo=sp.Integer(4), hi=sp.oo,
+                               lo_open=False, hi_open=True)
+    up = K.select_branch(low, sturm(1 - s, s, 4, sp.oo, False, True, want=-1), expr=Ps)
+    assert (up.claim.kind, up.claim.other) == ("sup_lower", "Integer(5)")
+    wide = K.widen(up, lo=ZERO, hi=sp.oo, lo_open=False, hi_open=True)
+    assert wide.claim == dataclasses.replace(up.claim, lo="Integer(0)", lo_open=False)
+
+
+def test_join_at_point_is_weak_when_a_side_is():
+    e = x ** 2 + 1
+    j = K.join_at_point(sturm(e, x, 0, 1, hi_open=True), sturm(e, x, 1, 2, lo_open=True, strict=False))
+    assert (j.claim.strict, j.claim.lo, j.claim.hi, j.claim.lo_open, j.claim.hi_open) == (
+        False, "Integer(0)", "Integer(2)", False, False)
+    neg = -e
+    jn = K.join_at_point(sturm(neg, x, 0, 1, hi_open=True, want=-1), sturm(neg, x, 1, 2, lo_open=True, want=-1))
+    assert (jn.claim.want, jn.claim.strict) == (-1, True)
+    assert why(K.join_at_point, sturm(e, x, 0, 1, hi_open=True), sturm(e, x, 2, 3, lo_open=True)) == "not adjacent"
+    assert why(K.join_at_point, sturm(x, x, -1, 0, hi_open=True, want=-1), sturm(x, x, 0, 1, lo_open=True)) == \
+        "different claims"
+
+
+def test_piecewise_identity_needs_as_many_branches():
+    G = sp.Piecewise((x ** 2 - 1, x < 1), (x + 1, True))
+    three = sp.Piecewise(((x - 1) * (x + 1), x < 1), (1 + x, x < 5), (0, True))
+    assert why(K.identity, lhs=G, rhs=three, var=x, lo=ZERO, hi=sp.Integer(2), lo_open=False, hi_open=False) == \
+        "the Piecewise sides differ in a condition or a branch"
+    # a branch equal only once tanh is read as sinh/cosh (the generalised route)
+    T1 = sp.Piecewise((sp.tanh(x), x < 1), (x, True))
+    T2 = sp.Piecewise((sp.sinh(x) / sp.cosh(x), x < 1), (x, True))
+    assert K.identity(lhs=T1, rhs=T2, var=x, lo=ZERO, hi=sp.Integer(2), lo_open=False,
+                      hi_open=False).assumptions == {"sympy-core", "sympy-polys"}
