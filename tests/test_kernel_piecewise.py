@@ -324,3 +324,18 @@ def test_piecewise_identity_needs_as_many_branches():
     T2 = sp.Piecewise((sp.sinh(x) / sp.cosh(x), x < 1), (x, True))
     assert K.identity(lhs=T1, rhs=T2, var=x, lo=ZERO, hi=sp.Integer(2), lo_open=False,
                       hi_open=False).assumptions == {"sympy-core", "sympy-polys"}
+
+
+def test_not_of_a_conjunction_no_branch_and_an_open_end_of_widen():
+    from uwmr_symbolic.kernel.core import _holds
+    # SymPy keeps Not(And(...)) (a Not of one relation becomes the opposite relation)
+    assert _holds(sp.Not(sp.And(x < 1, x > 3)), True, _facts((3 - x, 1, False)))
+    assert not _holds(sp.Not(sp.And(x < 1, x > 3)), True, _facts((D, 1, True)))
+    none = sp.Piecewise((x, x > 5), (0, x > 6))                    # on [0, 1] both conditions are false
+    inner = sturm(x + 1, x, 0, 1)
+    assert why(K.select_branch, inner, sturm(5 - x, x, 0, 1), sturm(6 - x, x, 0, 1), expr=none) == "no branch applies"
+    # sup over [0, 1] >= 1/4 does not give the sup over (0, 2]: 0 is not in it
+    low = K.sup_lower_by_point(expr=x + 1, var=x, point=ZERO, bound=sp.Integer(1), lo=ZERO, hi=sp.Integer(1),
+                               lo_open=False, hi_open=False)
+    assert why(K.widen, low, lo=ZERO, hi=sp.Integer(2), lo_open=True, hi_open=False) == "J does not contain I"
+    assert K.widen(low, lo=ZERO, hi=sp.Integer(2), lo_open=False, hi_open=False).claim.hi == "Integer(2)"
