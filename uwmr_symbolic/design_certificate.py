@@ -33,6 +33,7 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .certify import REDUCTION
 from .kernel.certificate import CertificateError, check_certificate, to_certificate  # noqa: F401 (re-exported)
+from .kernel.core import _TRUE_WHEN            # when a relation l < r (<=, >, >=) holds: the sign of r - l
 from .kernel.parse import ParseError, parse
 from .profile import S
 
@@ -314,10 +315,6 @@ def growing(f, v, order=1, at="oo"):
     e = axis_derivative(f if order == 1 else sp.diff(f, v), v, 1)
     e = e if v == E2 else e / H
     return e if at == "oo" else e.subs(H, 1 / H)
-
-
-_TRUE_WHEN = {sp.StrictLessThan: (1, True), sp.LessThan: (1, False),
-              sp.StrictGreaterThan: (-1, True), sp.GreaterThan: (-1, False)}
 
 
 def branch_conditions(f, b, side, i, w):
