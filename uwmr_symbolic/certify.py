@@ -32,6 +32,7 @@ import sympy as sp
 
 from .kernel import arb, core as K
 from .kernel.arb import Undefined, evaluate
+from .profile import _relationals
 
 OO = sp.oo
 WIDTHS = [sp.Rational(1, 2 ** k) for k in range(1, 16, 2)]
@@ -736,12 +737,6 @@ def continuity_theorem(P, ends, var):
         return _rule(K.continuous_piecewise, *signs, expr=P, var=var, cuts=list(ends[1:-1]))
     except (NoProof, K.KernelError, Undefined):
         return None
-
-
-def _relationals(cond):
-    if isinstance(cond, sp.core.relational.Relational):
-        return [cond]
-    return [r for a in cond.args for r in _relationals(a)] if isinstance(cond, (sp.And, sp.Or, sp.Not)) else []
 
 
 def radial_theorems(f, F, x, y, var) -> list:
