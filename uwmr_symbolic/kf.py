@@ -263,7 +263,7 @@ def _with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
         positive, why = sign_theorems(dF, S, 0, sp.oo)
         theorems, why = sup_theorems(dF, cert.exact, point, S, positive[0]) if positive else (None, why)
     else:
-        theorems, why = piecewise_sup_theorems(analysis.F, cert.exact, point, S, [*(p.lo for p in pieces), sp.oo])
+        theorems, why = piecewise_sup_theorems(analysis.F, cert.exact, point, S, analysis.profile.ends)
     cert.kernel, cert.unchecked = (theorems, []) if theorems else ([], [f"kf = {cert.exact} (kernel: {why})"])
     return cert
 

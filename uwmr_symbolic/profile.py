@@ -200,6 +200,11 @@ class Profile:
     def boundaries(self):
         return [p.lo for p in self.pieces[1:]]
 
+    @property
+    def ends(self):
+        """0, the boundaries, oo (the cuts of the kernel's Piecewise rules)."""
+        return [p.lo for p in self.pieces] + [sp.oo]
+
 
 def _relationals(cond):
     if isinstance(cond, sp.core.relational.Relational):

@@ -228,11 +228,6 @@ def _single_formula(a: Analysis):
     return a.F if len(a.profile.pieces) == 1 and not a.F.has(sp.Piecewise) else None
 
 
-def _ends(a: Analysis) -> list:
-    """0, the boundaries of F's pieces, oo (for the kernel's Piecewise rules)."""
-    return [*(p.lo for p in a.profile.pieces), sp.oo]
-
-
 def _all(parts, what) -> Verdict:
     for v in parts:
         if v.refuted:
@@ -298,7 +293,7 @@ def verify_p1(a: Analysis) -> Verdict:
     positive, upper = kf.kernel[:2]     # F' > 0 and F' <= kf on (0, oo), from `certify.sup_theorems`
     return _lemmas(v, v, "f is C^1 (continuity at the origin)",     # (Piecewise: F, F' continuous at the end)
                    lambda: [positive, *origin[:2], upper, *origin[2:]]
-                   if (origin := origin_theorems(a.F, S, _ends(a))) else [])
+                   if (origin := origin_theorems(a.F, S, a.profile.ends)) else [])
 
 
 def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
@@ -329,7 +324,7 @@ def _piece_theorems(a: Analysis, k: int, what: str) -> dict:
     with the boundaries left to the search."""
     prof = a.profile
     if len(prof.pieces) > 1:
-        whole, _ = piecewise_sign_theorem(sp.diff(a.F, S, k), _ends(a), S)
+        whole, _ = piecewise_sign_theorem(sp.diff(a.F, S, k), a.profile.ends, S)
         if whole is not None and whole.claim.strict:
             return {"kernel": [whole], "unchecked": []}
     kernel, unchecked = [], []
@@ -413,7 +408,7 @@ def verify_p5(a: Analysis) -> Verdict:
     return _lemmas(proved(f"df/de1 tanh(e1) = F'(s) e1 tanh(e1)/s with {pos.reason}; "
                           "df/de1 = 0 on e1 = 0 (F'(0+) = 0 at the origin)"), pos,
                    "df/de1 exists on R^2 (F'(0+) = 0 at the origin)",
-                   lambda: origin_theorems(a.F, S, _ends(a)))
+                   lambda: origin_theorems(a.F, S, a.profile.ends))
 
 
 def verify_p6(a: Analysis) -> Verdict:
@@ -474,7 +469,7 @@ def _p6_theorems(a: Analysis, k) -> list:
 def _piecewise_p6(a: Analysis, k) -> list:
     """`_p6_theorems` for a Piecewise F: F' > 0 and k - F'/s >= 0 through
     its branches, then F and F' continuous on (0, oo)."""
-    dF, ends = sp.diff(a.F, S), _ends(a)
+    dF, ends = sp.diff(a.F, S), a.profile.ends
     positive, _ = piecewise_sign_theorem(dF, ends, S)
     gap, _ = piecewise_sign_theorem(k - dF / S, ends, S, strict=False) if positive else (None, "")
     upper = sup_upper_theorem(dF / S, k, S, gap) if gap else None
@@ -501,7 +496,7 @@ def verify_p7(a: Analysis) -> Verdict:
         return v
     v = proved(v.reason, **v.details)
     return _lemmas(v, v, "f is C^2 (continuity of F'' and F'/s, also at the origin)",
-                   lambda: smoothness_theorems(a.F, S, 2, _ends(a)))
+                   lambda: smoothness_theorems(a.F, S, 2, a.profile.ends))
 
 
 def verify_p8(a: Analysis) -> Verdict:
@@ -528,7 +523,7 @@ def verify_p8(a: Analysis) -> Verdict:
             return unknown(f"F' on ({piece.lo}, {piece.hi}): {cont.reason}")
     v = proved("F'(0+) = 0, and F' is bounded near every s > 0, so F'(s) e2/s -> 0 as e2 -> 0")
     return _lemmas(v, v, "F' bounded near every s > 0 and F'(0+) = 0",
-                   lambda: smoothness_theorems(a.F, S, 1, _ends(a)))
+                   lambda: smoothness_theorems(a.F, S, 1, a.profile.ends))
 
 
 # --------------------------------------------------------------------------
