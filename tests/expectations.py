@@ -107,6 +107,15 @@ EXPECTATIONS = {
         "PPPPPPPP", "1/2", True, {"tight": (True, True)}, 0),
     "tests/designs/v08_atan_integral.py": _e(
         "PPPPPPPP", "pi/2", False, {"loose": (True, True)}, 0),
+    "tests/designs/v09_slope_changes_sign.py": _e(
+        "PPRPRRPP", "1/2", True, {"loose": (True, True)}, 1,
+        witness={"P3": (False, [("nonzero", "e1**2 + e2**2"),
+                                ("nonpositive", "log(1 + e1**2 + e2**2) - 2*(e1**2 + e2**2)/(1 + e1**2 + e2**2)")])}),
+    "tests/designs/v10_elliptic_sqrt.py": _e(
+        "PPPRPPPP", "sqrt(3)", False, {"loose": (True, True)}, 1,
+        witness={"P4": (False, [("nonzero", "e1*e2")])}),
+    "tests/designs/v11_elliptic_sign_change.py": _e(
+        "PPRRRRPP", "1", True, {"loose": (True, True)}, 1),
     "tests/designs/r01_nonradial.py": _e(
         "PPPRPPPP", "sqrt(2)", True, {"loose": (True, True)}, 1,
         witness={"P4": (False, [("nonzero", "e1*e2")])}),

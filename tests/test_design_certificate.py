@@ -313,3 +313,70 @@ def test_kf_of_a_constant_derivative_is_kernel_checked(refuted_certs):
     kernel = refuted_certs["r07_norm"]["properties"]["kf"]["kernel"]
     lower = kernel["theorems"][kernel["conclusions"][2]]["claim"]
     assert (lower["kind"], lower["lo"], lower["lo_open"], lower["other"]) == ("sup_lower", "Integer(0)", True, "Integer(1)")
+
+
+ELLIPTIC = ["r01_nonradial", "v10_elliptic_sqrt", "v11_elliptic_sign_change", "v09_slope_changes_sign"]
+
+
+@pytest.fixture(scope="module")
+def elliptic_certs():
+    return {stem: DC.build(verify_design(ROOT / "tests" / "designs" / f"{stem}.py")) for stem in ELLIPTIC}
+
+
+def test_elliptic_reduction_and_a_slope_of_both_signs_are_kernel_checked(elliptic_certs):
+    """By hand (the design files): r01 f = log(1 + e1^2 + 2 e2^2) = F(sqrt(e1^2 + 2 e2^2)), F = log(1 + s^2),
+    kf = sqrt(2) * 1 ... sup F' = 1 at s = 1, so kf = sqrt(2); v10 sqrt(1 + e1^2 + 3 e2^2) - 1, kf = sqrt(3)
+    (sup F' = 1 at oo); v09 F' = 2s(s^2 - 1)/(1 + s^2)^2 < 0 on (0, 1), sup |F'| = 1/2 at s = 1 + sqrt(2)
+    (and -1/2 at sqrt(2) - 1); v11 the same F with r = 4: kf = 2 * 1/2 = 1.  Every proved verdict is
+    kernel-checked, the elliptic ones through the reduction f = F(sqrt(e1^2 + r e2^2)), r > 0."""
+    ratio = {"r01_nonradial": 2, "v10_elliptic_sqrt": 3, "v11_elliptic_sign_change": 4}
+    for stem, cert in elliptic_certs.items():
+        checks = _by_name(DC.check(cert))
+        proved = [c for c in checks.values() if c.status == "proved"]
+        assert all(c.kernel_checked for c in proved), [c.line() for c in proved if not c.kernel_checked]
+        kernel = cert["properties"]["P8"]["kernel"]
+        first = [kernel["theorems"][i]["claim"] for i in kernel["conclusions"][:2]]
+        if stem in ratio:
+            assert [c["kind"] for c in first] == ["identity_plane", "value_sign"]
+            assert parse(first[1]["expr"]) == ratio[stem] and first[1]["want"] == 1
+        else:
+            assert first[0]["kind"] != "identity_plane"
+    assert parse(elliptic_certs["v10_elliptic_sqrt"]["properties"]["kf"]["exact"]) == sp.sqrt(3)
+    # F' of v09 changes sign: kf rests on |F'| <= 1/2 and sup F' >= 1/2
+    kf = elliptic_certs["v09_slope_changes_sign"]["properties"]["kf"]["kernel"]
+    claims = [kf["theorems"][i]["claim"] for i in kf["conclusions"]]
+    dF = sp.diff(sp.log(1 + S ** 2) - 2 * S ** 2 / (1 + S ** 2), S)
+    assert [(c["kind"], parse(c["expr"]), parse(c["other"])) for c in claims] == [
+        ("sup_upper", sp.Abs(dF), sp.Rational(1, 2)), ("sup_lower", dF, sp.Rational(1, 2))]
+
+
+def test_tampered_reductions_are_not_trusted(elliptic_certs):
+    """The checker, not the certificate, decides whether the reduction to F is
+    established: claims about F without it leave the reduction to the search."""
+    cert = elliptic_certs["r01_nonradial"]
+    # P3 with the reduction's theorems dropped and nothing said to be unchecked
+    bare = copy.deepcopy(cert)
+    entry = bare["properties"]["P3"]
+    entry["kernel"]["conclusions"] = entry["kernel"]["conclusions"][2:]
+    entry["unchecked"] = []
+    c = _by_name(DC.check(bare))["P3"]
+    assert not c.kernel_checked and c.unchecked == [DC.REDUCTION]
+    # r = 3 claimed positive beside the identity for r = 2: not the reduction of this f, and then
+    # the identity is not the claim P5 needs either
+    other = copy.deepcopy(cert)
+    kernel = other["properties"]["P5"]["kernel"]
+    value = kernel["theorems"][kernel["conclusions"][1]]
+    value["claim"]["expr"] = value["data"]["value"]["$"] = "Integer(3)"
+    assert DC.check_certificate(kernel)[1].claim.expr == "Integer(3)"        # the kernel step itself holds
+    with pytest.raises(DC.CertificateError, match="P5: the kernel's conclusion is not dF/ds > 0"):
+        DC.check(other)
+    # kf = sqrt(3) * sup F' is not what the kernel showed (sqrt(2) * 1)
+    wrong = copy.deepcopy(cert)
+    wrong["properties"]["kf"]["exact"] = sp.srepr(sp.sqrt(3))
+    with pytest.raises(DC.CertificateError, match="kf: the kernel's conclusions are not"):
+        DC.check(wrong)
+    # |F'| <= 1/2 with kf = 1 claimed for the radial v09
+    wrong = copy.deepcopy(elliptic_certs["v09_slope_changes_sign"])
+    wrong["properties"]["kf"]["exact"] = "Integer(1)"
+    with pytest.raises(DC.CertificateError, match="kf: the kernel's conclusions are not"):
+        DC.check(wrong)

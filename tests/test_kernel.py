@@ -433,6 +433,28 @@ def test_value_sign():
     rejects(K.value_sign, value=sp.log(-1))
 
 
+def test_zero_at_a_radical_point_is_exact():
+    """1/2 - F' for F' = 2x(x^2 - 1)/(x^2 + 1)^2 is E = (x^2 - 2x - 1)^2/(2(x^2 + 1)^2):
+    0 at m = 1 + sqrt(2), where SymPy's evaluation does not give the literal 0;
+    polynomial arithmetic in sqrt(2) (sqrt(2)^2 = 2) does.  A point off by 10^-30 is refused."""
+    E = (s ** 2 - 2 * s - 1) ** 2 / (2 * (s ** 2 + 1) ** 2)
+    dF = 2 * s * (s ** 2 - 1) / (s ** 2 + 1) ** 2
+    m = 1 + sp.sqrt(2)
+
+    def halves(m):
+        return [K.weaken(K.sign_by_cover(expr=E, var=s, cuts=cuts, want=1, strict=False), lo=cuts[0], hi=cuts[1],
+                         lo_open=cuts[0] == m, hi_open=cuts[1] == m, strict=False)
+                for cuts in ([ZERO, m], [m, sp.Integer(4)])]
+    assert E.subs(s, m) != 0 and dF.subs(s, m) != Q(1, 2)
+    j = K.join_at_zero(*halves(m))
+    assert (j.claim.lo, j.claim.hi, j.claim.strict) == ("Integer(0)", "Integer(4)", False)
+    rejects(K.join_at_zero, *halves(m + Q(1, 10 ** 30)))
+    low = K.sup_lower_by_point(expr=dF, var=s, point=m, bound=Q(1, 2), lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    assert low.claim.other == "Rational(1, 2)"
+    rejects(K.sup_lower_by_point, expr=dF, var=s, point=m, bound=Q(1, 2) + Q(1, 10 ** 30),
+            lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+
+
 def test_sup_rules():
     E = s / (s ** 2 + 1)
     cuts = [ZERO] + [Q(k, 16) for k in range(1, 65)]

@@ -739,10 +739,13 @@ def continuity_theorem(P, ends, var):
         return None
 
 
-def radial_theorems(f, F, x, y, var) -> list:
-    """P4: the kernel's `identity_plane` f(x, y) = F(sqrt(x^2 + y^2)), or []."""
+def radial_theorems(f, F, x, y, var, ratio=1) -> list:
+    """The reduction f(x, y) = F(sqrt(x^2 + r y^2)) as kernel theorems, or []:
+    the kernel's `identity_plane` (P4 when r = 1), and for r != 1 also
+    r > 0 (`value_sign`), the elliptic reduction."""
     try:
-        return [K.identity_plane(lhs=f, rhs=F.subs(var, sp.sqrt(x ** 2 + y ** 2)), x=x, y=y)]
+        ident = K.identity_plane(lhs=f, rhs=F.subs(var, sp.sqrt(x ** 2 + ratio * y ** 2)), x=x, y=y)
+        return [ident] if ratio == 1 else [ident, K.value_sign(value=ratio)]
     except (K.KernelError, Undefined):
         return []
 
@@ -869,37 +872,58 @@ def origin_value_theorems(value) -> list:
 def sup_theorems(dF, c, point, var, positive):
     """kf = sup F' = c on (0, oo) (bound (10)) as kernel theorems, or (None,
     reason).  `point`: where c is attained (None: approached as s -> oo);
-    the upper bound is weak, so that F' = c on a whole interval is allowed;
-    `positive`: a kernel theorem F' > 0 on (0, oo), so that sup |F'| = sup F'.
-    Upper: c - F' >= 0, by sign lemmas on both sides of the touching point
-    joined there (`join_at_zero`), then `sup_upper_by_sign`.  Lower: the value
-    at the point (`sup_lower_by_point`) or the limit of the tail form at
-    t = 0 (`sup_lower_by_limit`)."""
-    from .univariate import T
+    `positive`: a kernel theorem F' > 0 on (0, oo), so that sup |F'| = sup F'
+    (`_sup_pair` gives F' <= c and sup F' >= c)."""
     try:
-        gap = sp.sympify(c) - dF
-        zeros = (point,) if point is not None and point != 0 else ()
-        parts, why = sign_theorems(gap, var, 0, OO, zeros=zeros, strict=False, work=WORK)
-        if parts is None:
-            raise NoProof(f"{c} - F' >= 0: {why}")
-        upper = parts[0] if not zeros else _rule(K.join_at_zero, *parts)
-        upper = _rule(K.sup_upper_by_sign, upper, expr=dF, bound=c)
-        if zeros:                   # (attained at s = 0 only: a sup over (0, oo), so a limit below)
-            lower = _rule(K.sup_lower_by_point, expr=dF, var=var, point=point, bound=c, lo=0, hi=OO,
-                          lo_open=True, hi_open=True)
-        else:
-            w = sp.Rational(1, 4)
-            try:
-                ident = _rule(K.identity, lhs=_tail_form(dF, var), rhs=dF.subs(var, 1 / T), var=T, lo=0, hi=w,
-                              lo_open=True, hi_open=False)
-                lower = _rule(K.sup_lower_by_limit, ident, expr=dF, var=var, width=w, bound=c, lo=0, lo_open=True)
-            except NoProof:
-                lower = _rule(K.sup_lower_from_limit, limit_at_infinity(dF, var), lo=0, lo_open=True)
-                if K.parse(lower.claim.other) != sp.sympify(c):
-                    raise NoProof(f"F' tends to {lower.claim.other}, not {c}") from None
-        return [positive, upper, lower], ""
+        return [positive, *_sup_pair(dF, c, point, var)], ""
     except (NoProof, K.KernelError, Undefined) as exc:
         return None, str(exc)
+
+
+def sup_abs_theorems(dF, c, point, var, side):
+    """kf = sup |F'| = c on (0, oo) when F' changes sign, or (None, reason):
+    E = side F' (side +-1, the side whose sup is c) has E <= c and sup E >= c
+    (`_sup_pair`), -E <= c too, so |F'| <= c (`sup_upper_of_abs`)."""
+    try:
+        upper, lower = _sup_pair(side * dF, c, point, var)
+        other = sup_upper_theorem(-side * dF, c, var)
+        if other is None:
+            raise NoProof(f"{-side * dF} <= {c} not shown")
+        pair = (upper, other) if side == 1 else (other, upper)      # (about F', about -F')
+        return [_rule(K.sup_upper_of_abs, *pair), lower], ""
+    except (NoProof, K.KernelError, Undefined) as exc:
+        return None, str(exc)
+
+
+def _sup_pair(E, c, point, var):
+    """E <= c and sup E >= c on (0, oo).  The upper bound is weak, so that
+    E = c on a whole interval is allowed: c - E >= 0, by sign lemmas on both
+    sides of the touching point joined there (`join_at_zero`), then
+    `sup_upper_by_sign`.  Lower: the value at the point
+    (`sup_lower_by_point`) or the limit of the tail form at t = 0
+    (`sup_lower_by_limit`, else `limit_at_infinity`)."""
+    from .univariate import T
+    gap = sp.sympify(c) - E
+    zeros = (point,) if point is not None and point != 0 else ()
+    parts, why = sign_theorems(gap, var, 0, OO, zeros=zeros, strict=False, work=WORK)
+    if parts is None:
+        raise NoProof(f"{c} - ({E}) >= 0: {why}")
+    upper = parts[0] if not zeros else _rule(K.join_at_zero, *parts)
+    upper = _rule(K.sup_upper_by_sign, upper, expr=E, bound=c)
+    if zeros:                   # (attained at s = 0 only: a sup over (0, oo), so a limit below)
+        lower = _rule(K.sup_lower_by_point, expr=E, var=var, point=point, bound=c, lo=0, hi=OO,
+                      lo_open=True, hi_open=True)
+    else:
+        w = sp.Rational(1, 4)
+        try:
+            ident = _rule(K.identity, lhs=_tail_form(E, var), rhs=E.subs(var, 1 / T), var=T, lo=0, hi=w,
+                          lo_open=True, hi_open=False)
+            lower = _rule(K.sup_lower_by_limit, ident, expr=E, var=var, width=w, bound=c, lo=0, lo_open=True)
+        except NoProof:
+            lower = _rule(K.sup_lower_from_limit, limit_at_infinity(E, var), lo=0, lo_open=True)
+            if K.parse(lower.claim.other) != sp.sympify(c):
+                raise NoProof(f"{E} tends to {lower.claim.other}, not {c}") from None
+    return upper, lower
 
 
 def limit_at_infinity(e, var, w=sp.Rational(1, 4)):

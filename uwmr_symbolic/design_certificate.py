@@ -11,6 +11,10 @@ the property: that the claim proved is about this f —
 * P2: the constant is f(0, 0) and its sign is 0;
 * P3: the claims are F(s) > 0 on (0, oo) with F(s) = f(s, 0);
 * P5: the claims are F'(s) > 0 on (0, oo) with F' = sympy.diff(F, s);
+* P1, P3, P5-P8, kf rest on f = F(|e|): the checker itself requires the
+  kernel-checked P4 identity, or, leading the property's own claims, the
+  elliptic reduction f = F(sqrt(e1^2 + r e2^2)) with r > 0 (`_reduction`);
+  otherwise the reduction is listed as resting on the search;
 
 for a Piecewise F the claims are about the Piecewise itself (`select_branch`
 and the other Piecewise rules of the kernel), and wherever the argument
@@ -66,7 +70,7 @@ def build(report) -> dict:
     if kf is not None and kf.exact is not None:
         props["kf"] = {"status": "proved", "reason": kf.reason, "exact": sp.srepr(kf.exact),
                        "kernel": to_certificate(kf.kernel) if kf.kernel else None,
-                       "unchecked": [REDUCTION, *kf.unchecked]}
+                       "unchecked": list(kf.unchecked)}
     return {"format": FORMAT, "version": VERSION,
             "design": {"name": report.design.name, "file": str(report.path), "f": sp.srepr(report.design.f)},
             "properties": props}
@@ -114,15 +118,24 @@ def _profile(f):
     return sp.piecewise_fold(f.subs({E1: S, E2: 0}))
 
 
-def _link_kf(dF, exact, claims) -> list[str]:
-    """kf: F' > 0, F' <= kf and sup F' >= kf, all on (0, oo)."""
-    on = (sp.srepr(dF), sp.srepr(S), "Integer(0)", "oo", True, True)
-    got = [((c.expr, c.var, c.lo, c.hi, c.lo_open, c.hi_open), c.kind, c.want, c.strict, c.other) for c in claims]
-    want = [(on, "sign", 1, True, ""), (on, "sup_upper", 0, False, sp.srepr(exact)),
-            (on, "sup_lower", 0, False, sp.srepr(exact))]
-    if got != want:
-        raise CertificateError(f"kf: the kernel's conclusions are not F' > 0, F' <= kf, sup F' >= kf "
-                               f"with kf = {exact}")
+def _link_kf(dF, exact, claims, k=1) -> list[str]:
+    """kf = k c with k = sqrt(r) (1 for a radial f) and c = sup |F'| on
+    (0, oo), by F' > 0, F' <= c and sup F' >= c, or, when F' changes sign,
+    by |F'| <= c and sup E >= c for E = F' or -F' (|F'| >= E)."""
+    on = (sp.srepr(S), "Integer(0)", "oo", True, True)
+    got = [(c.kind, c.expr, (c.var, c.lo, c.hi, c.lo_open, c.hi_open), c.want, c.strict) for c in claims]
+    sup = (on, 0, False)
+    if len(claims) == 3:
+        want = [[("sign", sp.srepr(dF), on, 1, True)], [("sup_upper", sp.srepr(dF), *sup)],
+                [("sup_lower", sp.srepr(dF), *sup)]]
+    else:
+        want = [[("sup_upper", sp.srepr(sp.Abs(dF)), *sup)],
+                [("sup_lower", sp.srepr(dF), *sup), ("sup_lower", sp.srepr(-dF), *sup)]]
+    c = claims[-1].other if claims else None
+    if not (len(got) == len(want) and all(g in w for g, w in zip(got, want)) and claims[-2].other == c
+            and sp.srepr(k * parse(c)) == sp.srepr(exact)):
+        raise CertificateError(f"kf: the kernel's conclusions are not F' > 0, F' <= c, sup F' >= c nor "
+                               f"|F'| <= c, sup (+-F') >= c with sqrt(r) c = kf = {exact}")
     return []
 
 
@@ -139,10 +152,14 @@ def _link_p1_p6(name, F, claims) -> list[str]:
     on = (sp.srepr(S), "Integer(0)", "oo", True, True)
     got = [(c.kind, c.expr, (c.var, c.lo, c.hi, c.lo_open, c.hi_open)) for c in claims]
     if name == "P1":
-        ok = (len(claims) == 4 and got[0] == ("sign", sp.srepr(dF), on) and claims[0].want == 1
-              and [g[:2] for g in got[1:3]] == [("limit", sp.srepr(F)), ("limit", sp.srepr(dF))]
-              and claims[1].lo == claims[2].lo == "Integer(0)" and claims[2].other == "Integer(0)"
-              and got[3] == ("sup_upper", sp.srepr(dF), on))
+        signed = bool(claims) and claims[0].kind == "sign"     # F' > 0, or |F'| <= U (F' changes sign)
+        if signed:
+            ok = got[0] == ("sign", sp.srepr(dF), on) and claims[0].want == 1
+            claims, got = claims[1:], got[1:]
+        ok = ((not signed or ok) and len(claims) == 3
+              and [g[:2] for g in got[:2]] == [("limit", sp.srepr(F)), ("limit", sp.srepr(dF))]
+              and claims[0].lo == claims[1].lo == "Integer(0)" and claims[1].other == "Integer(0)"
+              and got[2] == ("sup_upper", sp.srepr(dF if signed else sp.Abs(dF)), on))
     else:
         ok = (len(claims) == 2 and got[0] == ("sign", sp.srepr(dF), on) and claims[0].want == 1
               and got[1] == ("sup_upper", sp.srepr(dF / S), on) and parse(claims[1].other).is_positive)
@@ -192,10 +209,36 @@ def _link(name, f, theorems, exact=None) -> list[str]:
         return []
     F = _profile(f)
     dF = sp.diff(F, S)
+    claims, k = _reduction(f, F, claims)
+    reduction = [] if k is not None else [REDUCTION]      # unless P4 is kernel-checked (see `check`)
     want = F if name == "P3" else dF
     piecewise = F.has(sp.Piecewise)
     if piecewise and name not in ("P7", "P8") and not (claims and claims[0].expr == sp.srepr(want)):
-        return ["the kernel's claims are about the pieces of F (the split of F is the search's)"]
+        return reduction + ["the kernel's claims are about the pieces of F (the split of F is the search's)"]
+    return reduction + _link_reduced(name, F, dF, claims, k or 1, exact)
+
+
+def _reduction(f, F, claims):
+    """(the other claims, sqrt(r)) when the claims begin with the elliptic
+    reduction f(e1, e2) = F(sqrt(e1^2 + r e2^2)) and r > 0, else (claims,
+    None).  With s = sqrt(e1^2 + r e2^2), f = G(e1, sqrt(r) e2) for the
+    radial G = F(|.|): a linear change of variables, so f has G's
+    smoothness, positivity and growth; df/de1 = F'(s) e1/s as for a radial
+    f (P5, P6), df/de2 = r F'(s) e2/s -> 0 as e2 -> 0 (P8), and since
+    sqrt(r) |e2| <= s with equality on e1 = 0, sup |df/de2| = sqrt(r) sup |F'| (kf)."""
+    if len(claims) >= 2 and claims[0].kind == "identity_plane" and claims[1].kind == "value_sign":
+        r = parse(claims[1].expr)
+        rhs = F.subs(S, sp.sqrt(E1 ** 2 + r * E2 ** 2))
+        if (claims[0].expr, claims[0].other, claims[0].var, claims[1].want) == (
+                sp.srepr(f), sp.srepr(rhs), sp.srepr(sp.Tuple(E1, E2)), 1):
+            return claims[2:], sp.sqrt(r)
+    return claims, None
+
+
+def _link_reduced(name, F, dF, claims, k, exact) -> list[str]:
+    """The link of a property that reduces to the profile F (k = sqrt(r))."""
+    want = F if name == "P3" else dF
+    piecewise = F.has(sp.Piecewise)
     gap = []
     if piecewise and name in ("P1", "P5", "P6", "kf"):
         # F and F' continuous on (0, oo): F is C^1 with derivative F' across the boundaries too
@@ -206,7 +249,7 @@ def _link(name, f, theorems, exact=None) -> list[str]:
         else:
             gap = ["F' exists at the boundaries of F's pieces (the search's)"]
     if name == "kf":
-        return gap + _link_kf(dF, exact, claims)
+        return gap + _link_kf(dF, exact, claims, k)
     if name in ("P1", "P6"):
         return gap + _link_p1_p6(name, F, claims)
     if name in ("P7", "P8"):
@@ -515,7 +558,7 @@ def check(data) -> list[PropertyCheck]:
                         pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
                 elif pc.status == "proved":
                     exact = parse(entry["exact"]) if name == "kf" else None
-                    pc.unchecked += _link(name, f, theorems, exact)
+                    pc.unchecked += [u for u in _link(name, f, theorems, exact) if u not in pc.unchecked]
                     if name not in ("P2", "P4"):        # the link differentiates F itself
                         pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
                 else:

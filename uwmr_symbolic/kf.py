@@ -17,7 +17,7 @@ from .interval import Interval
 from .limits import NoLimit, rational_parts
 from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
-from .certify import piecewise_sup_theorems, sign_theorems, sup_theorems
+from .certify import piecewise_sup_theorems, sign_theorems, sup_abs_theorems, sup_theorems
 from .univariate import (certified_inside, enclose_sup, exact_sign, exact_value, limit_at_infinity, prepare,
                          prove_sign)
 
@@ -91,7 +91,7 @@ def _candidates(expr, lo, hi, interior=True):
                 continue     # SymPy's answer is a proposal: E(c) <= sup only for c in (lo, hi)
             v = exact_value(expr, S, c)
             if v is not None and not v.has(sp.Float):
-                out.append((attempt(lambda: sp.radsimp(v), 2.0, v), c))
+                out.append((attempt(lambda: _tidy(v), 2.0, v), c))
     if lo != sp.oo:
         v = one_sided_value(expr, lo, +1)
         if v is not None and v not in (sp.oo, -sp.oo):
@@ -111,6 +111,14 @@ def _candidates(expr, lo, hi, interior=True):
 
 
 SHORT_RADICAL = 24     # operations in a root worth offering as an exact critical point
+
+
+def _tidy(v):
+    """An exact value in a shorter exact form: radsimp, then expand when that
+    is shorter (a polynomial in radicals collapses: F'(1 + sqrt(2)) = 1/2)."""
+    v = sp.radsimp(v)
+    w = sp.expand(v)
+    return w if sp.count_ops(w) < sp.count_ops(v) else v
 
 
 def _rational_critical(d, lo, hi):
@@ -150,8 +158,9 @@ def _prove_bound(c, exprs, pieces, zeros_of) -> tuple[bool, bool | None]:
     is True when c - E_i > 0 was proved everywhere, None when undecided."""
     for E, piece in zip(exprs, pieces):
         zeros = [z for z in zeros_of.get(id(piece), []) if z is not None and z not in (piece.lo, piece.hi)]
-        if not prove_sign(c - E, S, piece.lo, piece.hi, want=1, strict=False, zeros=zeros).proved:
-            return False, None
+        if not (prove_sign(c - E, S, piece.lo, piece.hi, want=1, strict=False, zeros=zeros).proved
+                or sign_theorems(c - E, S, piece.lo, piece.hi, zeros=tuple(zeros), strict=False)[0]):
+            return False, None          # (the kernel's proposer rewrites, e.g. a square over Q, where boxes fail)
     for E, piece in zip(exprs, pieces):
         zeros = [z for z in zeros_of.get(id(piece), []) if z is not None]
         if zeros or not prove_sign(c - E, S, piece.lo, piece.hi, want=1).proved:
@@ -246,19 +255,24 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
                           f"interval branch and bound: sup {name} in [{float(lower):.10g}, {float(upper):.10g}]")
 
 
-def _with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
+def _with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
     """cert with the kernel's theorems of an exact kf = sup F' (F' > 0,
-    F' <= kf, sup F' >= kf; for a Piecewise F also F and F' continuous), or
-    the reason it has none."""
+    F' <= kf, sup F' >= kf; for a Piecewise F also F and F' continuous), or,
+    when F' changes sign (`side` = +-1: kf = sup side*F'), of |F'| <= kf and
+    sup side*F' >= kf; or the reason it has none."""
     pieces = analysis.profile.pieces
     if cert.exact is None or cert.attained is None:
         cert.unchecked = ["kf: " + ("no exact value" if cert.exact is None else "attainment undecided")]
         return cert
     point = None
     if cert.attained:
-        point = next((p for piece in pieces for v, p in _candidates(sp.diff(piece.expr, S), piece.lo, piece.hi)
+        point = next((p for piece in pieces for v, p in _candidates(sp.diff((side or 1) * piece.expr, S),
+                                                                    piece.lo, piece.hi)
                       if p is not None and exact_sign(v - cert.exact) == 0), None)
-    if len(pieces) == 1:
+    if side is not None:
+        theorems, why = sup_abs_theorems(sp.diff(pieces[0].expr, S), cert.exact, point, S, side) \
+            if len(pieces) == 1 else (None, "F' of a Piecewise F changes sign")
+    elif len(pieces) == 1:
         dF = sp.diff(pieces[0].expr, S)
         positive, why = sign_theorems(dF, S, 0, sp.oo)
         theorems, why = sup_theorems(dF, cert.exact, point, S, positive[0]) if positive else (None, why)
@@ -282,8 +296,8 @@ def certify_kf(analysis) -> SupCertificate:
     if neg.upper is None:
         return neg
     if neg.upper <= (pos.lower if pos.lower is not None else 0):
-        return pos
+        return _with_kernel(pos, analysis, side=1)
     if pos.upper <= (neg.lower if neg.lower is not None else 0):
-        return neg
+        return _with_kernel(neg, analysis, side=-1)
     return SupCertificate(max(pos.lower, neg.lower), max(pos.upper, neg.upper), None, None,
                           "sup |F'| from both signs of F'")

@@ -201,10 +201,23 @@ class Analysis:
         return verify_p5(self)
 
     @cached_property
+    def reduction(self) -> list:
+        """The kernel's theorems of an elliptic reduction (r != 1): f(e1, e2)
+        = F(sqrt(e1^2 + r e2^2)) and r > 0; [] when r = 1 (P4 carries it) or
+        the kernel refuses."""
+        return radial_theorems(self.f, self.F, E1, E2, S, self.ratio) if self.reduced and self.ratio != 1 else []
+
+    @cached_property
     def kf(self) -> KfCertificate:
         """kf = sqrt(r) sup|F'|: |df/de2| = r |e2| |F'(s)|/s <= sqrt(r) |F'(s)|,
-        with equality on e1 = 0."""
-        return scale(certify_kf(self), sp.sqrt(self.ratio))
+        with equality on e1 = 0.  For r != 1 the kernel's theorems about F'
+        follow those of the reduction."""
+        cert = certify_kf(self)
+        scaled = scale(cert, sp.sqrt(self.ratio))
+        scaled.kernel = self.reduction + cert.kernel if cert.kernel and (self.ratio == 1 or self.reduction) else []
+        scaled.unchecked = [*([REDUCTION] if not self.reduction else []), *cert.unchecked] if scaled.kernel \
+            else [REDUCTION, *cert.unchecked]
+        return scaled
 
 
 def _show(v):
@@ -290,9 +303,11 @@ def verify_p1(a: Analysis) -> Verdict:
     v = proved(f"{c1.reason}; kf = sup|F'| in [{float(kf.lower):.9g}, {float(kf.upper):.9g}]")
     if not kf.kernel:
         return _lemmas(v, v, "f is C^1 with kf finite (continuity and the bound are the search's)")
-    positive, upper = kf.kernel[:2]     # F' > 0 and F' <= kf on (0, oo), from `certify.sup_theorems`
+    # F' > 0 and F' <= c on (0, oo) (`certify.sup_theorems`), or |F'| <= c (`certify.sup_abs_theorems`)
+    own = kf.kernel[len(a.reduction):]
+    signed, upper = (own[:1], own[1]) if own[0].claim.kind == "sign" else ([], own[0])
     return _lemmas(v, v, "f is C^1 (continuity at the origin)",     # (Piecewise: F, F' continuous at the end)
-                   lambda: [positive, *origin[:2], upper, *origin[2:]]
+                   lambda: [*signed, *origin[:2], upper, *origin[2:]]
                    if (origin := origin_theorems(a.F, S, a.profile.ends)) else [])
 
 
@@ -581,6 +596,9 @@ def _through_reduction(verify):
         if a.reduced and a.ratio != 1 and not v.refuted:
             v = replace(v, reason=f"with s = {a.radius} (f = F(s) is a symbolic identity; df/de1 = "
                                   f"F'(s) e1/s, df/de2 = {a.ratio} F'(s) e2/s): {v.reason}")
+            if v.proved and v.details.get("kernel") and a.reduction:    # the reduction, kernel-checked
+                v = replace(v, details={**v.details, "kernel": a.reduction + v.details["kernel"],
+                                        "unchecked": [u for u in v.details["unchecked"] if u != REDUCTION]})
         return v
     run.__doc__ = verify.__doc__
     return run

@@ -567,16 +567,19 @@ def _join_at_point(left, right):
         box = evaluate(e, var, m, m, bits=256)          # also: E defined at m
     except Undefined as exc:
         raise KernelError(f"E undefined at {m}: {exc}") from None
-    _need(v != 0 or box.hull().contains(0), "Arb disagrees with exact 0")
-    return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, False), v, box
+    zero = v == 0 or _zero_when_generalized(v)
+    _need(not zero or box.hull().contains(0), "Arb disagrees with exact 0")
+    return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, False), v, zero, box
 
 
 def join_at_zero(left, right):
     """Same E, variable and sign on <a, m) and (m, b>, and E(m) = 0:
-    exactly (SymPy's evaluation gives the literal 0) with E defined at m
-    (Arb evaluates it, enclosing 0).  Then want*E >= 0 on <a, b> (weak)."""
-    claim, v, _ = _join_at_point(left, right)
-    _need(v == 0, lambda: f"E({parse(left.claim.hi)}) is not exactly 0")
+    exactly (SymPy's evaluation gives the literal 0, or polynomial
+    arithmetic over Q with its radicals and other subterms as symbols,
+    `_zero_when_generalized`) with E defined at m (Arb evaluates it,
+    enclosing 0).  Then want*E >= 0 on <a, b> (weak)."""
+    claim, _, zero, _ = _join_at_point(left, right)
+    _need(zero, lambda: f"E({parse(left.claim.hi)}) is not exactly 0")
     return claim
 join_at_zero = rule("arb", "sympy-core")(join_at_zero)
 
@@ -585,10 +588,10 @@ def join_at_point(left, right):
     """Same E, variable and sign on <a, m) and (m, b>, and the value of E at
     m: for a Piecewise E the branch that applies at m (`_branch`, each
     condition decided by the sign of its constant r - l at m), E defined
-    at m (Arb).  E(m) exactly 0 gives want*E >= 0 on <a, b>; E(m) with the
+    at m (Arb).  E(m) exactly 0 (as in `join_at_zero`) gives want*E >= 0 on <a, b>; E(m) with the
     premises' sign (Arb) keeps them: strict iff both are."""
-    claim, v, box = _join_at_point(left, right)
-    if v == 0:
+    claim, v, zero, box = _join_at_point(left, right)
+    if zero:
         return claim
     _need(box.positive() if claim.want > 0 else box.negative(), lambda: f"E({parse(left.claim.hi)}) = {v} has not the sign")
     return dataclasses.replace(claim, strict=left.claim.strict and right.claim.strict)
@@ -1177,7 +1180,7 @@ sup_upper_by_sign = rule()(sup_upper_by_sign)
 
 def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
     """sup_I E >= L: the exact point p lies in I and E(p) >= L, either
-    exactly (E(p) - L evaluates to the literal 0) or by Arb enclosures."""
+    exactly (E(p) - L is 0 as in `join_at_zero`) or by Arb enclosures."""
     lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     e, p, L = _expr(expr, var), _number(point), _number(bound)
     _need(_lt(lo, p) or (p == lo and not lo_open), "point before I")
@@ -1186,7 +1189,8 @@ def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
         v = evaluate(e, var, p, p, bits=256)       # also: E defined at p
     except Undefined as exc:
         raise KernelError(f"E undefined at {p}: {exc}") from None
-    if sp.sympify(e.subs(var, p) - L) != 0:
+    d = sp.sympify(e.subs(var, p) - L)
+    if d != 0 and not _zero_when_generalized(d):
         _need(bool(v.lo >= evaluate(L, bits=256).hi), lambda: f"E({p}) >= {L} not shown")
     return Claim("sup_lower", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(L))
 sup_lower_by_point = rule("arb", "sympy-core")(sup_lower_by_point)
