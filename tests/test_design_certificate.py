@@ -277,9 +277,12 @@ def test_piecewise_profiles_are_kernel_checked_through_their_branches(refuted_ce
     * design 4: F = 1 - cos(u) up to u = pi, then u - pi + 1: F jumps from 2 to 1;
     * r06: F = log(1 + s^2), + 1 beyond s = 2: F jumps.
     P3 (F > 0, F -> oo) is a claim about the Piecewise F itself for all four.
-    P1, P5, P6, P8 and kf need F (and F') continuous across the boundary:
-    kernel-checked for r10 and v05 (P7 too for v05), left to the search for
-    design 4 and r06, whose F the kernel must not call continuous."""
+    P1, P5, P6 need F (and F') continuous across the boundary: kernel-checked
+    for r10 and v05 (P7 too for v05), refuted for design 4 and r06, whose F
+    the kernel must not call continuous.  Their P8 and kf rest on F and F'
+    continuous on each piece instead ("pieces"): design 4 F' = sin(u) q
+    (u < pi), q (beyond), q = s/sqrt(s^2 + 1), so 0 <= F' < 1 -> 1; r06 F' =
+    2s/(1 + s^2) <= 1 = F'(1) on both pieces."""
     certs = {**refuted_certs, "v05_cosine_c2": DC.build(verify_design(ROOT / "tests" / "designs" / "v05_cosine_c2.py"))}
     checked = {(stem, c.name) for stem, cert in certs.items() for c in DC.check(cert) if c.kernel_checked}
     for stem in ("r10_c1_piecewise", "v05_cosine_c2", "design4_cosine", "r06_jump"):
@@ -288,7 +291,15 @@ def test_piecewise_profiles_are_kernel_checked_through_their_branches(refuted_ce
     # P1 (C^1, kf finite) and P6 (F'(s)/s = 1 and 1/s, resp. sin(u)/sqrt(s^2 + 1) and 1/sqrt(s^2 + 1), <= 1)
     assert {("r10_c1_piecewise", p) for p in ("P1", "P5", "P6", "P8", "kf")} <= checked
     assert {("v05_cosine_c2", p) for p in ("P1", "P5", "P6", "P7", "P8", "kf")} <= checked
-    assert not {("design4_cosine", "P8"), ("r06_jump", "P8"), ("design4_cosine", "kf"), ("r06_jump", "kf")} & checked
+    assert {("design4_cosine", "P8"), ("r06_jump", "P8"), ("design4_cosine", "kf"), ("r06_jump", "kf")} <= checked
+    assert not {("design4_cosine", "P1"), ("r06_jump", "P1"), ("design4_cosine", "P5")} & checked
+    for stem in ("design4_cosine", "r06_jump"):
+        kernel = certs[stem]["properties"]["kf"]["kernel"]
+        kinds = [kernel["theorems"][i]["claim"]["kind"] for i in kernel["conclusions"]]
+        assert kinds[:3] == ["sign", "sup_upper", "sup_lower"] and kinds[3] == "pieces", kinds
+    kernel = certs["design4_cosine"]["properties"]["kf"]["kernel"]
+    lower = kernel["theorems"][kernel["conclusions"][2]]["claim"]
+    assert lower["lo"] != "Integer(0)" and lower["hi"] == "oo"        # the limit at oo, past the jump
     rules = {n["rule"] for n in certs["v05_cosine_c2"]["properties"]["P7"]["kernel"]["theorems"]}
     assert {"continuous_piecewise", "select_branch"} <= rules
     # P5 without the continuity of F and F' across s = 1: the derivative's existence there is the search's
@@ -380,3 +391,30 @@ def test_tampered_reductions_are_not_trusted(elliptic_certs):
     wrong["properties"]["kf"]["exact"] = "Integer(1)"
     with pytest.raises(DC.CertificateError, match="kf: the kernel's conclusions are not"):
         DC.check(wrong)
+
+
+def test_kf_link_where_f_jumps_keeps_the_sup_off_the_cuts():
+    """With F known continuous only between the cuts, sup F' >= c must be
+    shown on an interval with no cut inside or at a closed end (at a cut the
+    Piecewise F' takes the value of whichever branch applies there, which
+    need not be F's derivative).  F' = 1/(1 + s) here, one cut at s = 2."""
+    from uwmr_symbolic.kernel import Claim
+    dF = 1 / (1 + S)
+    R = sp.srepr
+    on = dict(var=R(S), lo="Integer(0)", hi="oo", lo_open=True, hi_open=True)
+    sign = Claim("sign", R(dF), want=1, strict=False, **on)
+    upper = Claim("sup_upper", R(dF), other="Integer(1)", **on)
+
+    def lower(lo, hi, lo_open, hi_open):
+        return Claim("sup_lower", R(dF), R(S), R(lo), R(hi), lo_open, hi_open, other="Integer(1)")
+    cuts = sp.Tuple(2)
+    assert DC._link_kf(dF, sp.Integer(1), [sign, upper, lower(0, 2, True, True)], cuts=cuts) == []
+    assert DC._link_kf(dF, sp.Integer(1), [sign, upper, lower(2, 3, True, False)], cuts=cuts) == []
+    for bad in (lower(1, 3, True, True), lower(2, 3, False, True), lower(0, 2, True, False), lower(2, 2, False, False)):
+        with pytest.raises(DC.CertificateError, match="kf: the kernel's conclusions are not"):
+            DC._link_kf(dF, sp.Integer(1), [sign, upper, bad], cuts=cuts)
+    # without cuts (F continuous) the sup must be over all of (0, oo), and F' > 0 strictly
+    with pytest.raises(DC.CertificateError):
+        DC._link_kf(dF, sp.Integer(1), [sign, upper, lower(0, 2, True, True)])
+    with pytest.raises(DC.CertificateError):
+        DC._link_kf(dF, sp.Integer(1), [sign, upper, Claim("sup_lower", R(dF), other="Integer(1)", **on)])

@@ -191,6 +191,28 @@ def test_continuous_piecewise_refuses_jumps_points_and_gaps():
     assert "not shown defined" in why(K.continuous_piecewise, *facts, expr=L, var=s, cuts=[sp.Integer(1)])
 
 
+def test_piecewise_branches_allows_jumps_but_not_undefined_branches():
+    """A jump at s = 1 (s^2/2 inside, s beyond): continuous on each piece,
+    so "pieces" with the cut listed; the same refusals as
+    `continuous_piecewise` on each open piece."""
+    facts = [sturm(1 - s ** 2, s, 0, 1, lo_open=True, hi_open=True), sturm(1 - s ** 2, s, 1, sp.oo, True, True, -1)]
+    J = sp.Piecewise((s ** 2 / 2, s ** 2 <= 1), (s, True))
+    th = K.piecewise_branches(*facts, expr=J, var=s, cuts=[sp.Integer(1)])
+    assert th.claim == K.Claim("pieces", sp.srepr(J), sp.srepr(s), "Integer(0)", "oo", True, True,
+                               other=sp.srepr(sp.Tuple(1)))
+    assert why(K.piecewise_branches, *facts, expr=J, var=s, cuts=[]).startswith("condition")
+    L = sp.Piecewise((sp.log(s + 1), s ** 2 <= 1), (sp.log(s - Q(1, 2)) + sp.log(4), True))
+    assert "not shown defined" in why(K.piecewise_branches, *facts, expr=L, var=s, cuts=[sp.Integer(1)])
+    assert why(K.piecewise_branches, *facts, expr=J, var=s, cuts=[sp.Integer(2), sp.Integer(1)]) == \
+        "cut points not increasing: 2, 1"
+    assert why(K.piecewise_branches, *facts, expr=s + 1, var=s, cuts=[sp.Integer(1)]).endswith("is not a Piecewise")
+    cert = to_certificate([th])
+    assert [t.claim for t in check_certificate(cert)] == [th.claim]
+    cert["theorems"][-1]["claim"]["other"] = sp.srepr(sp.Tuple(2))           # another cut claimed
+    with pytest.raises(CertificateError):
+        check_certificate(cert)
+
+
 def test_piecewise_certificate_round_trips_and_tampering_is_rejected():
     facts = [sturm(1 - s ** 2, s, 0, 1, lo_open=True, hi_open=True), sturm(1 - s ** 2, s, 1, sp.oo, True, True, -1)]
     th = K.continuous_piecewise(*facts, expr=C, var=s, cuts=[sp.Integer(1)])

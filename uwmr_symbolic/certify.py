@@ -688,14 +688,25 @@ def piecewise_sup_theorems(F, c, point, var, ends):
     to (0, oo)) -- then F and F' continuous on (0, oo); or (None, why)."""
     dF = sp.diff(F, var)
     try:
-        whole = continuity_pair(F, var, ends)       # first: cheap, and often what fails
-        positive, why = piecewise_sign_theorem(dF, ends, var)
+        try:
+            whole, jumps = continuity_pair(F, var, ends), False     # first: cheap, and often what fails
+        except NoProof:
+            whole, jumps = branches_pair(F, var, ends), True
+        if not isinstance(sp.piecewise_fold(dF), sp.Piecewise):      # one formula for F' (F jumps by constants)
+            positive, why = sign_theorems(dF, var, 0, OO)
+            theorems, why = sup_theorems(dF, c, point, var, positive[0]) if positive else (None, why)
+            if theorems is None:
+                raise NoProof(why)
+            return [*theorems, *whole], ""
+        positive, why = piecewise_sign_theorem(dF, ends, var, strict=not jumps)
         upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False)
                       if positive else (None, why))
         if upper is None:
             raise NoProof(why)
         upper = _rule(K.sup_upper_by_sign, upper, expr=dF, bound=c)
-        lower = _rule(K.widen, _piecewise_lower(dF, c, point, var, ends), lo=0, hi=OO, lo_open=True, hi_open=True)
+        lower = _piecewise_lower(dF, c, point, var, ends)
+        if not jumps:       # (where F jumps, the sup must stay on a piece: see design_certificate._link_kf)
+            lower = _rule(K.widen, lower, lo=0, hi=OO, lo_open=True, hi_open=True)
         return [positive, upper, lower, *whole], ""
     except (NoProof, K.KernelError, Undefined) as exc:
         return None, str(exc)
@@ -725,16 +736,17 @@ def _beyond(b):
     return sp.Integer(4 ** math.ceil(math.log(max(float(b), 1) + 1, 4)))
 
 
-def continuity_theorem(P, ends, var):
+def continuity_theorem(P, ends, var, rule=K.continuous_piecewise):
     """P (a Piecewise) continuous on (0, oo) as a kernel theorem
     (`continuous_piecewise`, the relations signed on each open piece
-    between the search's `ends` 0 < b1 < ... < oo), or None."""
+    between the search's `ends` 0 < b1 < ... < oo), or None.  With
+    rule=`piecewise_branches`: P continuous on each open piece only."""
     if not isinstance(P, sp.Piecewise):
         return None
     prover = Prover(WORK)
     try:
         signs = [t for lo, hi in zip(ends, ends[1:]) for t in _relation_signs(P, var, (lo, hi, True, True), prover)]
-        return _rule(K.continuous_piecewise, *signs, expr=P, var=var, cuts=list(ends[1:-1]))
+        return _rule(rule, *signs, expr=P, var=var, cuts=list(ends[1:-1]))
     except (NoProof, K.KernelError, Undefined):
         return None
 
@@ -821,7 +833,12 @@ def smoothness_theorems(F, var, order, ends=None) -> list:
         out = [_continuous(d, var, ends) for d in (d1, d2)[:order]]
         whole = [_continuous(F, var, ends)] if isinstance(F, sp.Piecewise) else []
     except NoProof:
-        return []
+        if order == 2 or not isinstance(F, sp.Piecewise):
+            return []
+        try:        # P8 of an F that may jump: F and F' continuous on each piece
+            whole, out = ([t] for t in branches_pair(F, var, ends))
+        except NoProof:
+            return []
     for w in (sp.Rational(1, 2), sp.Rational(1, 16)):
         try:
             limits = [_limit_at_zero(d, var, w) for d in (d1, d2, F)[:1 if order == 1 else 3]]
@@ -838,15 +855,23 @@ def continuity_pair(F, var, ends) -> list:
     return [_continuous(F, var, ends), _continuous(sp.diff(F, var), var, ends)]
 
 
-def _continuous(e, var, ends):
+def _continuous(e, var, ends, rule=K.continuous_piecewise):
     """E continuous on (0, oo): `continuous_on_positive`, or for a Piecewise
-    `continuity_theorem`."""
+    `continuity_theorem` (with rule=`piecewise_branches`: continuous on each
+    open piece between the `ends`)."""
     if not isinstance(e, sp.Piecewise):
         return _rule(K.continuous_on_positive, expr=e, var=var)
-    th = continuity_theorem(e, ends, var)
+    th = continuity_theorem(e, ends, var, rule)
     if th is None:
         raise NoProof(f"{e} not shown continuous")
     return th
+
+
+def branches_pair(F, var, ends) -> list:
+    """F and F' continuous on (0, oo) or on each open piece between the
+    `ends` (`piecewise_branches`): for a Piecewise F that may jump, what the
+    links of P8 and kf need in place of `continuity_pair`."""
+    return [_continuous(e, var, ends, K.piecewise_branches) for e in (F, sp.diff(F, var))]
 
 
 def _limit_at_zero(e, var, w):

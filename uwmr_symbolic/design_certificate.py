@@ -118,16 +118,29 @@ def _profile(f):
     return sp.piecewise_fold(f.subs({E1: S, E2: 0}))
 
 
-def _link_kf(dF, exact, claims, k=1) -> list[str]:
+def _link_kf(dF, exact, claims, k=1, cuts=None) -> list[str]:
     """kf = k c with k = sqrt(r) (1 for a radial f) and c = sup |F'| on
     (0, oo), by F' > 0, F' <= c and sup F' >= c, or, when F' changes sign,
-    by |F'| <= c and sup E >= c for E = F' or -F' (|F'| >= E)."""
+    by |F'| <= c and sup E >= c for E = F' or -F' (|F'| >= E).
+
+    `cuts` not None: F is only known to be continuous with derivative F' on
+    each open piece between finitely many cuts (F' continuous there and
+    defined at every s > 0 when `cuts` is empty); F may jump.  Then kf is
+    sup |df/de2| over the points where df/de2 exists, F' >= 0 suffices, and
+    sup F' >= c must hold on an interval J without a cut of F' in its
+    inside or at a closed end: there F' is continuous, so its sup over J is approached off the
+    cuts of F too, at points (0, s) where df/de2 = F'(s).  On a cut circle
+    s = b, where df/de2 exists (e2 != 0) F is differentiable at b, hence
+    continuous, and by the mean value theorem on [b, b + h] F'(b) lies in
+    [0, c]; at e2 = 0 it is 0."""
     on = (sp.srepr(S), "Integer(0)", "oo", True, True)
     got = [(c.kind, c.expr, (c.var, c.lo, c.hi, c.lo_open, c.hi_open), c.want, c.strict) for c in claims]
     sup = (on, 0, False)
     if len(claims) == 3:
-        want = [[("sign", sp.srepr(dF), on, 1, True)], [("sup_upper", sp.srepr(dF), *sup)],
-                [("sup_lower", sp.srepr(dF), *sup)]]
+        want = [[("sign", sp.srepr(dF), on, 1, True)] + ([("sign", sp.srepr(dF), on, 1, False)] if cuts is not None else []),
+                [("sup_upper", sp.srepr(dF), *sup)], [("sup_lower", sp.srepr(dF), *sup)]]
+        if cuts is not None and _off_cuts(claims[2], cuts):
+            got[2] = got[2][:2] + (on,) + got[2][3:]
     else:
         want = [[("sup_upper", sp.srepr(sp.Abs(dF)), *sup)],
                 [("sup_lower", sp.srepr(dF), *sup), ("sup_lower", sp.srepr(-dF), *sup)]]
@@ -137,6 +150,15 @@ def _link_kf(dF, exact, claims, k=1) -> list[str]:
         raise CertificateError(f"kf: the kernel's conclusions are not F' > 0, F' <= c, sup F' >= c nor "
                                f"|F'| <= c, sup (+-F') >= c with sqrt(r) c = kf = {exact}")
     return []
+
+
+def _off_cuts(claim, cuts) -> bool:
+    """The claim's interval J lies in (0, oo), has inner points, and no cut
+    lies inside it or at a closed end."""
+    from .kernel.core import _lt
+    lo, hi = parse(claim.lo), parse(claim.hi)
+    return claim.var == sp.srepr(S) and (lo == 0 or _lt(0, lo)) and _lt(lo, hi) and all(
+        _lt(b, lo) or _lt(hi, b) or (b == lo and claim.lo_open) or (b == hi and claim.hi_open) for b in cuts)
 
 
 def _link_p1_p6(name, F, claims) -> list[str]:
@@ -177,14 +199,19 @@ def _link_smooth(name, F, claims) -> list[str]:
     For a Piecewise F, also F continuous on (0, oo): a continuous function
     whose derivative off finitely many points (the boundaries) extends
     continuously is C^1 with that derivative (mean value theorem), so F'
-    and F'' above are F's derivatives everywhere."""
+    and F'' above are F's derivatives everywhere.
+    P8 may instead rest on F and F' continuous on each open piece between
+    finitely many cuts ("pieces"; F may jump): for fixed e1 != 0 and small
+    e2 != 0, s lies in (|e1|, |e1| + d), inside one piece, where f = F(s)
+    is differentiable and |df/de2| <= |F'(s)|, F' there being one expression
+    continuous at every s > 0, so bounded near |e1|."""
     d1 = sp.diff(F, S)
     order = 1 if name == "P8" else 2
     ds = [d1, sp.diff(d1, S)][:order]
     want = [("continuous", sp.srepr(d), "Integer(0)") for d in ds] + [
         ("limit", sp.srepr(d), "Integer(0)") for d in ([d1] if order == 1 else [*ds, F])] + [
         ("continuous", sp.srepr(F), "Integer(0)")] * F.has(sp.Piecewise)
-    got = [(c.kind, c.expr, c.lo) for c in claims]
+    got = [("continuous" if c.kind == "pieces" and name == "P8" else c.kind, c.expr, c.lo) for c in claims]
     if got != want or claims[order].other != "Integer(0)" or any(c.var != sp.srepr(S) for c in claims):
         raise CertificateError(f"{name}: the kernel's conclusions are not the ones {name} needs for this f")
     return []
@@ -239,17 +266,21 @@ def _link_reduced(name, F, dF, claims, k, exact) -> list[str]:
     """The link of a property that reduces to the profile F (k = sqrt(r))."""
     want = F if name == "P3" else dF
     piecewise = F.has(sp.Piecewise)
-    gap = []
+    gap, cuts = [], None
     if piecewise and name in ("P1", "P5", "P6", "kf"):
         # F and F' continuous on (0, oo): F is C^1 with derivative F' across the boundaries too
         # (a continuous function whose derivative off finitely many points extends continuously)
-        pair = [("continuous", sp.srepr(e), sp.srepr(S), "Integer(0)", "oo") for e in (F, dF)]
-        if [(c.kind, c.expr, c.var, c.lo, c.hi) for c in claims[-2:]] == pair:
+        pair = [(sp.srepr(e), sp.srepr(S), "Integer(0)", "oo") for e in (F, dF)]
+        got = [(c.kind, (c.expr, c.var, c.lo, c.hi)) for c in claims[-2:]]
+        if got == [("continuous", p) for p in pair]:
+            claims = claims[:-2]
+        elif name == "kf" and [g[1] for g in got] == pair and {g[0] for g in got} <= {"continuous", "pieces"}:
+            cuts = parse(claims[-1].other) if got[1][0] == "pieces" else ()       # F may jump (`_link_kf`)
             claims = claims[:-2]
         else:
             gap = ["F' exists at the boundaries of F's pieces (the search's)"]
     if name == "kf":
-        return gap + _link_kf(dF, exact, claims, k)
+        return gap + _link_kf(dF, exact, claims, k, cuts)
     if name in ("P1", "P6"):
         return gap + _link_p1_p6(name, F, claims)
     if name in ("P7", "P8"):

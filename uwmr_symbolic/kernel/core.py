@@ -19,6 +19,9 @@ Claim semantics (I: an interval of the real line, ends exact):
 * identity_plane: lhs(x, y) = rhs(x, y) where both are defined (var: (x, y));
 * limit:      E is continuous on [lo, hi] and E(lo) = other, so E -> other as x -> lo+;
 * continuous: E is defined and continuous at every point of (lo, hi);
+* pieces:     on each open interval between lo, the cut points listed in
+              other and hi, E equals an expression defined and continuous
+              at every x > 0;
 * diverges:   E is defined on [lo, oo) and E(x) -> +oo as x -> oo.
 
 Assumptions a theorem rests on are named strings: "arb" (python-flint's
@@ -681,15 +684,11 @@ def _decided_by(signs, var, lo, hi, lo_open, hi_open):
     return sign_ok
 
 
-def continuous_piecewise(*signs, expr, var, cuts):
-    """P (a Piecewise, or an expression of one: `_folded`) is continuous on
-    (0, oo).  cuts 0 < b1 < ... < bn finite and exact: on each open piece between 0, the cuts and oo the branch that
-    applies (`_branch`, by the sign theorems `signs`) is defined, hence
-    continuous, for every x > 0 (`defined_for_positive`); at each cut b the
-    branches of both sides and the branch that applies at b have one value
-    (their differences at b are exactly 0: SymPy's evaluation, or polynomial
-    arithmetic with pi and the like as symbols; defined at b by Arb).
-    Claim kind "continuous" on (0, oo)."""
+def _pieces(signs, expr, var, cuts):
+    """(P, e, the ends 0 < b1 < ... < bn < oo, the branches) for the rules
+    below: cuts finite, exact and increasing; on each open piece between the
+    ends the branch that applies (`_branch`, by the sign theorems `signs`)
+    is defined, hence continuous, for every x > 0 (`defined_for_positive`)."""
     e = _expr(expr, var)
     pw = _folded(e)
     _need(isinstance(cuts, list), "cuts must be a list")
@@ -698,6 +697,27 @@ def continuous_piecewise(*signs, expr, var, cuts):
     branches = [_branch(pw, _decided_by(signs, var, a, b, True, True)) for a, b in zip(ends, ends[1:])]
     for g in branches:
         _need(defined_for_positive(g, var), lambda: f"{g} not shown defined for all {var} > 0")
+    return pw, e, ends, branches
+
+
+def piecewise_branches(*signs, expr, var, cuts):
+    """P (a Piecewise, or an expression of one) agrees on each open piece
+    between 0 < b1 < ... < bn < oo with one expression defined, hence
+    continuous, at every x > 0 (`_pieces`); nothing is said at the cuts
+    (P may jump there).  Claim kind "pieces" on (0, oo), other = the cuts."""
+    _, e, ends, _ = _pieces(signs, expr, var, cuts)
+    return Claim("pieces", _s(e), _s(var), _s(0), "oo", True, True, other=_s(sp.Tuple(*ends[1:-1])))
+piecewise_branches = rule("arb", "sympy-core")(piecewise_branches)
+
+
+def continuous_piecewise(*signs, expr, var, cuts):
+    """P (a Piecewise, or an expression of one: `_folded`) is continuous on
+    (0, oo): each open piece as in `piecewise_branches`, and at each cut b
+    the branches of both sides and the branch that applies at b have one
+    value (their differences at b are exactly 0: SymPy's evaluation, or
+    polynomial arithmetic with pi and the like as symbols; defined at b by
+    Arb).  Claim kind "continuous" on (0, oo)."""
+    pw, e, ends, branches = _pieces(signs, expr, var, cuts)
     for b, left, right in zip(ends[1:-1], branches, branches[1:]):
         at = _branch(pw, lambda d, want, strict: _sign_ok(_const_sign(d.subs(var, b)), want, strict))
         for g in (left, right):
