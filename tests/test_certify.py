@@ -33,6 +33,9 @@ TRUE = [
     (1 - sp.cos(S), 0, 2 * sp.pi),
     # design 3's F'(s) (alpha = 1, beta = 4): a product of positive factors
     (sp.diff(sp.log(sp.cosh(sp.sqrt(4 * S ** 2 + 1) - 1)), S), 0, sp.oo),
+    # u - sin(u) > 0 for u = sqrt(1 + s^2) - 1 > 0 (sin u < u for u > 0): only as G(u) = u - sin(u)
+    # (`sign_by_substitution`); in s the two copies of u cancel to about s^6/48 and boxes cannot see it
+    (sp.sqrt(1 + S ** 2) - 1 - sp.sin(sp.sqrt(1 + S ** 2) - 1), 0, sp.oo),
 ]
 
 
@@ -55,6 +58,8 @@ FALSE = [
     (S - sp.Rational(3, 2), 0, sp.oo),
     # sin(s) < 0 on (pi, 2 pi)
     (sp.sin(S), 0, 4),
+    # u - 2 sin(u) < 0 for small u > 0 (u = sqrt(1 + s^2) - 1): G(u) = u - 2 sin(u) is negative on (0, 1)
+    (sp.sqrt(1 + S ** 2) - 1 - 2 * sp.sin(sp.sqrt(1 + S ** 2) - 1), 0, sp.oo),
 ]
 
 
@@ -117,3 +122,19 @@ def test_the_budget_counts_work_not_time(monkeypatch):
     assert not idle.spent()
     monkeypatch.setattr(certify.time, "process_time", lambda: clock + 2.1 * nominal)  # past the backstop
     assert idle.spent()
+
+
+def test_substitution_is_the_kernel_step_for_u_minus_sin_u():
+    """The theorem for u - sin(u), u = sqrt(1 + s^2) - 1, is `sign_by_substitution`
+    over G(u) = u - sin(u) > 0 on (0, oo) and u > 0 on (0, oo)."""
+    F = sp.sqrt(1 + S ** 2) - 1 - sp.sin(sp.sqrt(1 + S ** 2) - 1)
+    theorems, why = sign_theorems(F, S, 0, sp.oo, work=10 ** 7)
+    assert theorems is not None, why
+    th = theorems[0]
+    while th.rule != "sign_by_substitution":
+        assert th.rule in ("sign_by_rewrite", "weaken", "join"), th.rule
+        th = th.premises[0]
+    outer, bound = th.premises
+    u = sp.Symbol("u", nonnegative=True)
+    assert outer.claim.expr == sp.srepr(u - sp.sin(u)) and (outer.claim.lo, outer.claim.hi) == ("Integer(0)", "oo")
+    assert bound.claim.expr == sp.srepr(sp.sqrt(1 + S ** 2) - 1) and bound.claim.strict

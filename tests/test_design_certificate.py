@@ -225,10 +225,17 @@ def test_certificates_of_refuted_designs_recheck(refuted_certs):
     assert c["P3"].line() == ("P3: refuted; 1 kernel theorem(s) re-checked (rests on arb, sympy-core); "
                               "kernel-checked: f(2, 0) <= 0")
     assert c["P5"].witness == "df/de1(1, 0) has sign -1"
-    # jumps of F'' at a boundary, some infinite limits at the origin still rest on the search
-    for stem, name in (("r06_jump", "P7"), ("r10_c1_piecewise", "P7"), ("r08_rho_three_quarters", "P7")):
-        c = _by_name(DC.check(refuted_certs[stem]))[name]
-        assert not c.refutation_checked and c.theorems == 0 and c.line().startswith(f"{name}: refuted; still rests on")
+    # P7 at a Piecewise boundary, along the e2 axis: r10 F'' = 1 inside, 0 outside s = 1; design 4 and r06
+    # f(0, t) itself jumps (2 -> 1, log 5 -> 1 + log 5), so df/de2 does not exist at the jump
+    lines = {stem: _by_name(DC.check(refuted_certs[stem]))["P7"].line() for stem in ("r10_c1_piecewise", "r06_jump")}
+    assert lines["r10_c1_piecewise"].endswith("kernel-checked: d2f/de2^2(0, t) jumps at t = 1: left limit 1, "
+                                              "right limit 0")
+    assert lines["r06_jump"].endswith("kernel-checked: f(0, t) jumps at t = 2: left limit log(5), right limit "
+                                      "1 + log(5), value log(5)")
+    assert _by_name(DC.check(refuted_certs["design4_cosine"]))["P7"].refutation_checked
+    # an infinite limit at the origin still rests on the search: r08's F'' = (3/4)(1/2) s^(-1/2) near 0
+    c = _by_name(DC.check(refuted_certs["r08_rho_three_quarters"]))["P7"]
+    assert not c.refutation_checked and c.theorems == 0 and c.line().startswith("P7: refuted; still rests on")
 
 
 def test_tampered_refutation_witness_is_rejected(refuted_certs):
@@ -254,6 +261,28 @@ def test_tampered_refutation_witness_is_rejected(refuted_certs):
     jump["properties"]["P8"]["kernel"]["theorems"][1]["claim"]["other"] = "Integer(1)"   # df/de2(0, -h) -> 1
     with pytest.raises(DC.CertificateError, match="P8: theorem 1"):
         DC.check(jump)
+
+
+def test_tampered_jump_of_a_derivative_is_rejected(refuted_certs):
+    """r10's P7 witness is a jump of d2f/de2^2 along the e2 axis at (0, 1):
+    read as a jump of df/de2 (order 1) the kernel's limits are not about the
+    claimed derivative; a jump of the second derivative does not refute P1;
+    an order the checker does not know refutes nothing."""
+    cert = refuted_certs["r10_c1_piecewise"]
+    witness = cert["properties"]["P7"]["witness"]
+    assert (witness["kind"], witness["var"], witness["order"], witness["points"]) == (
+        "jump", "e2", 2, [["Integer(0)", "Integer(1)"]])
+    for change, msg in (({"order": 1}, "P7: the kernel's conclusions are not the witness 'jump'"),
+                        ({"order": 3}, "P7: a jump of the order-3 derivative in e2 does not refute P7"),
+                        ({"var": "e1"}, "P7: a jump of the order-2 derivative in e1 does not refute P7")):
+        bad = copy.deepcopy(cert)
+        bad["properties"]["P7"]["witness"].update(change)
+        with pytest.raises(DC.CertificateError, match=msg):
+            DC.check(bad)
+    moved = copy.deepcopy(cert)
+    moved["properties"]["P1"] = copy.deepcopy(cert["properties"]["P7"])
+    with pytest.raises(DC.CertificateError, match="P1: a jump of the order-2 derivative in e2 does not refute P1"):
+        DC.check(moved)
 
 
 def test_cache_rechecks_a_refutation_witness(tmp_path):
@@ -418,3 +447,26 @@ def test_kf_link_where_f_jumps_keeps_the_sup_off_the_cuts():
         DC._link_kf(dF, sp.Integer(1), [sign, upper, lower(0, 2, True, True)])
     with pytest.raises(DC.CertificateError):
         DC._link_kf(dF, sp.Integer(1), [sign, upper, Claim("sup_lower", R(dF), other="Integer(1)", **on)])
+
+
+def test_slope_vanishing_on_circles_is_kernel_checked(refuted_certs):
+    """r09, F = u - sin(u), u = sqrt(1 + s^2) - 1, F' = (1 - cos u) s/sqrt(1 + s^2):
+    P3 from G(u) = u - sin(u) > 0 (`sign_by_substitution`) and F >= u - 1 -> oo
+    (`diverges_by_comparison`); F' >= 0 only weakly (0 where u = 2 pi n), enough
+    for P1 (with F' <= 2.3, 2 * 9/8 rounded up: kf itself, a sup approached
+    along u = (2n + 1) pi, stays undecided) and for P6 (h >= 0)."""
+    cert = refuted_certs["r09_slope_zero"]
+    checks = _by_name(DC.check(cert))
+    assert all(checks[p].kernel_checked for p in ("P1", "P2", "P3", "P4", "P6", "P7", "P8"))
+    assert checks["P5"].refutation_checked and "kf" not in checks
+
+    def rules(name):
+        return {t["rule"] for t in cert["properties"][name]["kernel"]["theorems"]}
+    assert {"sign_by_substitution", "diverges_by_comparison"} <= rules("P3")
+    for name in ("P1", "P6"):
+        kernel = cert["properties"][name]["kernel"]
+        first = kernel["theorems"][kernel["conclusions"][0]]["claim"]
+        assert (first["kind"], first["want"], first["strict"]) == ("sign", 1, False)
+    kernel = cert["properties"]["P1"]["kernel"]
+    upper = kernel["theorems"][kernel["conclusions"][3]]["claim"]
+    assert (upper["kind"], parse(upper["other"])) == ("sup_upper", sp.Rational(23, 10))    # 2 * 9/8 to 2 digits, up

@@ -213,7 +213,7 @@ def test_sign_below_sup():
                                   True, False, 1, True)
     for e, g in ((Q(99, 100) - sp.tanh(s), sp.tanh(s)),         # a + m sup G < 0
                  (Q(3, 2) - sp.atan(s), sp.atan(s)),            # 3/2 < pi/2
-                 (1 + sp.tanh(s), sp.tanh(s)),                  # m > 0
+                 (Q(99, 100) + sp.tanh(s), sp.tanh(s)),         # m > 0: a - |m| sup G < 0 (tanh > -1 only)
                  (1 - sp.tanh(s) ** 2, sp.tanh(s)),             # not a + m G
                  (1 - s * sp.tanh(s), sp.tanh(s)),              # m depends on s
                  (1 - sp.sinh(s), sp.sinh(s)),                  # sinh is unbounded
@@ -775,6 +775,24 @@ def test_continuous_at_end_and_diverges_by_growth():
     assert (d.claim.kind, d.claim.lo, d.claim.hi) == ("diverges", sp.srepr(sp.Integer(1)), "oo")
     rejects(K.diverges_by_growth, lower, expr=F, var=s, R=sp.Integer(1), rate="linear", k=sp.Integer(1))
     rejects(K.diverges_by_growth, lower, expr=F, var=s, R=sp.Integer(1), rate="log", k=sp.Integer(2))
+
+
+def test_diverges_by_comparison():
+    """s - sin(s) >= s - 1 -> oo: the gap 1 - sin(s) >= 0 (`sign_below_sup`,
+    weak: sin attains 1); s - 1 diverges at the linear rate from s = 1.  The
+    claim starts at the later of the two starts (here 2)."""
+    E, G = s - sp.sin(s), s - 1
+    gap = K.sign_below_sup(sturm(s, s, 2, sp.oo, hi_open=True), expr=E - G, bounded=sp.sin(s))
+    assert gap.claim.expr == sp.srepr(1 - sp.sin(s)) and not gap.claim.strict
+    div = K.diverges_by_growth(
+        K.sign_by_sturm(expr=Q(1, 2), var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True, want=1,
+                        strict=False), expr=G, var=s, R=sp.Integer(1), rate="linear", k=Q(1, 2))
+    d = K.diverges_by_comparison(gap, div, expr=E)
+    assert d.claim == Claim("diverges", sp.srepr(E), sp.srepr(s), sp.srepr(sp.Integer(2)), "oo", False, True)
+    rejects(K.diverges_by_comparison, gap, div, expr=s - 2 * sp.sin(s))       # the gap is about another E
+    rejects(K.diverges_by_comparison, gap, gap, expr=E)                       # no divergence premise
+    rejects(K.diverges_by_comparison, K.sign_below_sup(sturm(s, s, 2, 3), expr=E - G, bounded=sp.sin(s)), div,
+            expr=E)                                                           # E >= G only up to 3
 
 
 def test_continuous_on_positive():

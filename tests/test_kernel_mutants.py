@@ -1291,12 +1291,15 @@ def test_sign_below_sup_claims_and_messages():
     assert why(B, pos, expr=1 - s * sp.tanh(s), bounded=sp.tanh(s)) == f"{1 - s * sp.tanh(s)} is not a + m tanh(s)"
     assert why(B, pos, expr=s - sp.tanh(s), bounded=sp.tanh(s)) == f"{s - sp.tanh(s)} is not a + m tanh(s)"
     assert why(B, pos, expr=1 - sp.tanh(s) ** 2, bounded=sp.tanh(s)) == f"{1 - sp.tanh(s) ** 2} is not a + m tanh(s)"
-    needs = "needs m < 0 and a + m sup G >= 0"
+    needs = "needs m != 0 and a - |m| sup G >= 0"
     for e in (sp.Integer(0), sp.Integer(1)):                       # m = 0: "0 > 0" must not follow
         assert why(B, pos, expr=e, bounded=sp.tanh(s)) == needs
-    for e in (1 + sp.tanh(s), Q(99, 100) - sp.tanh(s), Q(3, 2) - sp.atan(s), sp.Integer(1) + 0 * sp.tanh(s) + s * 0):
-        if e.has(sp.tanh, sp.atan):
-            assert why(B, pos, expr=e, bounded=e.atoms(sp.tanh, sp.atan).pop()) == needs, e
+    for e in (Q(99, 100) + sp.tanh(s), Q(99, 100) - sp.tanh(s), Q(3, 2) - sp.atan(s), Q(3, 2) + sp.atan(s),
+              -1 - sp.tanh(s)):
+        assert why(B, pos, expr=e, bounded=e.atoms(sp.tanh, sp.atan).pop()) == needs, e
+    # m > 0: tanh > -1 and atan > -pi/2 everywhere (odd, sup never attained)
+    assert B(pos, expr=1 + sp.tanh(s), bounded=sp.tanh(s)).claim == sign(1 + sp.tanh(s), s, 0, 2, True, False)
+    assert B(pos, expr=sp.pi + 2 * sp.atan(s), bounded=sp.atan(s)).claim.strict
 
 
 def test_sign_of_increasing_difference_claims_and_messages():
@@ -1379,15 +1382,19 @@ def test_sign_of_sum_groups_messages():
 
 
 def test_sign_below_sup_of_sin_and_cos_is_weak_at_the_maximum():
-    """sin and cos reach their maximum 1: 1 - sin(Y) >= 0 only weakly,
-    2 - cos(Y) > 0 strictly, 1/2 - sin(Y) has no sign."""
+    """sin and cos reach their maximum 1 and minimum -1: 1 - sin(Y) >= 0 only
+    weakly, 2 - cos(Y) > 0 strictly, 1/2 - sin(Y) and 1/2 + sin(Y) have no sign."""
     B = K.sign_below_sup
     pos = sturm(s, s, 0, 2, lo_open=True)
     weak = B(pos, expr=1 - sp.sin(s), bounded=sp.sin(s))
     assert weak.claim == sign(1 - sp.sin(s), s, 0, 2, True, False, strict=False)
     assert B(pos, expr=2 - 3 * sp.cos(s) / 2, bounded=sp.cos(s)).claim == sign(2 - 3 * sp.cos(s) / 2, s, 0, 2, True, False)
-    assert why(B, pos, expr=Q(1, 2) - sp.sin(s), bounded=sp.sin(s)) == "needs m < 0 and a + m sup G >= 0"
-    assert why(B, pos, expr=1 + sp.sin(s), bounded=sp.sin(s)) == "needs m < 0 and a + m sup G >= 0"
+    needs = "needs m != 0 and a - |m| sup G >= 0"
+    assert why(B, pos, expr=Q(1, 2) - sp.sin(s), bounded=sp.sin(s)) == needs
+    assert why(B, pos, expr=Q(1, 2) + sp.sin(s), bounded=sp.sin(s)) == needs
+    # sin and cos reach -1 too: 1 + sin(Y) >= 0 only weakly, 2 + cos(Y) > 0
+    assert B(pos, expr=1 + sp.sin(s), bounded=sp.sin(s)).claim == sign(1 + sp.sin(s), s, 0, 2, True, False, strict=False)
+    assert B(pos, expr=2 + sp.cos(s), bounded=sp.cos(s)).claim.strict
 
 
 def test_sign_of_sum_counts_the_premises_constants():

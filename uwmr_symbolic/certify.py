@@ -105,6 +105,7 @@ class NoProof(Exception):
 
 
 _CYCLE = NoProof("a claim that needs itself")
+_U, _U_REAL = sp.Symbol("u", nonnegative=True), sp.Symbol("u", real=True)     # `Prover._substituted`
 
 
 def _ok(v, want, strict) -> bool:
@@ -239,6 +240,12 @@ class Prover:
             return self._structure(e, var, I, want, strict, depth, near)
         except NoProof as exc:
             last = exc
+        if not near:
+            try:
+                return self._substituted(e, var, I, want, strict)
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
         if near and e.is_Add and any(t.is_Mul and any(a.is_Pow and a.exp.is_negative for a in t.args)
                                      for t in e.args):
             try:                                # 0/0 at the end: 1 - tanh(s)/s = (s - tanh(s))/s
@@ -389,11 +396,12 @@ class Prover:
         raise NoProof(f"no term of {e} is linear in {g}")
 
     def _below_sup(self, e, var, I, strict, depth, near):
-        """e > 0 where e is a + m G(Y), G bounded above by sup G (tanh, erf,
+        """e > 0 where e is a + m G(Y), |G| bounded by sup G (tanh, erf,
         atan, sin, cos; sinh(Y)/cosh(Y) read as tanh(Y)): `sign_below_sup`; or where a
         term t = -M G(Y) of e, M >= 0, gives e = (e - t + t|G=sup G) +
         M (sup G - G(Y)), each part signed (sup G - G(Y) > 0 for tanh, erf,
-        atan; >= 0 only for sin and cos, whose maximum is attained)."""
+        atan; >= 0 only for sin and cos, whose maximum is attained); or t =
+        M G(Y) the same with G(Y) + sup G >= 0."""
         form = _with_tanh(e)
         for g in sorted((g for g in form.atoms(*K._SUP, *K._MAX) if g.has(var)), key=sp.count_ops):
             a = form.xreplace({g: 0})
@@ -412,12 +420,14 @@ class Prover:
                     continue
                 return th if form == e else self._rewritten_by(e, form, th, var, I)
             top = {**K._SUP, **K._MAX}[type(g)]
-            try:
-                return self._split_term(e, form, g, lambda t: [form - t + t.xreplace({g: top}), (-t / g) * (top - g)],
-                                        var, I, (False, strict) if type(g) in K._SUP else (strict, False), depth, near)
-            except NoProof as exc:
-                if exc is self.spent:
-                    raise
+            stricts = (False, strict) if type(g) in K._SUP else (strict, False)
+            for end, part in ((top, lambda t: (-t / g) * (top - g)), (-top, lambda t: (t / g) * (g + top))):
+                try:        # t = -M G(Y): M (sup G - G(Y)) >= 0; t = M G(Y): M (G(Y) + sup G) >= 0
+                    return self._split_term(e, form, g, lambda t: [form - t + t.xreplace({g: end}), part(t)],
+                                            var, I, stricts, depth, near)
+                except NoProof as exc:
+                    if exc is self.spent:
+                        raise
         raise NoProof(f"no bound of a tanh, erf, atan, sin or cos makes {e} positive")
 
     def _sum_of_parts(self, e, parts, var, I, stricts, depth, near):
@@ -426,8 +436,9 @@ class Prover:
         if any(_against(p, var, I, 1) for p in parts if p.has(var)):
             raise NoProof("a part is negative somewhere")
         premises = [self.prove(p, var, I, 1, st, depth, near) for p, st in zip(parts, stricts) if p.has(var)]
-        th = _rule(K.sign_of_sum, *premises, expr=sum(parts), want=1)
-        return self._rewritten_by(e, sum(parts), th, var, I)
+        form = sum(parts)
+        th = premises[0] if not form.is_Add else _rule(K.sign_of_sum, *premises, expr=form, want=1)   # (0 + part)
+        return self._rewritten_by(e, form, th, var, I)
 
     def _rewritten_by(self, e, form, th, var, I):
         lo, hi, lo_open, hi_open = I
@@ -500,6 +511,32 @@ class Prover:
         for p in parts[1:]:
             out = _rule(K.join, self._weaken(out, _ends(out), strict), self._weaken(p, _ends(p), strict))
         return out
+
+    def _substituted(self, e, var, I, want, strict):
+        """e = G(u) for u the argument of a function in e that occurs in e
+        more than once (u - sin(u)): G signed in its own variable on J =
+        <u(lo), u(hi)> and u(x) in J on I (`sign_by_substitution`).  Interval
+        arithmetic on G(U) has no dependency between the two copies of u."""
+        lo, hi, lo_open, hi_open = I
+        inner = {a for g in e.atoms(sp.Function) for a in g.args if a.has(var) and a != var}
+        for u in sorted(inner, key=sp.count_ops, reverse=True):
+            G = e.subs(u, _U)
+            if G.has(var) or G.count(_U) < 2 or G.subs(_U, u) != e:
+                continue
+            a, b = (u.subs(var, x) if x != OO else OO for x in (lo, hi))
+            if any(v.free_symbols or v.has(sp.nan, sp.zoo) or v == -OO for v in (a, b)) or not K._lt(a, b):
+                continue
+            J = (a, b, lo_open, hi_open)
+            U = _U if a == 0 or K._lt(0, a) else _U_REAL
+            try:
+                outer = self.prove(G.subs(_U, U), U, J, want, strict)
+                bounds = [self.prove(u - a, var, I, 1, lo_open)] + (       # strict where J is open
+                    [self.prove(b - u, var, I, 1, hi_open)] if b != OO else [])
+                return _rule(K.sign_by_substitution, outer, *bounds, inner=u)
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
+        raise NoProof(f"no substitution signs {e}")
 
     def _unbounded(self, e, var, I, want, strict, depth):
         """[lo, R] as a finite interval, [R, oo) by s = 1/t or monotonicity."""
@@ -774,7 +811,29 @@ def growth_theorems(F, var, last=None) -> list:
             return [on_branch(F, var, (R, OO, False, True), prover, lambda g: _diverges(g, var, (R,))[0])]
         except (NoProof, IndexError, K.KernelError, Undefined):
             return []
-    return _diverges(F, var, (sp.Integer(4), sp.Integer(16)))
+    return _diverges(F, var, (sp.Integer(4), sp.Integer(16))) or _diverges_above(F, var)
+
+
+def _diverges_above(F, var) -> list:
+    """F -> oo because F >= G -> oo (`diverges_by_comparison`), G being F
+    with each term c B(Y), B = sin, cos (|B| <= 1) or tanh, erf, atan,
+    replaced by its floor -|c| sup|B|: F - G is then a + m B(Y) >= 0."""
+    terms = sp.Add.make_args(F)
+    bounded = {t: abs(c) * {**K._SUP, **K._MAX}[type(b)] for t in terms
+               for c, b in [t.as_independent(var)] if type(b) in (*K._SUP, *K._MAX) and not c.has(var)}
+    if not bounded:
+        return []
+    G = sp.Add(*[-bounded[t] if t in bounded else t for t in terms])
+    prover = Prover(WORK)
+    for R in (sp.Integer(4), sp.Integer(16)):
+        try:
+            lower = prover.prove(F - G, var, (R, OO, False, True), 1, False)
+            return [_rule(K.diverges_by_comparison, lower, div[0], expr=F)
+                    for div in [_diverges(G, var, (R,))] if div]
+        except NoProof as exc:
+            if exc is prover.spent:
+                return []
+    return []
 
 
 def _diverges(F, var, starts) -> list:
@@ -1043,6 +1102,9 @@ def _witness_candidates(name, witness):
                        "at": at}
     if name in ("P1", "P5", "P6") and p is not None and p[1] == 0:    # f(t, 0) jumps at t = e1?
         yield {"kind": "jump", "points": [p]}
+    if name == "P7" and p is not None and p[1] == 0:                  # f(0, t) or a derivative jumps at t = e1?
+        for order in (0, 1, 2):
+            yield {"kind": "jump", "points": [(sp.Integer(0), p[0])], "var": "e2", "order": order}
     if str(w.get("e1")) == "0":          # at the origin (P8: e2 -> 0+ along e1 = 0)
         for v in {"P1": ("e2", "e1"), "P7": ("e2",), "P8": ("e2",), "P5": ("e1",), "P6": ("e1",)}.get(name, ()):
             yield {"kind": "origin_jump", "var": v}
@@ -1079,19 +1141,22 @@ def _witness_theorems(f, record):
 
 def _jump_theorems(f, record):
     """The jump witness (see `design_certificate`): the branch of the
-    Piecewise f on each side of (b, 0), its conditions' signs on (0, w], the
-    one-sided limits, a nonzero gap.  Fills in record's branches, width and
-    compare."""
+    Piecewise f on each side of b on the record's axis (var, default e1),
+    its conditions' signs on (0, w], the one-sided limits of the branches'
+    order-th derivatives, a nonzero gap.  Fills in record's branches, width
+    and compare."""
     from .design_certificate import CertificateError, H, branch_conditions, jump_parts
     if not isinstance(f, sp.Piecewise):
         raise NoProof("f is not a Piecewise")
-    b = record["points"][0][0]
+    v = sp.Symbol(record.get("var", "e1"), real=True)
+    order = record.get("order", 0)
+    b = record["points"][0][0 if v.name == "e1" else 1]
     for w in (sp.Rational(1, 4), sp.Rational(1, 64), sp.Rational(1, 1024)):
         found = []
         for side in (-1, 1):
             for i in range(len(f.args)):
                 try:
-                    conds = [_claim_one(options, w) for options in branch_conditions(f, b, side, i, w)]
+                    conds = [_claim_one(options, w) for options in branch_conditions(f, b, side, i, w, v)]
                 except (NoProof, CertificateError):
                     continue
                 found.append((i, conds))
@@ -1100,12 +1165,14 @@ def _jump_theorems(f, record):
             continue
         branches = [found[0][0], found[1][0]]
         try:
-            lims = [_rule(K.continuous_at_end, expr=e, var=H, c=0, width=w) for e in jump_parts(f, b, branches, w)]
+            lims = [_rule(K.continuous_at_end, expr=e, var=H, c=0, width=w)
+                    for e in jump_parts(f, b, branches, w, v, order)]
         except NoProof:
             continue
         left, right = (K.parse(t.claim.other) for t in lims)
-        value = f.subs({sp.Symbol("e1", real=True): b, sp.Symbol("e2", real=True): 0})
-        for compare, gap in (("sides", right - left), ("left", value - left), ("right", value - right)):
+        value = f.subs({v: b, sp.Symbol("e2" if v.name == "e1" else "e1", real=True): 0})
+        gaps = (("sides", right - left), ("left", value - left), ("right", value - right))
+        for compare, gap in gaps[:1 if order else 3]:
             try:
                 th = _rule(K.value_sign, value=gap)
             except NoProof:

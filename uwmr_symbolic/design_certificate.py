@@ -167,7 +167,7 @@ def _link_p1_p6(name, F, claims) -> list[str]:
     functions continuous where defined (the rules accept no others), so F' is
     continuous on (0, oo); with F'(0+) = 0 the gradient F'(|e|) e/|e| of
     f = F(|e|) is continuous on R^2, and |df/de2| <= U: P1.
-    P6: F' > 0 and F'(s)/s <= k with k > 0: h = F'/(k s) lies in [0, 1].
+    P6: F' >= 0 and F'(s)/s <= k with k > 0: h = F'/(k s) lies in [0, 1].
     (For a Piecewise F the continuity comes from a pair of claims instead:
     see `_link`.)"""
     dF = sp.diff(F, S)
@@ -356,12 +356,20 @@ def _link_reduced(name, F, dF, claims, k, exact) -> list[str]:
 #        the branch) --, the two branches tend to L-, L+ as h -> 0+
 #        (`continuous_at_end`), and L+ - L- (or f(b, 0) - L+, or f(b, 0) -
 #        L-) != 0.  Then t -> f(t, 0) is not continuous at b, so df/de1 does
-#        not exist at (b, 0): P1, P5, P6 fail.
+#        not exist at (b, 0): P1, P5, P6 fail.  With "var": "e2" the same
+#        along the e2 axis at (0, b), and with "order": k (1, 2; only L+ - L-,
+#        branches without Piecewise, Max, Min, sign) about the k-th
+#        derivatives of the branches in e2 (sympy.diff): g(t) = f(0, t) is
+#        the branch on each side, so g^(k) has one-sided limits L-, L+ at b;
+#        if d^k f/de2^k existed and were continuous at (0, b) they would be
+#        equal.  Order 0 or 1: df/de2 is not continuous at (0, b) (P1), and
+#        d2f/de2^2 cannot exist there (P7); order 2: P7.
 
 _SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
 _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
             "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P6", "P7"),
-            "jump": ("P1", "P5", "P6")}
+            "jump": ("P1", "P5", "P6", "P7")}
+_JUMPS = {("e1", 0): ("P1", "P5", "P6"), ("e2", 0): ("P1", "P7"), ("e2", 1): ("P1", "P7"), ("e2", 2): ("P7",)}
 _UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo"), ("P6", "e1", 1, "0"),
               ("P7", "e2", 2, "0")}
 
@@ -391,14 +399,19 @@ def growing(f, v, order=1, at="oo"):
     return e if at == "oo" else e.subs(H, 1 / H)
 
 
-def branch_conditions(f, b, side, i, w):
+def _on_axis(v, b, side):
+    """The point b + side*h of the v axis, the other variable 0."""
+    return {v: b + side * H, (E2 if v == E1 else E1): sp.Integer(0)}
+
+
+def branch_conditions(f, b, side, i, w, v=E1):
     """For the jump witness: what the kernel must show so that branch i of
-    the Piecewise f applies at (b + side*h, 0) for every h in (0, w]: one
-    entry per condition up to i (none for a final True), each a list of the
-    acceptable (expression in H, want, strict) sign claims."""
+    the Piecewise f applies at the point b + side*h of the v axis for every
+    h in (0, w]: one entry per condition up to i (none for a final True),
+    each a list of the acceptable (expression in H, want, strict) sign claims."""
     if not isinstance(f, sp.Piecewise) or not 0 <= i < len(f.args):
         raise CertificateError("jump: f is not a Piecewise with that branch")
-    at = {E1: b + side * H, E2: sp.Integer(0)}
+    at = _on_axis(v, b, side)
     out = []
     for j, (_, cond) in enumerate(f.args[:i + 1]):
         truth = j == i
@@ -419,22 +432,30 @@ def branch_conditions(f, b, side, i, w):
     return out
 
 
-def jump_parts(f, b, branches, w):
-    """The one-sided branch expressions at (b - h, 0) and (b + h, 0)."""
-    return [f.args[i][0].subs({E1: b + side * H, E2: sp.Integer(0)}, simultaneous=True)
+def jump_parts(f, b, branches, w, v=E1, order=0):
+    """The one-sided branch expressions (their order-th derivatives in v)
+    at the points b - h and b + h of the v axis."""
+    return [sp.diff(f.args[i][0], v, order).subs(_on_axis(v, b, side), simultaneous=True)
             for i, side in zip(branches, (-1, 1))]
 
 
 def _link_jump(name, f, claims, witness, bad) -> str:
-    (b, y), = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
+    v, order = witness.get("var", "e1"), witness.get("order", 0)
+    if name not in _JUMPS.get((v, order), ()):
+        raise CertificateError(f"{name}: a jump of the order-{order} derivative in {v} does not refute {name}")
+    v = {"e1": E1, "e2": E2}[v]
+    (x, y), = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
+    b, other = (x, y) if v == E1 else (y, x)
     branches, w = witness.get("branches"), parse(witness.get("width"))
-    if y != 0 or not (isinstance(branches, list) and len(branches) == 2 and all(type(i) is int for i in branches)):
+    if other != 0 or not (isinstance(branches, list) and len(branches) == 2 and all(type(i) is int for i in branches)):
         raise bad
+    if order and any(f.args[i][0].has(*_SMOOTH_ONLY) for i in branches):
+        raise CertificateError(f"{name}: a jump of a derivative needs branches without Piecewise, Max, Min or sign")
     on = (sp.srepr(H), "Integer(0)", sp.srepr(w), True, False)
     k = 0
     limits = []
-    for side, i, part in zip((-1, 1), branches, jump_parts(f, b, branches, w)):
-        for options in branch_conditions(f, b, side, i, w):
+    for side, i, part in zip((-1, 1), branches, jump_parts(f, b, branches, w, v, order)):
+        for options in branch_conditions(f, b, side, i, w, v):
             c = claims[k] if k < len(claims) else None
             if c is None or c.kind != "sign" or (c.var, c.lo, c.hi, c.lo_open, c.hi_open) != on or not any(
                     c.expr == sp.srepr(e) and c.want == want and (c.strict or not strict) for e, want, strict in options):
@@ -446,13 +467,16 @@ def _link_jump(name, f, claims, witness, bad) -> str:
             raise bad
         limits.append(parse(c.other))
         k += 1
-    value = _at(f, (b, y))
+    value = _at(f, (x, y))
     gaps = {"sides": limits[1] - limits[0], "left": value - limits[0], "right": value - limits[1]}
-    gap = gaps.get(witness.get("compare"))
+    gap = gaps.get(witness.get("compare")) if order == 0 or witness.get("compare") == "sides" else None
     if gap is None or len(claims) != k + 1 or claims[k].kind != "value_sign" or claims[k].expr != sp.srepr(gap) \
             or claims[k].want == 0:
         raise bad
-    return f"f(t, 0) jumps at t = {b}: left limit {limits[0]}, right limit {limits[1]}, value {value}"
+    what = {0: "f", 1: f"df/d{v}", 2: f"d2f/d{v}^2"}[order]
+    along = f"t, 0" if v == E1 else "0, t"
+    return (f"{what}({along}) jumps at t = {b}: left limit {limits[0]}, right limit {limits[1]}"
+            + (f", value {value}" if order == 0 else ""))
 
 
 def witness_values(kind, f, points) -> list:
@@ -522,7 +546,7 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         what = {(E2, 1): "df/de2(0, h)", (E1, 1): "df/de1(h, 0)/h", (E2, 2): "d2f/de2^2(0, h)"}[(v, order)]
         return f"{what} -> oo as h -> {'oo' if at == 'oo' else '0+'}", True
     if kind == "jump":
-        return _link_jump(name, f, claims, witness, bad), False
+        return _link_jump(name, f, claims, witness, bad), bool(witness.get("order", 0))
     points = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
     if len(points) != (2 if kind in ("circle", "step") else 1) or any(len(p) != 2 for p in points):
         raise bad

@@ -301,14 +301,30 @@ def verify_p1(a: Analysis) -> Verdict:
     if kf.upper is None:
         return unknown(f"C^1 proved, but no finite bound on |df/de2| found: {kf.reason}")
     v = proved(f"{c1.reason}; kf = sup|F'| in [{float(kf.lower):.9g}, {float(kf.upper):.9g}]")
-    if not kf.kernel:
-        return _lemmas(v, v, "f is C^1 with kf finite (continuity and the bound are the search's)")
-    # F' > 0 and F' <= c on (0, oo) (`certify.sup_theorems`), or |F'| <= c (`certify.sup_abs_theorems`)
-    own = kf.kernel[len(a.reduction):]
-    signed, upper = (own[:1], own[1]) if own[0].claim.kind == "sign" else ([], own[0])
+    if kf.kernel:
+        # F' > 0 and F' <= c on (0, oo) (`certify.sup_theorems`), or |F'| <= c (`certify.sup_abs_theorems`)
+        own = kf.kernel[len(a.reduction):]
+        bound = (own[:1], own[1]) if own[0].claim.kind == "sign" else ([], own[0])
+    else:       # P1 needs some finite bound only: F' >= 0 and F' <= U, U about 1/8 above the enclosure of kf
+        bound = _p1_bound(a, round_up(Fraction(kf.upper) * Fraction(9, 8), 2))
+        if bound is None:
+            return _lemmas(v, v, "f is C^1 with kf finite (continuity and the bound are the search's)")
+    signed, upper = bound
     return _lemmas(v, v, "f is C^1 (continuity at the origin)",     # (Piecewise: F, F' continuous at the end)
                    lambda: [*signed, *origin[:2], upper, *origin[2:]]
                    if (origin := origin_theorems(a.F, S, a.profile.ends)) else [])
+
+
+def _p1_bound(a: Analysis, U):
+    """([F' >= 0], F' <= U) on (0, oo) as kernel theorems for a profile
+    that is one formula, or None."""
+    F = _single_formula(a)
+    if F is None:
+        return None
+    dF = sp.diff(F, S)
+    positive = _nonnegative(dF)
+    upper = sup_upper_theorem(dF, U, S) if positive else None
+    return ([positive], upper) if upper else None
 
 
 def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
@@ -469,7 +485,7 @@ def verify_p6(a: Analysis) -> Verdict:
 
 
 def _p6_theorems(a: Analysis, k) -> list:
-    """F' > 0 (so h >= 0) and F'(s)/s <= k (so h <= 1), both on (0, oo).
+    """F' >= 0 (so h >= 0) and F'(s)/s <= k (so h <= 1), both on (0, oo).
     P6 asks for some constant k: when the search only encloses sup F'(s)/s,
     the kernel is asked for a k about 1/8 above it (a bound with no room
     would need a cover of ever finer boxes near the maximum)."""
@@ -477,8 +493,13 @@ def _p6_theorems(a: Analysis, k) -> list:
     if F is None:
         return _piecewise_p6(a, k)
     dF = sp.diff(F, S)
-    positive, _ = sign_theorems(dF, S, 0, sp.oo)
-    return [positive[0], upper] if positive and (upper := sup_upper_theorem(dF / S, k, S)) else []
+    positive = _nonnegative(dF)         # h >= 0
+    return [positive, upper] if positive and (upper := sup_upper_theorem(dF / S, k, S)) else []
+
+
+def _nonnegative(dF):
+    """F' > 0 on (0, oo) as a kernel theorem, else F' >= 0 (zeros on circles), else None."""
+    return (sign_theorems(dF, S, 0, sp.oo)[0] or sign_theorems(dF, S, 0, sp.oo, strict=False)[0] or [None])[0]
 
 
 def _piecewise_p6(a: Analysis, k) -> list:

@@ -505,11 +505,12 @@ _MAX = {sp.sin: sp.Integer(1), sp.cos: sp.Integer(1)}                       # ma
 
 
 def sign_below_sup(arg, *, expr, bounded):
-    """a + m G(Y) > 0 on I for exact constants a, m < 0 with a + m sup G >= 0,
-    G = tanh or erf (sup 1) or atan (sup pi/2): G(y) < sup G for every real
-    y.  For G = sin or cos (max 1, attained) a + m G(Y) >= a + m, so the
-    claim is strict only when a + m > 0, else weak.  `bounded` is G(Y); the
-    premise, any sign theorem about Y on I, shows Y defined there."""
+    """a + m G(Y) > 0 on I for exact constants a, m != 0 with a - |m| sup G
+    >= 0, G = tanh or erf (sup 1) or atan (sup pi/2), each odd: -sup G <
+    G(y) < sup G for every real y.  For G = sin or cos (|G| <= 1, attained)
+    a + m G(Y) >= a - |m|, so the claim is strict only when a - |m| > 0,
+    else weak.  `bounded` is G(Y); the premise, any sign theorem about Y on
+    I, shows Y defined there."""
     c = arg.claim
     _is_sign(arg)
     var = c.x()
@@ -519,8 +520,9 @@ def sign_below_sup(arg, *, expr, bounded):
     a = e.xreplace({g: 0})
     m = e.xreplace({g: 1}) - a
     _need(not (a.has(var) or m.has(var)) and a + m * g == e, lambda: f"{e} is not a + m {g}")
-    margin = _const_sign(a + m * top)
-    _need(_const_sign(m) < 0 and margin >= 0, "needs m < 0 and a + m sup G >= 0")
+    sign = _const_sign(m)
+    margin = _const_sign(a - sign * m * top)
+    _need(sign != 0 and margin >= 0, "needs m != 0 and a - |m| sup G >= 0")
     lo, hi = c.ends()
     return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, 1, type(g) in _SUP or margin > 0)
 sign_below_sup = rule("arb", "sympy-core")(sign_below_sup)
@@ -1157,6 +1159,23 @@ def diverges_by_growth(lower, *, expr, var, R, rate, k):
     _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
     return Claim("diverges", _s(e), _s(var), _s(R), "oo", False, True)
 diverges_by_growth = rule("arb", "sympy-core", "sympy-diff")(diverges_by_growth)
+
+
+def diverges_by_comparison(lower, div, *, expr):
+    """E(x) -> +oo as x -> oo from E - G >= 0 on <R, oo) (premise `lower`)
+    and G -> +oo (premise `div`, a `diverges` theorem); E defined for every
+    x > 0 (`defined_for_positive`).  Claim on [max(R, R'), oo)."""
+    _is_sign(lower)
+    c, d = lower.claim, div.claim
+    _need(d.kind == "diverges", "second premise must be a diverges theorem")
+    var = c.x()
+    e = _expr(expr, var)
+    _need((c.var, c.hi, c.want) == (d.var, "oo", 1) and c.expr == _s(e - d.e()),
+          "first premise must be E - G >= 0 on <R, oo), G the diverging expression")
+    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    (a, _), (b, _) = c.ends(), d.ends()
+    return Claim("diverges", _s(e), _s(var), _s(b if _lt(a, b) else a), "oo", False, True)
+diverges_by_comparison = rule("sympy-core")(diverges_by_comparison)
 
 
 def value_sign(*, value):
