@@ -417,10 +417,11 @@ def test_the_kernel_line_says_what_the_certificate_rechecks(tmp_path):
 
 def test_kernel_only_counts_what_the_kernel_rechecked(tmp_path):
     """--kernel-only: f = log(1 + log(1 + rho)) is proved throughout by the
-    search, but its F = log(1 + log(1 + s^2)) grows more slowly than log s,
-    which no kernel rule for F -> oo covers (F' >= k or s F' >= k on a tail:
-    s F' = 2 s^2/((1 + s^2)(1 + log(1 + s^2))) -> 0): P3 becomes unknown and
-    the exit status 3, while P2 (log 1 = 0), P4 and P5 (F' > 0) stay proved.
+    search; its P1 needs a bound of F' = 2s/((1 + s^2)(1 + log(1 + s^2)))
+    (kf is only enclosed), and the kernel has none on the tail, where the
+    form in t = 1/s is not defined at t = 0: P1 becomes unknown and the
+    exit status 3, while P2 (log 1 = 0), P3 (log of 1 + log(1 + s^2) -> oo),
+    P4 and P5 (F' > 0) stay proved.
     r09 (F = u - sin u) has P5 refuted with a kernel-checked witness (F' = 0
     exactly at u = 2 pi) and every proof kernel-checked: exit 1 either way.
     Design 1 is kernel-checked throughout and keeps exit 0."""
@@ -436,8 +437,8 @@ def test_kernel_only_counts_what_the_kernel_rechecked(tmp_path):
                         "P6": "proved", "P7": "proved", "P8": "proved"}
     assert slope["exit_status"] == 1
     verdicts = {p: v["verdict"] for p, v in slow["properties"].items()}
-    assert verdicts["P3"] == "unknown" and {verdicts[p] for p in ("P2", "P4", "P5")} == {"proved"}
-    assert slow["properties"]["P3"]["reason"].startswith("not re-checked by the kernel (the search says proved: ")
+    assert verdicts["P1"] == "unknown" and {verdicts[p] for p in ("P2", "P3", "P4", "P5")} == {"proved"}
+    assert slow["properties"]["P1"]["reason"].startswith("not re-checked by the kernel (the search says proved: ")
     assert slow["exit_status"] == 3 and proc.returncode == 1      # the batch: r09's refutation
 
 

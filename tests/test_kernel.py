@@ -793,6 +793,34 @@ def test_diverges_by_comparison():
     rejects(K.diverges_by_comparison, gap, gap, expr=E)                       # no divergence premise
     rejects(K.diverges_by_comparison, K.sign_below_sup(sturm(s, s, 2, 3), expr=E - G, bounded=sp.sin(s)), div,
             expr=E)                                                           # E >= G only up to 3
+    # the gap from 0 on, the divergence from 1: the claim starts at 1
+    early = K.sign_below_sup(sturm(s, s, 0, sp.oo, lo_open=True, hi_open=True), expr=E - G, bounded=sp.sin(s))
+    assert K.diverges_by_comparison(early, div, expr=E).claim.lo == sp.srepr(sp.Integer(1))
+
+
+def test_diverges_through_increasing():
+    """log(1 + log(1 + s^2)) -> oo: Y = 1 + log(1 + s^2) diverges at the log
+    rate (s Y' = 2 s^2/(1 + s^2) >= 1 on [1, oo), Sturm on s^2 - 1 after the
+    rewrite), and log is increasing and unbounded.  Not for a bounded G
+    (tanh, atan), a power with p <= 0, or a premise about another Y."""
+    Y = 1 + sp.log(1 + s ** 2)
+    g = s * sp.diff(Y, s) - 1
+    lower = K.sign_by_rewrite(
+        K.sign_of_product(
+            K.sign_by_sturm(expr=s ** 2 - 1, var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
+                            want=1, strict=False),
+            K.sign_by_sturm(expr=s ** 2 + 1, var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
+                            want=1, strict=True),
+            expr=(s ** 2 - 1) / (s ** 2 + 1)),
+        K.identity(lhs=g, rhs=(s ** 2 - 1) / (s ** 2 + 1), var=s, lo=sp.Integer(1), hi=sp.oo,
+                   lo_open=False, hi_open=True))
+    div = K.diverges_by_growth(lower, expr=Y, var=s, R=sp.Integer(1), rate="log", k=sp.Integer(1))
+    for E in (sp.log(Y), sp.sqrt(Y), Y ** Q(3, 2), sp.asinh(Y), sp.sinh(Y)):
+        d = K.diverges_through_increasing(div, expr=E)
+        assert d.claim == Claim("diverges", sp.srepr(E), sp.srepr(s), sp.srepr(sp.Integer(1)), "oo", False, True)
+    for E in (sp.tanh(Y), sp.atan(Y), 1 / Y, Y ** Q(-1, 2), sp.log(Y + 1), sp.log(s + 1)):
+        rejects(K.diverges_through_increasing, div, expr=E)
+    rejects(K.diverges_through_increasing, lower, expr=sp.log(Y))            # not a divergence
 
 
 def test_continuous_on_positive():

@@ -440,7 +440,11 @@ def test_defined_for_positive():
               sp.tanh(s - 1) + sp.atan(s) + sp.sin(s) + sp.cos(s) + sp.Abs(s - 2) + sp.erf(s),
               sp.log(sp.exp(s - 3)), 1 / (s * (s + 2)), sp.Integer(3), (s - 1) ** 2, sp.sqrt(2) / s,
               1 / (sp.sqrt(2) + (s - 1) ** 2), 1 / ((s - 1) ** 2 + sp.Abs(s - 3) + s),
-              1 / (s + (s - 1) ** 2 * (s - 2) ** 2), 1 / (s + (s - 1) ** 4), sp.log(s + sp.Abs(s - 1) * (s - 2) ** 2)):
+              1 / (s + (s - 1) ** 2 * (s - 2) ** 2), 1 / (s + (s - 1) ** 4), sp.log(s + sp.Abs(s - 1) * (s - 2) ** 2),
+              # log w > 0 where w - 1 > 0, >= 0 where w - 1 >= 0
+              1 / sp.log(1 + s), sp.log(1 + sp.log(1 + s ** 2)), 1 / (1 + sp.log(1 + s ** 2)),
+              sp.log(sp.log(2 + s)), sp.log(1 + sp.log(1 + sp.log(1 + s))), sp.sqrt(sp.log(2 + s)),
+              1 / (2 + sp.log(1 + (s - 1) ** 2)), sp.log(sp.log(1 + s))):
         assert d(e, s), e
     # not (or not syntactically) defined for every s > 0
     for e in (1 / (s - 1), sp.log(s - 1), sp.sqrt(s - 1), 1 / sp.sin(s), sp.log(sp.sin(s) + 2), s ** s,
@@ -449,7 +453,9 @@ def test_defined_for_positive():
               1 / (sp.exp(s) - 1), sp.sqrt(sp.log(s)), 1 / sp.Integer(-1) * sp.log(s - 2), sp.log(sp.log(s)),
               sp.exp(1 / (s - 1)), sp.cosh(sp.log(s - 1)), sp.log(sp.Pow(-1, Q(1, 3)) + s), 1 / (s + sp.Pow(-1, Q(1, 3))),
               s + sp.Pow(-1, Q(1, 3)), 1 / (s + (s - 1) ** 3), sp.log(s ** s), sp.log(s + (s - 1) ** 3 * (s - 2) ** 2),
-              1 / (((1 + sp.sqrt(2)) ** 2 - 3 - 2 * sp.sqrt(2)) * s), sp.log(s + s * (s - 1) ** 2 - 2 * s)):
+              1 / (((1 + sp.sqrt(2)) ** 2 - 3 - 2 * sp.sqrt(2)) * s), sp.log(s + s * (s - 1) ** 2 - 2 * s),
+              1 / sp.log(1 + (s - 1) ** 2), 1 / sp.log(1 + s ** 2 - s), sp.log(sp.log(1 + (s - 1) ** 2)),
+              sp.log(1 + sp.log(s))):
         assert not d(e, s), e
 
 
@@ -1297,6 +1303,9 @@ def test_sign_below_sup_claims_and_messages():
     for e in (Q(99, 100) + sp.tanh(s), Q(99, 100) - sp.tanh(s), Q(3, 2) - sp.atan(s), Q(3, 2) + sp.atan(s),
               -1 - sp.tanh(s)):
         assert why(B, pos, expr=e, bounded=e.atoms(sp.tanh, sp.atan).pop()) == needs, e
+    # an open right end stays open
+    assert B(sturm(s, s, 0, 2, lo_open=True, hi_open=True), expr=1 - sp.tanh(s), bounded=sp.tanh(s)).claim == \
+        sign(1 - sp.tanh(s), s, 0, 2, True, True)
     # m > 0: tanh > -1 and atan > -pi/2 everywhere (odd, sup never attained)
     assert B(pos, expr=1 + sp.tanh(s), bounded=sp.tanh(s)).claim == sign(1 + sp.tanh(s), s, 0, 2, True, False)
     assert B(pos, expr=sp.pi + 2 * sp.atan(s), bounded=sp.atan(s)).claim.strict

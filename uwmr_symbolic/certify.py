@@ -811,7 +811,20 @@ def growth_theorems(F, var, last=None) -> list:
             return [on_branch(F, var, (R, OO, False, True), prover, lambda g: _diverges(g, var, (R,))[0])]
         except (NoProof, IndexError, K.KernelError, Undefined):
             return []
-    return _diverges(F, var, (sp.Integer(4), sp.Integer(16))) or _diverges_above(F, var)
+    return _diverges(F, var, (sp.Integer(4), sp.Integer(16))) or _diverges_above(F, var) or _diverges_inside(F, var)
+
+
+def _diverges_inside(F, var) -> list:
+    """F = G(Y) -> oo because Y -> oo, G increasing and unbounded (log, exp,
+    sinh, asinh, Y^p): `diverges_through_increasing` (log(1 + log(1 + s^2)),
+    slower than any rate `diverges_by_growth` knows)."""
+    if not (isinstance(F, (sp.log, sp.exp, sp.sinh, sp.asinh)) or (F.is_Pow and F.exp.is_Rational and F.exp > 0)):
+        return []
+    inner = growth_theorems(F.args[0], var)
+    try:
+        return [_rule(K.diverges_through_increasing, inner[0], expr=F)] if inner else []
+    except NoProof:
+        return []
 
 
 def _diverges_above(F, var) -> list:

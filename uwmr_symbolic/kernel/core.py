@@ -784,7 +784,8 @@ sign_by_rewrite = rule("arb", "sympy-core")(sign_by_rewrite)
 def defined_for_positive(e, x) -> bool:
     """Syntactic sufficient check that e is defined (real, finite) at every
     x > 0: a denominator, a log's argument or a real power's base must be
-    built from x, positive constants, +, *, exp, cosh, powers of such."""
+    built from x, positive constants, +, *, exp, cosh, powers of such, and
+    log w with w - 1 so built (log w > 0; >= 0 when w - 1 >= 0)."""
     def pos(u):
         if u == x:
             return True
@@ -801,11 +802,15 @@ def defined_for_positive(e, x) -> bool:
             return u.exp.is_Rational and pos(u.base)
         if isinstance(u, (sp.exp, sp.cosh)):
             return defined(u.args[0])
+        if isinstance(u, sp.log):               # log w > 0 where w - 1 > 0
+            return pos(u.args[0] - 1)
         return False
 
     def nonneg(u):
         if pos(u):
             return True
+        if isinstance(u, sp.log):               # log w >= 0 where w - 1 >= 0
+            return nonneg(u.args[0] - 1)
         if u.is_Pow and u.exp.is_Integer and u.exp > 0 and u.exp % 2 == 0:
             return defined(u.base)
         if isinstance(u, sp.Abs):
@@ -1159,6 +1164,23 @@ def diverges_by_growth(lower, *, expr, var, R, rate, k):
     _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
     return Claim("diverges", _s(e), _s(var), _s(R), "oo", False, True)
 diverges_by_growth = rule("arb", "sympy-core", "sympy-diff")(diverges_by_growth)
+
+
+def diverges_through_increasing(div, *, expr):
+    """G(Y) -> +oo as x -> oo when Y -> +oo (premise `div`), for G = log,
+    exp, sinh, asinh or a power Y^p with rational p > 0 (increasing and
+    unbounded on the values Y takes for large x); E = G(Y) defined for every
+    x > 0 (`defined_for_positive`).  Claim on the premise's [R, oo)."""
+    c = div.claim
+    _need(c.kind == "diverges", "premise must be a diverges theorem")
+    var = c.x()
+    e = _expr(expr, var)
+    unbounded = isinstance(e, (sp.log, sp.exp, sp.sinh, sp.asinh)) or (
+        e.is_Pow and e.exp.is_Rational and _const_sign(e.exp) > 0)
+    _need(unbounded and c.expr == _s(e.args[0]), lambda: f"{e} is not G(Y) with the premise about Y")
+    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    return dataclasses.replace(c, expr=_s(e))
+diverges_through_increasing = rule("sympy-core")(diverges_through_increasing)
 
 
 def diverges_by_comparison(lower, div, *, expr):
