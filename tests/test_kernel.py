@@ -751,6 +751,20 @@ def test_identity_plane():
     rejects(K.identity_plane, lhs=x, rhs=x, x=x, y=sp.Symbol("y", positive=True))
 
 
+def log_rate(g, s):
+    """g = (s^2 - 1)/(s^2 + 1) >= 0 on [1, oo) (Sturm on both factors, then
+    the identity): s F' - 1 for F = log(1 + s^2) + c."""
+    return K.sign_by_rewrite(
+        K.sign_of_product(
+            K.sign_by_sturm(expr=s ** 2 - 1, var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
+                            want=1, strict=False),
+            K.sign_by_sturm(expr=s ** 2 + 1, var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
+                            want=1, strict=True),
+            expr=(s ** 2 - 1) / (s ** 2 + 1)),
+        K.identity(lhs=g, rhs=(s ** 2 - 1) / (s ** 2 + 1), var=s, lo=sp.Integer(1), hi=sp.oo,
+                   lo_open=False, hi_open=True))
+
+
 def test_continuous_at_end_and_diverges_by_growth():
     """s/(1 + s^2) is continuous on [0, 1/2] with value 0 at 0; 1/s is not
     defined at 0.  log(1 + s^2):
@@ -762,15 +776,7 @@ def test_continuous_at_end_and_diverges_by_growth():
     rejects(K.continuous_at_end, expr=1 / s, var=s, c=ZERO, width=Q(1, 2))
     F = sp.log(1 + s ** 2)
     g = s * sp.diff(F, s) - 1
-    lower = K.sign_by_rewrite(
-        K.sign_of_product(
-            K.sign_by_sturm(expr=s ** 2 - 1, var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
-                            want=1, strict=False),
-            K.sign_by_sturm(expr=s ** 2 + 1, var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
-                            want=1, strict=True),
-            expr=(s ** 2 - 1) / (s ** 2 + 1)),
-        K.identity(lhs=g, rhs=(s ** 2 - 1) / (s ** 2 + 1), var=s, lo=sp.Integer(1), hi=sp.oo,
-                   lo_open=False, hi_open=True))
+    lower = log_rate(g, s)
     d = K.diverges_by_growth(lower, expr=F, var=s, R=sp.Integer(1), rate="log", k=sp.Integer(1))
     assert (d.claim.kind, d.claim.lo, d.claim.hi) == ("diverges", sp.srepr(sp.Integer(1)), "oo")
     rejects(K.diverges_by_growth, lower, expr=F, var=s, R=sp.Integer(1), rate="linear", k=sp.Integer(1))
@@ -805,15 +811,7 @@ def test_diverges_through_increasing():
     (tanh, atan), a power with p <= 0, or a premise about another Y."""
     Y = 1 + sp.log(1 + s ** 2)
     g = s * sp.diff(Y, s) - 1
-    lower = K.sign_by_rewrite(
-        K.sign_of_product(
-            K.sign_by_sturm(expr=s ** 2 - 1, var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
-                            want=1, strict=False),
-            K.sign_by_sturm(expr=s ** 2 + 1, var=s, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
-                            want=1, strict=True),
-            expr=(s ** 2 - 1) / (s ** 2 + 1)),
-        K.identity(lhs=g, rhs=(s ** 2 - 1) / (s ** 2 + 1), var=s, lo=sp.Integer(1), hi=sp.oo,
-                   lo_open=False, hi_open=True))
+    lower = log_rate(g, s)
     div = K.diverges_by_growth(lower, expr=Y, var=s, R=sp.Integer(1), rate="log", k=sp.Integer(1))
     for E in (sp.log(Y), sp.sqrt(Y), Y ** Q(3, 2), sp.asinh(Y), sp.sinh(Y)):
         d = K.diverges_through_increasing(div, expr=E)
