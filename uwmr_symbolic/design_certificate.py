@@ -474,7 +474,7 @@ def _link_jump(name, f, claims, witness, bad) -> str:
             or claims[k].want == 0:
         raise bad
     what = {0: "f", 1: f"df/d{v}", 2: f"d2f/d{v}^2"}[order]
-    along = f"t, 0" if v == E1 else "0, t"
+    along = "t, 0" if v == E1 else "0, t"
     return (f"{what}({along}) jumps at t = {b}: left limit {limits[0]}, right limit {limits[1]}"
             + (f", value {value}" if order == 0 else ""))
 
