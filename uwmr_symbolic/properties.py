@@ -215,8 +215,7 @@ class Analysis:
         cert = certify_kf(self)
         scaled = scale(cert, sp.sqrt(self.ratio))
         scaled.kernel = self.reduction + cert.kernel if cert.kernel and (self.ratio == 1 or self.reduction) else []
-        scaled.unchecked = [*([REDUCTION] if not self.reduction else []), *cert.unchecked] if scaled.kernel \
-            else [REDUCTION, *cert.unchecked]
+        scaled.unchecked = ([] if scaled.kernel and self.reduction else [REDUCTION]) + cert.unchecked
         return scaled
 
 
