@@ -201,6 +201,13 @@ class Analysis:
         return verify_p5(self)
 
     @cached_property
+    def slope_sign(self):
+        """F' > 0 on (0, oo) as a kernel theorem, else F' >= 0 (zeros on
+        circles: enough for P1 and P6), else None; for an F of one formula."""
+        dF = sp.diff(self.F, S)
+        return (sign_theorems(dF, S, 0, sp.oo)[0] or sign_theorems(dF, S, 0, sp.oo, strict=False)[0] or [None])[0]
+
+    @cached_property
     def reduction(self) -> list:
         """The kernel's theorems of an elliptic reduction (r != 1): f(e1, e2)
         = F(sqrt(e1^2 + r e2^2)) and r > 0; [] when r = 1 (P4 carries it) or
@@ -320,9 +327,8 @@ def _p1_bound(a: Analysis, U):
     F = _single_formula(a)
     if F is None:
         return None
-    dF = sp.diff(F, S)
-    positive = _nonnegative(dF)
-    upper = sup_upper_theorem(dF, U, S) if positive else None
+    positive = a.slope_sign
+    upper = sup_upper_theorem(sp.diff(F, S), U, S) if positive else None
     return ([positive], upper) if upper else None
 
 
@@ -491,14 +497,10 @@ def _p6_theorems(a: Analysis, k) -> list:
     F = _single_formula(a)
     if F is None:
         return _piecewise_p6(a, k)
-    dF = sp.diff(F, S)
-    positive = _nonnegative(dF)         # h >= 0
-    return [positive, upper] if positive and (upper := sup_upper_theorem(dF / S, k, S)) else []
+    positive = a.slope_sign         # h >= 0
+    return [positive, upper] if positive and (upper := sup_upper_theorem(sp.diff(F, S) / S, k, S)) else []
 
 
-def _nonnegative(dF):
-    """F' > 0 on (0, oo) as a kernel theorem, else F' >= 0 (zeros on circles), else None."""
-    return (sign_theorems(dF, S, 0, sp.oo)[0] or sign_theorems(dF, S, 0, sp.oo, strict=False)[0] or [None])[0]
 
 
 def _piecewise_p6(a: Analysis, k) -> list:
