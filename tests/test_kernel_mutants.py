@@ -751,7 +751,15 @@ def test_continuous_at_end_and_diverges_by_growth_claims_and_messages():
     assert D(lg, expr=s ** 2, var=s, R=I1, rate="log", k=I2).claim == d.claim
     assert why(D, lg, expr=s ** 2, var=s, R=I1, rate="linear", k=I2) == "premise must be 2*s - 2 >= 0 on [1, oo)"
     assert why(D, lin, expr=s ** 2, var=s, R=I1, rate="log", k=I2) == "premise must be 2*s**2 - 2 >= 0 on [1, oo)"
-    assert why(D, lin, expr=s ** 2, var=s, R=I1, rate="square", k=I2) == "rate is 'linear' or 'log'"
+    for rate in ("square", I1, I0, Q(3, 2), -Q(1, 2)):
+        assert why(D, lin, expr=s ** 2, var=s, R=I1, rate=rate, k=I2) == \
+            "rate is 'linear', 'log' or a rational p with 0 < p < 1"
+    # rate p = 1/2: s^(1/2) (sqrt(s))' - 1/2 = 0 >= 0 on [1, oo); with p = 1/4 the premise is another
+    half = sturm(sp.Integer(0), s, 1, oo, hi_open=True, strict=False)
+    assert D(half, expr=sp.sqrt(s), var=s, R=I1, rate=Q(1, 2), k=Q(1, 2)).claim == \
+        Claim("diverges", R(sp.sqrt(s)), R(s), R(I1), "oo", False, True)
+    assert why(D, half, expr=sp.sqrt(s), var=s, R=I1, rate=Q(1, 4), k=Q(1, 2)) == \
+        "premise must be s**(1/4)/2 - 1/2 >= 0 on [1, oo)"
     for Rv, k in ((I0, I2), (I1, I0), (oo, I2), (I1, oo), (-I1, I2), (I1, -I2)):
         assert why(D, lin, expr=s ** 2, var=s, R=Rv, rate="linear", k=k) == "R > 0 and k > 0"
     assert why(D, lin, expr=s ** 2, var=s, R=I2, rate="linear", k=I2) == "premise must be 2*s - 2 >= 0 on [2, oo)"

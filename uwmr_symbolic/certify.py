@@ -849,11 +849,25 @@ def _diverges_above(F, var) -> list:
     return []
 
 
+def _tail_first(prover, e, var, R):
+    """e >= 0 on [R, oo), by s = 1/t first: a sum of unbounded terms (the
+    rates of `_diverges`) would spend the budget in the sign rules."""
+    try:
+        return prover._unbounded(e, var, (R, OO, False, True), 1, False, 0)
+    except NoProof as exc:
+        if exc is prover.spent:
+            raise
+    return prover.prove(e, var, (R, OO, False, True), 1, False)
+
+
+_POWER_RATES = (sp.Rational(1, 2), sp.Rational(1, 4))     # F ~ s^p: F' s^(1-p) >= k (`diverges_by_growth`)
+
+
 def _diverges(F, var, starts) -> list:
     d = sp.diff(F, var)
     prover = Prover(WORK)        # one budget for every attempt
     for R in starts:
-        for rate, g in (("log", var * d), ("linear", d)):
+        for rate, g in (("log", var * d), ("linear", d), *((p, var ** (1 - p) * d) for p in _POWER_RATES)):
             try:
                 lo = float(evaluate(g, var, R, R, bits=128).lo.lower())
             except Undefined:
@@ -865,7 +879,7 @@ def _diverges(F, var, starts) -> list:
                     continue
                 k = sp.Rational(k.numerator, k.denominator)
                 try:
-                    th = prover.prove(g - k, var, (R, OO, False, True), 1, False)
+                    th = _tail_first(prover, g - k, var, R)
                     return [_rule(K.diverges_by_growth, th, expr=F, var=var, R=R, rate=rate, k=k)]
                 except NoProof as exc:
                     if exc is prover.spent:

@@ -1147,17 +1147,20 @@ continuous_on_positive = rule("sympy-core")(continuous_on_positive)
 
 def diverges_by_growth(lower, *, expr, var, R, rate, k):
     """E(x) -> +oo as x -> oo.  Premise: G - k >= 0 on [R, oo), with k > 0
-    exact and G = E' (rate "linear") or G = x E' (rate "log"), E' being
-    `sympy.diff(E)`; E defined for every x > 0 (`defined_for_positive`), R > 0.
-    By the mean value theorem E(x) >= E(R) + k (x - R), resp. (integrating
-    E' >= k/x) E(x) >= E(R) + k log(x/R); both tend to +oo."""
+    exact and G = E' (rate "linear"), G = x E' (rate "log") or G = x^(1-p) E'
+    (rate a rational p, 0 < p < 1), E' being `sympy.diff(E)`; E defined for
+    every x > 0 (`defined_for_positive`), R > 0.  By the mean value theorem
+    E(x) >= E(R) + k (x - R); integrating E' >= k/x, resp. E' >= k x^(p-1),
+    E(x) >= E(R) + k log(x/R), resp. E(R) + (k/p)(x^p - R^p); all tend to +oo."""
     _is_sign(lower)
     R, k = _number(R), _number(k)
     _need(R != OO and _lt(0, R) and k != OO and _lt(0, k), "R > 0 and k > 0")
-    _need(rate in ("linear", "log"), "rate is 'linear' or 'log'")
+    power = rate if isinstance(rate, sp.Rational) else None
+    _need(rate in ("linear", "log") or (power is not None and 0 < power < 1),
+          "rate is 'linear', 'log' or a rational p with 0 < p < 1")
     e = _expr(expr, var)
     d = sp.diff(e, var)
-    g = d if rate == "linear" else var * d
+    g = d if rate == "linear" else var * d if rate == "log" else var ** (1 - power) * d
     c = lower.claim
     _need((c.expr, c.var, c.lo, c.lo_open, c.hi, c.want) == (_s(g - k), _s(var), _s(R), False, "oo", 1),
           lambda: f"premise must be {g - k} >= 0 on [{R}, oo)")
