@@ -60,6 +60,20 @@ def test_verify_in_a_worker_process_gives_the_same_report():
     assert there.exit_status == here.exit_status == 0
 
 
+def test_kernel_only_in_the_api_reaches_the_worker():
+    """kernel_only=True, in a worker process as here: log(1 + log(1 + rho))
+    has P1 proved by the search only (no kernel bound of F' on the tail), so
+    it becomes unknown and the report is inconclusive; P2 stays proved.  The
+    kernel summary is the same either way."""
+    loglog = sp.log(1 + sp.log(1 + e1**2 + e2**2))
+    searched = verify(loglog, name="loglog", worker=False)
+    strict = verify(loglog, name="loglog", kernel_only=True)
+    assert searched.properties["P1"].status == "proved" and strict.properties["P1"].status == "unknown"
+    assert strict.properties["P1"].reason.startswith("not re-checked by the kernel (the search says proved")
+    assert strict.properties["P2"].status == "proved" and strict.exit_status == 3
+    assert strict.kernel == searched.kernel and "P1" in strict.kernel["search"]
+
+
 def test_verify_from_another_thread_respects_its_timeout():
     out = {}
 

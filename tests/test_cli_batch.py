@@ -419,15 +419,19 @@ def test_kernel_only_counts_what_the_kernel_rechecked(tmp_path):
     """--kernel-only: f = log(1 + log(1 + rho)) is proved throughout by the
     search; its P1 needs a bound of F' = 2s/((1 + s^2)(1 + log(1 + s^2)))
     (kf is only enclosed), and the kernel has none on the tail, where the
-    form in t = 1/s is not defined at t = 0: P1 becomes unknown and the
-    exit status 3, while P2 (log 1 = 0), P3 (log of 1 + log(1 + s^2) -> oo),
-    P4 and P5 (F' > 0) stay proved.
-    r09 (F = u - sin u) has P5 refuted with a kernel-checked witness (F' = 0
-    exactly at u = 2 pi) and every proof kernel-checked: exit 1 either way.
-    Design 1 is kernel-checked throughout and keeps exit 0."""
+    form in t = 1/s is not defined at t = 0.  P1 then becomes unknown, bound
+    (10) is not checked (no kernel-checked kf: W undecided) and the exit
+    status is 3, while P2 (log 1 = 0), P3 (log of 1 + log(1 + s^2) -> oo),
+    P4 and P5 (F' > 0) stay proved.  Without the switch P1 is proved and
+    the W bound is checked with the enclosure.  r09 (F = u - sin u) has P5
+    refuted with a kernel-checked witness (F' = 0 exactly at u = 2 pi) and
+    every proof kernel-checked: exit 1 either way.  Design 1 is
+    kernel-checked throughout and keeps exit 0.  The two modes have cache
+    entries of their own."""
     loglog = tmp_path / "loglog.py"
     loglog.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\n"
-                      "f = sp.log(1 + sp.log(1 + e1**2 + e2**2))\n")
+                      "f = sp.log(1 + sp.log(1 + e1**2 + e2**2))\n"
+                      "gains = {'easy': dict(k1=0.1, k2=0.1, lam=0.1, Vmax=1.0, Wmax=2.0, Vr_max=0.5, Wr_max=0.5)}\n")
     designs = [ROOT / "designs/design1_jiang.py", ROOT / "tests/designs/r09_slope_zero.py", loglog]
     proc = run([*designs, "--format", "json", "--kernel-only"], tmp_path / "cache")
     one, slope, slow = json.loads(proc.stdout)
@@ -439,22 +443,29 @@ def test_kernel_only_counts_what_the_kernel_rechecked(tmp_path):
     verdicts = {p: v["verdict"] for p, v in slow["properties"].items()}
     assert verdicts["P1"] == "unknown" and {verdicts[p] for p in ("P2", "P3", "P4", "P5")} == {"proved"}
     assert slow["properties"]["P1"]["reason"].startswith("not re-checked by the kernel (the search says proved: ")
+    assert "P1" in slow["kernel"]["search"] and slow["gains"]["easy"]["W_ok"] is None
     assert slow["exit_status"] == 3 and proc.returncode == 1      # the batch: r09's refutation
+    searched = json.loads(run([loglog, "--format", "json"], tmp_path / "cache").stdout)
+    assert searched["cached"] is False                            # not the --kernel-only entry
+    assert searched["properties"]["P1"]["verdict"] == "proved" and searched["gains"]["easy"]["W_ok"] is True
+    assert searched["kernel"] == slow["kernel"]                   # the same certificate, the same summary
+    again = json.loads(run([loglog, "--format", "json", "--kernel-only"], tmp_path / "cache").stdout)
+    assert again["cached"] is True and again["properties"] == slow["properties"]
 
 
-def test_kernel_only_exit_status():
-    """All proved by the search, P3 and kf not by the kernel: inconclusive
-    (3); a gain check failing on a kf the kernel did not certify does not
-    refute (3), on a kernel-checked kf it does (1)."""
-    d = {"properties": {p: {"verdict": "proved", "reason": "r"} for p in PROPS}, "exit_status": 0,
-         "kernel": {"checked": [p for p in PROPS if p != "P3"], "search": ["P3", "kf"]},
-         "gains": {"circle": {"V_ok": True, "W_ok": True}}}
-    out = batch.kernel_only(d)
-    assert out["exit_status"] == 3 and out["properties"]["P3"]["verdict"] == "unknown"
-    assert d["properties"]["P3"]["verdict"] == "proved"            # the input is not changed
-    failing = dict(d, exit_status=1, gains={"circle": {"V_ok": True, "W_ok": False}})
-    assert batch.kernel_only(failing)["exit_status"] == 3
-    checked = dict(failing, kernel={"checked": [*PROPS, "kf"], "search": []})
-    assert batch.kernel_only(checked)["exit_status"] == 1
-    assert batch.kernel_only(dict(checked, exit_status=0, gains={}))["exit_status"] == 0
-    assert batch.kernel_only({"error": "x", "exit_status": 2}) == {"error": "x", "exit_status": 2}
+def test_kernel_verdict_and_kf_checked():
+    """A verdict the kernel did not re-check becomes unknown with the search's
+    claim in its reason; kf counts as checked by its own entry or by a
+    checked refutation of P1 whose witness is df/de2 -> oo."""
+    from uwmr_symbolic.verdict import proved, refuted
+    from uwmr_symbolic.verify import _kf_checked, kernel_verdict
+    kernel = {"checked": ["P1"], "search": ["P3", "P5"]}
+    v = kernel_verdict("P3", proved("F > 0"), kernel)
+    assert (v.status, v.reason) == ("unknown", "not re-checked by the kernel (the search says proved: F > 0)")
+    assert kernel_verdict("P5", refuted("F' = 0 at 1", {"e1": 1}), kernel).status == "unknown"
+    kept = proved("C^1")
+    assert kernel_verdict("P1", kept, kernel) is kept
+    unbounded = {"properties": {"P1": {"witness": {"kind": "unbounded", "var": "e2"}}}}
+    assert _kf_checked(unbounded, kernel) and not _kf_checked(unbounded, {"checked": [], "search": ["P1"]})
+    assert not _kf_checked({"properties": {"P1": {"witness": {"kind": "jump"}}}}, kernel)
+    assert _kf_checked(None, {"checked": ["kf"], "search": []}) and not _kf_checked(None, kernel)

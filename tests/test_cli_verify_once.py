@@ -16,9 +16,9 @@ def test_codegen_and_simulate_share_one_verification(tmp_path, monkeypatch):
     calls = []
     real = verify_module.verify_design
 
-    def counting(path, timeout=verify_module.DEFAULT_TIMEOUT):
+    def counting(path, timeout=verify_module.DEFAULT_TIMEOUT, kernel_only=False):
         calls.append((str(path), timeout))
-        return real(path, timeout=timeout)
+        return real(path, timeout=timeout, kernel_only=kernel_only)
 
     monkeypatch.setattr(verify_module, "verify_design", counting)
     status = cli.main([str(design), "--codegen", str(tmp_path / "out"), "--simulate", "--no-cache",

@@ -46,10 +46,7 @@ def _answer(data: bytes) -> tuple:
     try:
         os.chdir(job["cwd"])
         with contextlib.redirect_stdout(captured), contextlib.redirect_stderr(captured):
-            if job["kind"] == "file":
-                report = api._verify_file_here(job["path"], job["timeout"])
-            else:
-                report = api._verify_here(job["namespace"], job["path"], job["timeout"])
+            report = api.verify_job(job)
     except Exception as exc:  # noqa: BLE001 - a verifier bug is the caller's exception
         return "error", RuntimeError(f"the verifier failed: {type(exc).__name__}: {exc}"), captured.getvalue()
     return "report", report, captured.getvalue()

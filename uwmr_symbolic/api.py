@@ -67,7 +67,7 @@ def _stopped(path: Path, timeout: float, seconds: float) -> Report:
     return Report(path, None, props, None, seconds=seconds, timed_out=True)
 
 
-def _verify_here(namespace: dict, path: Path, timeout: float) -> Report:
+def _verify_here(namespace: dict, path: Path, timeout: float, kernel_only: bool = False) -> Report:
     """verify() in this thread: check the names, then P1-P8, kf, replay, gains."""
     start = time.monotonic()
     try:
@@ -78,12 +78,19 @@ def _verify_here(namespace: dict, path: Path, timeout: float) -> Report:
     except TimeLimit:
         props = {p: _timed_out("checking f, params and gains", timeout) for p in PROPERTIES}
         return Report(path, None, props, None, seconds=time.monotonic() - start, timed_out=True)
-    return verify_loaded(design, timeout, start)
+    return verify_loaded(design, timeout, start, kernel_only)
 
 
-def _verify_file_here(path, timeout: float) -> Report:
+def _verify_file_here(path, timeout: float, kernel_only: bool = False) -> Report:
     from .verify import verify_design      # looked up at each call (tests may replace it)
-    return verify_design(path, timeout=timeout)
+    return verify_design(path, timeout=timeout, kernel_only=kernel_only)
+
+
+def verify_job(job: dict) -> Report:
+    """Run a job of `_run` in this thread (here, or in the worker process)."""
+    if job["kind"] == "file":
+        return _verify_file_here(job["path"], job["timeout"], job.get("kernel_only", False))
+    return _verify_here(job["namespace"], job["path"], job["timeout"], job.get("kernel_only", False))
 
 
 def _run(job: dict, worker: bool) -> Report:
@@ -99,9 +106,7 @@ def _run(job: dict, worker: bool) -> Report:
             if report is not None:
                 return report
     with no_signals():
-        if job["kind"] == "file":
-            return _verify_file_here(job["path"], job["timeout"])
-        return _verify_here(job["namespace"], job["path"], job["timeout"])
+        return verify_job(job)
 
 
 class _Worker:
@@ -193,7 +198,7 @@ def _in_worker(data: bytes, job: dict) -> Report | None:
 
 
 def verify(f: sp.Expr, params: Mapping | None = None, gains: Mapping | None = None, *, name: str | None = None,
-           timeout: float = DEFAULT_TIMEOUT, worker: bool = True) -> Report:
+           timeout: float = DEFAULT_TIMEOUT, worker: bool = True, kernel_only: bool = False) -> Report:
     """Verify a candidate ``f(e1, e2)`` for the controller family (9).
 
     Decides P1-P8 (proved, refuted with a witness, or unknown), certifies
@@ -223,6 +228,11 @@ def verify(f: sp.Expr, params: Mapping | None = None, gains: Mapping | None = No
         Verify in a worker process (default), killed if it outlives the time
         limit even inside a long C call; ``False`` verifies in the calling
         thread (faster to start; limited by a watchdog thread, any thread).
+    kernel_only:
+        Count only the verdicts the trusted kernel re-checked: a proof or
+        refutation resting on the search alone becomes ``unknown``, and
+        bound (10) needs a kernel-checked kf (``report.kernel`` says which
+        verdicts the kernel re-checked, in either mode).
 
     Returns a `Report` (``exit_status``, ``properties``, ``kf``, ``gains``;
     ``to_dict()``, rich display in a notebook, ``plot_profile()``).
@@ -239,22 +249,25 @@ def verify(f: sp.Expr, params: Mapping | None = None, gains: Mapping | None = No
     namespace = {"f": f, "params": dict(params) if params is not None else None,
                  "gains": {k: dict(v) if isinstance(v, Mapping) else v for k, v in gains.items()}
                  if isinstance(gains, Mapping) else gains, "name": name}
-    report = _run({"kind": "memory", "namespace": namespace, "path": path, "timeout": float(timeout)}, worker)
+    report = _run({"kind": "memory", "namespace": namespace, "path": path, "timeout": float(timeout),
+                   "kernel_only": bool(kernel_only)}, worker)
     if report.error is not None:
         raise DesignError(report.error)
     return report
 
 
-def verify_file(path: str | os.PathLike, *, timeout: float = DEFAULT_TIMEOUT, worker: bool = True) -> Report:
+def verify_file(path: str | os.PathLike, *, timeout: float = DEFAULT_TIMEOUT, worker: bool = True,
+                kernel_only: bool = False) -> Report:
     """Verify a design file (Python defining ``f`` and optionally ``params``,
     ``gains``, ``name``, ``description``), as ``uwmr-verify FILE`` does.
 
     Never raises for a bad file: ``report.error`` then holds the one-line
-    reason and ``report.exit_status`` is 2.  `timeout` and `worker` as in
-    `verify`."""
+    reason and ``report.exit_status`` is 2.  `timeout`, `worker` and
+    `kernel_only` as in `verify`."""
     if not timeout > 0:
         raise ValueError(f"timeout must be positive, got {timeout!r}")
-    return _run({"kind": "file", "path": Path(path), "timeout": float(timeout)}, worker)
+    return _run({"kind": "file", "path": Path(path), "timeout": float(timeout),
+                 "kernel_only": bool(kernel_only)}, worker)
 
 
 def generate(report: Report, out_dir: str | os.PathLike, targets: Iterable[str] = TARGETS, *,

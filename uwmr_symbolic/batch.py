@@ -23,7 +23,7 @@ from .cache import ResultCache, design_key, source_hash
 from .report import design_fields, to_dict
 from .properties import PROPERTIES
 from .verdict import unknown
-from .verify import EXIT_INCONCLUSIVE, EXIT_OK, EXIT_REFUTED, Report, load_with_limit, verify_loaded
+from .verify import Report, kernel_summary, load_with_limit, verify_loaded
 
 GLOB_CHARS = set("*?[")
 
@@ -45,7 +45,8 @@ def expand_paths(args: list[str]) -> list[str]:
     return list(dict.fromkeys(out))
 
 
-def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool = True) -> dict:
+def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool = True,
+               kernel_only: bool = False) -> dict:
     """Verify one file, or serve its result from the cache."""
     start = time.monotonic()
     loaded = load_with_limit(path, timeout, start)
@@ -53,62 +54,32 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
         return {**to_dict(loaded), "cached": False} if loaded.error is None else to_dict(loaded)
     design = loaded
     cache = ResultCache(cache_dir) if use_cache else None
-    key = design_key(design) if use_cache else None
+    key = (design_key(design) | ({"kernel_only": True} if kernel_only else {})) if use_cache else None
     if cache is not None:
         hit = cache.get(key, timeout)     # not if computed with less time while a limit expired
-        if hit is not None and isinstance(hit.get("exit_status"), int) and rechecks(hit, design):
+        if hit is not None and isinstance(hit.get("exit_status"), int) and rechecks(hit, design, kernel_only):
             return {**hit, **design_fields(design), "cached": True}
-    report = verify_loaded(design, timeout, start)
-    cert = certificates.build(report)
-    result = {**to_dict(report), "certificate": cert, "kernel": kernel_summary(certificates.check(cert))}
-    if cache is not None:
+    report = verify_loaded(design, timeout, start, kernel_only)
+    result = {**to_dict(report), "certificate": report.certificate}
+    if cache is not None and report.certificate is not None and not {"error", "stopped"} & set(report.kernel):
         cache.put(key, result, timeout=timeout, timed_out=report.timed_out)
     return {**result, "cached": False}
 
 
-def kernel_summary(checked) -> dict:
-    """Which verdicts the kernel checked (a proof with nothing left to the
-    search, a refutation with a kernel-checked witness), from the re-checked
-    design certificate, and which rest on the search."""
-    ok = [c.name for c in checked if c.kernel_checked or c.refutation_checked]
-    return {"checked": ok, "search": [c.name for c in checked if c.status in ("proved", "refuted") and
-                                      c.name not in ok]}
-
-
-def kernel_only(d: dict) -> dict:
-    """The result counting only what the kernel re-checked (`--kernel-only`):
-    a verdict resting on the search alone (`kernel_summary`) becomes
-    "unknown", a gain check of bound (10) counts only with a kernel-checked
-    kf, and the exit status follows (0 only when every property and kf are
-    kernel-checked and the gains pass)."""
-    if d.get("error") is not None or "kernel" not in d:
-        return d
-    search, checked = set(d["kernel"]["search"]), set(d["kernel"]["checked"])
-    props = {p: dict(v, verdict="unknown", reason=f"not re-checked by the kernel (the search says {v['verdict']}: "
-                                                   f"{v['reason']})") if p in search else v
-             for p, v in d["properties"].items()}
-    verdicts = {v["verdict"] for v in props.values()}
-    gains_fail = "kf" in checked and any(not g["V_ok"] or g["W_ok"] is False for g in d["gains"].values())
-    if "refuted" in verdicts or gains_fail:
-        status = EXIT_REFUTED
-    elif d["exit_status"] == EXIT_OK and verdicts == {"proved"} and "kf" in checked:
-        status = EXIT_OK
-    else:
-        status = EXIT_INCONCLUSIVE
-    return dict(d, properties=props, exit_status=status)
-
-
-def rechecks(hit: dict, design) -> bool:
+def rechecks(hit: dict, design, kernel_only: bool = False) -> bool:
     """A cached result is used only if its design certificate re-checks in
-    the kernel, is about this design's f, and agrees with the cached verdicts."""
+    the kernel, is about this design's f, and agrees with the cached verdicts
+    (each the certificate's, or, with `kernel_only`, unknown where the kernel
+    did not check it)."""
     cert = hit.get("certificate")
     try:
-        checked = certificates.check(cert)
+        kernel = kernel_summary(certificates.check(cert))
     except certificates.CertificateError:
         return False
     verdicts = {p: str(v.get("verdict")) for p, v in hit.get("properties", {}).items()}
-    return (cert["design"]["f"] == sp.srepr(design.f) and hit.get("kernel") == kernel_summary(checked)
-            and {c.name: c.status for c in checked if c.name in PROPERTIES} == verdicts)
+    statuses = {p: e.get("status") for p, e in cert["properties"].items() if p in PROPERTIES}
+    expected = {p: "unknown" if kernel_only and p in kernel["search"] else s for p, s in statuses.items()}
+    return cert["design"]["f"] == sp.srepr(design.f) and hit.get("kernel") == kernel and verdicts == expected
 
 
 def _internal_error(path: str, exc: BaseException) -> dict:
@@ -154,9 +125,9 @@ def _timed_out_result(path: str, timeout: float) -> dict:
     return to_dict(Report(Path(path), None, props, None, seconds=hard_limit(timeout), timed_out=True))
 
 
-def _child(conn, path, timeout, cache_dir, use_cache):
+def _child(conn, path, timeout, cache_dir, use_cache, kernel_only):
     try:
-        result = check_file(path, timeout, cache_dir, use_cache)
+        result = check_file(path, timeout, cache_dir, use_cache, kernel_only)
     except Exception as exc:  # noqa: BLE001 - a verifier bug must not hide the other files
         result = _internal_error(path, exc)
     conn.send(result)
@@ -164,7 +135,8 @@ def _child(conn, path, timeout, cache_dir, use_cache):
 
 
 def check_files(paths: list[str], timeout: float, use_cache: bool = True, jobs: int | None = None,
-                cache_dir: str | None = None, progress: Progress | None = None) -> list[dict]:
+                cache_dir: str | None = None, progress: Progress | None = None,
+                kernel_only: bool = False) -> list[dict]:
     """Results for `paths`, in order.  Each file is checked in a process of
     its own (forked: SymPy and the verifier are already imported), at most
     `jobs` at a time; a process that outlives `hard_limit(timeout)` is killed
@@ -183,7 +155,7 @@ def check_files(paths: list[str], timeout: float, use_cache: bool = True, jobs: 
         while pending and len(active) < jobs:
             i = pending.pop(0)
             recv, send = ctx.Pipe(duplex=False)
-            proc = ctx.Process(target=_child, args=(send, paths[i], timeout, cache_dir, use_cache))
+            proc = ctx.Process(target=_child, args=(send, paths[i], timeout, cache_dir, use_cache, kernel_only))
             proc.start()
             send.close()
             active[recv] = (i, proc, time.monotonic() + hard_limit(timeout))

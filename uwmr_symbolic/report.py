@@ -96,6 +96,7 @@ def to_dict(r: Report) -> dict:
                          "lam_max_exact": None if g.lam_max is None else str(g.lam_max)}
                   for name, g in r.gains.items()},
         "proof_replay": r.proof_replay,
+        "kernel": r.kernel,
         "seconds": round(r.seconds, 3),
         "exit_status": r.exit_status,
     }
@@ -169,6 +170,9 @@ def render_text(r) -> str:
 def kernel_text(k: dict) -> str:
     """The kernel line of the text report (see `batch.kernel_summary`; its
     lists come in the certificate's order, P1..P8 then kf)."""
+    why = k.get("error") or k.get("stopped")
+    if why:
+        return f"kernel: nothing re-checked ({why})"
     if not k["search"]:
         return f"kernel: re-checked {' '.join(k['checked'])} (every decided verdict)"
     checked = f"re-checked {' '.join(k['checked'])}; " if k["checked"] else ""

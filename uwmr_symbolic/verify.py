@@ -1,6 +1,11 @@
 """The verifier: load a design, decide P1-P8, certify kf, replay the proof,
 check the gains against bound (10).  Returns a `Report`.
 
+The search proposes; `design_certificate` re-checks the certificate of its
+verdicts in the trusted kernel (``Report.kernel`` says what it re-checked).
+With ``kernel_only`` (``--kernel-only``) only the kernel's verdicts count: a
+proof or refutation it did not re-check becomes "unknown".
+
 This module is callable: ``from uwmr_symbolic import verify; verify(f, params,
 gains)`` is `uwmr_symbolic.api.verify` (see its documentation)."""
 from __future__ import annotations
@@ -43,6 +48,8 @@ class Report:
     seconds: float = 0.0
     error: str | None = None      # unusable input
     timed_out: bool = False       # some step hit --timeout (the result depends on the time given)
+    certificate: dict | None = None   # the design certificate of the search's verdicts (`design_certificate`)
+    kernel: dict | None = None        # what the kernel re-checked of it (`kernel_summary`)
 
     @property
     def exit_status(self) -> int:
@@ -96,24 +103,79 @@ def load_with_limit(path, timeout: float = DEFAULT_TIMEOUT, start: float | None 
         return Report(path, None, props, None, seconds=time.monotonic() - start, timed_out=True)
 
 
-def verify_design(path, timeout: float = DEFAULT_TIMEOUT) -> Report:
+def verify_design(path, timeout: float = DEFAULT_TIMEOUT, kernel_only: bool = False) -> Report:
     """Verify one design file (never raises for bad input: see Report.error)."""
     start = time.monotonic()
     loaded = load_with_limit(path, timeout, start)
     if isinstance(loaded, Report):
         return loaded
-    return verify_loaded(loaded, timeout, start)
+    return verify_loaded(loaded, timeout, start, kernel_only)
 
 
-def verify_loaded(design: Design, timeout: float = DEFAULT_TIMEOUT, start: float | None = None) -> Report:
+def verify_loaded(design: Design, timeout: float = DEFAULT_TIMEOUT, start: float | None = None,
+                  kernel_only: bool = False) -> Report:
     """Decide P1-P8, kf, the proof replay and the gains of a loaded design;
-    `start` (time.monotonic()) is when the `timeout` began to run."""
+    `start` (time.monotonic()) is when the `timeout` began to run.  With
+    `kernel_only` only the kernel's verdicts count (`kernel_verdict`) and
+    bound (10) is checked only with a kernel-checked kf."""
     start = time.monotonic() if start is None else start
     with design_budget():       # the kernel proposer's work budget for this design
-        return _verify(design, timeout, start)
+        return _verify(design, timeout, start, kernel_only)
 
 
-def _verify(design: Design, timeout: float, start: float) -> Report:
+def kernel_summary(checked) -> dict:
+    """Which verdicts the kernel checked (a proof with nothing left to the
+    search, a refutation with a kernel-checked witness), from the re-checked
+    design certificate, and which rest on the search."""
+    ok = [c.name for c in checked if c.kernel_checked or c.refutation_checked]
+    return {"checked": ok, "search": [c.name for c in checked if c.status in ("proved", "refuted") and
+                                      c.name not in ok]}
+
+
+def _kernel_check(search: Report) -> tuple[dict | None, dict]:
+    """The design certificate of the search's verdicts and what the kernel
+    re-checked of it.  A certificate that does not re-check (a proposer bug)
+    leaves every verdict to the search, and says so ("error")."""
+    from . import design_certificate as certificates
+    cert = certificates.build(search)
+    try:
+        return cert, kernel_summary(certificates.check(cert))
+    except certificates.CertificateError as exc:
+        decided = [p for p, v in search.properties.items() if v.proved or v.refuted]
+        return cert, {"checked": [], "search": decided + (["kf"] if "kf" in cert["properties"] else []),
+                      "error": f"the certificate does not re-check: {exc}"}
+
+
+def kernel_verdict(name: str, v: Verdict, kernel: dict) -> Verdict:
+    """The verdict that counts: the search's when the kernel re-checked it (or
+    it is unknown), else unknown, its reason saying what the search found."""
+    if name not in kernel["search"]:
+        return v
+    return unknown(f"not re-checked by the kernel (the search says {v.status}: {v.reason})")
+
+
+def _kf_checked(certificate: dict | None, kernel: dict) -> bool:
+    """The kernel checked kf: its value, or that it is infinite, by a checked
+    refutation of P1 whose witness is df/de2 -> oo (kind "unbounded")."""
+    if "kf" in kernel["checked"]:
+        return True
+    p1 = (certificate or {}).get("properties", {}).get("P1", {})
+    return "P1" in kernel["checked"] and (p1.get("witness") or {}).get("kind") == "unbounded"
+
+
+def _gains(design: Design, kf: SupCertificate | None) -> dict[str, GainCheck]:
+    """Bound (10) per gain scenario with the certified kf (None: kf undecided,
+    or not re-checked by the kernel, and the W bound is left undecided)."""
+    kf_for_gains = kf_lower = None
+    if kf is not None and kf.upper is not None:
+        kf_for_gains = kf.exact if kf.exact is not None else sp.Rational(kf.upper.numerator, kf.upper.denominator)
+        if kf.exact is None and kf.lower is not None:
+            kf_lower = sp.Rational(kf.lower.numerator, kf.lower.denominator)
+    kf_known = kf_for_gains is not None or (kf is not None and kf.unbounded_witness is not None)
+    return check_gains(design.gains, kf_for_gains, kf_known, kf_lower)
+
+
+def _verify(design: Design, timeout: float, start: float, kernel_only: bool = False) -> Report:
     path = design.path
     deadline = start + timeout
     timed_out = False
@@ -148,14 +210,16 @@ def _verify(design: Design, timeout: float, start: float) -> Report:
     except TimeLimit:
         proof = {"ok": False, "steps": {"replay": {"ok": False, "detail": "timed out"}}}
         timed_out = True
-    kf_for_gains = None
-    if kf is not None and kf.upper is not None:
-        kf_for_gains = kf.exact if kf.exact is not None else sp.Rational(kf.upper.numerator, kf.upper.denominator)
-    kf_known = kf_for_gains is not None or (kf is not None and kf.unbounded_witness is not None)
-    kf_lower = None
-    if kf_for_gains is not None and kf.exact is None and kf.lower is not None:
-        kf_lower = sp.Rational(kf.lower.numerator, kf.lower.denominator)
-    gains = check_gains(design.gains, kf_for_gains, kf_known, kf_lower)
+    try:
+        with time_limit(max(deadline - time.monotonic(), 5.0)):
+            certificate, kernel = _kernel_check(Report(path, design, props, kf))
+    except TimeLimit:
+        certificate, kernel = None, {"checked": [], "search": [p for p, v in props.items() if v.proved or v.refuted],
+                                     "stopped": "the kernel's re-check did not finish within --timeout"}
+        timed_out = True
+    if kernel_only:
+        props = {p: kernel_verdict(p, v, kernel) for p, v in props.items()}
+    gains = _gains(design, kf if not kernel_only or _kf_checked(certificate, kernel) else None)
     timed_out = timed_out or timeouts.expired != expired_before
     return Report(path, design, props, kf, gains, proof, seconds=time.monotonic() - start,
-                  timed_out=timed_out)
+                  timed_out=timed_out, certificate=certificate, kernel=kernel)

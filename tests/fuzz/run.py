@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import argparse
 import collections
-import json
 import sys
 import tempfile
 import time
@@ -33,6 +32,7 @@ class Stats:
     truth_verdicts: dict = field(default_factory=lambda: {p: collections.Counter() for p in PROPS})
     true_known: int = 0
     true_proved: int = 0
+    true_kernel: int = 0        # of those, kernel-checked: proved with --kernel-only
     proved_total: int = 0       # proved properties plus exact kf claims
     kernel_checked: int = 0     # of those, checked by the kernel with nothing left to the search
     refuted_total: int = 0
@@ -71,6 +71,7 @@ class Stats:
             f"crashes / hangs / rejected: {self.count('crash')} / {self.count('hang')} / {self.count('unusable')}",
             f"hang/death only in a reused process (fine in a fresh one): {len(self.state_leaks)}",
             f"true properties (known by construction) proved: {self.true_proved}/{self.true_known} = {share:.1%}",
+            f"  of which kernel-checked (proved with --kernel-only): {self.true_kernel}/{self.true_known}",
             f"false properties refuted: {self.false_refuted}/{self.false_known} = {rshare:.1%}",
         ]
         for path, case, c in self.contradictions:
@@ -130,6 +131,7 @@ def run_profile(examples: int, seed: int | None = 0, timeout: float = 10.0, keep
                 if case.truth.get(p) is True:
                     stats.true_known += 1
                     stats.true_proved += st == "proved"
+                    stats.true_kernel += st == "proved" and p in (result.get("kernel_checked") or [])
                 elif case.truth.get(p) is False:
                     stats.false_known += 1
                     stats.false_refuted += st == "refuted"
