@@ -8,6 +8,7 @@ Expected facts, by hand:
 * design 2, F(s) = sqrt(1 + s^2) - 1 (> 0 for s > 0), F' = s/sqrt(1 + s^2).
 """
 import copy
+import dataclasses
 import json
 
 import pytest
@@ -471,3 +472,28 @@ def test_slope_vanishing_on_circles_is_kernel_checked(refuted_certs):
     kernel = cert["properties"]["P1"]["kernel"]
     upper = kernel["theorems"][kernel["conclusions"][3]]["claim"]
     assert (upper["kind"], parse(upper["other"])) == ("sup_upper", sp.Rational(23, 10))    # 2 * 9/8 to 2 digits, up
+
+
+def test_one_branch_prefix_links_only_what_it_says():
+    """f = Piecewise((0, Eq(rho, 0)), (log(1 + rho), True)): F = log(1 + s^2)
+    on (0, oo) (s^2 = 0 is false there) and F(0) - G(0) = 0, so the links
+    read G = log(1 + s^2).  Refused: an origin value other than G(0) (the
+    proposer gives no prefix, and a value_sign of 1 is not 0), an identity
+    about another F, and one on [0, oo) (the branch there is not G at 0)."""
+    from uwmr_symbolic.certify import one_branch_theorems
+    from uwmr_symbolic.kernel import rules as K
+    G = sp.log(1 + S ** 2)
+    F = sp.Piecewise((0, sp.Eq(S ** 2, 0)), (G, True))
+    got, theorems = one_branch_theorems(F, S)
+    claims = [t.claim for t in theorems]
+    assert got == G and DC._one_branch(F, claims + ["rest"]) == (["rest"], G)
+    jump = sp.Piecewise((1, sp.Eq(S ** 2, 0)), (G, True))           # f(0, 0) = 1, f -> 0: not G
+    assert one_branch_theorems(jump, S) == (jump, [])
+    forged = [claims[0], K.value_sign(value=jump.subs(S, 0) - G.subs(S, 0)).claim]
+    assert DC._one_branch(jump, forged) == (forged, jump)
+    other = sp.Piecewise((0, sp.Eq(S ** 2, 0)), (2 * G, True))
+    assert DC._one_branch(other, claims) == (claims, other)
+    closed = [dataclasses.replace(claims[0], lo_open=False), claims[1]]
+    assert DC._one_branch(F, closed) == (closed, F)
+    with pytest.raises(Exception, match="condition"):              # and the kernel refuses that claim
+        K.select_branch(K.identity(lhs=G, rhs=G, var=S, lo=0, hi=sp.oo, lo_open=False, hi_open=True), expr=F)

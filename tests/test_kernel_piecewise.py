@@ -37,6 +37,27 @@ def why(fn, *args, **kw):
 
 # ------------------------------------------------------------ select_branch
 
+def test_select_branch_of_an_identity_and_of_a_max():
+    """P = G on I as an identity claim (`design_certificate._one_branch`):
+    x^2 = x^2 on (0, 1) becomes P = x^2 there; the other branch is refused.
+    M = Piecewise((x^2, x <= x^2), (x, True)) (a Max as the loader writes it):
+    on (1, 2) x^2 - x > 0 picks x^2; on (0, 1) it picks x."""
+    cond = sturm(1 - x, x, 0, 1, lo_open=True, hi_open=True)
+    ident = K.identity(lhs=x ** 2, rhs=x ** 2, var=x, lo=ZERO, hi=sp.Integer(1), lo_open=True, hi_open=True)
+    c = K.select_branch(ident, cond, expr=P).claim
+    assert (c.kind, c.expr, c.other, c.lo, c.hi, c.lo_open) == (
+        "identity", sp.srepr(P), sp.srepr(x ** 2), "Integer(0)", "Integer(1)", True)
+    other = K.identity(lhs=2 * x - 1, rhs=2 * x - 1, var=x, lo=ZERO, hi=sp.Integer(1), lo_open=True, hi_open=True)
+    assert why(K.select_branch, other, cond, expr=P) == "the premise is not about the branch that applies on I"
+    M = sp.Piecewise((x ** 2, x ** 2 >= x), (x, True))
+    up = K.identity(lhs=x ** 2, rhs=x ** 2, var=x, lo=sp.Integer(1), hi=sp.Integer(2), lo_open=True, hi_open=True)
+    assert K.select_branch(up, sturm(x ** 2 - x, x, 1, 2, True, True), expr=M).claim.expr == sp.srepr(M)
+    low = K.identity(lhs=x, rhs=x, var=x, lo=ZERO, hi=sp.Integer(1), lo_open=True, hi_open=True)
+    assert K.select_branch(low, sturm(x ** 2 - x, x, 0, 1, True, True, want=-1), expr=M).claim.other == sp.srepr(x)
+    assert why(K.select_branch, up, sturm(x ** 2 - x, x, 0, 1, True, True, want=-1), expr=M) == \
+        "condition x <= x**2 not decided"
+
+
 def test_select_branch_moves_a_claim_to_the_piecewise():
     inner = sturm(x ** 2, x, 0, 1, lo_open=True, hi_open=True)
     cond = sturm(1 - x, x, 0, 1, lo_open=True, hi_open=True)            # x < 1 true: 1 - x > 0
@@ -73,7 +94,8 @@ def test_select_branch_refuses_what_does_not_follow():
     assert why(K.select_branch, sturm(x ** 2, x, 1, 2), sturm(1 - x, x, 1, 2, want=-1, strict=False),
                expr=P) == "the premise is not about the branch that applies on I"
     ident = K.identity(lhs=x, rhs=x, var=x, lo=ZERO, hi=sp.Integer(1), lo_open=False, hi_open=False)
-    assert why(K.select_branch, ident, cond, expr=P) == "premise has no interval"
+    assert why(K.select_branch, K.value_sign(value=sp.Integer(1)), cond, expr=P) == "premise has no interval"
+    assert why(K.select_branch, ident, cond, expr=P) == "condition x < 1 not decided"     # [0, 1], not (0, 1)
     assert why(K.select_branch, inner, cond, expr=x ** 2) == "x**2 is not a Piecewise"
     assert why(K.select_branch, inner, ident, expr=P) == "premise is a identity theorem, not a sign theorem"
 

@@ -788,6 +788,24 @@ def continuity_theorem(P, ends, var, rule=K.continuous_piecewise):
         return None
 
 
+def one_branch_theorems(F, var):
+    """(G, [F = G on (0, oo), F(0) - G(0) = 0]) when the Piecewise profile F
+    follows one branch G at every s > 0 (its conditions signed there,
+    `on_branch`) and takes G's value at 0: then the kernel's lemmas may be
+    about G (`design_certificate._one_branch`); else (F, [])."""
+    if not F.has(sp.Piecewise):
+        return F, []
+    prover = Prover(WORK)
+    try:
+        th = on_branch(F, var, (sp.Integer(0), OO, True, True), prover,
+                       lambda g: _rule(K.identity, lhs=g, rhs=g, var=var, lo=0, hi=OO, lo_open=True, hi_open=True))
+        G = K.parse(th.claim.other)
+        at_zero = _rule(K.value_sign, value=F.subs(var, 0) - G.subs(var, 0))
+        return (F, []) if G.has(sp.Piecewise) or at_zero.claim.want != 0 else (G, [th, at_zero])
+    except (NoProof, K.KernelError, Undefined, IndexError):
+        return F, []
+
+
 def radial_theorems(f, F, x, y, var, ratio=1) -> list:
     """The reduction f(x, y) = F(sqrt(x^2 + r y^2)) as kernel theorems, or []:
     the kernel's `identity_plane` (P4 when r = 1), and for r != 1 also

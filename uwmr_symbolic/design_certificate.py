@@ -235,8 +235,9 @@ def _link(name, f, theorems, exact=None) -> list[str]:
     if name not in ("P1", "P3", "P5", "P6", "P7", "P8", "kf"):
         return []
     F = _profile(f)
-    dF = sp.diff(F, S)
     claims, k = _reduction(f, F, claims)
+    claims, F = _one_branch(F, claims)
+    dF = sp.diff(F, S)
     reduction = [] if k is not None else [REDUCTION]      # unless P4 is kernel-checked (see `check`)
     want = F if name == "P3" else dF
     piecewise = F.has(sp.Piecewise)
@@ -260,6 +261,23 @@ def _reduction(f, F, claims):
                 sp.srepr(f), sp.srepr(rhs), sp.srepr(sp.Tuple(E1, E2)), 1):
             return claims[2:], sp.sqrt(r)
     return claims, None
+
+
+def _one_branch(F, claims):
+    """(the other claims, G) when F is a Piecewise and the claims begin with
+    F = G on (0, oo) (an `identity` through `select_branch`) and F(0) - G(0)
+    = 0 (`value_sign`), G free of Piecewise: then F and G agree at every
+    s >= 0, and every property reduces to G; else (claims, F).  (An origin
+    given its own value, f = Piecewise((0, Eq(rho, 0)), (log(1 + rho),
+    True)), or a Max whose first argument is the larger everywhere.)"""
+    if F.has(sp.Piecewise) and len(claims) >= 2 and claims[0].kind == "identity" and claims[1].kind == "value_sign":
+        G = parse(claims[0].other)
+        if not G.has(sp.Piecewise) and claims[1].want == 0 and (
+                claims[0].expr, claims[0].var, claims[0].lo, claims[0].hi, claims[0].lo_open, claims[0].hi_open,
+                claims[1].expr) == (sp.srepr(F), sp.srepr(S), "Integer(0)", "oo", True, True,
+                                    sp.srepr(F.subs(S, 0) - G.subs(S, 0))):
+            return claims[2:], G
+    return claims, F
 
 
 def _link_reduced(name, F, dF, claims, k, exact) -> list[str]:

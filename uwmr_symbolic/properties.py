@@ -28,8 +28,8 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .design import Design
 from .interval import Interval, IntervalFunction, Undefined
-from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, origin_theorems, origin_value_theorems,
-                      piecewise_sign_theorem, radial_theorems, sign_theorems, smoothness_theorems, sup_upper_theorem)
+from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
+                      origin_value_theorems, piecewise_sign_theorem, radial_theorems, sign_theorems, smoothness_theorems, sup_upper_theorem)
 from .kf import KfCertificate, certify_kf, certify_sup, scale
 from .limits import NoLimit, limit_right
 from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
@@ -204,8 +204,24 @@ class Analysis:
     def slope_sign(self):
         """F' > 0 on (0, oo) as a kernel theorem, else F' >= 0 (zeros on
         circles: enough for P1 and P6), else None; for an F of one formula."""
-        dF = sp.diff(self.F, S)
+        dF = sp.diff(self.kernel_F, S)
         return (sign_theorems(dF, S, 0, sp.oo)[0] or sign_theorems(dF, S, 0, sp.oo, strict=False)[0] or [None])[0]
+
+    @cached_property
+    def one_branch(self):
+        """(G, kernel theorems F = G on (0, oo) and F(0) = G(0)) when the
+        Piecewise profile follows one branch G at every s > 0 and the
+        search's profile is that G too; else (F, [])."""
+        if self.profile is None or len(self.profile.pieces) != 1:
+            return self.F, []
+        from .design_certificate import _profile      # the F the certificate's links read
+        G, theorems = one_branch_theorems(_profile(self.f), S)
+        return (G, theorems) if theorems and G == self.profile.pieces[0].expr else (self.F, [])
+
+    @property
+    def kernel_F(self):
+        """The profile the kernel's lemmas are about (`one_branch`)."""
+        return self.one_branch[0]
 
     @cached_property
     def reduction(self) -> list:
@@ -221,7 +237,8 @@ class Analysis:
         follow those of the reduction."""
         cert = certify_kf(self)
         scaled = scale(cert, sp.sqrt(self.ratio))
-        scaled.kernel = self.reduction + cert.kernel if cert.kernel and (self.ratio == 1 or self.reduction) else []
+        scaled.kernel = self.reduction + self.one_branch[1] + cert.kernel \
+            if cert.kernel and (self.ratio == 1 or self.reduction) else []
         scaled.unchecked = ([] if scaled.kernel and self.reduction else [REDUCTION]) + cert.unchecked
         return scaled
 
@@ -244,7 +261,7 @@ def _lemmas(v: Verdict, lemma: Verdict, unchecked: str, extra=None) -> Verdict:
 
 def _single_formula(a: Analysis):
     """F when the profile is one formula on (0, oo) (no Piecewise), else None."""
-    return a.F if len(a.profile.pieces) == 1 and not a.F.has(sp.Piecewise) else None
+    return a.kernel_F if len(a.profile.pieces) == 1 and not a.kernel_F.has(sp.Piecewise) else None
 
 
 def _all(parts, what) -> Verdict:
@@ -309,7 +326,7 @@ def verify_p1(a: Analysis) -> Verdict:
     v = proved(f"{c1.reason}; kf = sup|F'| in [{float(kf.lower):.9g}, {float(kf.upper):.9g}]")
     if kf.kernel:
         # F' > 0 and F' <= c on (0, oo) (`certify.sup_theorems`), or |F'| <= c (`certify.sup_abs_theorems`)
-        own = kf.kernel[len(a.reduction):]
+        own = kf.kernel[len(a.reduction) + len(a.one_branch[1]):]
         bound = (own[:1], own[1]) if own[0].claim.kind == "sign" else ([], own[0])
     else:       # P1 needs some finite bound only: F' >= 0 and F' <= U, U about 1/8 above the enclosure of kf
         bound = _p1_bound(a, round_up(Fraction(kf.upper) * Fraction(9, 8), 2))
@@ -318,7 +335,7 @@ def verify_p1(a: Analysis) -> Verdict:
     signed, upper = bound
     return _lemmas(v, v, "f is C^1 (continuity at the origin)",     # (Piecewise: F, F' continuous at the end)
                    lambda: [*signed, *origin[:2], upper, *origin[2:]]
-                   if (origin := origin_theorems(a.F, S, a.profile.ends)) else [])
+                   if (origin := origin_theorems(a.kernel_F, S, a.profile.ends)) else [])
 
 
 def _p1_bound(a: Analysis, U):
@@ -444,7 +461,7 @@ def verify_p5(a: Analysis) -> Verdict:
     return _lemmas(proved(f"df/de1 tanh(e1) = F'(s) e1 tanh(e1)/s with {pos.reason}; "
                           "df/de1 = 0 on e1 = 0 (F'(0+) = 0 at the origin)"), pos,
                    "df/de1 exists on R^2 (F'(0+) = 0 at the origin)",
-                   lambda: origin_theorems(a.F, S, a.profile.ends))
+                   lambda: origin_theorems(a.kernel_F, S, a.profile.ends))
 
 
 def verify_p6(a: Analysis) -> Verdict:
@@ -533,7 +550,7 @@ def verify_p7(a: Analysis) -> Verdict:
         return v
     v = proved(v.reason, **v.details)
     return _lemmas(v, v, "f is C^2 (continuity of F'' and F'/s, also at the origin)",
-                   lambda: smoothness_theorems(a.F, S, 2, a.profile.ends))
+                   lambda: smoothness_theorems(a.kernel_F, S, 2, a.profile.ends))
 
 
 def verify_p8(a: Analysis) -> Verdict:
@@ -560,7 +577,7 @@ def verify_p8(a: Analysis) -> Verdict:
             return unknown(f"F' on ({piece.lo}, {piece.hi}): {cont.reason}")
     v = proved("F'(0+) = 0, and F' is bounded near every s > 0, so F'(s) e2/s -> 0 as e2 -> 0")
     return _lemmas(v, v, "F' bounded near every s > 0 and F'(0+) = 0",
-                   lambda: smoothness_theorems(a.F, S, 1, a.profile.ends))
+                   lambda: smoothness_theorems(a.kernel_F, S, 1, a.profile.ends))
 
 
 # --------------------------------------------------------------------------
@@ -615,6 +632,8 @@ def _through_reduction(verify):
     df/de2 = r F'(s) e2/s, and every argument above goes through with this s)."""
     def run(a: Analysis) -> Verdict:
         v = verify(a)
+        if v.proved and v.details.get("kernel") and a.reduced and a.one_branch[1]:   # lemmas about G, not F
+            v = replace(v, details={**v.details, "kernel": a.one_branch[1] + v.details["kernel"]})
         if a.reduced and a.ratio != 1 and not v.refuted:
             v = replace(v, reason=f"with s = {a.radius} (f = F(s) is a symbolic identity; df/de1 = "
                                   f"F'(s) e1/s, df/de2 = {a.ratio} F'(s) e2/s): {v.reason}")

@@ -654,14 +654,14 @@ def _branch(pw, sign_ok):
 
 
 def select_branch(thm, *signs, expr):
-    """A claim (sign, sup, limit at the left end, divergence) about G on I
-    gives the same claim about P (a Piecewise, or an expression of one:
-    `_folded`) when G is the branch of P that applies at every point of I
-    (`_branch`): P = G on I.  Each
+    """A claim (sign, sup, limit at the left end, divergence, identity
+    G = R) about G on I gives the same claim about P (a Piecewise, or an
+    expression of one: `_folded`) when G is the branch of P that applies at
+    every point of I (`_branch`): P = G on I.  Each
     condition is decided by sign theorems (`signs`) about its r - l on
     intervals containing I, or by the exact sign of a constant r - l."""
     c = thm.claim
-    _need(c.kind in ("sign", "sup_upper", "sup_lower", "limit", "diverges"), "premise has no interval")
+    _need(c.kind in ("sign", "sup_upper", "sup_lower", "limit", "diverges", "identity"), "premise has no interval")
     var = c.x()
     e = _expr(expr, var)
     lo, hi = c.ends()
