@@ -416,21 +416,22 @@ def test_the_kernel_line_says_what_the_certificate_rechecks(tmp_path):
 
 
 def test_kernel_only_counts_what_the_kernel_rechecked(tmp_path):
-    """--kernel-only: f = log(1 + log(1 + rho)) is proved throughout by the
-    search; its P1 needs a bound of F' = 2s/((1 + s^2)(1 + log(1 + s^2)))
+    """--kernel-only: f = log(1 + asinh(rho)) is proved throughout by the
+    search; its P1 needs a bound of F' = 2s/(sqrt(1 + s^4)(1 + asinh(s^2)))
     (kf is only enclosed), and the kernel has none on the tail, where the
-    form in t = 1/s is not defined at t = 0.  P1 then becomes unknown, bound
+    form in t = 1/s is not defined at t = 0 (asinh(1/t^2)) and no rule bounds
+    asinh as `sign_by_log_bound` bounds log.  P1 then becomes unknown, bound
     (10) is not checked (no kernel-checked kf: W undecided) and the exit
-    status is 3, while P2 (log 1 = 0), P3 (log of 1 + log(1 + s^2) -> oo),
-    P4 and P5 (F' > 0) stay proved.  Without the switch P1 is proved and
-    the W bound is checked with the enclosure.  r09 (F = u - sin u) has P5
+    status is 3, while P2 (log 1 = 0), P4 and P5 (F' > 0) stay proved.
+    Without the switch P1 is proved and the W bound is checked with the
+    enclosure.  r09 (F = u - sin u) has P5
     refuted with a kernel-checked witness (F' = 0 exactly at u = 2 pi) and
     every proof kernel-checked: exit 1 either way.  Design 1 is
     kernel-checked throughout and keeps exit 0.  The two modes have cache
     entries of their own."""
     loglog = tmp_path / "loglog.py"
     loglog.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\n"
-                      "f = sp.log(1 + sp.log(1 + e1**2 + e2**2))\n"
+                      "f = sp.log(1 + sp.asinh(e1**2 + e2**2))\n"
                       "gains = {'easy': dict(k1=0.1, k2=0.1, lam=0.1, Vmax=1.0, Wmax=2.0, Vr_max=0.5, Wr_max=0.5)}\n")
     designs = [ROOT / "designs/design1_jiang.py", ROOT / "tests/designs/r09_slope_zero.py", loglog]
     proc = run([*designs, "--format", "json", "--kernel-only"], tmp_path / "cache")
@@ -441,7 +442,7 @@ def test_kernel_only_counts_what_the_kernel_rechecked(tmp_path):
                         "P6": "proved", "P7": "proved", "P8": "proved"}
     assert slope["exit_status"] == 1
     verdicts = {p: v["verdict"] for p, v in slow["properties"].items()}
-    assert verdicts["P1"] == "unknown" and {verdicts[p] for p in ("P2", "P3", "P4", "P5")} == {"proved"}
+    assert verdicts["P1"] == "unknown" and {verdicts[p] for p in ("P2", "P4", "P5")} == {"proved"}
     assert slow["properties"]["P1"]["reason"].startswith("not re-checked by the kernel (the search says proved: ")
     assert "P1" in slow["kernel"]["search"] and slow["gains"]["easy"]["W_ok"] is None
     assert slow["exit_status"] == 3 and proc.returncode == 1      # the batch: r09's refutation

@@ -28,6 +28,7 @@ pytestmark = pytest.mark.slow     # verifies designs / runs the proposer: second
 
 DESIGN1 = ROOT / "designs" / "design1_jiang.py"
 DESIGN2 = ROOT / "designs" / "design2_sqrt.py"
+PROPS = [f"P{i}" for i in range(1, 9)]
 
 
 @pytest.fixture(scope="module")
@@ -497,3 +498,16 @@ def test_one_branch_prefix_links_only_what_it_says():
     assert DC._one_branch(F, closed) == (closed, F)
     with pytest.raises(Exception, match="condition"):              # and the kernel refuses that claim
         K.select_branch(K.identity(lhs=G, rhs=G, var=S, lo=0, hi=sp.oo, lo_open=False, hi_open=True), expr=F)
+
+
+@pytest.mark.parametrize("stem, checked", [
+    ("c2_log_squared", PROPS),            # F' = s log(1 + s^2)/(1 + s^2) <= U: log <= 4((1 + s^2)^(1/4) - 1)
+    ("c2_log_log", PROPS),                # a log in F's denominator: over one denominator, log >= 1 - 1/Y
+    ("c4_cancel", [*PROPS, "kf"]),        # P6 with k = 1/2 attained at sqrt(3): the kernel takes k = 9/16
+])
+def test_log_tails_are_kernel_checked(stem, checked):
+    """Designs whose F' has a log on the tail (its t-form is not defined at
+    t = 0) are kernel-checked through `sign_by_log_bound`; kf of the first two
+    is only enclosed, so it has no entry."""
+    report = verify_design(ROOT / "tests" / "designs_codegen" / f"{stem}.py")
+    assert report.kernel == {"checked": checked, "search": []}

@@ -416,6 +416,19 @@ def test_identity():
             lo=-sp.oo, hi=sp.oo, lo_open=True, hi_open=True)
 
 
+def test_identity_with_roots_of_one_base_of_several_orders():
+    """(1 + 1/s^2)^(1/4) = (s^2 + 1)^(1/4) s^(-1/2) for s > 0 (a tail form):
+    s^(-1/2) from the first side and s^(-1/2) written as sqrt(s)/s on the
+    other are powers of one symbol s^(1/4), so the identity is exact; a
+    side off by s^(1/4) is refused."""
+    lhs = (1 + 1 / s ** 2) ** Q(1, 4) + sp.sqrt(s)
+    rhs = (s ** 2 + 1) ** Q(1, 4) * sp.sqrt(s) / s + s / sp.sqrt(s)
+    th = K.identity(lhs=lhs, rhs=rhs, var=s, lo=ZERO, hi=sp.Integer(1), lo_open=True, hi_open=False)
+    assert th.assumptions == {"sympy-core", "sympy-polys"}
+    rejects(K.identity, lhs=lhs, rhs=rhs + s ** Q(1, 4) / 10 ** 40, var=s, lo=ZERO, hi=sp.Integer(1),
+            lo_open=True, hi_open=False)
+
+
 def test_cross_check_sees_1e_minus_60():
     _cross_check(sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1, x, sp.Integer(0), sp.Integer(1))
     with pytest.raises(KernelError):

@@ -1428,3 +1428,34 @@ def test_sign_of_sum_counts_the_premises_constants():
     bound = K.sign_below_sup(sturm(s, s, 3, 4), expr=1 - sp.sin(s), bounded=sp.sin(s))
     th = K.sign_of_sum(far, bound, expr=r - 1 - sp.sin(s), want=1)
     assert th.claim == sign(r - 1 - sp.sin(s), s, 3, 4)
+
+
+def test_sign_by_log_bound_claims_and_messages():
+    """Upper bound (p > 0): 3 - log(s) on [1, 4], M = -1 <= 0, log s <= s - 1
+    (p = 1): B = 4 - s >= 0 there (0 at s = 4), so 3 - log s >= 0, weak as B.
+    Lower bound (p < 0): 1 + log(s), M = 1 >= 0, log s >= 1 - 1/s (p = -1):
+    B = 2 - 1/s > 0, so 1 + log s > 0."""
+    L = K.sign_by_log_bound
+    E, T = 3 - sp.log(s), -sp.log(s)
+    pos, neg = sturm(s, s, 1, 4), sturm(-I1, s, 1, 4, want=-1)
+    B = sturm(4 - s, s, 1, 4, strict=False)
+    th = L(B, neg, pos, expr=E, term=T, p=I1)
+    assert th.claim == Claim("sign", R(E), R(s), R(I1), R(sp.Integer(4)), False, False, 1, False)
+    assert th.rule == "sign_by_log_bound" and th.assumptions == {"sympy-core", "sympy-polys"}
+    low = K.sign_by_cover(expr=2 - 1 / s, var=s, cuts=[I1, sp.Integer(4)], want=1, strict=True)
+    up = L(low, sturm(I1, s, 1, 4), pos, expr=1 + sp.log(s), term=sp.log(s), p=-I1)
+    assert (up.claim.expr, up.claim.want, up.claim.strict) == (R(1 + sp.log(s)), 1, True)
+    # the bound of the other side: log s <= s - 1 says nothing about 1 + log s from below
+    assert why(L, low, sturm(I1, s, 1, 4), pos, expr=1 + sp.log(s), term=sp.log(s), p=I1) == \
+        "premise must be the sign -1 of 1"
+    for p in (I0, I2, -I2, sp.sqrt(2) / 2):
+        assert why(L, B, neg, pos, expr=E, term=T, p=p) == "p is rational, 0 < |p| <= 1"
+    assert why(L, B, neg, pos, expr=E, term=T, p=Q(1, 2)) == "premise must be about 5 - 2*sqrt(s)"
+    assert why(L, B, pos, pos, expr=E, term=T, p=I1) == "premise must be the sign -1 of -1"
+    assert why(L, B, neg, sturm(s + 1, s, 1, 4), expr=E, term=T, p=I1) == "premise must be s > 0"
+    assert why(L, B, neg, sturm(s, s, 1, 4, strict=False), expr=E, term=T, p=I1) == "premise must be s > 0"
+    assert why(L, B, neg, pos, expr=E, term=sp.log(s), p=I1) == f"log(s) is not a term M log(Y) of {E}"
+    assert why(L, B, neg, pos, expr=-sp.log(s), term=T, p=I1) == "-log(s) is not a term M log(Y) of -log(s)"
+    two = 3 - sp.log(s) * sp.log(s + 1)
+    assert why(L, B, neg, pos, expr=two, term=two - 3, p=I1).endswith("is not a term M log(Y) of " + str(two))
+    assert why(L, B, neg, sturm(s, s, 1, 2), expr=E, term=T, p=I1) == "premises on different intervals"

@@ -538,6 +538,31 @@ class Prover:
                     raise
         raise NoProof(f"no substitution signs {e}")
 
+    def _log_bound(self, e, var, I, want, strict, depth):
+        """e on the tail I = [R, oo) by `sign_by_log_bound`: one term M log(Y)
+        of the sum e replaced by M (Y^p - 1)/p, p > 0 where M has the sign
+        -want, p = -1 (1 - 1/Y) where it has the sign want (an algebraic tail
+        where log's is not)."""
+        for term in e.args:
+            logs = [a for a in sp.Mul.make_args(term) if isinstance(a, sp.log)]
+            if len(logs) != 1:
+                continue
+            y, m = logs[0].args[0], sp.Mul(*[a for a in sp.Mul.make_args(term) if a != logs[0]])
+            rest = [a for a in e.args if a != term]
+            for p in (sp.Rational(1, 4), sp.Rational(1, 16), -sp.Integer(1)):
+                if not _plausible(sp.Add(*rest, m * (y ** p - 1) / p), var, I[0], want) or \
+                        not _plausible(m, var, I[0], -want * (1 if p > 0 else -1)):
+                    continue                    # false somewhere: do not spend the budget on it
+                try:
+                    positive = self.prove(y, var, I, 1, True, depth)
+                    coeff = self.prove(m, var, I, -want * (1 if p > 0 else -1), False, depth)
+                    bound = _tail_first(self, sp.Add(*rest, m * (y ** p - 1) / p), var, I[0], want, strict, depth)
+                    return _rule(K.sign_by_log_bound, bound, coeff, positive, expr=e, term=term, p=p)
+                except NoProof as exc:
+                    if exc is self.spent:
+                        raise
+        raise NoProof(f"no term M log(Y) of {e} to bound")
+
     def _unbounded(self, e, var, I, want, strict, depth):
         """[lo, R] as a finite interval, [R, oo) by s = 1/t or monotonicity."""
         from .univariate import T, tail_start
@@ -559,15 +584,28 @@ class Prover:
             except NoProof as exc:
                 if exc is self.spent:
                     raise
-        if tail is None:
-            if depth >= 1:
-                raise last
+        if tail is None and depth < 1:
             try:
                 d = sp.diff(e, var)
                 dth = self.prove(d, var, (R, OO, False, True), want, False, depth + 1)
                 tail = self._weaken(_rule(K.sign_by_monotone, dth, expr=e, var=var, R=R), (R, OO, False, True), strict)
-            except NoProof:
-                raise last from None
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
+        if tail is None and e.is_Add and e.has(sp.log):
+            for start in (16 * R, 256 * R):         # the bound (Y^p - 1)/p of log Y is loose: start late
+                try:                                # a log in a denominator: over one denominator first
+                    tail, R = _first_of([lambda: self._log_bound(e, var, (start, OO, False, True), want, strict,
+                                                                 depth),
+                                         lambda: self._rewritten(e, _over_one_denominator(e), var,
+                                                                 (start, OO, False, True), want, strict, depth,
+                                                                 False)], self), start
+                    break
+                except NoProof as exc:
+                    if exc is self.spent:
+                        raise
+        if tail is None:
+            raise last
         head = self.prove(e, var, (lo, R, lo_open, False), want, strict, depth)
         return _rule(K.join, head, tail)
 
@@ -867,15 +905,47 @@ def _diverges_above(F, var) -> list:
     return []
 
 
-def _tail_first(prover, e, var, R):
-    """e >= 0 on [R, oo), by s = 1/t first: a sum of unbounded terms (the
-    rates of `_diverges`) would spend the budget in the sign rules."""
+def _plausible(e, var, R, want) -> bool:
+    """e is not seen to have the sign opposite to `want` at R, 4R, 64R, 10^6 R
+    (128-bit Arb at single points; a cheap filter before a proof on [R, oo))."""
+    for x in (R, 4 * R, 64 * R, 10 ** 6 * R):
+        try:
+            box = evaluate(e, var, x, x, bits=128)
+        except Undefined:
+            return False
+        if (box.negative() if want > 0 else box.positive()):
+            return False
+    return True
+
+
+def _over_one_denominator(e):
+    """e as N/D with N expanded and collected in its logs: one term M log(Y)
+    per log for `Prover._log_bound`."""
+    n, d = sp.fraction(sp.together(e))
+    return sp.collect(sp.expand(n), sorted(n.atoms(sp.log), key=sp.default_sort_key)) / d
+
+
+def _first_of(attempts, prover):
+    """The first of the thunks `attempts` that proves (NoProof from the last;
+    a spent budget stops at once)."""
+    for i, attempt in enumerate(attempts):
+        try:
+            return attempt()
+        except NoProof as exc:
+            if exc is prover.spent or i == len(attempts) - 1:
+                raise
+
+
+def _tail_first(prover, e, var, R, want=1, strict=False, depth=0):
+    """The sign of e on [R, oo), by s = 1/t first: a sum of terms of both
+    signs (the rates of `_diverges`, the bounds of `_log_bound`) would spend
+    the budget in the sign rules."""
     try:
-        return prover._unbounded(e, var, (R, OO, False, True), 1, False, 0)
+        return prover._unbounded(e, var, (R, OO, False, True), want, strict, depth)
     except NoProof as exc:
         if exc is prover.spent:
             raise
-    return prover.prove(e, var, (R, OO, False, True), 1, False)
+    return prover.prove(e, var, (R, OO, False, True), want, strict, depth)
 
 
 _POWER_RATES = (sp.Rational(1, 2), sp.Rational(1, 4))     # F ~ s^p: F' s^(1-p) >= k (`diverges_by_growth`)

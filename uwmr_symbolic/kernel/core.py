@@ -528,6 +528,39 @@ def sign_below_sup(arg, *, expr, bounded):
 sign_below_sup = rule("arb", "sympy-core")(sign_below_sup)
 
 
+def sign_by_log_bound(bound, coeff, positive, *, expr, term, p):
+    """E = A + M log(Y) with T = M log(Y) one term of the sum E (`term`), A
+    the others.  For Y > 0 and rational p, 0 < |p| <= 1, l(Y) = (Y^p - 1)/p
+    bounds log Y = log(Y^p)/p: from above for p > 0, from below for p < 0
+    (log z <= z - 1).  Premises on one interval I: `positive` Y > 0; `coeff`
+    M with the sign -w sign(p) (weak); `bound` B = A + M l(Y) with the sign
+    w.  Then M log Y - M l(Y) has the sign w, so E does too, strict as
+    `bound` is.  (E is defined on I: A's terms are B's, M and log Y are.)
+    A log tail such as s log(1 + s^2)/(1 + s^2), whose form in t = 1/s is not
+    defined at t = 0, becomes algebraic."""
+    for t in (bound, coeff, positive):
+        _is_sign(t)
+        _same_interval(t.claim, bound.claim)
+    c = bound.claim
+    var = c.x()
+    e, t, p = _expr(expr, var), _expr(term, var), _number(p)
+    _need(p.is_Rational and p != 0 and -1 <= p <= 1, "p is rational, 0 < |p| <= 1")
+    logs = [a for a in sp.Mul.make_args(t) if isinstance(a, sp.log)]
+    _need(e.is_Add and t in e.args and len(logs) == 1, lambda: f"{t} is not a term M log(Y) of {e}")
+    y = logs[0].args[0]
+    m = sp.Mul(*[a for a in sp.Mul.make_args(t) if a != logs[0]])
+    b = sp.Add(*[a for a in e.args if a != t], m * (y ** p - 1) / p)
+    w = c.want
+    _need(positive.claim.expr == _s(y) and positive.claim.want == 1 and positive.claim.strict,
+          lambda: f"premise must be {y} > 0")
+    _need(coeff.claim.expr == _s(m) and coeff.claim.want == -w * _const_sign(p),
+          lambda: f"premise must be the sign {-w * _const_sign(p)} of {m}")
+    _need(c.expr == _s(b), lambda: f"premise must be about {b}")
+    lo, hi = c.ends()
+    return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, w, c.strict)
+sign_by_log_bound = rule("sympy-core")(sign_by_log_bound)
+
+
 def sign_of_increasing_difference(arg, *, expr, inner, c):
     """G(Y) - G(c) has the sign (and strictness) of Y - c on I, the premise,
     for G strictly increasing on R (tanh, atan, asinh, sinh, erf, exp) and
@@ -970,17 +1003,31 @@ def _generalized(d, variables):
     replaced by a fresh symbol, one per distinct subterm: a rational function
     over Q of the variables and those symbols.  If it is 0, d = 0 for every
     value of those subterms, in particular for their true values, wherever d
-    is defined."""
-    fresh, roots = {}, {}
+    is defined.  The roots of one base b share one symbol b^(1/L), L the
+    lcm of their orders (sqrt(t) and t^(-1/4) as powers of t^(1/4)): a
+    second pass when a base has roots of several orders."""
+    orders: dict = {}
+    for _ in range(2):
+        fresh, roots, asked = {}, {}, {}
+        out = _generalized_pass(d, variables, fresh, roots, asked, orders)
+        if all(len(qs) == 1 for qs in asked.values()) or orders:
+            break
+        orders = {b: functools.reduce(sp.ilcm, qs) for b, qs in asked.items()}
+    return out, fresh, roots
 
-    def power(b, p, q):                         # b^(p/q) = b^i (b^(1/q))^r, p = q i + r, 0 <= r < q
-        i, r = divmod(p, q)
-        rt = b ** sp.Rational(1, q)
+
+def _generalized_pass(d, variables, fresh, roots, asked, orders):
+    """One pass of `_generalized`; `orders` gives the root order L of a base."""
+    def power(b, p, q):                         # b^(p/q) = b^i (b^(1/L))^r, p L/q = L i + r, 0 <= r < L
+        asked.setdefault(b, set()).add(q)
+        L = orders.get(b, q)
+        i, r = divmod(p * (L // q), L)
+        rt = b ** sp.Rational(1, L)
         if rt.is_Rational:
-            return rt ** p
+            return rt ** (p * (L // q))
         if rt not in fresh:
             fresh[rt] = sp.Dummy(real=True)
-            roots[fresh[rt]] = (q, walk(b))     # (b^(1/q))^q = b where b^(1/q) is real
+            roots[fresh[rt]] = (L, walk(b))     # (b^(1/L))^L = b where b^(1/L) is real
         return walk(b) ** i * fresh[rt] ** r
 
     def walk(e):
@@ -1009,7 +1056,7 @@ def _generalized(d, variables):
             sign = -1 if flip and not isinstance(e, (sp.cosh, sp.cos)) else 1
             return sign * fresh.setdefault(e.func(v if flip else u, evaluate=False), sp.Dummy(real=True))
         return fresh.setdefault(e, sp.Dummy(real=True))
-    return walk(d), fresh, roots
+    return walk(d)
 
 
 def _order_at_zero(poly, x) -> int:
