@@ -511,3 +511,20 @@ def test_log_tails_are_kernel_checked(stem, checked):
     is only enclosed, so it has no entry."""
     report = verify_design(ROOT / "tests" / "designs_codegen" / f"{stem}.py")
     assert report.kernel == {"checked": checked, "search": []}
+
+
+def test_refutation_witnesses_have_a_budget_of_their_own(tmp_path):
+    """f = 2 on the circle rho = 3, rho/(1 + rho) elsewhere: f jumps there, so
+    P1, P5, P6 and P7 are refuted, each with a kernel-checked witness (P3,
+    f -> 1, rests on the search: the kernel's `bounded` witness refuses a
+    Piecewise).  The witnesses are proposed after the search has spent its
+    design budget, so `verify_design` gives them a budget of their own (as
+    re-building the certificate afterwards does; with the search's budget
+    only P5 and P6 had one)."""
+    path = tmp_path / "point_value.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    "f = sp.Piecewise((2, sp.Eq(rho, 3)), (rho/(1 + rho), True))\n")
+    report = verify_design(path)
+    refuted = [n for n, v in report.properties.items() if v.refuted]
+    assert refuted == ["P1", "P3", "P5", "P6", "P7"]
+    assert [n for n in report.kernel["checked"] if n in refuted] == ["P1", "P5", "P6", "P7"]

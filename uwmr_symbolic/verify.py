@@ -211,7 +211,7 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Fa
         proof = {"ok": False, "steps": {"replay": {"ok": False, "detail": "timed out"}}}
         timed_out = True
     try:
-        with time_limit(max(deadline - time.monotonic(), 5.0)):
+        with time_limit(max(deadline - time.monotonic(), 5.0)), design_budget():   # the witnesses' own budget
             certificate, kernel = _kernel_check(Report(path, design, props, kf))
     except TimeLimit:
         certificate, kernel = None, {"checked": [], "search": [p for p, v in props.items() if v.proved or v.refuted],
