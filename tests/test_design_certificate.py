@@ -479,7 +479,8 @@ def test_one_branch_prefix_links_only_what_it_says():
     """f = Piecewise((0, Eq(rho, 0)), (log(1 + rho), True)): F = log(1 + s^2)
     on (0, oo) (s^2 = 0 is false there) and F(0) - G(0) = 0, so the links
     read G = log(1 + s^2).  Refused: an origin value other than G(0) (the
-    proposer gives no prefix, and a value_sign of 1 is not 0), an identity
+    proposer gives only F = G on (0, oo), which P3 and P8 accept and no other
+    property does, and a value_sign of 1 is not 0), an identity
     about another F, and one on [0, oo) (the branch there is not G at 0)."""
     from uwmr_symbolic.certify import one_branch_theorems
     from uwmr_symbolic.kernel import rules as K
@@ -489,9 +490,11 @@ def test_one_branch_prefix_links_only_what_it_says():
     claims = [t.claim for t in theorems]
     assert got == G and DC._one_branch(F, claims + ["rest"]) == (["rest"], G)
     jump = sp.Piecewise((1, sp.Eq(S ** 2, 0)), (G, True))           # f(0, 0) = 1, f -> 0: not G
-    assert one_branch_theorems(jump, S) == (jump, [])
     forged = [claims[0], K.value_sign(value=jump.subs(S, 0) - G.subs(S, 0)).claim]
     assert DC._one_branch(jump, forged) == (forged, jump)
+    got, opened = one_branch_theorems(jump, S)          # F = G on (0, oo) only: P3 and P8 see no more
+    assert got == G and len(opened) == 1 and DC._one_branch(jump, [opened[0].claim], open_only=True) == ([], G)
+    assert DC._one_branch(jump, [opened[0].claim]) == ([opened[0].claim], jump)
     other = sp.Piecewise((0, sp.Eq(S ** 2, 0)), (2 * G, True))
     assert DC._one_branch(other, claims) == (claims, other)
     closed = [dataclasses.replace(claims[0], lo_open=False), claims[1]]

@@ -77,6 +77,8 @@ def test_value_at_the_origin_is_compared_with_the_limit(tmp_path):
         assert v[p] == "refuted", (p, report.properties[p].reason)
     assert report.properties["P1"].witness == {"e1": "0", "e2": "0", "f": "0", "limit": "1"}
     assert v["P8"] != "refuted"     # df/de2 -> 0 as e2 -> 0 wherever it exists
+    # the kernel: F = 1 + log(1 + s^2) on (0, oo) is enough for P3 and P8 (s > 0 only), not for the others
+    assert report.kernel == {"checked": ["P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8"], "search": ["kf"]}
 
 
 @pytest.mark.parametrize("body", [

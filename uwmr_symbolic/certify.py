@@ -830,7 +830,8 @@ def one_branch_theorems(F, var):
     """(G, [F = G on (0, oo), F(0) - G(0) = 0]) when the Piecewise profile F
     follows one branch G at every s > 0 (its conditions signed there,
     `on_branch`) and takes G's value at 0: then the kernel's lemmas may be
-    about G (`design_certificate._one_branch`); else (F, [])."""
+    about G (`design_certificate._one_branch`); (G, [F = G on (0, oo)]) when
+    F(0) is another value (enough for P3 and P8); else (F, [])."""
     if not F.has(sp.Piecewise):
         return F, []
     prover = Prover(WORK)
@@ -839,7 +840,7 @@ def one_branch_theorems(F, var):
                        lambda g: _rule(K.identity, lhs=g, rhs=g, var=var, lo=0, hi=OO, lo_open=True, hi_open=True))
         G = K.parse(th.claim.other)
         at_zero = _rule(K.value_sign, value=F.subs(var, 0) - G.subs(var, 0))
-        return (F, []) if G.has(sp.Piecewise) or at_zero.claim.want != 0 else (G, [th, at_zero])
+        return (F, []) if G.has(sp.Piecewise) else (G, [th, at_zero] if at_zero.claim.want == 0 else [th])
     except (NoProof, K.KernelError, Undefined, IndexError):
         return F, []
 

@@ -236,7 +236,7 @@ def _link(name, f, theorems, exact=None) -> list[str]:
         return []
     F = _profile(f)
     claims, k = _reduction(f, F, claims)
-    claims, F = _one_branch(F, claims)
+    claims, F = _one_branch(F, claims, open_only=name in ("P3", "P8"))
     dF = sp.diff(F, S)
     reduction = [] if k is not None else [REDUCTION]      # unless P4 is kernel-checked (see `check`)
     want = F if name == "P3" else dF
@@ -263,21 +263,24 @@ def _reduction(f, F, claims):
     return claims, None
 
 
-def _one_branch(F, claims):
+def _one_branch(F, claims, open_only=False):
     """(the other claims, G) when F is a Piecewise and the claims begin with
     F = G on (0, oo) (an `identity` through `select_branch`) and F(0) - G(0)
     = 0 (`value_sign`), G free of Piecewise: then F and G agree at every
     s >= 0, and every property reduces to G; else (claims, F).  (An origin
     given its own value, f = Piecewise((0, Eq(rho, 0)), (log(1 + rho),
-    True)), or a Max whose first argument is the larger everywhere.)"""
-    if F.has(sp.Piecewise) and len(claims) >= 2 and claims[0].kind == "identity" and claims[1].kind == "value_sign":
-        G = parse(claims[0].other)
-        if not G.has(sp.Piecewise) and claims[1].want == 0 and (
-                claims[0].expr, claims[0].var, claims[0].lo, claims[0].hi, claims[0].lo_open, claims[0].hi_open,
-                claims[1].expr) == (sp.srepr(F), sp.srepr(S), "Integer(0)", "oo", True, True,
-                                    sp.srepr(F.subs(S, 0) - G.subs(S, 0))):
-            return claims[2:], G
-    return claims, F
+    True)), or a Max whose first argument is the larger everywhere.)
+    `open_only` (P3, P8: about s > 0 only): F = G on (0, oo) is enough."""
+    if not (F.has(sp.Piecewise) and claims and claims[0].kind == "identity"):
+        return claims, F
+    G = parse(claims[0].other)
+    if G.has(sp.Piecewise) or (claims[0].expr, claims[0].var, claims[0].lo, claims[0].hi, claims[0].lo_open,
+                               claims[0].hi_open) != (sp.srepr(F), sp.srepr(S), "Integer(0)", "oo", True, True):
+        return claims, F
+    if len(claims) >= 2 and claims[1].kind == "value_sign" and claims[1].want == 0 and \
+            claims[1].expr == sp.srepr(F.subs(S, 0) - G.subs(S, 0)):
+        return claims[2:], G
+    return (claims[1:], G) if open_only else (claims, F)
 
 
 def _link_reduced(name, F, dF, claims, k, exact) -> list[str]:

@@ -208,15 +208,23 @@ class Analysis:
         return (sign_theorems(dF, S, 0, sp.oo)[0] or sign_theorems(dF, S, 0, sp.oo, strict=False)[0] or [None])[0]
 
     @cached_property
-    def one_branch(self):
-        """(G, kernel theorems F = G on (0, oo) and F(0) = G(0)) when the
-        Piecewise profile follows one branch G at every s > 0 and the
-        search's profile is that G too; else (F, [])."""
+    def open_branch(self):
+        """(G, kernel theorems F = G on (0, oo), and F(0) = G(0) if so) when
+        the Piecewise profile follows one branch G at every s > 0 and the
+        search's profile is that G too; else (F, []).  P3 and P8 see s > 0
+        only, so F = G on (0, oo) is enough for them."""
         if self.profile is None or len(self.profile.pieces) != 1:
             return self.F, []
         from .design_certificate import _profile      # the F the certificate's links read
         G, theorems = one_branch_theorems(_profile(self.f), S)
         return (G, theorems) if theorems and G == self.profile.pieces[0].expr else (self.F, [])
+
+    @cached_property
+    def one_branch(self):
+        """`open_branch` when F(0) = G(0) too: then F = G on [0, oo) and every
+        property's lemmas are about G; else (F, [])."""
+        G, theorems = self.open_branch
+        return (G, theorems) if len(theorems) == 2 else (self.F, [])
 
     @property
     def kernel_F(self):
@@ -425,8 +433,8 @@ def verify_p3(a: Analysis) -> Verdict:
 def _growth(a: Analysis) -> list:
     if len(a.profile.pieces) > 1:
         return growth_theorems(a.F, S, a.profile.pieces[-1].lo)
-    F = _single_formula(a)
-    return growth_theorems(F, S) if F is not None else []
+    F = a.open_branch[0]
+    return growth_theorems(F, S) if not F.has(sp.Piecewise) else []
 
 
 def _grows_without_bound(dF, lo) -> str | None:
@@ -580,7 +588,7 @@ def verify_p8(a: Analysis) -> Verdict:
             return unknown(f"F' on ({piece.lo}, {piece.hi}): {cont.reason}")
     v = proved("F'(0+) = 0, and F' is bounded near every s > 0, so F'(s) e2/s -> 0 as e2 -> 0")
     return _lemmas(v, v, "F' bounded near every s > 0 and F'(0+) = 0",
-                   lambda: smoothness_theorems(a.kernel_F, S, 1, a.profile.ends))
+                   lambda: smoothness_theorems(a.open_branch[0], S, 1, a.profile.ends))
 
 
 # --------------------------------------------------------------------------
@@ -629,14 +637,17 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
                    "(P4 " + a.p4.status + ")")
 
 
-def _through_reduction(verify):
+def _through_reduction(verify, open_only=False):
     """Say so when a verdict rests on an elliptic reduction f = F(s),
     s = sqrt(e1^2 + r e2^2), r != 1 (then df/de1 = F'(s) e1/s and
-    df/de2 = r F'(s) e2/s, and every argument above goes through with this s)."""
+    df/de2 = r F'(s) e2/s, and every argument above goes through with this s).
+    Lemmas about the one branch G of F follow F = G (`open_only`: on (0, oo)
+    is enough, P3 and P8)."""
     def run(a: Analysis) -> Verdict:
         v = verify(a)
-        if v.proved and v.details.get("kernel") and a.reduced and a.one_branch[1]:   # lemmas about G, not F
-            v = replace(v, details={**v.details, "kernel": a.one_branch[1] + v.details["kernel"]})
+        branch = a.open_branch[1] if open_only and a.reduced else a.one_branch[1] if a.reduced else []
+        if v.proved and v.details.get("kernel") and branch:     # lemmas about G, not F
+            v = replace(v, details={**v.details, "kernel": branch + v.details["kernel"]})
         if a.reduced and a.ratio != 1 and not v.refuted:
             v = replace(v, reason=f"with s = {a.radius} (f = F(s) is a symbolic identity; df/de1 = "
                                   f"F'(s) e1/s, df/de2 = {a.ratio} F'(s) e2/s): {v.reason}")
@@ -648,6 +659,6 @@ def _through_reduction(verify):
     return run
 
 
-VERIFIERS = {"P1": _through_reduction(verify_p1), "P2": verify_p2, "P3": _through_reduction(verify_p3),
+VERIFIERS = {"P1": _through_reduction(verify_p1), "P2": verify_p2, "P3": _through_reduction(verify_p3, True),
              "P4": verify_p4, "P5": _through_reduction(lambda a: a.p5), "P6": _through_reduction(verify_p6),
-             "P7": _through_reduction(verify_p7), "P8": _through_reduction(verify_p8)}
+             "P7": _through_reduction(verify_p7), "P8": _through_reduction(verify_p8, True)}
