@@ -171,6 +171,10 @@ def test_cli_writes_and_rechecks_a_certificate(tmp_path):
     assert r.returncode == 1 and r.stderr.count("\n") == 1 and "does not check" in r.stderr, r.describe()
     r = run_cli(["--check-certificate", str(tmp_path / "missing.json")])
     assert r.returncode == 2 and "cannot read the certificate" in r.stderr, r.describe()
+    # several files are checked in parallel and reported in the order given; the worst status wins
+    both = run_cli(["--check-certificate", str(out), str(bad), str(out), "--jobs", "2"])
+    assert both.returncode == 1 and both.stderr.startswith(f"{bad}: the certificate does not check"), both.describe()
+    assert [ln for ln in both.stdout.splitlines() if not ln.startswith(" ")] == [f"{out}: certificate re-checked"] * 2
 
 
 def test_cache_hit_is_used_only_when_its_certificate_rechecks(tmp_path):

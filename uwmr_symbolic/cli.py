@@ -110,8 +110,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="write the design certificate (JSON: the kernel's theorems per property and what still "
                         "rests on the search) to PATH; with several files PATH is a directory of STEM.cert.json")
     p.add_argument("--check-certificate", nargs="+", metavar="CERT",
-                   help="re-check certificate file(s) in the kernel without any search and say what each "
-                        "property rests on (exit 0 all check, 1 one does not, 2 unreadable)")
+                   help="re-check certificate file(s) in the kernel without any search (in parallel, --jobs) and "
+                        "say what each property rests on (exit 0 all check, 1 one does not, 2 unreadable)")
     p.add_argument("--kernel-only", action="store_true",
                    help="count only verdicts the trusted kernel re-checked: a proof or refutation resting on "
                         "the search alone becomes 'unknown', a gain check needs a kernel-checked kf (exit 0 "
@@ -239,26 +239,36 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
     return status
 
 
-def check_certificates(files) -> int:
-    """`--check-certificate`: re-check each file in the kernel."""
+def _check_one_certificate(name: str) -> tuple[int, str, str]:
+    """(status, stdout text, stderr text) of `--check-certificate` for one file."""
     from .design_certificate import CertificateError, check
-    status = 0
-    for name in files:
-        try:
-            text = Path(name).read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            print(f"{name}: cannot read the certificate: {exc}", file=sys.stderr)
-            status = max(status, 2)
-            continue
-        try:
-            lines = [c.line() for c in check(text)]
-        except CertificateError as exc:
-            print(f"{name}: the certificate does not check: {exc}", file=sys.stderr)
-            status = max(status, 1)
-            continue
-        print(f"{name}: certificate re-checked")
-        print("\n".join("  " + line for line in lines))
-    return status
+    try:
+        text = Path(name).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        return 2, "", f"{name}: cannot read the certificate: {exc}"
+    try:
+        lines = [c.line() for c in check(text)]
+    except CertificateError as exc:
+        return 1, "", f"{name}: the certificate does not check: {exc}"
+    return 0, "\n".join([f"{name}: certificate re-checked", *("  " + line for line in lines)]), ""
+
+
+def check_certificates(files, jobs: int | None = None) -> int:
+    """`--check-certificate`: re-check each file in the kernel, one process
+    per core (forked: the kernel is imported once), reported in order."""
+    import multiprocessing
+    jobs = max(1, min(jobs or os.cpu_count() or 1, len(files)))
+    if jobs > 1 and "fork" in multiprocessing.get_all_start_methods():
+        with multiprocessing.get_context("fork").Pool(jobs) as pool:
+            results = pool.map(_check_one_certificate, files, chunksize=1)
+    else:
+        results = [_check_one_certificate(name) for name in files]
+    for _, out, err in results:
+        if err:
+            print(err, file=sys.stderr)
+        if out:
+            print(out)
+    return max((status for status, _, _ in results), default=0)
 
 
 def write_certificates(paths, results, target) -> int:
@@ -284,7 +294,7 @@ def write_certificates(paths, results, target) -> int:
 def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
     if args.check_certificate:
-        return check_certificates(args.check_certificate)
+        return check_certificates(args.check_certificate, args.jobs)
     try:
         settings.apply(args, DEFAULT_TIMEOUT)   # [tool.uwmr-symbolic] in pyproject.toml; flags win
     except settings.SettingsError as exc:
