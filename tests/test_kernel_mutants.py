@@ -1445,6 +1445,9 @@ def test_sign_by_log_bound_claims_and_messages():
     low = K.sign_by_cover(expr=2 - 1 / s, var=s, cuts=[I1, sp.Integer(4)], want=1, strict=True)
     up = L(low, sturm(I1, s, 1, 4), pos, expr=1 + sp.log(s), term=sp.log(s), p=-I1)
     assert (up.claim.expr, up.claim.want, up.claim.strict) == (R(1 + sp.log(s)), 1, True)
+    # open ends are kept: (1, 4), the tail's [R, oo) has an open right end
+    opened = [sturm(4 - s, s, 1, 4, True, True), sturm(-I1, s, 1, 4, True, True, want=-1), sturm(s, s, 1, 4, True, True)]
+    assert L(*opened, expr=E, term=T, p=I1).claim == Claim("sign", R(E), R(s), R(I1), R(sp.Integer(4)), True, True, 1, True)
     # the bound of the other side: log s <= s - 1 says nothing about 1 + log s from below
     assert why(L, low, sturm(I1, s, 1, 4), pos, expr=1 + sp.log(s), term=sp.log(s), p=I1) == \
         "premise must be the sign -1 of 1"
