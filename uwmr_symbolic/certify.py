@@ -968,7 +968,8 @@ def _diverges(F, var, starts) -> list:
                     continue
                 k = sp.Rational(k.numerator, k.denominator)
                 try:
-                    th = _tail_first(prover, g - k, var, R)
+                    th = prover.prove(g - k, var, (R, OO, False, True), 1, False) if g.atoms(sp.Function) \
+                        else _tail_first(prover, g - k, var, R)     # algebraic: its t-form is, too
                     return [_rule(K.diverges_by_growth, th, expr=F, var=var, R=R, rate=rate, k=k)]
                 except NoProof as exc:
                     if exc is prover.spent:
