@@ -4,7 +4,6 @@ refuses what is undefined; tampered certificates are rejected."""
 import copy
 import dataclasses
 import json
-from fractions import Fraction
 
 import mpmath
 import pytest

@@ -25,7 +25,7 @@ import sympy as sp
 
 from uwmr_symbolic import e1, e2
 
-from .grammar import PROPS, RHO, Case, as_read, placeholders
+from .grammar import PROPS, Case, as_read, placeholders
 
 SMALL = (sp.Rational(1, 10 ** 12), sp.Rational(1, 10 ** 24))   # distances to a boundary or the origin
 
