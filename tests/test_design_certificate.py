@@ -511,11 +511,14 @@ def test_one_branch_prefix_links_only_what_it_says():
     ("c2_log_squared", PROPS),            # F' = s log(1 + s^2)/(1 + s^2) <= U: log <= 4((1 + s^2)^(1/4) - 1)
     ("c2_log_log", PROPS),                # a log in F's denominator: over one denominator, log >= 1 - 1/Y
     ("c4_cancel", [*PROPS, "kf"]),        # P6 with k = 1/2 attained at sqrt(3): the kernel takes k = 9/16
+    ("c6_erf", [*PROPS, "kf"]),           # F = s erf(s) + ...: s F' = s erf(s) >= k by the sign rules first
 ])
-def test_log_tails_are_kernel_checked(stem, checked):
+def test_tails_are_kernel_checked(stem, checked):
     """Designs whose F' has a log on the tail (its t-form is not defined at
     t = 0) are kernel-checked through `sign_by_log_bound`; kf of the first two
-    is only enclosed, so it has no entry."""
+    is only enclosed, so it has no entry.  The growth of s erf(s): a rate with
+    functions in it is proved by the sign rules first (the t-form of erf(1/t)
+    is not defined at t = 0); only an algebraic rate goes to s = 1/t first."""
     report = verify_design(ROOT / "tests" / "designs_codegen" / f"{stem}.py")
     assert report.kernel == {"checked": checked, "search": []}
 
