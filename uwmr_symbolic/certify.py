@@ -550,13 +550,13 @@ class Prover:
             y, m = logs[0].args[0], sp.Mul(*[a for a in sp.Mul.make_args(term) if a != logs[0]])
             rest = [a for a in e.args if a != term]
             for p in (sp.Rational(1, 4), sp.Rational(1, 16), -sp.Integer(1)):
-                if not _plausible(sp.Add(*rest, m * (y ** p - 1) / p), var, I[0], want) or \
-                        not _plausible(m, var, I[0], -want * (1 if p > 0 else -1)):
+                b, m_sign = sp.Add(*rest, m * (y ** p - 1) / p), -want * (1 if p > 0 else -1)
+                if not (_plausible(b, var, I[0], want) and _plausible(m, var, I[0], m_sign)):
                     continue                    # false somewhere: do not spend the budget on it
                 try:
                     positive = self.prove(y, var, I, 1, True, depth)
-                    coeff = self.prove(m, var, I, -want * (1 if p > 0 else -1), False, depth)
-                    bound = _tail_first(self, sp.Add(*rest, m * (y ** p - 1) / p), var, I[0], want, strict, depth)
+                    coeff = self.prove(m, var, I, m_sign, False, depth)
+                    bound = _tail_first(self, b, var, I[0], want, strict, depth)
                     return _rule(K.sign_by_log_bound, bound, coeff, positive, expr=e, term=term, p=p)
                 except NoProof as exc:
                     if exc is self.spent:

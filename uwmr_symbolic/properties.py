@@ -29,7 +29,8 @@ from . import e1 as E1, e2 as E2
 from .design import Design
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
-                      origin_value_theorems, piecewise_sign_theorem, radial_theorems, sign_theorems, smoothness_theorems, sup_upper_theorem)
+                      origin_value_theorems, piecewise_sign_theorem, radial_theorems, sign_theorems,
+                      smoothness_theorems, sup_upper_theorem)
 from .kf import KfCertificate, certify_kf, certify_sup, scale
 from .limits import NoLimit, limit_right
 from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
