@@ -39,6 +39,9 @@ def test_flipped_piecewise_conditions_still_radial():
     assert report["kf"]["upper"] is None
     assert all(v[p] == "proved" for p in ("P2", "P3", "P5", "P6", "P7", "P8"))
     assert code == 1
+    # the kernel reads the Max's condition r/2 >= sqrt(r) - 1/2 as the profile's
+    # s <= s^2/2 + 1/2: the reduction and every proof through it are checked
+    assert report["kernel"]["checked"] == ["P2", "P3", "P4", "P5", "P6", "P7", "P8"]
 
 
 @pytest.mark.slow        # waits for the kill: about 13 s

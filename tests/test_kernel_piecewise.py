@@ -383,3 +383,33 @@ def test_not_of_a_conjunction_no_branch_and_an_open_end_of_widen():
                                lo_open=False, hi_open=False)
     assert why(K.widen, low, lo=ZERO, hi=sp.Integer(2), lo_open=True, hi_open=False) == "J does not contain I"
     assert K.widen(low, lo=ZERO, hi=sp.Integer(2), lo_open=False, hi_open=False).claim.hi == "Integer(2)"
+
+
+def test_piecewise_identity_reads_equivalent_conditions():
+    """Conditions equal as sets of the plane: (x = 0 and y = 0) is
+    x^2 + y^2 = 0 is sqrt(x^2 + y^2) = 0 (and their negations); a >= b is
+    b <= a.  Near misses are refused: (x = 0 and y = 1), a <= b for a >= b,
+    sqrt(x^2 + y^2) = 1, (x = 0 or y = 0)."""
+    X, Y = sp.symbols("x y", real=True)
+    rho = X ** 2 + Y ** 2
+    g = sp.log(1 + rho)
+
+    def ok(c1, c2):
+        return K.identity_plane(lhs=sp.Piecewise((0, c1), (g, True)), rhs=sp.Piecewise((0, c2), (g, True)),
+                                x=X, y=Y).assumptions <= {"sympy-core", "sympy-polys"}
+
+    def refused(c1, c2):
+        return why(K.identity_plane, lhs=sp.Piecewise((0, c1), (g, True)), rhs=sp.Piecewise((0, c2), (g, True)),
+                   x=X, y=Y) == "the Piecewise sides differ in a condition or a branch"
+
+    origin = sp.And(sp.Eq(X, 0), sp.Eq(Y, 0))
+    assert ok(origin, sp.Eq(sp.sqrt(rho), 0)) and ok(origin, sp.Eq(rho, 0)) and ok(sp.Eq(0, rho), origin)
+    assert ok(sp.Or(sp.Ne(Y, 0), sp.Ne(X, 0)), sp.Ne(sp.sqrt(rho), 0))
+    assert ok(rho / 2 >= sp.sqrt(rho) - Q(1, 2), sp.sqrt(rho) <= rho / 2 + Q(1, 2))
+    assert ok(rho > 1, 1 < rho) and ok(sp.Eq(rho, 1), sp.Eq(1, rho))
+    assert refused(origin, sp.And(sp.Eq(X, 0), sp.Eq(Y, 1)))
+    assert refused(sp.Or(sp.Eq(X, 0), sp.Eq(Y, 0)), sp.Eq(rho, 0))
+    assert refused(origin, sp.Eq(sp.sqrt(rho), 1))
+    assert refused(rho / 2 >= sp.sqrt(rho), rho / 2 <= sp.sqrt(rho))
+    assert refused(rho > 1, rho >= 1)
+    assert refused(sp.Ne(rho, 0), sp.Eq(rho, 0))

@@ -93,15 +93,12 @@ def test_value_at_the_origin_is_compared_with_the_limit(tmp_path):
 def test_piecewise_forms_of_log1p_rho_are_proved(tmp_path, body):
     # all of them are log(1 + rho) (Jiang's design times 2): P1-P8 hold, kf = 1.
     # The kernel checks them through F = log(1 + s^2) on (0, oo) and F(0) = 0
-    # (`_one_branch`), except the And form: its P4 identity compares the
-    # conditions And(e1 = 0, e2 = 0) and sqrt(rho) = 0, which the kernel does not
+    # (`_one_branch`); the And form's P4 identity compares the conditions
+    # And(e1 = 0, e2 = 0) and sqrt(rho) = 0, both e1^2 + e2^2 = 0 to the kernel
     report, v = verify(tmp_path, body)
     assert all(s == "proved" for s in v.values()), v
     assert report.kf.exact == 1
-    if "And" not in body:
-        assert report.kernel == {"checked": [*v, "kf"], "search": []}
-    else:
-        assert report.kernel["checked"] == ["P2"]
+    assert report.kernel == {"checked": [*v, "kf"], "search": []}
 
 
 def test_value_on_a_circle_is_compared_with_the_limits(tmp_path):

@@ -1115,11 +1115,33 @@ def _same_branches(l, r, variables) -> bool:
         return False
     l, r = sp.piecewise_fold(l), sp.piecewise_fold(r)
     _need(isinstance(l, sp.Piecewise) and isinstance(r, sp.Piecewise) and len(l.args) == len(r.args)
-          and all(cl == cr and (el == er or (sp.cancel(sp.together(el - er)) == 0 if _rational_over_q(el - er, *variables)
+          and all(_condition(cl, variables) == _condition(cr, variables) and (el == er or (sp.cancel(sp.together(el - er)) == 0 if _rational_over_q(el - er, *variables)
                                              else _zero_when_generalized(el - er, *variables)))
                   for (el, cl), (er, cr) in zip(l.args, r.args)),
           "the Piecewise sides differ in a condition or a branch")
     return True
+
+
+def _condition(c, variables):
+    """A condition in a form where equivalent conditions of these kinds
+    coincide: a relation of real a, b as a - b against 0 (a >= b as
+    b - a <= 0, a = b as a - b = 0 or b - a = 0, whichever sorts first);
+    sqrt(E) = 0 (or != 0) holds exactly where E = 0 (or != 0); and for real
+    x, y, (x = 0 and y = 0) exactly where x^2 + y^2 = 0 (its negation
+    (x != 0 or y != 0) where x^2 + y^2 != 0)."""
+    both = {sp.And: sp.Eq, sp.Or: sp.Ne}.get(type(c))
+    if both and len(variables) == 2 and set(c.args) == {both(v, 0) for v in variables}:
+        c = both(sp.Add(*[v ** 2 for v in variables]), 0)
+    flip = {sp.Gt: sp.Lt, sp.Ge: sp.Le}
+    if type(c) in flip:
+        return flip[type(c)](c.rhs - c.lhs, 0)
+    if isinstance(c, (sp.Lt, sp.Le)):
+        return c.func(c.lhs - c.rhs, 0)
+    if isinstance(c, (sp.Eq, sp.Ne)):
+        d = next((e.base for e in (c.lhs - c.rhs, c.rhs - c.lhs) if e.is_Pow and e.exp == sp.Rational(1, 2)),
+                 c.lhs - c.rhs)
+        return c.func(min(d, -d, key=sp.default_sort_key), 0)
+    return c
 
 
 _PLANE_POINTS = [(sp.Rational(p), sp.Rational(q)) for p, q in
