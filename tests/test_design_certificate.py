@@ -444,28 +444,47 @@ def test_kf_link_where_f_jumps_keeps_the_sup_off_the_cuts():
     def lower(lo, hi, lo_open, hi_open):
         return Claim("sup_lower", R(dF), R(S), R(lo), R(hi), lo_open, hi_open, other="Integer(1)")
     cuts = sp.Tuple(2)
-    assert DC._link_kf(dF, sp.Integer(1), [sign, upper, lower(0, 2, True, True)], cuts=cuts) == []
-    assert DC._link_kf(dF, sp.Integer(1), [sign, upper, lower(2, 3, True, False)], cuts=cuts) == []
+    assert DC._link_kf(dF, (sp.Integer(1),) * 2, [sign, upper, lower(0, 2, True, True)], cuts=cuts) == []
+    assert DC._link_kf(dF, (sp.Integer(1),) * 2, [sign, upper, lower(2, 3, True, False)], cuts=cuts) == []
     for bad in (lower(1, 3, True, True), lower(2, 3, False, True), lower(0, 2, True, False), lower(2, 2, False, False)):
         with pytest.raises(DC.CertificateError, match="kf: the kernel's conclusions are not"):
-            DC._link_kf(dF, sp.Integer(1), [sign, upper, bad], cuts=cuts)
-    # without cuts (F continuous) the sup must be over all of (0, oo), and F' > 0 strictly
+            DC._link_kf(dF, (sp.Integer(1),) * 2, [sign, upper, bad], cuts=cuts)
+    # without cuts (F continuous) the sup must be over all of (0, oo); F' >= 0 suffices, F' <= 0 does not
     with pytest.raises(DC.CertificateError):
-        DC._link_kf(dF, sp.Integer(1), [sign, upper, lower(0, 2, True, True)])
+        DC._link_kf(dF, (sp.Integer(1),) * 2, [sign, upper, lower(0, 2, True, True)])
+    whole = Claim("sup_lower", R(dF), other="Integer(1)", **on)
+    assert DC._link_kf(dF, (sp.Integer(1),) * 2, [sign, upper, whole]) == []
     with pytest.raises(DC.CertificateError):
-        DC._link_kf(dF, sp.Integer(1), [sign, upper, Claim("sup_lower", R(dF), other="Integer(1)", **on)])
+        DC._link_kf(dF, (sp.Integer(1),) * 2, [dataclasses.replace(sign, want=-1), upper, whole])
+    # an enclosure [1/2, 2] of kf follows from F' <= 1 and sup F' >= 1; [1/2, 9/10] does not
+    assert DC._link_kf(dF, (sp.Rational(1, 2), sp.Integer(2)), [sign, upper, whole]) == []
+    with pytest.raises(DC.CertificateError, match="inside"):
+        DC._link_kf(dF, (sp.Rational(1, 2), sp.Rational(9, 10)), [sign, upper, whole])
 
 
 def test_slope_vanishing_on_circles_is_kernel_checked(refuted_certs):
     """r09, F = u - sin(u), u = sqrt(1 + s^2) - 1, F' = (1 - cos u) s/sqrt(1 + s^2):
     P3 from G(u) = u - sin(u) > 0 (`sign_by_substitution`) and F >= u - 1 -> oo
     (`diverges_by_comparison`); F' >= 0 only weakly (0 where u = 2 pi n), enough
-    for P1 (with F' <= 2.3, 2 * 9/8 rounded up: kf itself, a sup approached
-    along u = (2n + 1) pi, stays undecided) and for P6 (h >= 0)."""
+    for P1 (with F' <= 2.3, 2 * 9/8 rounded up) and for P6 (h >= 0).  kf = 2,
+    a sup approached along u = (2n + 1) pi, is only enclosed: the kernel
+    checks [L, 2.3] with L = F'(p) >= 1.9999993 at the search's best point p
+    (F'(p) < 2, so L < 2).  A narrower enclosure claimed is refused."""
     cert = refuted_certs["r09_slope_zero"]
     checks = _by_name(DC.check(cert))
-    assert all(checks[p].kernel_checked for p in ("P1", "P2", "P3", "P4", "P6", "P7", "P8"))
-    assert checks["P5"].refutation_checked and "kf" not in checks
+    assert all(checks[p].kernel_checked for p in ("P1", "P2", "P3", "P4", "P6", "P7", "P8", "kf"))
+    assert checks["P5"].refutation_checked
+    kf = cert["properties"]["kf"]
+    assert kf["exact"] is None and parse(kf["upper"]) == sp.Rational(23, 10)
+    assert sp.Rational(19, 10) < parse(kf["lower"]) < 2
+    for key, value in (("upper", sp.Integer(2)), ("lower", sp.Integer(2)), ("lower", sp.Rational(23, 10))):
+        bad = copy.deepcopy(cert)
+        bad["properties"]["kf"][key] = sp.srepr(value)
+        with pytest.raises(DC.CertificateError, match="kf: the kernel's conclusions"):
+            DC.check(bad)
+    wider = copy.deepcopy(cert)          # a wider claim follows from the kernel's
+    wider["properties"]["kf"]["upper"] = sp.srepr(sp.Integer(3))
+    assert _by_name(DC.check(wider))["kf"].kernel_checked
 
     def rules(name):
         return {t["rule"] for t in cert["properties"][name]["kernel"]["theorems"]}
@@ -508,15 +527,15 @@ def test_one_branch_prefix_links_only_what_it_says():
 
 
 @pytest.mark.parametrize("stem, checked", [
-    ("c2_log_squared", PROPS),            # F' = s log(1 + s^2)/(1 + s^2) <= U: log <= 4((1 + s^2)^(1/4) - 1)
-    ("c2_log_log", PROPS),                # a log in F's denominator: over one denominator, log >= 1 - 1/Y
+    ("c2_log_squared", [*PROPS, "kf"]),   # F' = s log(1 + s^2)/(1 + s^2) <= U: log <= 4((1 + s^2)^(1/4) - 1)
+    ("c2_log_log", [*PROPS, "kf"]),       # a log in F's denominator: over one denominator, log >= 1 - 1/Y
     ("c4_cancel", [*PROPS, "kf"]),        # P6 with k = 1/2 attained at sqrt(3): the kernel takes k = 9/16
     ("c6_erf", [*PROPS, "kf"]),           # F = s erf(s) + ...: s F' = s erf(s) >= k by the sign rules first
 ])
 def test_tails_are_kernel_checked(stem, checked):
     """Designs whose F' has a log on the tail (its t-form is not defined at
     t = 0) are kernel-checked through `sign_by_log_bound`; kf of the first two
-    is only enclosed, so it has no entry.  The growth of s erf(s): a rate with
+    is only enclosed, and the kernel checks an enclosure (`kf.kernel_bounds`).  The growth of s erf(s): a rate with
     functions in it is proved by the sign rules first (the t-form of erf(1/t)
     is not defined at t = 0); only an algebraic rate goes to s = 1/t first."""
     report = verify_design(ROOT / "tests" / "designs_codegen" / f"{stem}.py")

@@ -1153,14 +1153,24 @@ def limit_at_infinity(e, var, w=sp.Rational(1, 4)):
     return lim
 
 
-def sup_upper_theorem(e, bound, var, gap=None):
+def sup_upper_theorem(e, bound, var, gap=None, work=WORK):
     """E <= bound on (0, oo) (`sup_upper_by_sign` over bound - E >= 0, a
-    theorem `gap` or one proved here), or None."""
-    parts = [gap] if gap is not None else sign_theorems(sp.sympify(bound) - e, var, 0, OO, strict=False)[0]
+    theorem `gap` or one proved here with `work`), or None."""
+    parts = [gap] if gap is not None else sign_theorems(sp.sympify(bound) - e, var, 0, OO, strict=False,
+                                                        work=work)[0]
     if parts is None:
         return None
     try:
         return _rule(K.sup_upper_by_sign, parts[0], expr=e, bound=bound)
+    except NoProof:
+        return None
+
+
+def sup_lower_theorem(e, bound, point, var):
+    """sup E >= bound on (0, oo) by E's value at `point` (`sup_lower_by_point`), or None."""
+    try:
+        return _rule(K.sup_lower_by_point, expr=e, var=var, point=point, bound=bound, lo=0, hi=OO,
+                     lo_open=True, hi_open=True)
     except NoProof:
         return None
 

@@ -71,6 +71,10 @@ def build(report) -> dict:
         props["kf"] = {"status": "proved", "reason": kf.reason, "exact": sp.srepr(kf.exact),
                        "kernel": to_certificate(kf.kernel) if kf.kernel else None,
                        "unchecked": list(kf.unchecked)}
+    elif kf is not None and kf.kernel and kf.kernel_bounds is not None:     # kf enclosed: lower <= kf <= upper
+        lower, upper = (sp.srepr(sp.Rational(b.numerator, b.denominator)) for b in kf.kernel_bounds)
+        props["kf"] = {"status": "proved", "reason": kf.reason, "exact": None, "lower": lower, "upper": upper,
+                       "kernel": to_certificate(kf.kernel), "unchecked": list(kf.unchecked)}
     return {"format": FORMAT, "version": VERSION,
             "design": {"name": report.design.name, "file": str(report.path), "f": sp.srepr(report.design.f)},
             "properties": props}
@@ -118,10 +122,12 @@ def _profile(f):
     return sp.piecewise_fold(f.subs({E1: S, E2: 0}))
 
 
-def _link_kf(dF, exact, claims, k=1, cuts=None) -> list[str]:
+def _link_kf(dF, bounds, claims, k=1, cuts=None) -> list[str]:
     """kf = k c with k = sqrt(r) (1 for a radial f) and c = sup |F'| on
-    (0, oo), by F' > 0, F' <= c and sup F' >= c, or, when F' changes sign,
-    by |F'| <= c and sup E >= c for E = F' or -F' (|F'| >= E).
+    (0, oo), by F' >= 0, F' <= c and sup F' >= c, or, when F' changes sign,
+    by |F'| <= c and sup E >= c for E = F' or -F' (|F'| >= E).  `bounds`:
+    (kf, kf) for an exact kf; (lower, upper) for an enclosure, shown by
+    F' <= U and sup F' >= L with lower <= k L and k U <= upper.
 
     `cuts` not None: F is only known to be continuous with derivative F' on
     each open piece between finitely many cuts (F' continuous there and
@@ -137,18 +143,25 @@ def _link_kf(dF, exact, claims, k=1, cuts=None) -> list[str]:
     got = [(c.kind, c.expr, (c.var, c.lo, c.hi, c.lo_open, c.hi_open), c.want, c.strict) for c in claims]
     sup = (on, 0, False)
     if len(claims) == 3:
-        want = [[("sign", sp.srepr(dF), on, 1, True)] + ([("sign", sp.srepr(dF), on, 1, False)] if cuts is not None else []),
+        want = [[("sign", sp.srepr(dF), on, 1, True), ("sign", sp.srepr(dF), on, 1, False)],
                 [("sup_upper", sp.srepr(dF), *sup)], [("sup_lower", sp.srepr(dF), *sup)]]
         if cuts is not None and _off_cuts(claims[2], cuts):
             got[2] = got[2][:2] + (on,) + got[2][3:]
     else:
         want = [[("sup_upper", sp.srepr(sp.Abs(dF)), *sup)],
                 [("sup_lower", sp.srepr(dF), *sup), ("sup_lower", sp.srepr(-dF), *sup)]]
-    c = claims[-1].other if claims else None
-    if not (len(got) == len(want) and all(g in w for g, w in zip(got, want)) and claims[-2].other == c
-            and sp.srepr(k * parse(c)) == sp.srepr(exact)):
-        raise CertificateError(f"kf: the kernel's conclusions are not F' > 0, F' <= c, sup F' >= c nor "
-                               f"|F'| <= c, sup (+-F') >= c with sqrt(r) c = kf = {exact}")
+    from .kernel.core import _lt
+    lower, upper = bounds
+    if lower == upper:
+        ok = len(claims) >= 2 and claims[-2].other == claims[-1].other and sp.srepr(k * parse(claims[-1].other)) \
+            == sp.srepr(lower)
+    else:
+        ok = len(claims) >= 2 and not _lt(k * parse(claims[-1].other), lower) and \
+            not _lt(upper, k * parse(claims[-2].other))
+    if not (ok and len(got) == len(want) and all(g in w for g, w in zip(got, want))):
+        raise CertificateError(f"kf: the kernel's conclusions are not F' >= 0, F' <= U, sup F' >= L nor "
+                               f"|F'| <= U, sup (+-F') >= L with sqrt(r) [L, U] inside [{lower}, {upper}]"
+                               + (" and L = U" if lower == upper else ""))
     return []
 
 
@@ -217,7 +230,7 @@ def _link_smooth(name, F, claims) -> list[str]:
     return []
 
 
-def _link(name, f, theorems, exact=None) -> list[str]:
+def _link(name, f, theorems, bounds=None) -> list[str]:
     """Facts the kernel's conclusions do not cover for property `name`."""
     claims = [t.claim for t in theorems]
     if name == "P2":
@@ -243,7 +256,7 @@ def _link(name, f, theorems, exact=None) -> list[str]:
     piecewise = F.has(sp.Piecewise)
     if piecewise and name not in ("P7", "P8") and not (claims and claims[0].expr == sp.srepr(want)):
         return reduction + ["the kernel's claims are about the pieces of F (the split of F is the search's)"]
-    return reduction + _link_reduced(name, F, dF, claims, k or 1, exact)
+    return reduction + _link_reduced(name, F, dF, claims, k or 1, bounds)
 
 
 def _reduction(f, F, claims):
@@ -283,7 +296,7 @@ def _one_branch(F, claims, open_only=False):
     return (claims[1:], G) if open_only else (claims, F)
 
 
-def _link_reduced(name, F, dF, claims, k, exact) -> list[str]:
+def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
     """The link of a property that reduces to the profile F (k = sqrt(r))."""
     want = F if name == "P3" else dF
     piecewise = F.has(sp.Piecewise)
@@ -301,7 +314,7 @@ def _link_reduced(name, F, dF, claims, k, exact) -> list[str]:
         else:
             gap = ["F' exists at the boundaries of F's pieces (the search's)"]
     if name == "kf":
-        return gap + _link_kf(dF, exact, claims, k, cuts)
+        return gap + _link_kf(dF, bounds, claims, k, cuts)
     if name in ("P1", "P6"):
         return gap + _link_p1_p6(name, F, claims)
     if name in ("P7", "P8"):
@@ -633,8 +646,9 @@ def check(data) -> list[PropertyCheck]:
                     if diff:                        # the link differentiates f itself
                         pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
                 elif pc.status == "proved":
-                    exact = parse(entry["exact"]) if name == "kf" else None
-                    pc.unchecked += [u for u in _link(name, f, theorems, exact) if u not in pc.unchecked]
+                    bounds = None if name != "kf" else (parse(entry["exact"]),) * 2 if entry["exact"] is not None \
+                        else (parse(entry["lower"]), parse(entry["upper"]))
+                    pc.unchecked += [u for u in _link(name, f, theorems, bounds) if u not in pc.unchecked]
                     if name not in ("P2", "P4"):        # the link differentiates F itself
                         pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
                 else:

@@ -8,6 +8,7 @@ value or a limit) is accepted only after c - |F'| >= 0 is proved on all of
 [0, oo) with the prover of `univariate`."""
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from fractions import Fraction
 
@@ -17,7 +18,8 @@ from .interval import Interval
 from .limits import NoLimit, rational_parts
 from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
-from .certify import piecewise_sup_theorems, sign_theorems, sup_abs_theorems, sup_theorems
+from .certify import (WORK, piecewise_sup_theorems, sign_theorems, sup_abs_theorems, sup_lower_theorem, sup_theorems,
+                      sup_upper_theorem)
 from .univariate import (certified_inside, enclose_sup, exact_sign, exact_value, limit_at_infinity, prepare,
                          prove_sign)
 
@@ -35,6 +37,8 @@ class SupCertificate:
     attained: bool | None
     reason: str
     unbounded_witness: dict | None = None
+    point: sp.Rational | None = None                # an s where the function is >= lower (enclosures)
+    kernel_bounds: tuple | None = None              # (L, U), Fractions: the enclosure the kernel checked
     kernel: list = field(default_factory=list)      # kernel theorems (see `certify.sup_theorems`)
     unchecked: list = field(default_factory=lambda: ["the whole argument (no kernel rules for it yet)"])
 
@@ -65,7 +69,11 @@ def scale(cert: SupCertificate, c) -> SupCertificate:
         return exact_certificate(cert.exact * c, cert.attained, reason)
     lo = None if cert.lower is None else Interval.point(sp.Rational(cert.lower) * c).lower_fraction()
     hi = Interval.point(sp.Rational(cert.upper) * c).upper_fraction()
-    return SupCertificate(lo, hi, None, cert.attained, reason, cert.unbounded_witness)
+    out = SupCertificate(lo, hi, None, cert.attained, reason, cert.unbounded_witness)
+    if cert.kernel_bounds is not None:
+        L, U = (sp.Rational(b.numerator, b.denominator) * c for b in cert.kernel_bounds)
+        out.kernel_bounds = (Interval.point(L).lower_fraction(), Interval.point(U).upper_fraction())
+    return out
 
 
 def _candidates(expr, lo, hi, interior=True):
@@ -252,7 +260,8 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
         return exact_certificate(value, attained,
                               f"sup {name} = {value} {where}, proved by {value} - {name} >= 0 on [0, oo)")
     return SupCertificate(lower, upper, None, None,
-                          f"interval branch and bound: sup {name} in [{float(lower):.10g}, {float(upper):.10g}]")
+                          f"interval branch and bound: sup {name} in [{float(lower):.10g}, {float(upper):.10g}]",
+                          point=enc.point)
 
 
 def _with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
@@ -261,6 +270,8 @@ def _with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
     when F' changes sign (`side` = +-1: kf = sup side*F'), of |F'| <= kf and
     sup side*F' >= kf; or the reason it has none."""
     pieces = analysis.profile.pieces
+    if cert.exact is None and side is None and len(pieces) == 1 and cert.point is not None:
+        return _enclosure_with_kernel(cert, analysis)
     if cert.exact is None or cert.attained is None:
         cert.unchecked = ["kf: " + ("no exact value" if cert.exact is None else "attainment undecided")]
         return cert
@@ -280,6 +291,39 @@ def _with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
         theorems, why = piecewise_sup_theorems(analysis.F, cert.exact, point, S, analysis.profile.ends)
     cert.kernel, cert.unchecked = (theorems, []) if theorems else ([], [f"kf = {cert.exact} (kernel: {why})"])
     return cert
+
+
+def _enclosure_with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
+    """cert, when kf = sup F' (F' >= 0) is only enclosed, with the kernel's
+    theorems F' >= 0, F' <= U and sup F' >= L (its value at cert.point),
+    where L <= lower and U >= upper are short decimals (U about 1/8 above
+    when the tight one is not shown cheaply): `kernel_bounds`."""
+    F = analysis.kernel_F
+    positive = analysis.slope_sign
+    L, upper = _decimal(cert.lower, -1), None
+    for U, work in ((_decimal(cert.upper, 1), WORK // 12), (_decimal(cert.upper * Fraction(9, 8), 1, 2), WORK)):
+        upper = sup_upper_theorem(sp.diff(F, S), U, S, work=work) if positive is not None and L > 0 else None
+        if upper is not None:
+            break
+    if upper is None:
+        cert.unchecked = [f"kf in [{float(cert.lower):.10g}, {float(cert.upper):.10g}] (kernel: "
+                          f"F' >= 0 and F' <= {U} not shown)"]
+        return cert
+    lower = sup_lower_theorem(sp.diff(F, S), L, cert.point, S)
+    if lower is None:
+        cert.unchecked = [f"kf in [{float(cert.lower):.10g}, {float(cert.upper):.10g}] (kernel: "
+                          f"F'({cert.point}) >= {L} not shown)"]
+        return cert
+    cert.kernel_bounds = (Fraction(L.p, L.q), Fraction(U.p, U.q))
+    cert.kernel, cert.unchecked = [positive, upper, lower], []
+    return cert
+
+
+def _decimal(x: Fraction, side: int, digits: int = 8) -> sp.Rational:
+    """A decimal of `digits` significant digits >= x (side 1) or <= x (side -1), x > 0."""
+    scale = Fraction(10) ** (digits - 1 - math.floor(math.log10(x)))
+    n = math.ceil(x * scale) if side > 0 else math.floor(x * scale)
+    return sp.Rational(n) / sp.Rational(scale)
 
 
 def certify_kf(analysis) -> SupCertificate:

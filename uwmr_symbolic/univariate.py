@@ -702,6 +702,7 @@ class SupEnclosure:
     upper: Fraction | None
     at_infinity: bool
     near: float | None
+    point: sp.Rational | None = None    # an s > 0 where expr >= lower (the kernel's `sup_lower_by_point`)
 
 
 def _lo(box: Interval) -> Fraction | None:
@@ -764,15 +765,16 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
     for kind, e, _, _ in parts:
         v = var if kind == "s" else T
         fns[kind] = (_compiled(e, v, "range"), _compiled(prepare(sp.diff(e, v)), v, "range"))
-    lower = None
+    lower = point = None
     heap = []
     counter = 0
 
-    def raise_lower(box):
-        nonlocal lower
+    def raise_lower(box, kind, u, v):   # expr >= _lo(box) on [u, v]
+        nonlocal lower, point
         lf = _lo(box)
         if lf is not None and (lower is None or lf > lower):
-            lower = lf
+            at = u if u == v else rational_between(u, v)
+            lower, point = lf, (at if kind == "s" else 1 / at)
 
     def push(kind, u, v):
         nonlocal counter
@@ -780,7 +782,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
         up = None
         try:
             box = fn(Interval.of(u, v))
-            raise_lower(box)
+            raise_lower(box, kind, u, v)
             up = _hi(box)
         except Undefined:
             pass
@@ -803,15 +805,15 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
             near = float((u + v) / 2) if kind == "s" else None
             # the heap orders by float(up): take the exact largest bound
             upper = max(h[-1] for h in heap)
-            return SupEnclosure(lower, upper, at_infinity=(kind == "t" and u == 0), near=near)
+            return SupEnclosure(lower, upper, at_infinity=(kind == "t" and u == 0), near=near, point=point)
         heapq.heappop(heap)
         m = rational_between(u, v)
         try:
-            raise_lower(fns[kind][0](Interval.point(m)))
+            raise_lower(fns[kind][0](Interval.point(m)), kind, m, m)
         except Undefined:
             pass
         push(kind, u, m)
         push(kind, m, v)
     ups = [h[-1] for h in heap]
     upper = None if (not ups or any(u is None for u in ups)) else max(ups)
-    return SupEnclosure(lower, upper, at_infinity=False, near=None)
+    return SupEnclosure(lower, upper, at_infinity=False, near=None, point=point)

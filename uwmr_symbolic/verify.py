@@ -10,6 +10,7 @@ This module is callable: ``from uwmr_symbolic import verify; verify(f, params,
 gains)`` is `uwmr_symbolic.api.verify` (see its documentation)."""
 from __future__ import annotations
 
+import dataclasses
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -219,7 +220,12 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Fa
         timed_out = True
     if kernel_only:
         props = {p: kernel_verdict(p, v, kernel) for p, v in props.items()}
-    gains = _gains(design, kf if not kernel_only or _kf_checked(certificate, kernel) else None)
+    checked_kf = kf
+    if kernel_only:     # the kernel's kf: exact, infinite, or its own enclosure (`kf.kernel_bounds`)
+        checked_kf = kf if _kf_checked(certificate, kernel) else None
+        if checked_kf is not None and kf.exact is None and kf.kernel_bounds is not None:
+            checked_kf = dataclasses.replace(kf, lower=kf.kernel_bounds[0], upper=kf.kernel_bounds[1])
+    gains = _gains(design, checked_kf)
     timed_out = timed_out or timeouts.expired != expired_before
     return Report(path, design, props, kf, gains, proof, seconds=time.monotonic() - start,
                   timed_out=timed_out, certificate=certificate, kernel=kernel)
