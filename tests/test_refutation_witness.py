@@ -331,3 +331,47 @@ def test_tampered_jump_witness_is_rejected():
     as_p3["properties"]["P3"] = as_p3["properties"].pop("P6")
     with pytest.raises(DC.CertificateError, match="P3: a witness of kind 'jump' does not refute P3"):
         DC.check(as_p3)
+
+
+def test_a_gradient_unbounded_at_the_origin_refutes_p1_p6_p7_p8():
+    """f = rho^(1/4) + (5/3) tanh(tanh(rho)) (a fuzzer design): df/de2(0, h) =
+    h^(-1/2)/2 + (10 h/3) sech^2(h^2) sech^2(tanh(h^2)) -> oo as h -> 0+.  At
+    "0" the kernel sees E(1/h) = sqrt(h)/2 + (10/(3h)) (1 - tanh(h^-2)^2)(...)
+    and proves it diverges by comparison with sqrt(h)/2 (the other term is
+    >= 0).  df/de2 is then unbounded near the origin: no kf (P1), no limit 0
+    as e2 -> 0 (P8), not continuous as it would be with d2f/de2^2 existing (P7);
+    df/de1(h, 0)/h -> oo refutes P6.  P5 is not refuted by it (df/de1 ~ e1^(-1/2)
+    near 0 says df/de1(0, 0) does not exist only with the mean value theorem)."""
+    f = (e1 ** 2 + e2 ** 2) ** sp.Rational(1, 4) + sp.Rational(5, 3) * sp.tanh(sp.tanh(e1 ** 2 + e2 ** 2))
+    origin = {"e1": "0", "e2": "0", "F'(0+)": "oo"}
+    for name, witness, var in (("P1", origin, "e2"), ("P6", origin, "e1"), ("P7", origin, "e2"),
+                               ("P8", {"e1": "0", "e2": "-> 0+", "limit": "oo"}, "e2")):
+        data = proposed(name, f, witness)
+        assert data["properties"][name]["witness"] == {"kind": "unbounded", "var": var, "order": 1, "at": "0"}
+        assert checked(data).refutation_checked
+    theorems, _, why = refutation_theorems("P5", refuted("", origin), f)
+    assert theorems is None
+    # the same divergence does not refute P5 nor P3, and at infinity not P8
+    for other, how in (("P5", "0"), ("P3", "0"), ("P8", "oo")):
+        bad = copy.deepcopy(data)
+        bad["properties"][other] = bad["properties"].pop("P8")
+        bad["properties"][other]["witness"]["at"] = how
+        with pytest.raises(DC.CertificateError, match=f"{other}: a (divergence|witness of kind 'unbounded')"):
+            DC.check(bad)
+
+
+def test_a_witness_shared_by_properties_is_proposed_once_and_complete():
+    """f = 1/2 at the origin, 2 log(1 + 4 rho)/7 elsewhere: f(t, 0) jumps at
+    t = 0 (1/2 against the limit 0), which refutes P1, P5 and P6 with one
+    `jump` record.  The proposer completes that record (branches, side,
+    width) and keeps the theorems for the next property: each certificate
+    still carries the whole record and re-checks."""
+    rho = e1 ** 2 + e2 ** 2
+    f = sp.Piecewise((sp.Rational(1, 2), sp.Eq(rho, 0)), (2 * sp.log(4 * rho + 1) / 7, True))
+    witness = {"e1": "0", "e2": "0", "f": "1/2", "limit": "0"}
+    records = []
+    for name in ("P1", "P5", "P6"):
+        data = proposed(name, f, witness)
+        assert checked(data).refutation_checked
+        records.append(data["properties"][name]["witness"])
+    assert records[0]["kind"] == "jump" and "branches" in records[0] and records[0] == records[1] == records[2]

@@ -887,22 +887,29 @@ def _diverges_inside(F, var) -> list:
 def _diverges_above(F, var) -> list:
     """F -> oo because F >= G -> oo (`diverges_by_comparison`), G being F
     with each term c B(Y), B = sin, cos (|B| <= 1) or tanh, erf, atan,
-    replaced by its floor -|c| sup|B|: F - G is then a + m B(Y) >= 0."""
-    terms = sp.Add.make_args(F)
+    replaced by its floor -|c| sup|B|: F - G is then a + m B(Y) >= 0; or,
+    when F has algebraic terms, G their sum: F - G is the sum of the other
+    terms, which must be >= 0 (a vanishing transcendental term beside a
+    power, sqrt(h)/2 + 10 (1 - tanh(h^-2)^2)/(3 h); a product c(h) (A + B) is
+    read as c A + c B)."""
+    spread = sp.expand_mul(F, deep=False)
+    terms = sp.Add.make_args(spread)
     bounded = {t: abs(c) * {**K._SUP, **K._MAX}[type(b)] for t in terms
                for c, b in [t.as_independent(var)] if type(b) in (*K._SUP, *K._MAX) and not c.has(var)}
-    if not bounded:
-        return []
-    G = sp.Add(*[-bounded[t] if t in bounded else t for t in terms])
+    algebraic = [t for t in terms if not t.atoms(sp.Function)]
+    floors = [sp.Add(*[-bounded[t] if t in bounded else t for t in terms])] if bounded else []
     prover = Prover(WORK)
-    for R in (sp.Integer(4), sp.Integer(16)):
-        try:
-            lower = prover.prove(F - G, var, (R, OO, False, True), 1, False)
-            return [_rule(K.diverges_by_comparison, lower, div[0], expr=F)
-                    for div in [_diverges(G, var, (R,))] if div]
-        except NoProof as exc:
-            if exc is prover.spent:
-                return []
+    for G in floors + ([sp.Add(*algebraic)] if algebraic and len(algebraic) < len(terms) else []):
+        for R in (sp.Integer(4), sp.Integer(16)):
+            try:
+                I = (R, OO, False, True)
+                lower = prover.prove(F - G, var, I, 1, False) if spread == F else \
+                    prover._rewritten(F - G, spread - G, var, I, 1, False, 0, False)
+                return [_rule(K.diverges_by_comparison, lower, div[0], expr=F)
+                        for div in [_diverges(G, var, (R,))] if div]
+            except NoProof as exc:
+                if exc is prover.spent:
+                    return []
     return []
 
 
@@ -1227,6 +1234,9 @@ def _witness_candidates(name, witness):
             if name != "P7" or at == "0":
                 yield {"kind": "unbounded", "var": "e1" if name == "P6" else "e2", "order": 2 if name == "P7" else 1,
                        "at": at}
+    if str(w.get("F'(0+)")) == "oo" or (name == "P8" and str(w.get("limit")) == "oo"):   # |grad f| -> oo at 0
+        if name in ("P1", "P6", "P7", "P8"):
+            yield {"kind": "unbounded", "var": "e1" if name == "P6" else "e2", "order": 1, "at": "0"}
     if name in ("P1", "P5", "P6") and p is not None and p[1] == 0:    # f(t, 0) jumps at t = e1?
         yield {"kind": "jump", "points": [p]}
     if name == "P7" and p is not None and p[1] == 0:                  # f(0, t) or a derivative jumps at t = e1?
@@ -1323,6 +1333,9 @@ def _claim_one(options, w):
     raise NoProof(f"condition not shown: {last}")
 
 
+_WITNESSED: dict = {}        # (f, witness record) -> its kernel theorems
+
+
 def refutation_theorems(name, verdict, f):
     """A refuted property's witness, checked by the kernel: (theorems, the
     witness record of the design certificate, "") for the first candidate
@@ -1337,7 +1350,18 @@ def refutation_theorems(name, verdict, f):
             why = "the proposer's budget is spent"
             break
         try:
-            theorems = _witness_theorems(f, record)
+            key = (f, repr(sorted(record.items())))
+            if key not in _WITNESSED:       # P1, P7, P8 can share one witness (or its failure)
+                if len(_WITNESSED) > 64:
+                    _WITNESSED.clear()
+                try:
+                    _WITNESSED[key] = _witness_theorems(f, record), dict(record)   # (it completes the record)
+                except (NoProof, K.KernelError, Undefined) as exc:
+                    _WITNESSED[key] = exc, None
+            theorems, done = _WITNESSED[key]
+            if isinstance(theorems, Exception):
+                raise theorems
+            record = done
             link_refutation(name, f, theorems, _encode_record(record))
         except (NoProof, CertificateError, K.KernelError, Undefined, TypeError, ValueError) as exc:
             why = f"{record['kind']}: {exc}"

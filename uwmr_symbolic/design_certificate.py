@@ -377,7 +377,10 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
 #        != (0, 0): f does not tend to oo along that ray, so P3 fails.
 # unbounded  E(h) -> +oo as h -> oo (at "oo": `diverges_by_growth` of E) or
 #        as h -> 0+ (at "0": `diverges_by_growth` of E(1/h)), for E = df/de2 at
-#        (0, h) (var e2): |df/de2| has no finite bound kf, P1 fails; for E =
+#        (0, h) (var e2): |df/de2| has no finite bound kf, P1 fails; at "0"
+#        df/de2 is also unbounded on the e2 axis near the origin, so it has
+#        no limit 0 there (P8) and is not continuous there, as it would be
+#        were d2f/de2^2 to exist near the origin (P7); for E =
 #        df/de1 at (h, 0), divided by h (var e1): P6's df/de1 = k e1 h with
 #        0 <= h <= 1 would give E <= k; for E = d2f/de2^2 at (0, h) (var e2,
 #        order 2, at "0" only): not continuous at the origin, P7 fails.
@@ -401,11 +404,11 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
 
 _SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
 _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
-            "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P6", "P7"),
+            "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P6", "P7", "P8"),
             "jump": ("P1", "P5", "P6", "P7")}
 _JUMPS = {("e1", 0): ("P1", "P5", "P6"), ("e2", 0): ("P1", "P7"), ("e2", 1): ("P1", "P7"), ("e2", 2): ("P7",)}
 _UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo"), ("P6", "e1", 1, "0"),
-              ("P7", "e2", 2, "0")}
+              ("P7", "e2", 2, "0"), ("P7", "e2", 1, "0"), ("P8", "e2", 1, "0")}
 
 
 def _at(f, p):
