@@ -544,9 +544,9 @@ def test_tails_are_kernel_checked(stem, checked):
 
 def test_refutation_witnesses_have_a_budget_of_their_own(tmp_path):
     """f = 2 on the circle rho = 3, rho/(1 + rho) elsewhere: f jumps there, so
-    P1, P5, P6 and P7 are refuted, each with a kernel-checked witness (P3,
-    f -> 1, rests on the search: the kernel's `bounded` witness refuses a
-    Piecewise).  The witnesses are proposed after the search has spent its
+    P1, P5, P6 and P7 are refuted, each with a kernel-checked witness, and
+    P3 (f -> 1) by f(h, 0) <= 2, shown piece by piece.  The witnesses are
+    proposed after the search has spent its
     design budget, so `verify_design` gives them a budget of their own (as
     re-building the certificate afterwards does; with the search's budget
     only P5 and P6 had one)."""
@@ -556,4 +556,4 @@ def test_refutation_witnesses_have_a_budget_of_their_own(tmp_path):
     report = verify_design(path)
     refuted = [n for n, v in report.properties.items() if v.refuted]
     assert refuted == ["P1", "P3", "P5", "P6", "P7"]
-    assert [n for n in report.kernel["checked"] if n in refuted] == ["P1", "P5", "P6", "P7"]
+    assert [n for n in report.kernel["checked"] if n in refuted] == ["P1", "P3", "P5", "P6", "P7"]

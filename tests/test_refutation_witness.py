@@ -375,3 +375,18 @@ def test_a_witness_shared_by_properties_is_proposed_once_and_complete():
         assert checked(data).refutation_checked
         records.append(data["properties"][name]["witness"])
     assert records[0]["kind"] == "jump" and "branches" in records[0] and records[0] == records[1] == records[2]
+
+
+def test_bounded_ray_witness_of_a_piecewise_f():
+    """f = 2 on the circle rho = 3, rho/(1 + rho) < 1 elsewhere: f -> 1, so P3
+    fails; f(h, 0) <= 2 for all h > 0 is shown piece by piece between the
+    roots of the condition (h^2 = 3: (0, sqrt 3), the point, (sqrt 3, oo)).
+    The limit 1 itself is no bound (f = 2 at h = sqrt 3), and the proposer
+    does not find it one."""
+    from uwmr_symbolic.certify import sup_upper_theorem
+    rho = e1 ** 2 + e2 ** 2
+    f = sp.Piecewise((2, sp.Eq(rho, 3)), (rho / (1 + rho), True))
+    data = proposed("P3", f, {"direction": "every", "limit": "1"})
+    assert checked(data).witness == "f(h, 0) <= 2 for all h > 0"
+    assert sup_upper_theorem(DC.along_ray(f, (1, 0)), 1, DC.H) is None
+    assert sup_upper_theorem(DC.along_ray(f, (1, 0)), sp.Rational(199, 100), DC.H) is None

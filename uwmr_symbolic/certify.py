@@ -1162,7 +1162,13 @@ def limit_at_infinity(e, var, w=sp.Rational(1, 4)):
 
 def sup_upper_theorem(e, bound, var, gap=None, work=WORK):
     """E <= bound on (0, oo) (`sup_upper_by_sign` over bound - E >= 0, a
-    theorem `gap` or one proved here with `work`), or None."""
+    theorem `gap` or one proved here with `work`; for a Piecewise E piece by
+    piece between the roots of its conditions), or None."""
+    if gap is None and e.has(sp.Piecewise):
+        ends = _condition_roots(e, var)
+        gap = None if ends is None else piecewise_sign_theorem(sp.sympify(bound) - e, ends, var, strict=False)[0]
+        if gap is None:
+            return None
     parts = [gap] if gap is not None else sign_theorems(sp.sympify(bound) - e, var, 0, OO, strict=False,
                                                         work=work)[0]
     if parts is None:
@@ -1183,6 +1189,25 @@ def sup_lower_theorem(e, bound, point, var):
 
 
 # ---------------------------------------------------------------- refutations
+
+def _condition_roots(P, var):
+    """[0, the positive roots of the relations of P's conditions, oo] when
+    each relation is a polynomial in var with roots in radicals, else None."""
+    roots = set()
+    for _, c in K._folded(P).args:
+        for r in _relationals(c):
+            d = r.rhs - r.lhs
+            if not d.has(var):
+                continue
+            if not d.is_polynomial(var):
+                return None
+            for x in sp.Poly(d, var).real_roots():
+                if x.has(sp.CRootOf):
+                    return None
+                if x.is_positive:
+                    roots.add(x)
+    return [sp.Integer(0), *sorted(roots, key=float), OO]
+
 
 _STEPS = [sp.Rational(1, 4 ** k) for k in (1, 2, 4, 7)]
 _JUMP_WIDTHS = [sp.Rational(1, 2), sp.Rational(1, 16), sp.Rational(1, 256)]
