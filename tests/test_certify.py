@@ -138,3 +138,19 @@ def test_substitution_is_the_kernel_step_for_u_minus_sin_u():
     u = sp.Symbol("u", nonnegative=True)
     assert outer.claim.expr == sp.srepr(u - sp.sin(u)) and (outer.claim.lo, outer.claim.hi) == ("Integer(0)", "oo")
     assert bound.claim.expr == sp.srepr(sp.sqrt(1 + S ** 2) - 1) and bound.claim.strict
+
+
+def test_squares_of_bounded_functions_are_signed_through_their_factors():
+    """1 - tanh(y)^2 = (1 - tanh y)(1 + tanh y) >= 0 (weakly: each factor is
+    c - B or c + B with c = sup |tanh| = 1), so 9h^2 + 10h(1 - tanh(h^2)^2)/3
+    >= 9h^2 -> oo: `diverges_by_comparison` with its algebraic term (the
+    df/de2(0, h) of the fuzzer's 3 rho^(3/2) + (5/3) tanh(rho)).  A true
+    negative 1 - 2 tanh(h^2)^2 (-> -1) is not shown >= 0."""
+    from uwmr_symbolic.certify import _factored, growth_theorems
+    h = S
+    assert set(sp.Mul.make_args(_factored(1 - sp.tanh(h ** 2) ** 2))) == {1 - sp.tanh(h ** 2), 1 + sp.tanh(h ** 2)}
+    theorems, why = sign_theorems(1 - sp.tanh(h ** 2) ** 2, h, 4, sp.oo, lo_open=False, strict=False)
+    assert theorems is not None, why
+    assert sign_theorems(1 - 2 * sp.tanh(h ** 2) ** 2, h, 4, sp.oo, lo_open=False, strict=False)[0] is None
+    (th,) = growth_theorems(9 * h ** 2 + 10 * h * (1 - sp.tanh(h ** 2) ** 2) / 3, h)
+    assert th.rule == "diverges_by_comparison" and th.claim.kind == "diverges"

@@ -362,6 +362,11 @@ class Prover:
                 except NoProof as exc:
                     if exc is self.spent:
                         raise
+                try:
+                    return self._rewritten(e, _factored(e), var, I, want, strict, depth, near)
+                except NoProof as exc:
+                    if exc is self.spent:
+                        raise
                 return self._above_floor(e, var, I, strict, depth, near)
         raise NoProof(f"no structural rule for {e}")
 
@@ -611,6 +616,23 @@ class Prover:
 
 
 _INCREASING = (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf, sp.exp)
+
+
+def _factored(e):
+    """e factored when it holds a square or higher power of a bounded
+    function (1 - tanh(y)^2 = (1 - tanh y)(1 + tanh y)), each factor of the
+    form c - B with the sign that makes it nonnegative for B below sup, else e."""
+    if not any(p.exp.is_Integer and p.exp > 1 and type(p.base) in (*K._SUP, *K._MAX) for p in e.atoms(sp.Pow)):
+        return e
+    f = sp.factor(e)
+    coeff, factors = f.as_coeff_mul()
+    if coeff < 0:           # B - c as c - B
+        i = next((i for i, x in enumerate(factors) if x.is_Add and x.as_coeff_Add()[0] < 0), None)
+        if i is None:
+            return e
+        factors = factors[:i] + (-factors[i],) + factors[i + 1:]
+        coeff = -coeff
+    return sp.Mul(*([coeff] if coeff != 1 else []), *factors, evaluate=False) if f.is_Mul else e
 
 
 def _increasing_difference(e, var):
