@@ -154,3 +154,18 @@ def test_squares_of_bounded_functions_are_signed_through_their_factors():
     assert sign_theorems(1 - 2 * sp.tanh(h ** 2) ** 2, h, 4, sp.oo, lo_open=False, strict=False)[0] is None
     (th,) = growth_theorems(9 * h ** 2 + 10 * h * (1 - sp.tanh(h ** 2) ** 2) / 3, h)
     assert th.rule == "diverges_by_comparison" and th.claim.kind == "diverges"
+
+
+def test_linear_growth_through_an_increasing_function():
+    """5 h tanh(h^2) -> oo: F' = 5 tanh(h^2) + 10 h^2 (1 - tanh(h^2)^2) >= 5/2 on
+    [4, oo), since 5 tanh(h^2) - 5/2 = (5 tanh(h^2) - 5 tanh(c)) + (5 tanh(c) - 5/2)
+    with c just below 16 (`sign_of_increasing_difference` with k = 5).  The
+    linear rate is tried first; the log rate (h F' >= k, a product the sign
+    rules cannot split) had spent the budget.  log(1 + h^2) still grows at
+    the log rate (F' -> 0: the linear attempt is skipped)."""
+    from uwmr_symbolic.certify import growth_theorems
+    h = S
+    (th,) = growth_theorems(5 * h * sp.tanh(h ** 2), h)
+    assert th.rule == "diverges_by_growth" and '"rate": "linear"' in th.data
+    (th,) = growth_theorems(sp.log(1 + h ** 2), h)
+    assert '"rate": "log"' in th.data

@@ -234,6 +234,16 @@ def test_sign_of_increasing_difference():
     rejects(K.sign_of_increasing_difference, above, expr=sp.cos(s) - sp.cos(1), inner=sp.cos(s), c=sp.Integer(1))
     rejects(K.sign_of_increasing_difference, above, expr=sp.tanh(s) - sp.atan(1), inner=sp.tanh(s), c=sp.Integer(1))
     rejects(K.sign_of_increasing_difference, above, expr=sp.tanh(s) - sp.tanh(1), inner=sp.tanh(s), c=sp.oo)
+    # k (G(Y) - G(c)) with k > 0 rational (SymPy writes 5 tanh(s) - 5 tanh(1)); not k <= 0, not two k's
+    five = K.sign_of_increasing_difference(above, expr=5 * sp.tanh(s) - 5 * sp.tanh(1), inner=5 * sp.tanh(s),
+                                           c=sp.Integer(1))
+    assert (five.claim.want, five.claim.strict) == (1, True)
+    rejects(K.sign_of_increasing_difference, above, expr=-5 * sp.tanh(s) + 5 * sp.tanh(1), inner=-5 * sp.tanh(s),
+            c=sp.Integer(1))
+    rejects(K.sign_of_increasing_difference, above, expr=5 * sp.tanh(s) - 4 * sp.tanh(1), inner=5 * sp.tanh(s),
+            c=sp.Integer(1))
+    rejects(K.sign_of_increasing_difference, above, expr=sp.pi * sp.tanh(s) - sp.pi * sp.tanh(1),
+            inner=sp.pi * sp.tanh(s), c=sp.Integer(1))
 
 
 def diverges_s():

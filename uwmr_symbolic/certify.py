@@ -342,7 +342,8 @@ class Prover:
             diff = _increasing_difference(e, var)
             if diff is not None:
                 g, c = diff
-                return _rule(K.sign_of_increasing_difference, sub(g.args[0] - c, want), expr=e, inner=g, c=c)
+                return _rule(K.sign_of_increasing_difference, sub(g.as_coeff_Mul()[1].args[0] - c, want), expr=e,
+                             inner=g, c=c)
             try:
                 if any(_against(t, var, I, want) for t in e.args if t.has(var)):
                     raise NoProof(f"a term of {e} has the other sign")
@@ -636,11 +637,13 @@ def _factored(e):
 
 
 def _increasing_difference(e, var):
-    """(G(Y), c) if e = G(Y) - G(c), G increasing, c constant; else None."""
+    """(k G(Y), c) if e = k G(Y) - k G(c), G increasing, c constant, k > 0
+    rational; else None."""
     if len(e.args) == 2:
         for a, b in (e.args, e.args[::-1]):
-            if type(a) in _INCREASING and type(-b) is type(a) and not b.has(var) and a.has(var):
-                return a, (-b).args[0]
+            (k, g), (m, G) = a.as_coeff_Mul(), (-b).as_coeff_Mul()
+            if type(g) in _INCREASING and type(G) is type(g) and k == m and k > 0 and not b.has(var) and g.has(var):
+                return a, G.args[0]
     return None
 
 
@@ -985,7 +988,7 @@ def _diverges(F, var, starts) -> list:
     d = sp.diff(F, var)
     prover = Prover(WORK)        # one budget for every attempt
     for R in starts:
-        for rate, g in (("log", var * d), ("linear", d), *((p, var ** (1 - p) * d) for p in _POWER_RATES)):
+        for rate, g in (("linear", d), ("log", var * d), *((p, var ** (1 - p) * d) for p in _POWER_RATES)):
             try:
                 lo = float(evaluate(g, var, R, R, bits=128).lo.lower())
             except Undefined:
@@ -996,6 +999,8 @@ def _diverges(F, var, starts) -> list:
                 if k <= 0:
                     continue
                 k = sp.Rational(k.numerator, k.denominator)
+                if not _plausible(g - k, var, R, 1):      # (F' -> 0: not linear growth)
+                    continue
                 try:
                     th = prover.prove(g - k, var, (R, OO, False, True), 1, False) if g.atoms(sp.Function) \
                         else _tail_first(prover, g - k, var, R)     # algebraic: its t-form is, too

@@ -562,15 +562,17 @@ sign_by_log_bound = rule("sympy-core")(sign_by_log_bound)
 
 
 def sign_of_increasing_difference(arg, *, expr, inner, c):
-    """G(Y) - G(c) has the sign (and strictness) of Y - c on I, the premise,
-    for G strictly increasing on R (tanh, atan, asinh, sinh, erf, exp) and
-    an exact constant c.  `inner` is G(Y)."""
+    """k (G(Y) - G(c)) has the sign (and strictness) of Y - c on I, the
+    premise, for G strictly increasing on R (tanh, atan, asinh, sinh, erf,
+    exp), an exact constant c and a rational k > 0.  `inner` is k G(Y)."""
     _is_sign(arg)
     p = arg.claim
     var = p.x()
-    e, g, c = _expr(expr, var), _expr(inner, var), _number(c)
-    _need(type(g) in (*_ODD_INCREASING, sp.exp) and c not in (OO, -OO), "inner must be G(Y), c finite")
-    _need(e == g - g.func(c) and p.expr == _s(g.args[0] - c), lambda: f"{e} is not G(Y) - G(c) with the premise Y - c")
+    e, (k, g), c = _expr(expr, var), _expr(inner, var).as_coeff_Mul(), _number(c)
+    _need(type(g) in (*_ODD_INCREASING, sp.exp) and c not in (OO, -OO) and k.is_Rational and k > 0,
+          "inner must be k G(Y), k > 0 rational, c finite")
+    _need(e == k * g - k * g.func(c) and p.expr == _s(g.args[0] - c),
+          lambda: f"{e} is not k (G(Y) - G(c)) with the premise Y - c")
     lo, hi = p.ends()
     return _sign_claim(e, var, lo, hi, p.lo_open, p.hi_open, p.want, p.strict)
 sign_of_increasing_difference = rule("sympy-core")(sign_of_increasing_difference)
