@@ -363,11 +363,12 @@ class Prover:
                 except NoProof as exc:
                     if exc is self.spent:
                         raise
-                try:
-                    return self._rewritten(e, _factored(e), var, I, want, strict, depth, near)
-                except NoProof as exc:
-                    if exc is self.spent:
-                        raise
+                for form in (_tanh_form(e), _factored(e)):
+                    try:
+                        return self._rewritten(e, form, var, I, want, strict, depth, near)
+                    except NoProof as exc:
+                        if exc is self.spent:
+                            raise
                 return self._above_floor(e, var, I, strict, depth, near)
         raise NoProof(f"no structural rule for {e}")
 
@@ -617,6 +618,19 @@ class Prover:
 
 
 _INCREASING = (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf, sp.exp)
+
+
+def _tanh_form(e):
+    """e with sinh(a)/cosh(a) written tanh(a) (SymPy's derivative of
+    log(cosh(a))) and its terms grouped by powers of its variable, so that
+    the bounded-function rules see it; else e."""
+    out = e
+    for c in e.atoms(sp.cosh):
+        out = out.subs(sp.sinh(c.args[0]) / c, sp.tanh(c.args[0]))
+    if out == e:
+        return e
+    var = next(iter(e.free_symbols), None)          # its terms grouped by powers of var: h^2 (1 - tanh^2)
+    return sp.collect(sp.expand(out), var) if var is not None else out
 
 
 def _factored(e):
@@ -923,8 +937,9 @@ def _diverges_above(F, var) -> list:
                for c, b in [t.as_independent(var)] if type(b) in (*K._SUP, *K._MAX) and not c.has(var)}
     algebraic = [t for t in terms if not t.atoms(sp.Function)]
     floors = [sp.Add(*[-bounded[t] if t in bounded else t for t in terms])] if bounded else []
+    leading = _leading_terms(terms, var)
     prover = Prover(WORK)
-    for G in floors + ([sp.Add(*algebraic)] if algebraic and len(algebraic) < len(terms) else []):
+    for G in floors + [sp.Add(*ts) for ts in (algebraic, leading) if ts and len(ts) < len(terms)]:
         for R in (sp.Integer(4), sp.Integer(16)):
             try:
                 I = (R, OO, False, True)
@@ -936,6 +951,17 @@ def _diverges_above(F, var) -> list:
                 if exc is prover.spent:
                     return []
     return []
+
+
+def _leading_terms(terms, var):
+    """The terms of a sum that are not below 1/1000 of the largest at
+    s = 10^6 (128-bit Arb; [] when a term is undefined there): the others,
+    if >= 0, are dropped for `diverges_by_comparison`."""
+    try:
+        size = [abs(float(evaluate(t, var, 10 ** 6, 10 ** 6, bits=128).hull().mid())) for t in terms]
+    except (Undefined, TypeError, ValueError, OverflowError):
+        return []
+    return [t for t, m in zip(terms, size) if m >= max(size) / 1000]
 
 
 def _plausible(e, var, R, want) -> bool:
