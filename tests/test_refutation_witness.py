@@ -305,9 +305,18 @@ def test_jump_of_a_piecewise_f_along_the_axis():
     assert data["properties"]["P1"]["witness"]["compare"] == "left" and checked(data).refutation_checked
     # (for P5 a step comes first: f(5/4, 0) - f(1, 0) = 9/4 - 5 < 0)
     assert proposed("P5", POINT, {"e1": "1", "e2": "0"})["properties"]["P5"]["witness"]["kind"] == "step"
-    # a continuous f (a kink only): no jump witness; P5 holds for SMOOTH near t = 1 anyway
-    theorems, _, why = refutation_theorems("P1", refuted("", {"e1": "1", "e2": "0"}), SMOOTH)
-    assert theorems is None and "jump" in why
+    # a continuous f with a kink: f(t, 0) = t^2, then 2 t^2 - 1; no jump of f, but df/de1 -> 2 from
+    # the left and 4 from the right, so df/de1 cannot exist near (1, 0): P1, P5, P6 fail
+    for name in ("P1", "P5", "P6"):
+        data = proposed(name, SMOOTH, {"e1": "1", "e2": "0"})
+        w = data["properties"][name]["witness"]
+        assert (w["kind"], w["var"], w["order"], w["compare"]) == ("jump", "e1", 1, "sides")
+        assert checked(data).witness.startswith("df/de1(t, 0) jumps at t = 1: left limit 2, right limit 4")
+    for other in ("P7", "P8", "P3"):        # a kink says nothing about these
+        bad = copy.deepcopy(data)
+        bad["properties"][other] = bad["properties"].pop("P6")
+        with pytest.raises(DC.CertificateError, match=f"{other}: a"):
+            DC.check(bad)
 
 
 def test_tampered_jump_witness_is_rejected():

@@ -1315,8 +1315,9 @@ def _witness_candidates(name, witness):
     if str(w.get("F'(0+)")) == "oo" or (name == "P8" and str(w.get("limit")) == "oo"):   # |grad f| -> oo at 0
         if name in ("P1", "P6", "P7", "P8"):
             yield {"kind": "unbounded", "var": "e1" if name == "P6" else "e2", "order": 1, "at": "0"}
-    if name in ("P1", "P5", "P6") and p is not None and p[1] == 0:    # f(t, 0) jumps at t = e1?
+    if name in ("P1", "P5", "P6") and p is not None and p[1] == 0:    # f(t, 0) or df/de1 jumps at t = e1?
         yield {"kind": "jump", "points": [p]}
+        yield {"kind": "jump", "points": [p], "var": "e1", "order": 1}
     if name == "P7" and p is not None and p[1] == 0:                  # f(0, t) or a derivative jumps at t = e1?
         for order in (0, 1, 2):
             yield {"kind": "jump", "points": [(sp.Integer(0), p[0])], "var": "e2", "order": order}

@@ -400,13 +400,18 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
 #        the branch on each side, so g^(k) has one-sided limits L-, L+ at b;
 #        if d^k f/de2^k existed and were continuous at (0, b) they would be
 #        equal.  Order 0 or 1: df/de2 is not continuous at (0, b) (P1), and
-#        d2f/de2^2 cannot exist there (P7); order 2: P7.
+#        d2f/de2^2 cannot exist there (P7); order 2: P7.  Along the e1 axis
+#        with order 1, g(t) = f(t, 0): were df/de1 to exist near (b, 0), g'(b)
+#        = lim (g(b + h) - g(b))/h = g'(xi_h) -> L+ (mean value theorem), and
+#        L- likewise, so df/de1 does not exist somewhere near (b, 0): P1, P5,
+#        P6 (each needs df/de1 everywhere).
 
 _SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
 _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
             "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P6", "P7", "P8"),
             "jump": ("P1", "P5", "P6", "P7")}
-_JUMPS = {("e1", 0): ("P1", "P5", "P6"), ("e2", 0): ("P1", "P7"), ("e2", 1): ("P1", "P7"), ("e2", 2): ("P7",)}
+_JUMPS = {("e1", 0): ("P1", "P5", "P6"), ("e1", 1): ("P1", "P5", "P6"), ("e2", 0): ("P1", "P7"), ("e2", 1): ("P1", "P7"),
+          ("e2", 2): ("P7",)}
 _UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo"), ("P6", "e1", 1, "0"),
               ("P7", "e2", 2, "0"), ("P7", "e2", 1, "0"), ("P8", "e2", 1, "0")}
 
