@@ -363,9 +363,11 @@ class Prover:
                 except NoProof as exc:
                     if exc is self.spent:
                         raise
-                for form in (_tanh_form(e), _factored(e)):
+                size = sp.count_ops(e)
+                for rewrite in (_tanh_form, _factored) if size <= CHEAP_RATIONAL else ():
+                    self.charge(_rational_units(size))      # expand and factor cost like a rational function
                     try:
-                        return self._rewritten(e, form, var, I, want, strict, depth, near)
+                        return self._rewritten(e, rewrite(e), var, I, want, strict, depth, near)
                     except NoProof as exc:
                         if exc is self.spent:
                             raise
