@@ -1328,9 +1328,9 @@ def test_sign_of_increasing_difference_claims_and_messages():
     below = sturm(s - 3, s, 1, 3, hi_open=True, want=-1)
     assert D(below, expr=sp.atan(s) - sp.atan(3), inner=sp.atan(s), c=I3).claim == \
         sign(sp.atan(s) - sp.atan(3), s, 1, 3, False, True, want=-1)
-    assert why(D, above, expr=sp.cos(s) - sp.cos(1), inner=sp.cos(s), c=I1) == "inner must be G(Y), c finite"
-    assert why(D, above, expr=sp.tanh(s) - 1, inner=sp.tanh(s), c=oo) == "inner must be G(Y), c finite"
-    msg = lambda e: f"{e} is not G(Y) - G(c) with the premise Y - c"      # noqa: E731
+    assert why(D, above, expr=sp.cos(s) - sp.cos(1), inner=sp.cos(s), c=I1) == "inner must be k G(Y), k > 0 rational, c finite"
+    assert why(D, above, expr=sp.tanh(s) - 1, inner=sp.tanh(s), c=oo) == "inner must be k G(Y), k > 0 rational, c finite"
+    msg = lambda e: f"{e} is not k (G(Y) - G(c)) with the premise Y - c"      # noqa: E731
     assert why(D, above, expr=sp.tanh(s) - sp.tanh(2), inner=sp.tanh(s), c=I2) == msg(sp.tanh(s) - sp.tanh(2))
     assert why(D, above, expr=sp.tanh(s) - sp.tanh(2), inner=sp.tanh(s), c=I1) == msg(sp.tanh(s) - sp.tanh(2))
     assert why(D, above, expr=sp.tanh(2 * s) - sp.tanh(1), inner=sp.tanh(2 * s), c=I1) == \

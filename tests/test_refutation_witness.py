@@ -22,6 +22,7 @@ from uwmr_symbolic import design_certificate as DC, e1, e2
 from uwmr_symbolic.certify import refutation_theorems
 from uwmr_symbolic.kernel import core as K
 from uwmr_symbolic.kernel.certificate import to_certificate
+from uwmr_symbolic.kernel.parse import parse
 from uwmr_symbolic.verdict import refuted
 
 F = e1 ** 2 + e2 ** 2 - 1
@@ -399,3 +400,23 @@ def test_bounded_ray_witness_of_a_piecewise_f():
     assert checked(data).witness == "f(h, 0) <= 2 for all h > 0"
     assert sup_upper_theorem(DC.along_ray(f, (1, 0)), 1, DC.H) is None
     assert sup_upper_theorem(DC.along_ray(f, (1, 0)), sp.Rational(199, 100), DC.H) is None
+
+
+def test_unbounded_slope_of_the_last_branch_of_a_piecewise_f():
+    """f = rho/2 for rho <= 1, rho - 1/2 beyond (continuous at rho = 1): on the
+    e2 axis beyond t = 1 f(0, t) = t^2 - 1/2, whose derivative 2t -> oo, so kf
+    is infinite (P1).
+    The record names the branch (1) and where it starts (R = 1): the kernel
+    shows the condition h^2 + 2h + 1 > 1, i.e. (1 + h)^2 - 1 > 0, on h > 0.
+    Another branch or R = 0 (where rho <= 1 still holds) is refused."""
+    rho = e1 ** 2 + e2 ** 2
+    f = sp.Piecewise((rho / 2, rho <= 1), (rho - sp.Rational(1, 2), True))
+    data = proposed("P1", f, {"s": "oo", "limit": "oo"})
+    w = data["properties"]["P1"]["witness"]
+    assert (w["kind"], w["var"], w["branch"], parse(w["from"])) == ("unbounded", "e2", 1, 1)
+    assert checked(data).witness == "df/de2(0, h) -> oo as h -> oo"
+    for key, value in (("branch", 0), ("from", "Integer(0)"), ("at", "0")):
+        bad = copy.deepcopy(data)
+        bad["properties"]["P1"]["witness"][key] = value
+        with pytest.raises(DC.CertificateError):
+            DC.check(bad)

@@ -364,14 +364,17 @@ class Prover:
                     if exc is self.spent:
                         raise
                 size = sp.count_ops(e)
-                for rewrite in (_tanh_form, _factored) if size <= CHEAP_RATIONAL else ():
-                    self.charge(_rational_units(size))      # expand and factor cost like a rational function
+                for attempt in (_tanh_form, None, _factored) if size <= CHEAP_RATIONAL else (None,):
                     try:
-                        return self._rewritten(e, rewrite(e), var, I, want, strict, depth, near)
+                        if attempt is None:
+                            return self._above_floor(e, var, I, strict, depth, near)
+                        form = attempt(e)           # (e itself, at once, when there is nothing to rewrite)
+                        if form != e:
+                            self.charge(CANCEL_UNITS * size ** 2)
+                        return self._rewritten(e, form, var, I, want, strict, depth, near)
                     except NoProof as exc:
-                        if exc is self.spent:
+                        if exc is self.spent or attempt is _factored or size > CHEAP_RATIONAL:
                             raise
-                return self._above_floor(e, var, I, strict, depth, near)
         raise NoProof(f"no structural rule for {e}")
 
     def _above_floor(self, e, var, I, strict, depth, near):
@@ -942,13 +945,15 @@ def _diverges_above(F, var) -> list:
     leading = _leading_terms(terms, var)
     prover = Prover(WORK)
     for G in floors + [sp.Add(*ts) for ts in (algebraic, leading) if ts and len(ts) < len(terms)]:
-        for R in (sp.Integer(4), sp.Integer(16)):
+        for R in (sp.Integer(4), sp.Integer(16)) if _plausible(G - 2 * G.subs(var, 4) - 1, var, 10 ** 6, 1) else ():
             try:
                 I = (R, OO, False, True)
                 lower = prover.prove(F - G, var, I, 1, False) if spread == F else \
                     prover._rewritten(F - G, spread - G, var, I, 1, False, 0, False)
-                return [_rule(K.diverges_by_comparison, lower, div[0], expr=F)
-                        for div in [_diverges(G, var, (R,))] if div]
+                div = _diverges(G, var, (R,))
+                if div:
+                    return [_rule(K.diverges_by_comparison, lower, div[0], expr=F)]
+                break                   # G does not grow: the next G
             except NoProof as exc:
                 if exc is prover.spent:
                     return []
@@ -1337,7 +1342,12 @@ def _witness_theorems(f, record):
             raise NoProof(f"f <= {record['bound']} along the ray not shown")
         return [th]
     if record["kind"] == "unbounded":
-        out = growth_theorems(growing(f, sp.Symbol(record["var"], real=True), record["order"], record["at"]), H)
+        v = sp.Symbol(record["var"], real=True)
+        if isinstance(f, sp.Piecewise):
+            if record["at"] != "oo" or record["order"] != 1:
+                raise NoProof("a Piecewise f: only its last branch at infinity")
+            return _tail_branch_theorems(f, v, record)
+        out = growth_theorems(growing(f, v, record["order"], record["at"]), H)
         if not out:
             raise NoProof("no growth bound found")
         return out
@@ -1355,6 +1365,36 @@ def _witness_theorems(f, record):
         jump = K.parse(lims[0].claim.other) - K.parse(lims[1].claim.other)
         return [*lims, _rule(K.value_sign, value=jump)]
     raise NoProof("df/dv is not continuous up to the origin on either side")
+
+
+def _tail_branch_theorems(f, v, record):
+    """The `unbounded` witness of a Piecewise f at infinity: R at or beyond
+    every root of its conditions along the v axis, the branch i taken at
+    R + h for all h > 0 (sign theorems on (0, oo)), that branch's growth.
+    Fills in the record's branch and from."""
+    from .design_certificate import E1, E2, CertificateError, H, branch_conditions, growing
+    axis = f.subs({v: H, (E2 if v == E1 else E1): 0}, simultaneous=True)
+    ends = _condition_roots(axis, H)
+    if ends is None:
+        raise NoProof("the conditions' roots along the axis are not found")
+    R = sp.ceiling(ends[-2]) if len(ends) > 2 else sp.Integer(0)
+
+    def one(options):       # a sign theorem on h in (0, oo) for one of the acceptable claims
+        return next((th[0] for e, want, strict in options
+                     for th in [sign_theorems(e, H, 0, OO, want=want, strict=strict)[0]] if th), None)
+    for i in range(len(f.args)):
+        try:
+            conds = [one(options) for options in branch_conditions(f, R, 1, i, OO, v)]
+        except CertificateError:
+            continue
+        if None in conds:
+            continue
+        growth = growth_theorems(growing(f.args[i][0], v, 1, "oo"), H)
+        if not growth:
+            raise NoProof(f"branch {i} beyond {R}: no growth bound found")
+        record.update(branch=i, **{"from": R})
+        return [*conds, *growth]
+    raise NoProof(f"no branch shown to apply beyond {R}")
 
 
 def _jump_theorems(f, record):
@@ -1452,9 +1492,10 @@ def refutation_theorems(name, verdict, f):
 
 
 def _encode_record(record):
-    out = {k: v for k, v in record.items() if k not in ("points", "direction", "bound", "width")}
-    if "width" in record:
-        out["width"] = K._s(record["width"])
+    out = {k: v for k, v in record.items() if k not in ("points", "direction", "bound", "width", "from")}
+    for key in ("width", "from"):
+        if key in record:
+            out[key] = K._s(record[key])
     if "points" in record:
         out["points"] = [[K._s(c) for c in p] for p in record["points"]]
     if "direction" in record:

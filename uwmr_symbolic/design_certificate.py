@@ -481,6 +481,29 @@ def jump_parts(f, b, branches, w, v=E1, order=0):
             for i, side in zip(branches, (-1, 1))]
 
 
+def _tail_branch(f, v, witness, claims, at, order, bad):
+    """(the claims after the branch's, branch i's expression) for an
+    `unbounded` witness of a Piecewise f with "branch": i and "from": R:
+    the claims must begin with the signs (on h in (0, oo)) that make branch
+    i apply at R + h of the v axis; then f = G_i on the open half-line
+    t > R of that axis, so df/dv there is dG_i/dv (a partial derivative along
+    the axis sees only f on it).  Only at infinity, order 1, G_i without
+    Piecewise, Max, Min, sign."""
+    i, R = witness.get("branch"), parse(witness.get("from", "nan"))
+    if not (isinstance(f, sp.Piecewise) and type(i) is int and 0 <= i < len(f.args) and at == "oo" and order == 1
+            and R.is_Rational and R >= 0) or f.args[i][0].has(*_SMOOTH_ONLY):
+        raise bad
+    on = (sp.srepr(H), "Integer(0)", "oo", True, True)
+    conds = branch_conditions(f, R, 1, i, sp.oo, v)
+    for c, options in zip(claims, conds):
+        if c.kind != "sign" or (c.var, c.lo, c.hi, c.lo_open, c.hi_open) != on or not any(
+                c.expr == sp.srepr(e) and c.want == want and (c.strict or not strict) for e, want, strict in options):
+            raise bad
+    if len(claims) <= len(conds):
+        raise bad
+    return claims[len(conds):], f.args[i][0]
+
+
 def _link_jump(name, f, claims, witness, bad) -> str:
     v, order = witness.get("var", "e1"), witness.get("order", 0)
     if name not in _JUMPS.get((v, order), ()):
@@ -552,7 +575,8 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         raise CertificateError(f"{name}: a witness of kind {kind!r} does not refute {name}")
     claims = [t.claim for t in theorems]
     bad = CertificateError(f"{name}: the kernel's conclusions are not the witness {kind!r} about this f")
-    if kind in ("slope", "origin_jump", "unbounded") and f.has(*_SMOOTH_ONLY):
+    tail = kind == "unbounded" and "branch" in witness          # f = branch i of a Piecewise beyond R
+    if kind in ("slope", "origin_jump", "unbounded") and f.has(*_SMOOTH_ONLY) and not tail:
         raise CertificateError(f"{name}: a {kind} witness needs an f without Piecewise, Max, Min or sign")
     if kind == "origin_jump":
         v = {"e1": E1, "e2": E2}.get(witness.get("var"))
@@ -582,8 +606,11 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         if how not in _UNBOUNDED:
             raise CertificateError(f"{name}: a divergence {how[1:]} does not refute {name}")
         v, order, at = {"e1": E1, "e2": E2}[how[1]], how[2], how[3]
+        g = f
+        if tail:
+            claims, g = _tail_branch(f, v, witness, claims, at, order, bad)
         if not (len(claims) == 1 and claims[0].kind == "diverges"
-                and claims[0].expr == sp.srepr(growing(f, v, order, at)) and claims[0].var == sp.srepr(H)):
+                and claims[0].expr == sp.srepr(growing(g, v, order, at)) and claims[0].var == sp.srepr(H)):
             raise bad
         what = {(E2, 1): "df/de2(0, h)", (E1, 1): "df/de1(h, 0)/h", (E2, 2): "d2f/de2^2(0, h)"}[(v, order)]
         return f"{what} -> oo as h -> {'oo' if at == 'oo' else '0+'}", True
