@@ -460,6 +460,11 @@ def test_kf_link_where_f_jumps_keeps_the_sup_off_the_cuts():
     assert DC._link_kf(dF, (sp.Rational(1, 2), sp.Integer(2)), [sign, upper, whole]) == []
     with pytest.raises(DC.CertificateError, match="inside"):
         DC._link_kf(dF, (sp.Rational(1, 2), sp.Rational(9, 10)), [sign, upper, whole])
+    # elliptic, k = sqrt(2): [1.4142, 1.4143] holds sqrt(2) (certified by Arb), [1.4143, 2] does not
+    r2 = sp.sqrt(2)
+    assert DC._link_kf(dF, (sp.Rational(14142, 10000), sp.Rational(14143, 10000)), [sign, upper, whole], k=r2) == []
+    with pytest.raises(DC.CertificateError, match="inside"):
+        DC._link_kf(dF, (sp.Rational(14143, 10000), sp.Integer(2)), [sign, upper, whole], k=r2)
 
 
 def test_slope_vanishing_on_circles_is_kernel_checked(refuted_certs):

@@ -156,8 +156,8 @@ def _link_kf(dF, bounds, claims, k=1, cuts=None) -> list[str]:
         ok = len(claims) >= 2 and claims[-2].other == claims[-1].other and sp.srepr(k * parse(claims[-1].other)) \
             == sp.srepr(lower)
     else:
-        ok = len(claims) >= 2 and not _lt(k * parse(claims[-1].other), lower) and \
-            not _lt(upper, k * parse(claims[-2].other))
+        L, U = (sp.sympify(k * parse(c.other)) for c in claims[-1:-3:-1]) if len(claims) >= 2 else (None, None)
+        ok = L is not None and (lower == L or _lt(lower, L)) and (U == upper or _lt(U, upper))     # certified <=
     if not (ok and len(got) == len(want) and all(g in w for g, w in zip(got, want))):
         raise CertificateError(f"kf: the kernel's conclusions are not F' >= 0, F' <= U, sup F' >= L nor "
                                f"|F'| <= U, sup (+-F') >= L with sqrt(r) [L, U] inside [{lower}, {upper}]"
