@@ -986,7 +986,10 @@ def _plausible(e, var, R, want) -> bool:
 
 def _over_one_denominator(e):
     """e as N/D with N expanded and collected in its logs: one term M log(Y)
-    per log for `Prover._log_bound`."""
+    per log for `Prover._log_bound`; refused (NoProof) for a large e, whose
+    expansion can take a minute (a profile of 16 nested logs)."""
+    if sp.count_ops(e) > 4 * CHEAP_RATIONAL:
+        raise NoProof("too large to put over one denominator")
     n, d = sp.fraction(sp.together(e))
     return sp.collect(sp.expand(n), sorted(n.atoms(sp.log), key=sp.default_sort_key)) / d
 
