@@ -562,3 +562,17 @@ def test_refutation_witnesses_have_a_budget_of_their_own(tmp_path):
     refuted = [n for n, v in report.properties.items() if v.refuted]
     assert refuted == ["P1", "P3", "P5", "P6", "P7"]
     assert [n for n in report.kernel["checked"] if n in refuted] == ["P1", "P3", "P5", "P6", "P7"]
+
+
+def test_kernel_only_checks_bound_10_on_the_kernels_kf_enclosure():
+    """r09 under --kernel-only: kf is only enclosed, so bound (10) uses the
+    kernel's [L, U] = [1.9999993, 2.3]: the loose scenario (Wr_max 1, lam 0.5,
+    Vr_max 0.5, k2 0.25, Wmax 2) has W <= 1 + 0.25 * 2.3 + 0.25 = 1.825 <= 2:
+    it passes on U, so it is decided (the search's kf <= 2 gives 1.75)."""
+    from fractions import Fraction
+    report = verify_design(ROOT / "tests" / "designs" / "r09_slope_zero.py", kernel_only=True)
+    assert report.kf.upper == Fraction(23, 10) and Fraction(19, 10) < report.kf.lower < 2
+    assert "kernel's enclosure" in report.kf.reason
+    assert report.gains["loose"].W_ok is True and report.gains["loose"].W_bound == sp.Rational(1825, 1000)
+    default = verify_design(ROOT / "tests" / "designs" / "r09_slope_zero.py")
+    assert default.kf.upper < Fraction(23, 10)          # the search's tighter enclosure, by default

@@ -7,7 +7,6 @@ import os
 import random
 
 import mpmath
-import pytest
 import sympy as sp
 
 from uwmr_symbolic.kernel import KernelError, Undefined, evaluate, rules as K

@@ -8,13 +8,12 @@ and prints the table.  Contradictions explained by a reported issue
 (`oracle.KNOWN`, each with a strict-xfail reproducer in
 `test_fuzz_findings.py`) are listed but do not fail this test: remove the
 class from `KNOWN` when the issue is fixed."""
-import math
 import os
 from fractions import Fraction
 
 import pytest
 import sympy as sp
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import HealthCheck, given, settings
 
 from fuzz import grammar, oracle
 from fuzz.grammar import RHO, Case, designs

@@ -2,7 +2,6 @@
 checking designs nobody here wrote (issue 9).  Every expected verdict is
 derived by hand in the comment beside it; "not refuted" is asserted where the
 truth is "holds" but the verifier may honestly say "unknown"."""
-import math
 import textwrap
 from fractions import Fraction
 

@@ -224,7 +224,10 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Fa
     if kernel_only:     # the kernel's kf: exact, infinite, or its own enclosure (`kf.kernel_bounds`)
         checked_kf = kf if _kf_checked(certificate, kernel) else None
         if checked_kf is not None and kf.exact is None and kf.kernel_bounds is not None:
-            checked_kf = dataclasses.replace(kf, lower=kf.kernel_bounds[0], upper=kf.kernel_bounds[1])
+            L, U = kf.kernel_bounds
+            checked_kf = dataclasses.replace(kf, lower=L, upper=U, reason=f"the kernel's enclosure: sup |F'| in "
+                                             f"[{float(L):.10g}, {float(U):.10g}] (the search's: {kf.reason})")
+            kf = checked_kf         # the report shows the enclosure the gain checks use
     gains = _gains(design, checked_kf)
     timed_out = timed_out or timeouts.expired != expired_before
     return Report(path, design, props, kf, gains, proof, seconds=time.monotonic() - start,
