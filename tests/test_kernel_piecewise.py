@@ -413,3 +413,9 @@ def test_piecewise_identity_reads_equivalent_conditions():
     assert refused(rho / 2 >= sp.sqrt(rho), rho / 2 <= sp.sqrt(rho))
     assert refused(rho > 1, rho >= 1)
     assert refused(sp.Ne(rho, 0), sp.Eq(rho, 0))
+    # (a Piecewise puts some conditions in SymPy's canonical form first; the reading itself:)
+    from uwmr_symbolic.kernel.core import _condition
+    same = lambda a, b: _condition(a, (X, Y)) == _condition(b, (X, Y))      # noqa: E731
+    assert same(sp.Eq(0, -sp.sqrt(rho)), sp.Eq(rho, 0)) and same(sp.Eq(-sp.sqrt(rho), 0), sp.Eq(rho, 0))
+    assert same(sp.Eq(rho + 1, 2), sp.Eq(rho, 1)) and same(sp.Eq(X, Y), sp.Eq(Y, X))
+    assert not same(sp.Eq(X, Y), sp.Eq(X, -Y)) and not same(sp.Eq(sp.sqrt(rho), 1), sp.Eq(rho, 1))
