@@ -10,9 +10,8 @@ This module is callable: ``from uwmr_symbolic import verify; verify(f, params,
 gains)`` is `uwmr_symbolic.api.verify` (see its documentation)."""
 from __future__ import annotations
 
-import dataclasses
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import sympy as sp
@@ -225,7 +224,7 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Fa
         checked_kf = kf if _kf_checked(certificate, kernel) else None
         if checked_kf is not None and kf.exact is None and kf.kernel_bounds is not None:
             L, U = kf.kernel_bounds
-            checked_kf = dataclasses.replace(kf, lower=L, upper=U, reason=f"the kernel's enclosure: sup |F'| in "
+            checked_kf = replace(kf, lower=L, upper=U, reason=f"the kernel's enclosure: sup |F'| in "
                                              f"[{float(L):.10g}, {float(U):.10g}] (the search's: {kf.reason})")
             kf = checked_kf         # the report shows the enclosure the gain checks use
     gains = _gains(design, checked_kf)
