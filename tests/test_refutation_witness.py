@@ -420,3 +420,18 @@ def test_unbounded_slope_of_the_last_branch_of_a_piecewise_f():
         bad["properties"]["P1"]["witness"][key] = value
         with pytest.raises(DC.CertificateError):
             DC.check(bad)
+
+
+def test_jump_where_a_condition_is_an_or_or_an_and_of_relations():
+    """f = rho if (rho < 1/2 or rho < 1), else rho + 1: f(t, 0) -> 1 from the
+    left of t = 1 and is 2 from the right (the Or holds on (3/4, 1) by its
+    second relation and fails beyond 1 by both): P1 is refuted by the jump.
+    With And in place of Or the first branch stops at 1/sqrt(2): f(t, 0) =
+    t^2 + 1 on both sides of 1, no jump, no witness."""
+    rho = e1 ** 2 + e2 ** 2
+    f = sp.Piecewise((rho, (rho < sp.Rational(1, 2)) | (rho < 1)), (rho + 1, True))
+    data = proposed("P1", f, {"e1": "1", "e2": "0"})
+    assert checked(data).witness == "f(t, 0) jumps at t = 1: left limit 1, right limit 2, value 2"
+    g = sp.Piecewise((rho, (rho < sp.Rational(1, 2)) & (rho < 1)), (rho + 1, True))
+    theorems, _, why = refutation_theorems("P1", refuted("", {"e1": "1", "e2": "0"}), g)
+    assert theorems is None

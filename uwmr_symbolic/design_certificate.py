@@ -461,17 +461,29 @@ def branch_conditions(f, b, side, i, w, v=E1):
             if not truth:
                 raise CertificateError("jump: a condition True before the branch")
             continue
-        if not isinstance(cond, (*_TRUE_WHEN, sp.Eq, sp.Ne)):
-            raise CertificateError(f"jump: condition {cond} is not a single relation")
-        d = cond.rhs.subs(at, simultaneous=True) - cond.lhs.subs(at, simultaneous=True)
-        if isinstance(cond, (sp.Eq, sp.Ne)):
-            if truth != isinstance(cond, sp.Ne):
-                raise CertificateError(f"jump: {cond} cannot be shown {truth} by a sign")
-            out.append([(d, 1, True), (d, -1, True)])
-        else:
-            want, strict = _TRUE_WHEN[type(cond)]
-            out.append([(d, want, strict)] if truth else [(d, -want, not strict)])
+        # an Or is true where one of its relations is (one entry, any of them), false where all are
+        # false (one entry each); an And the other way round
+        rels = cond.args if isinstance(cond, (sp.Or, sp.And)) else (cond,)
+        if not all(isinstance(r, (*_TRUE_WHEN, sp.Eq, sp.Ne)) for r in rels):
+            raise CertificateError(f"jump: condition {cond} is not a relation or an And or Or of relations")
+        entries = [_relation_claims(r, at, truth) for r in rels]
+        if len(rels) > 1 and truth == isinstance(cond, sp.Or):
+            entries = [[c for e in entries for c in e]]
+        out.extend(entries)
     return out
+
+
+def _relation_claims(rel, at, truth):
+    """The sign claims (expression in H, want, strict), any one of which shows
+    the relation `truth` at the point `at` (Eq and Ne: only where r - l is
+    strictly signed, so Eq false and Ne true)."""
+    d = rel.rhs.subs(at, simultaneous=True) - rel.lhs.subs(at, simultaneous=True)
+    if isinstance(rel, (sp.Eq, sp.Ne)):
+        if truth != isinstance(rel, sp.Ne):
+            raise CertificateError(f"jump: {rel} cannot be shown {truth} by a sign")
+        return [(d, 1, True), (d, -1, True)]
+    want, strict = _TRUE_WHEN[type(rel)]
+    return [(d, want, strict)] if truth else [(d, -want, not strict)]
 
 
 def jump_parts(f, b, branches, w, v=E1, order=0):
