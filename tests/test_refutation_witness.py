@@ -350,8 +350,9 @@ def test_a_gradient_unbounded_at_the_origin_refutes_p1_p6_p7_p8():
     and proves it diverges by comparison with sqrt(h)/2 (the other term is
     >= 0).  df/de2 is then unbounded near the origin: no kf (P1), no limit 0
     as e2 -> 0 (P8), not continuous as it would be with d2f/de2^2 existing (P7);
-    df/de1(h, 0)/h -> oo refutes P6.  P5 is not refuted by it (df/de1 ~ e1^(-1/2)
-    near 0 says df/de1(0, 0) does not exist only with the mean value theorem)."""
+    df/de1(h, 0)/h -> oo refutes P6.  P5 by df/de1(h, 0) -> oo itself, not
+    divided by h: were df/de1 to exist near the origin, g(t) = f(t, 0) would
+    have g'(0) = lim g'(xi_t) = oo by the mean value theorem."""
     f = (e1 ** 2 + e2 ** 2) ** sp.Rational(1, 4) + sp.Rational(5, 3) * sp.tanh(sp.tanh(e1 ** 2 + e2 ** 2))
     origin = {"e1": "0", "e2": "0", "F'(0+)": "oo"}
     for name, witness, var in (("P1", origin, "e2"), ("P6", origin, "e1"), ("P7", origin, "e2"),
@@ -359,9 +360,17 @@ def test_a_gradient_unbounded_at_the_origin_refutes_p1_p6_p7_p8():
         data = proposed(name, f, witness)
         assert data["properties"][name]["witness"] == {"kind": "unbounded", "var": var, "order": 1, "at": "0"}
         assert checked(data).refutation_checked
-    theorems, _, why = refutation_theorems("P5", refuted("", origin), f)
-    assert theorems is None
-    # the same divergence does not refute P5 nor P3, and at infinity not P8
+    data5 = proposed("P5", f, origin)
+    assert data5["properties"]["P5"]["witness"] == {"kind": "unbounded", "var": "e1", "order": 1, "at": "0",
+                                                    "divided": False}
+    assert checked(data5).witness == "df/de1(h, 0) -> oo as h -> 0+"
+    for other, how in (("P7", "0"), ("P5", "oo")):       # df/de1 -> oo says nothing of P7, nor at infinity
+        bad = copy.deepcopy(data5)
+        bad["properties"][other] = bad["properties"].pop("P5")
+        bad["properties"][other]["witness"]["at"] = how
+        with pytest.raises(DC.CertificateError, match=f"{other}: a"):
+            DC.check(bad)
+    # the divergence of df/de2 does not refute P5 nor P3, and at infinity not P8
     for other, how in (("P5", "0"), ("P3", "0"), ("P8", "oo")):
         bad = copy.deepcopy(data)
         bad["properties"][other] = bad["properties"].pop("P8")

@@ -1325,6 +1325,8 @@ def _witness_candidates(name, witness):
     if str(w.get("F'(0+)")) == "oo" or (name == "P8" and str(w.get("limit")) == "oo"):   # |grad f| -> oo at 0
         if name in ("P1", "P6", "P7", "P8"):
             yield {"kind": "unbounded", "var": "e1" if name == "P6" else "e2", "order": 1, "at": "0"}
+        if name == "P5":
+            yield {"kind": "unbounded", "var": "e1", "order": 1, "at": "0", "divided": False}
     if name in ("P1", "P5", "P6") and p is not None and p[1] == 0:    # f(t, 0) or df/de1 jumps at t = e1?
         yield {"kind": "jump", "points": [p]}
         yield {"kind": "jump", "points": [p], "var": "e1", "order": 1}
@@ -1350,7 +1352,7 @@ def _witness_theorems(f, record):
             if record["at"] != "oo" or record["order"] != 1:
                 raise NoProof("a Piecewise f: only its last branch at infinity")
             return _tail_branch_theorems(f, v, record)
-        out = growth_theorems(growing(f, v, record["order"], record["at"]), H)
+        out = growth_theorems(growing(f, v, record["order"], record["at"], record.get("divided", True)), H)
         if not out:
             raise NoProof("no growth bound found")
         return out

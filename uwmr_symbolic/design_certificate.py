@@ -382,7 +382,11 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
 #        no limit 0 there (P8) and is not continuous there, as it would be
 #        were d2f/de2^2 to exist near the origin (P7); for E =
 #        df/de1 at (h, 0), divided by h (var e1): P6's df/de1 = k e1 h with
-#        0 <= h <= 1 would give E <= k; for E = d2f/de2^2 at (0, h) (var e2,
+#        0 <= h <= 1 would give E <= k; at "0" with "divided": false, E =
+#        df/de1(h, 0) itself: were df/de1 to exist near the origin, g(t) =
+#        f(t, 0) would have g'(0) = lim (g(t) - g(0))/t = lim g'(xi_t) = oo
+#        (mean value theorem), so it does not exist: P1, P5, P6;
+#        for E = d2f/de2^2 at (0, h) (var e2,
 #        order 2, at "0" only): not continuous at the origin, P7 fails.
 #        f without Piecewise, Max, Min, sign.
 # jump   f a Piecewise (at the top), b exact, w > 0: for h in (0, w], branch
@@ -408,12 +412,13 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
 
 _SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
 _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
-            "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P6", "P7", "P8"),
+            "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P5", "P6", "P7", "P8"),
             "jump": ("P1", "P5", "P6", "P7")}
 _JUMPS = {("e1", 0): ("P1", "P5", "P6"), ("e1", 1): ("P1", "P5", "P6"), ("e2", 0): ("P1", "P7"), ("e2", 1): ("P1", "P7"),
           ("e2", 2): ("P7",)}
 _UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo"), ("P6", "e1", 1, "0"),
-              ("P7", "e2", 2, "0"), ("P7", "e2", 1, "0"), ("P8", "e2", 1, "0")}
+              ("P7", "e2", 2, "0"), ("P7", "e2", 1, "0"), ("P8", "e2", 1, "0"),
+              ("P1", "e1", 1, "0", "plain"), ("P5", "e1", 1, "0", "plain"), ("P6", "e1", 1, "0", "plain")}
 
 
 def _at(f, p):
@@ -432,12 +437,13 @@ def along_ray(f, direction):
     return f.subs({E1: direction[0] * H, E2: direction[1] * H}, simultaneous=True)
 
 
-def growing(f, v, order=1, at="oo"):
+def growing(f, v, order=1, at="oo", divided=True):
     """The expression whose divergence as h -> oo refutes P1 (v = e2: df/de2
-    at (0, h)), P6 (v = e1: df/de1 at (h, 0), divided by h) or P7 (order 2:
-    d2f/de2^2 at (0, h)); at "0", the same with h replaced by 1/h."""
+    at (0, h)), P6 (v = e1: df/de1 at (h, 0), divided by h unless not
+    `divided`) or P7 (order 2: d2f/de2^2 at (0, h)); at "0", the same with h
+    replaced by 1/h."""
     e = axis_derivative(f if order == 1 else sp.diff(f, v), v, 1)
-    e = e if v == E2 else e / H
+    e = e if v == E2 or not divided else e / H
     return e if at == "oo" else e.subs(H, 1 / H)
 
 
@@ -614,7 +620,9 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
             raise bad
         return f"f({d[0] * H}, {d[1] * H}) <= {parse(claims[0].other)} for all h > 0", False
     if kind == "unbounded":
-        how = (name, witness.get("var"), witness.get("order", 1), witness.get("at", "oo"))
+        divided = witness.get("divided", True) is not False
+        how = (name, witness.get("var"), witness.get("order", 1), witness.get("at", "oo")) + (() if divided else
+                                                                                              ("plain",))
         if how not in _UNBOUNDED:
             raise CertificateError(f"{name}: a divergence {how[1:]} does not refute {name}")
         v, order, at = {"e1": E1, "e2": E2}[how[1]], how[2], how[3]
@@ -622,9 +630,10 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         if tail:
             claims, g = _tail_branch(f, v, witness, claims, at, order, bad)
         if not (len(claims) == 1 and claims[0].kind == "diverges"
-                and claims[0].expr == sp.srepr(growing(g, v, order, at)) and claims[0].var == sp.srepr(H)):
+                and claims[0].expr == sp.srepr(growing(g, v, order, at, divided)) and claims[0].var == sp.srepr(H)):
             raise bad
-        what = {(E2, 1): "df/de2(0, h)", (E1, 1): "df/de1(h, 0)/h", (E2, 2): "d2f/de2^2(0, h)"}[(v, order)]
+        what = {(E2, 1): "df/de2(0, h)", (E1, 1): "df/de1(h, 0)/h" if divided else "df/de1(h, 0)",
+                (E2, 2): "d2f/de2^2(0, h)"}[(v, order)]
         return f"{what} -> oo as h -> {'oo' if at == 'oo' else '0+'}", True
     if kind == "jump":
         return _link_jump(name, f, claims, witness, bad), bool(witness.get("order", 0))
