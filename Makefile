@@ -4,7 +4,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test test-fast docs bench clean generate embedded paper figures fuzz fuzz-codegen mutate
+.PHONY: demo test test-fast docs bench clean generate embedded arm-toolchain paper figures fuzz fuzz-codegen mutate
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -25,6 +25,7 @@ test: $(STAMP)
 	    echo "make test: cmake not found, the CMake example test will be skipped (to enable: sudo apt-get install cmake)"; \
 	  fi; \
 	fi
+	@$(MAKE) --no-print-directory arm-toolchain    # before pytest: the Cortex-M tests then run, not skip
 	$(BIN)/python -m pytest -q
 	$(MAKE) --no-print-directory embedded
 
@@ -56,16 +57,19 @@ fuzz-codegen: $(STAMP)
 # (CI) it is installed with apt-get, saying so; as any other user the check is
 # skipped with a notice (ARM_GCC names the compiler looked for).
 ARM_GCC ?= arm-none-eabi-gcc
-embedded: $(STAMP)
+# The Cortex-M cross-compiler: installed with apt-get when running as root, else a hint.
+arm-toolchain:
 	@if ! command -v $(ARM_GCC) >/dev/null 2>&1; then \
 	  if [ "$$(id -u)" = 0 ]; then \
-	    echo "make embedded: $(ARM_GCC) not found; running as root, so installing gcc-arm-none-eabi and libnewlib-arm-none-eabi with apt-get"; \
+	    echo "$(ARM_GCC) not found; running as root, so installing gcc-arm-none-eabi and libnewlib-arm-none-eabi with apt-get"; \
 	    { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq gcc-arm-none-eabi libnewlib-arm-none-eabi; } || exit 1; \
 	  else \
-	    echo "make embedded: skipped, $(ARM_GCC) not found (to enable: sudo apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi, then make embedded)"; \
-	    exit 0; \
+	    echo "$(ARM_GCC) not found: the Cortex-M builds are skipped (to enable: sudo apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi)"; \
 	  fi; \
-	fi; \
+	fi
+
+embedded: $(STAMP) arm-toolchain
+	@if ! command -v $(ARM_GCC) >/dev/null 2>&1; then echo "make embedded: skipped, $(ARM_GCC) not found"; exit 0; fi; \
 	echo "$(BIN)/python -m uwmr_symbolic.codegen.embedded"; \
 	$(BIN)/python -m uwmr_symbolic.codegen.embedded
 
