@@ -298,18 +298,18 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
     theorems F' >= 0, F' <= U and sup F' >= L (its value at cert.point),
     where L <= lower and U >= upper are short decimals (U about 1/8 above
     when the tight one is not shown cheaply): `kernel_bounds`."""
-    F = analysis.kernel_F
+    dF = sp.diff(analysis.kernel_F, S)
     positive = analysis.slope_sign
     L, upper = _decimal(cert.lower, -1), None
     for U, work in ((_decimal(cert.upper, 1), WORK // 12), (_decimal(cert.upper * Fraction(9, 8), 1, 2), WORK)):
-        upper = sup_upper_theorem(sp.diff(F, S), U, S, work=work) if positive is not None and L > 0 else None
+        upper = sup_upper_theorem(dF, U, S, work=work) if positive is not None and L > 0 else None
         if upper is not None:
             break
     if upper is None:
         cert.unchecked = [f"kf in [{float(cert.lower):.10g}, {float(cert.upper):.10g}] (kernel: "
                           f"F' >= 0 and F' <= {U} not shown)"]
         return cert
-    lower = sup_lower_theorem(sp.diff(F, S), L, cert.point, S)
+    lower = sup_lower_theorem(dF, L, cert.point, S)
     if lower is None:
         cert.unchecked = [f"kf in [{float(cert.lower):.10g}, {float(cert.upper):.10g}] (kernel: "
                           f"F'({cert.point}) >= {L} not shown)"]
