@@ -1383,16 +1383,10 @@ def _tail_branch_theorems(f, v, record):
     if ends is None:
         raise NoProof("the conditions' roots along the axis are not found")
     R = sp.ceiling(ends[-2]) if len(ends) > 2 else sp.Integer(0)
-
-    def one(options):       # a sign theorem on h in (0, oo) for one of the acceptable claims
-        return next((th[0] for e, want, strict in options
-                     for th in [sign_theorems(e, H, 0, OO, want=want, strict=strict)[0]] if th), None)
     for i in range(len(f.args)):
         try:
-            conds = [one(options) for options in branch_conditions(f, R, 1, i, OO, v)]
-        except CertificateError:
-            continue
-        if None in conds:
+            conds = [_claim_one(options, OO) for options in branch_conditions(f, R, 1, i, OO, v)]
+        except (CertificateError, NoProof):
             continue
         growth = growth_theorems(growing(f.args[i][0], v, 1, "oo"), H)
         if not growth:
@@ -1447,11 +1441,11 @@ def _jump_theorems(f, record):
 
 
 def _claim_one(options, w):
-    """A kernel sign theorem on (0, w] for one of the acceptable claims."""
+    """A kernel sign theorem on (0, w] (on (0, oo) for w = oo) for one of the acceptable claims."""
     from .design_certificate import H
     last = None
     for e, want, strict in options:
-        theorems, why = sign_theorems(e, H, 0, w, want=want, lo_open=True, hi_open=False, strict=strict,
+        theorems, why = sign_theorems(e, H, 0, w, want=want, lo_open=True, hi_open=w == OO, strict=strict,
                                       work=WORK // 4)
         if theorems is not None:
             return theorems[0]

@@ -513,13 +513,16 @@ def _tail_branch(f, v, witness, claims, at, order, bad):
         raise bad
     on = (sp.srepr(H), "Integer(0)", "oo", True, True)
     conds = branch_conditions(f, R, 1, i, sp.oo, v)
-    for c, options in zip(claims, conds):
-        if c.kind != "sign" or (c.var, c.lo, c.hi, c.lo_open, c.hi_open) != on or not any(
-                c.expr == sp.srepr(e) and c.want == want and (c.strict or not strict) for e, want, strict in options):
-            raise bad
-    if len(claims) <= len(conds):
+    if len(claims) <= len(conds) or not all(_one_of(c, options, on) for c, options in zip(claims, conds)):
         raise bad
     return claims[len(conds):], f.args[i][0]
+
+
+def _one_of(c, options, on) -> bool:
+    """The claim c is a sign claim on the interval `on` that shows one of
+    the acceptable (expression, want, strict) of `branch_conditions`."""
+    return c is not None and c.kind == "sign" and (c.var, c.lo, c.hi, c.lo_open, c.hi_open) == on and any(
+        c.expr == sp.srepr(e) and c.want == want and (c.strict or not strict) for e, want, strict in options)
 
 
 def _link_jump(name, f, claims, witness, bad) -> str:
@@ -539,9 +542,7 @@ def _link_jump(name, f, claims, witness, bad) -> str:
     limits = []
     for side, i, part in zip((-1, 1), branches, jump_parts(f, b, branches, w, v, order)):
         for options in branch_conditions(f, b, side, i, w, v):
-            c = claims[k] if k < len(claims) else None
-            if c is None or c.kind != "sign" or (c.var, c.lo, c.hi, c.lo_open, c.hi_open) != on or not any(
-                    c.expr == sp.srepr(e) and c.want == want and (c.strict or not strict) for e, want, strict in options):
+            if not _one_of(claims[k] if k < len(claims) else None, options, on):
                 raise bad
             k += 1
         c = claims[k] if k < len(claims) else None
