@@ -101,7 +101,22 @@ def design_budget(work=DESIGN_WORK):
 
 
 class NoProof(Exception):
-    """The kernel did not accept a step (or the search found none)."""
+    """The kernel did not accept a step (or the search found none).
+    `NoProof(template, *parts)` fills the template's {} with the parts only
+    when the message is read, each printed briefly (`_brief`): most of these
+    are caught and dropped, and printing a large derivative costs seconds."""
+
+    def __str__(self):
+        template, *parts = self.args
+        return template.format(*map(_brief, parts)) if parts else str(template)
+
+
+def _brief(x, limit=160) -> str:
+    """x, and a SymPy x in its unsorted order cut at `limit` characters."""
+    if not isinstance(x, sp.Basic):
+        return str(x)
+    text = sp.sstr(x, order="none")
+    return text if len(text) <= limit else text[:limit] + " ..."
 
 
 _CYCLE = NoProof("a claim that needs itself")
@@ -118,7 +133,7 @@ def _rule(fn, *args, **kw):
     try:
         return fn(*args, **kw)
     except (K.KernelError, Undefined, TypeError, ValueError, ZeroDivisionError) as exc:
-        raise NoProof(f"{getattr(fn, '__name__', fn)}: {exc}") from None
+        raise NoProof("{}: {}", getattr(fn, '__name__', fn), exc) from None
 
 
 def _mid(a, b):
@@ -149,7 +164,7 @@ def _cover_cuts(e, var, a, b, want, strict):
         u, v = stack.pop()
         n += 1
         if n > BOX_BUDGET:
-            raise NoProof(f"cover of [{a}, {b}]: budget exhausted")
+            raise NoProof("cover of [{}, {}]: budget exhausted", a, b)
         try:
             if _ok(evaluate(e, var, u, v), want, strict):
                 leaves.append(u)
@@ -163,9 +178,9 @@ def _cover_cuts(e, var, a, b, want, strict):
                 except Undefined:
                     ok = False
                 if not ok:
-                    raise NoProof(f"no sign at the end {var} = {end} of [{a}, {b}]")
+                    raise NoProof("no sign at the end {} = {} of [{}, {}]", var, end, a, b)
         if float(v) - float(u) < 1e-12:
-            raise NoProof(f"cover of [{a}, {b}]: stuck near {float(u):.6g}")
+            raise NoProof("cover of [{}, {}]: stuck near {}", a, b, f"{float(u):.6g}")
         m = _mid(u, v)
         stack += [(m, v), (u, m)]
     return sorted(leaves, key=float) + [b]
@@ -310,7 +325,7 @@ class Prover:
                     continue
                 base, n = (f.base, f.exp) if f.is_Pow and f.exp.is_Rational else (f, sp.Integer(1))
                 if base == e:
-                    raise NoProof(f"no rule for {e}")
+                    raise NoProof("no rule for {}", e)
                 if not n.is_Integer:
                     premises.append(sub(base, 1, strict or bool(n < 0)))
                     continue
@@ -333,7 +348,7 @@ class Prover:
                     return _rule(K.sign_through_increasing, sub(y, w, False), expr=e)
                 except NoProof:
                     continue
-            raise NoProof(f"{y} has no sign on {I}")
+            raise NoProof("{} has no sign on {}", y, I)
         if isinstance(e, sp.log):
             y = e.args[0]
             prem = [sub(y - 1, want)] + ([] if want > 0 else [sub(y, 1, True)])
@@ -346,7 +361,7 @@ class Prover:
                              inner=g, c=c)
             try:
                 if any(_against(t, var, I, want) for t in e.args if t.has(var)):
-                    raise NoProof(f"a term of {e} has the other sign")
+                    raise NoProof("a term of {} has the other sign", e)
                 premises = []
                 for t in e.args:
                     if t.has(var):
@@ -375,7 +390,7 @@ class Prover:
                     except NoProof as exc:
                         if exc is self.spent or attempt is _factored or size > CHEAP_RATIONAL:
                             raise
-        raise NoProof(f"no structural rule for {e}")
+        raise NoProof("no structural rule for {}", e)
 
     def _above_floor(self, e, var, I, strict, depth, near):
         """e > 0 where a term t = M G(Y) of e, G increasing, M >= 0, and a
@@ -394,7 +409,7 @@ class Prover:
             except NoProof as exc:
                 if exc is self.spent:
                     raise
-        raise NoProof(f"no lower bound of an increasing function makes {e} positive")
+        raise NoProof("no lower bound of an increasing function makes {} positive", e)
 
     def _split_term(self, e, form, g, parts_of, var, I, stricts, depth, near):
         """e > 0 from `parts_of(t)` for a term t of form = e that is linear in g."""
@@ -405,7 +420,7 @@ class Prover:
                 except NoProof as exc:
                     if exc is self.spent:
                         raise
-        raise NoProof(f"no term of {e} is linear in {g}")
+        raise NoProof("no term of {} is linear in {}", e, g)
 
     def _below_sup(self, e, var, I, strict, depth, near):
         """e > 0 where e is a + m G(Y), |G| bounded by sup G (tanh, erf,
@@ -424,7 +439,7 @@ class Prover:
                     try:
                         th = _rule(K.sign_below_sup, self.prove(y, var, I, w, False, depth, near), expr=form, bounded=g)
                         if strict and not th.claim.strict:
-                            raise NoProof(f"{form} reaches 0")
+                            raise NoProof("{} reaches 0", form)
                         break
                     except NoProof:
                         continue
@@ -440,7 +455,7 @@ class Prover:
                 except NoProof as exc:
                     if exc is self.spent:
                         raise
-        raise NoProof(f"no bound of a tanh, erf, atan, sin or cos makes {e} positive")
+        raise NoProof("no bound of a tanh, erf, atan, sin or cos makes {} positive", e)
 
     def _sum_of_parts(self, e, parts, var, I, stricts, depth, near):
         """e > 0 from parts, positive (strict as asked) unless constant, that
@@ -463,7 +478,7 @@ class Prover:
         c, side = (lo, 1) if lo_open else (hi, -1)
         m, _ = _derivative_order(e, var, c)
         if m == 0:
-            raise NoProof(f"{e} neither vanishes nor is defined at {c}")
+            raise NoProof("{} neither vanishes nor is defined at {}", e, c)
         try:
             th = _rule(K.sign_by_taylor, expr=e, var=var, c=c, side=side, width=hi - lo, order=m)
         except NoProof as exc:                  # the m-th derivative's sign on a finer cover of the box
@@ -479,7 +494,7 @@ class Prover:
             cuts = _cover_cuts(d, var, lo, hi, 1 if sigma.positive() else -1, True)
             th = _rule(K.sign_by_taylor, expr=e, var=var, c=c, side=side, width=hi - lo, order=m, cuts=cuts)
         if th.claim.want != want:
-            raise NoProof(f"{e} has the other sign beside {c}")
+            raise NoProof("{} has the other sign beside {}", e, c)
         return th
 
     def _near(self, e, var, c, side, want, w, depth):
@@ -504,7 +519,7 @@ class Prover:
                     if exc is self.spent:
                         raise
                     last = exc
-        raise NoProof(f"no one-sided lemma at {c}: {last}")
+        raise NoProof("no one-sided lemma at {}: {}", c, last)
 
     def _split(self, e, var, I, want, strict, depth):
         """One-sided lemmas at the open ends, a cover in between, joined."""
@@ -548,7 +563,7 @@ class Prover:
             except NoProof as exc:
                 if exc is self.spent:
                     raise
-        raise NoProof(f"no substitution signs {e}")
+        raise NoProof("no substitution signs {}", e)
 
     def _log_bound(self, e, var, I, want, strict, depth):
         """e on the tail I = [R, oo) by `sign_by_log_bound`: one term M log(Y)
@@ -573,7 +588,7 @@ class Prover:
                 except NoProof as exc:
                     if exc is self.spent:
                         raise
-        raise NoProof(f"no term M log(Y) of {e} to bound")
+        raise NoProof("no term M log(Y) of {} to bound", e)
 
     def _unbounded(self, e, var, I, want, strict, depth):
         """[lo, R] as a finite interval, [R, oo) by s = 1/t or monotonicity."""
@@ -846,7 +861,7 @@ def _piecewise_lower(dF, c, point, var, ends):
     lower = on_branch(dF, var, (R, OO, False, True), prover, lambda g: _rule(
         K.sup_lower_from_limit, limit_at_infinity(g, var), lo=R, lo_open=False))
     if K.parse(lower.claim.other) != sp.sympify(c):
-        raise NoProof(f"F' tends to {lower.claim.other}, not {c}")
+        raise NoProof("F' tends to {}, not {}", lower.claim.other, c)
     return lower
 
 
@@ -1109,7 +1124,7 @@ def _continuous(e, var, ends, rule=K.continuous_piecewise):
         return _rule(K.continuous_on_positive, expr=e, var=var)
     th = continuity_theorem(e, ends, var, rule)
     if th is None:
-        raise NoProof(f"{e} not shown continuous")
+        raise NoProof("{} not shown continuous", e)
     return th
 
 
@@ -1159,7 +1174,7 @@ def sup_abs_theorems(dF, c, point, var, side):
         upper, lower = _sup_pair(side * dF, c, point, var)
         other = sup_upper_theorem(-side * dF, c, var)
         if other is None:
-            raise NoProof(f"{-side * dF} <= {c} not shown")
+            raise NoProof("{} <= {} not shown", -side * dF, c)
         pair = (upper, other) if side == 1 else (other, upper)      # (about F', about -F')
         return [_rule(K.sup_upper_of_abs, *pair), lower], ""
     except (NoProof, K.KernelError, Undefined) as exc:
@@ -1178,7 +1193,7 @@ def _sup_pair(E, c, point, var):
     zeros = (point,) if point is not None and point != 0 else ()
     parts, why = sign_theorems(gap, var, 0, OO, zeros=zeros, strict=False, work=WORK)
     if parts is None:
-        raise NoProof(f"{c} - ({E}) >= 0: {why}")
+        raise NoProof("{} - ({}) >= 0: {}", c, E, why)
     upper = parts[0] if not zeros else _rule(K.join_at_zero, *parts)
     upper = _rule(K.sup_upper_by_sign, upper, expr=E, bound=c)
     if zeros:                   # (attained at s = 0 only: a sup over (0, oo), so a limit below)
@@ -1193,7 +1208,7 @@ def _sup_pair(E, c, point, var):
         except NoProof:
             lower = _rule(K.sup_lower_from_limit, limit_at_infinity(E, var), lo=0, lo_open=True)
             if K.parse(lower.claim.other) != sp.sympify(c):
-                raise NoProof(f"{E} tends to {lower.claim.other}, not {c}") from None
+                raise NoProof("{} tends to {}, not {}", E, lower.claim.other, c) from None
     return upper, lower
 
 
@@ -1214,7 +1229,7 @@ def limit_at_infinity(e, var, w=sp.Rational(1, 4)):
         for g in bounded:
             div = growth_theorems(g.args[0], var)
             if not div:
-                raise NoProof(f"{g.args[0]} not shown to diverge")
+                raise NoProof("{} not shown to diverge", g.args[0])
             premises.append(_rule(K.limit_of_bounded, div[0], expr=g))
         rest = sp.Mul(*[a for a in sp.Mul.make_args(form) if type(a) not in K._SUP])
         if rest.has(var):
@@ -1344,7 +1359,7 @@ def _witness_theorems(f, record):
     if record["kind"] == "bounded":
         th = sup_upper_theorem(along_ray(f, record["direction"]), record["bound"], H)
         if th is None:
-            raise NoProof(f"f <= {record['bound']} along the ray not shown")
+            raise NoProof("f <= {} along the ray not shown", record['bound'])
         return [th]
     if record["kind"] == "unbounded":
         v = sp.Symbol(record["var"], real=True)
@@ -1390,10 +1405,10 @@ def _tail_branch_theorems(f, v, record):
             continue
         growth = growth_theorems(growing(f.args[i][0], v, 1, "oo"), H)
         if not growth:
-            raise NoProof(f"branch {i} beyond {R}: no growth bound found")
+            raise NoProof("branch {} beyond {}: no growth bound found", i, R)
         record.update(branch=i, **{"from": R})
         return [*conds, *growth]
-    raise NoProof(f"no branch shown to apply beyond {R}")
+    raise NoProof("no branch shown to apply beyond {}", R)
 
 
 def _jump_theorems(f, record):
@@ -1450,7 +1465,7 @@ def _claim_one(options, w):
         if theorems is not None:
             return theorems[0]
         last = why
-    raise NoProof(f"condition not shown: {last}")
+    raise NoProof("condition not shown: {}", last)
 
 
 _WITNESSED: dict = {}        # (f, witness record) -> its kernel theorems
