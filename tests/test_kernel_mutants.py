@@ -444,7 +444,10 @@ def test_defined_for_positive():
               # log w > 0 where w - 1 > 0, >= 0 where w - 1 >= 0
               1 / sp.log(1 + s), sp.log(1 + sp.log(1 + s ** 2)), 1 / (1 + sp.log(1 + s ** 2)),
               sp.log(sp.log(2 + s)), sp.log(1 + sp.log(1 + sp.log(1 + s))), sp.sqrt(sp.log(2 + s)),
-              1 / (2 + sp.log(1 + (s - 1) ** 2)), sp.log(sp.log(1 + s))):
+              1 / (2 + sp.log(1 + (s - 1) ** 2)), sp.log(sp.log(1 + s)),
+              # G(w) > 0 where w > 0, >= 0 where w >= 0, for G odd increasing
+              sp.log(1 + sp.asinh(s ** 2)), 1 / sp.tanh(s), 1 / (1 + sp.atan((s - 1) ** 2)), sp.sqrt(sp.erf(s)),
+              1 / (s + sp.sinh((s - 2) ** 2))):
         assert d(e, s), e
     # not (or not syntactically) defined for every s > 0
     for e in (1 / (s - 1), sp.log(s - 1), sp.sqrt(s - 1), 1 / sp.sin(s), sp.log(sp.sin(s) + 2), s ** s,
@@ -455,7 +458,10 @@ def test_defined_for_positive():
               s + sp.Pow(-1, Q(1, 3)), 1 / (s + (s - 1) ** 3), sp.log(s ** s), sp.log(s + (s - 1) ** 3 * (s - 2) ** 2),
               1 / (((1 + sp.sqrt(2)) ** 2 - 3 - 2 * sp.sqrt(2)) * s), sp.log(s + s * (s - 1) ** 2 - 2 * s),
               1 / sp.log(1 + (s - 1) ** 2), 1 / sp.log(1 + s ** 2 - s), sp.log(sp.log(1 + (s - 1) ** 2)),
-              sp.log(1 + sp.log(s))):
+              sp.log(1 + sp.log(s)),
+              # G(w) for G odd increasing has w's sign: not positive where w may be <= 0
+              1 / sp.tanh(s - 1), sp.log(sp.asinh(s - 1)), 1 / sp.atan((s - 1) ** 2), 1 / (1 + sp.sin(s) + sp.erf(s)),
+              sp.log(1 + sp.tanh(sp.log(s))), 1 / sp.cosh(s) ** 0 / sp.sinh(s - 2)):
         assert not d(e, s), e
 
 
@@ -1462,3 +1468,21 @@ def test_sign_by_log_bound_claims_and_messages():
     two = 3 - sp.log(s) * sp.log(s + 1)
     assert why(L, B, neg, pos, expr=two, term=two - 3, p=I1).endswith("is not a term M log(Y) of " + str(two))
     assert why(L, B, neg, sturm(s, s, 1, 2), expr=E, term=T, p=I1) == "premises on different intervals"
+
+
+def test_sign_by_log_bound_reads_asinh_as_a_log():
+    """asinh s = log W, W = s + sqrt(s^2 + 1): log W >= 1 - 1/W (p = -1)
+    gives 1 + asinh s > 0 on [1, 4] from B = 2 - 1/W > 0 and W > 0; the
+    premise "Y > 0" is about W, not s.  asinh s <= W - 1 (p = 1) is too
+    loose for 2 - asinh s near s = 4 (B = 3 - s - sqrt(s^2 + 1) < 0 there),
+    so no premise about B shows it."""
+    L, a, W = K.sign_by_log_bound, sp.asinh(s), s + sp.sqrt(s ** 2 + 1)
+    cover = lambda e: K.sign_by_cover(expr=e, var=s, cuts=[I1, sp.Integer(2), sp.Integer(4)], want=1, strict=True)
+    th = L(cover(2 - 1 / W), sturm(I1, s, 1, 4), cover(W), expr=1 + a, term=a, p=-I1)
+    assert th.claim == Claim("sign", R(1 + a), R(s), R(I1), R(sp.Integer(4)), False, False, 1, True)
+    assert why(L, cover(2 - 1 / W), sturm(I1, s, 1, 4), sturm(s, s, 1, 4), expr=1 + a, term=a, p=-I1) == \
+        "premise must be s + sqrt(s**2 + 1) > 0"
+    assert why(K.sign_by_cover, expr=3 - s - sp.sqrt(s ** 2 + 1), var=s, cuts=[I1, sp.Integer(4)], want=1,
+               strict=False).startswith("sign not shown")
+    assert why(L, cover(2 - 1 / W), sturm(I1, s, 1, 4), cover(W), expr=1 + sp.sinh(s), term=sp.sinh(s),
+               p=-I1) == "sinh(s) is not a term M log(Y) of sinh(s) + 1"

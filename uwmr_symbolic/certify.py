@@ -567,14 +567,14 @@ class Prover:
 
     def _log_bound(self, e, var, I, want, strict, depth):
         """e on the tail I = [R, oo) by `sign_by_log_bound`: one term M log(Y)
-        of the sum e replaced by M (Y^p - 1)/p, p > 0 where M has the sign
-        -want, p = -1 (1 - 1/Y) where it has the sign want (an algebraic tail
-        where log's is not)."""
+        (or M asinh(X), a log of X + sqrt(X^2 + 1)) of the sum e replaced by
+        M (Y^p - 1)/p, p > 0 where M has the sign -want, p = -1 (1 - 1/Y)
+        where it has the sign want (an algebraic tail where log's is not)."""
         for term in e.args:
-            logs = [a for a in sp.Mul.make_args(term) if isinstance(a, sp.log)]
+            logs = [a for a in sp.Mul.make_args(term) if isinstance(a, (sp.log, sp.asinh))]
             if len(logs) != 1:
                 continue
-            y, m = logs[0].args[0], sp.Mul(*[a for a in sp.Mul.make_args(term) if a != logs[0]])
+            y, m = K._log_argument(logs[0]), sp.Mul(*[a for a in sp.Mul.make_args(term) if a != logs[0]])
             rest = [a for a in e.args if a != term]
             for p in (sp.Rational(1, 4), sp.Rational(1, 16), -sp.Integer(1)):
                 b, m_sign = sp.Add(*rest, m * (y ** p - 1) / p), -want * (1 if p > 0 else -1)
@@ -619,7 +619,7 @@ class Prover:
             except NoProof as exc:
                 if exc is self.spent:
                     raise
-        if tail is None and e.is_Add and e.has(sp.log):
+        if tail is None and e.is_Add and e.has(sp.log, sp.asinh):
             for start in (16 * R, 256 * R):         # the bound (Y^p - 1)/p of log Y is loose: start late
                 try:                                # a log in a denominator: over one denominator first
                     tail, R = _first_of([lambda: self._log_bound(e, var, (start, OO, False, True), want, strict,
@@ -1006,7 +1006,7 @@ def _over_one_denominator(e):
     if sp.count_ops(e) > 4 * CHEAP_RATIONAL:
         raise NoProof("too large to put over one denominator")
     n, d = sp.fraction(sp.together(e))
-    return sp.collect(sp.expand(n), sorted(n.atoms(sp.log), key=sp.default_sort_key)) / d
+    return sp.collect(sp.expand(n), sorted(n.atoms(sp.log, sp.asinh), key=sp.default_sort_key)) / d
 
 
 def _first_of(attempts, prover):

@@ -537,7 +537,8 @@ def sign_by_log_bound(bound, coeff, positive, *, expr, term, p):
     w.  Then M log Y - M l(Y) has the sign w, so E does too, strict as
     `bound` is.  (E is defined on I: A's terms are B's, M and log Y are.)
     A log tail such as s log(1 + s^2)/(1 + s^2), whose form in t = 1/s is not
-    defined at t = 0, becomes algebraic."""
+    defined at t = 0, becomes algebraic.  M asinh(X) is M log(Y) with
+    Y = X + sqrt(X^2 + 1) (asinh's definition, for every real X)."""
     for t in (bound, coeff, positive):
         _is_sign(t)
         _same_interval(t.claim, bound.claim)
@@ -545,9 +546,9 @@ def sign_by_log_bound(bound, coeff, positive, *, expr, term, p):
     var = c.x()
     e, t, p = _expr(expr, var), _expr(term, var), _number(p)
     _need(p.is_Rational and p != 0 and -1 <= p <= 1, "p is rational, 0 < |p| <= 1")
-    logs = [a for a in sp.Mul.make_args(t) if isinstance(a, sp.log)]
+    logs = [a for a in sp.Mul.make_args(t) if isinstance(a, (sp.log, sp.asinh))]
     _need(e.is_Add and t in e.args and len(logs) == 1, lambda: f"{t} is not a term M log(Y) of {e}")
-    y = logs[0].args[0]
+    y = _log_argument(logs[0])
     m = sp.Mul(*[a for a in sp.Mul.make_args(t) if a != logs[0]])
     b = sp.Add(*[a for a in e.args if a != t], m * (y ** p - 1) / p)
     w = c.want
@@ -559,6 +560,12 @@ def sign_by_log_bound(bound, coeff, positive, *, expr, term, p):
     lo, hi = c.ends()
     return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, w, c.strict)
 sign_by_log_bound = rule("sympy-core")(sign_by_log_bound)
+
+
+def _log_argument(g):
+    """Y with g = log(Y): g's argument, or X + sqrt(X^2 + 1) for g = asinh(X)."""
+    x = g.args[0]
+    return x if isinstance(g, sp.log) else x + sp.sqrt(x ** 2 + 1)
 
 
 def sign_of_increasing_difference(arg, *, expr, inner, c):
@@ -819,8 +826,9 @@ sign_by_rewrite = rule("arb", "sympy-core")(sign_by_rewrite)
 def defined_for_positive(e, x) -> bool:
     """Syntactic sufficient check that e is defined (real, finite) at every
     x > 0: a denominator, a log's argument or a real power's base must be
-    built from x, positive constants, +, *, exp, cosh, powers of such, and
-    log w with w - 1 so built (log w > 0; >= 0 when w - 1 >= 0)."""
+    built from x, positive constants, +, *, exp, cosh, powers of such,
+    log w with w - 1 so built (log w > 0; >= 0 when w - 1 >= 0), and G(w)
+    with G odd increasing (G(w) > 0 where w > 0, >= 0 where w >= 0)."""
     def pos(u):
         if u == x:
             return True
@@ -839,7 +847,7 @@ def defined_for_positive(e, x) -> bool:
             return defined(u.args[0])
         if isinstance(u, sp.log):               # log w > 0 where w - 1 > 0
             return pos(u.args[0] - 1)
-        return False
+        return isinstance(u, _ODD_INCREASING) and pos(u.args[0])     # G(w) > G(0) = 0 where w > 0
 
     def nonneg(u):
         if pos(u):
@@ -850,6 +858,8 @@ def defined_for_positive(e, x) -> bool:
             return defined(u.base)
         if isinstance(u, sp.Abs):
             return defined(u.args[0])
+        if isinstance(u, _ODD_INCREASING):
+            return nonneg(u.args[0])
         return (u.is_Add or u.is_Mul) and all(nonneg(a) for a in u.args)
 
     def defined(u):
