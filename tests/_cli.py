@@ -10,10 +10,10 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 
 #: f in rho = e1^2 + e2^2 that the search proves P1-P8 for and the kernel does not yet
-#: re-check in full (P1, P6-P8, kf): F = s^2 up to s = 1, joined C^2 to an erf branch
-#: whose F' = 3/2 + e exp(-(2s - 3)^2)/2 touches kf = 3/2 + e/2 at s = 3/2 (no kernel bound there).
-ERF_JOIN = ("Piecewise((rho, rho <= 1), (3*sqrt(rho)/2 + E*sqrt(pi)*(erf(2*sqrt(rho) - 3) + erf(1))/8 - S.Half, "
-            "True))")
+#: re-check in full (P1, P6, kf): three nested logs, whose F' = 2s/((1 + s^2)(1 + L1)(1 + L2)),
+#: L1 = log(1 + s^2), L2 = log(1 + L1), has two logs in its denominator (no kernel bound
+#: on the tail: `sign_by_log_bound` replaces one log at a time).
+NESTED_LOGS = "log(1 + log(1 + log(1 + rho)))"
 
 #: Seconds one verifier run may take in the verdict tests (override with UWMR_TEST_TIMEOUT).
 DESIGN_TIMEOUT = float(os.environ.get("UWMR_TEST_TIMEOUT", "900"))

@@ -16,7 +16,7 @@ import pytest  # noqa: E402
 import sympy as sp  # noqa: E402
 
 import uwmr_symbolic  # noqa: E402
-from _cli import ERF_JOIN  # noqa: E402
+from _cli import NESTED_LOGS  # noqa: E402
 from uwmr_symbolic import DesignError, e1, e2, generate, simulate, verify, verify_file  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -62,13 +62,13 @@ def test_verify_in_a_worker_process_gives_the_same_report():
 
 
 def test_kernel_only_in_the_api_reaches_the_worker():
-    """kernel_only=True, in a worker process as here: the erf join
-    (tests/_cli.py) has P1 proved by the search only (the kernel cannot show
-    F' <= kf where they touch), so it becomes unknown and the report is
-    inconclusive; P2 stays proved.  The kernel summary is the same either way."""
-    joined = sp.sympify(ERF_JOIN, locals={"rho": e1**2 + e2**2})
-    searched = verify(joined, name="erf_join", worker=False)
-    strict = verify(joined, name="erf_join", kernel_only=True)
+    """kernel_only=True, in a worker process as here: three nested logs
+    (tests/_cli.py) have P1 proved by the search only (no kernel bound of F'
+    on the tail), so it becomes unknown and the report is inconclusive; P2
+    stays proved.  The kernel summary is the same either way."""
+    nested = sp.sympify(NESTED_LOGS, locals={"rho": e1**2 + e2**2})
+    searched = verify(nested, name="nested_logs", worker=False)
+    strict = verify(nested, name="nested_logs", kernel_only=True)
     assert searched.properties["P1"].status == "proved" and strict.properties["P1"].status == "unknown"
     assert strict.properties["P1"].reason.startswith("not re-checked by the kernel (the search says proved")
     assert strict.properties["P2"].status == "proved" and strict.exit_status == 3

@@ -16,7 +16,7 @@ from xml.etree import ElementTree as ET
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from _cli import ERF_JOIN, ROOT  # noqa: E402
+from _cli import NESTED_LOGS, ROOT  # noqa: E402
 
 from uwmr_symbolic import batch, cache  # noqa: E402
 from uwmr_symbolic.batch import Progress, expand_paths, worst_status  # noqa: E402
@@ -416,25 +416,24 @@ def test_the_kernel_line_says_what_the_certificate_rechecks(tmp_path):
 
 
 def test_kernel_only_counts_what_the_kernel_rechecked(tmp_path):
-    """--kernel-only: f = r on |e|^2 = r <= 1 joined C^2 at r = 1 to
-    3 s/2 + e sqrt(pi) (erf(2s - 3) + erf(1))/8 - 1/2 (s = |e|) is proved
-    throughout by the search; its P1 needs F' <= kf = 3/2 + e/2 on (1, oo),
-    and the kernel's covers cannot show it where F' = 3/2 + e exp(-(2s -
-    3)^2)/2 touches kf (s = 3/2).  P1 then becomes
-    unknown, bound (10) is not checked (no kernel-checked kf: W undecided)
-    and the exit status is 3, while P2, P4 and P5 (F' > 0) stay proved.
-    Without the switch P1 is proved and the W bound is checked with the
-    enclosure.  r09 (F = u - sin u) has P5
+    """--kernel-only: f = log(1 + log(1 + log(1 + rho))) is proved
+    throughout by the search; its P1 needs a bound of F' = 2s/((1 + s^2)(1 +
+    L1)(1 + L2)) on the tail, and the kernel has none: the form in t = 1/s
+    is not defined at t = 0 and `sign_by_log_bound` replaces one log at a
+    time.  P1 then becomes unknown, bound (10) is not checked (no
+    kernel-checked kf: W undecided) and the exit status is 3, while P2, P4
+    and P5 (F' > 0) stay proved.  Without the switch P1 is proved and the W
+    bound is checked with the enclosure.  r09 (F = u - sin u) has P5
     refuted with a kernel-checked witness (F' = 0 exactly at u = 2 pi) and
     every proof kernel-checked: exit 1 either way.  Design 1 is
     kernel-checked throughout and keeps exit 0.  The two modes have cache
     entries of their own."""
-    joined = tmp_path / "erf_join.py"
-    joined.write_text("import sympy as sp\nfrom sympy import E, Piecewise, S, erf, pi, sqrt\n"
+    nested = tmp_path / "nested_logs.py"
+    nested.write_text("import sympy as sp\nfrom sympy import log\n"
                       "e1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
-                      f"f = {ERF_JOIN}\n"
+                      f"f = {NESTED_LOGS}\n"
                       "gains = {'easy': dict(k1=0.1, k2=0.1, lam=0.1, Vmax=1.0, Wmax=2.0, Vr_max=0.5, Wr_max=0.5)}\n")
-    designs = [ROOT / "designs/design1_jiang.py", ROOT / "tests/designs/r09_slope_zero.py", joined]
+    designs = [ROOT / "designs/design1_jiang.py", ROOT / "tests/designs/r09_slope_zero.py", nested]
     proc = run([*designs, "--format", "json", "--kernel-only"], tmp_path / "cache")
     one, slope, slow = json.loads(proc.stdout)
     assert one["exit_status"] == 0 and {v["verdict"] for v in one["properties"].values()} == {"proved"}
@@ -447,11 +446,11 @@ def test_kernel_only_counts_what_the_kernel_rechecked(tmp_path):
     assert slow["properties"]["P1"]["reason"].startswith("not re-checked by the kernel (the search says proved: ")
     assert "P1" in slow["kernel"]["search"] and slow["gains"]["easy"]["W_ok"] is None
     assert slow["exit_status"] == 3 and proc.returncode == 1      # the batch: r09's refutation
-    searched = json.loads(run([joined, "--format", "json"], tmp_path / "cache").stdout)
+    searched = json.loads(run([nested, "--format", "json"], tmp_path / "cache").stdout)
     assert searched["cached"] is False                            # not the --kernel-only entry
     assert searched["properties"]["P1"]["verdict"] == "proved" and searched["gains"]["easy"]["W_ok"] is True
     assert searched["kernel"] == slow["kernel"]                   # the same certificate, the same summary
-    again = json.loads(run([joined, "--format", "json", "--kernel-only"], tmp_path / "cache").stdout)
+    again = json.loads(run([nested, "--format", "json", "--kernel-only"], tmp_path / "cache").stdout)
     assert again["cached"] is True and again["properties"] == slow["properties"]
 
 

@@ -234,16 +234,23 @@ def test_sign_of_increasing_difference():
     rejects(K.sign_of_increasing_difference, above, expr=sp.cos(s) - sp.cos(1), inner=sp.cos(s), c=sp.Integer(1))
     rejects(K.sign_of_increasing_difference, above, expr=sp.tanh(s) - sp.atan(1), inner=sp.tanh(s), c=sp.Integer(1))
     rejects(K.sign_of_increasing_difference, above, expr=sp.tanh(s) - sp.tanh(1), inner=sp.tanh(s), c=sp.oo)
-    # k (G(Y) - G(c)) with k > 0 rational (SymPy writes 5 tanh(s) - 5 tanh(1)); not k <= 0, not two k's
-    five = K.sign_of_increasing_difference(above, expr=5 * sp.tanh(s) - 5 * sp.tanh(1), inner=5 * sp.tanh(s),
-                                           c=sp.Integer(1))
-    assert (five.claim.want, five.claim.strict) == (1, True)
-    rejects(K.sign_of_increasing_difference, above, expr=-5 * sp.tanh(s) + 5 * sp.tanh(1), inner=-5 * sp.tanh(s),
-            c=sp.Integer(1))
+    # k (G(Y) - G(c)) for an exact k != 0 has the sign of k (Y - c) (SymPy writes 5 tanh(s) - 5 tanh(1));
+    # not two different k's, not k = 0
+    for k in (5, -5, sp.pi, -sp.E / 2):
+        th = K.sign_of_increasing_difference(above, expr=k * sp.tanh(s) - k * sp.tanh(1), inner=k * sp.tanh(s),
+                                             c=sp.Integer(1))
+        assert (th.claim.want, th.claim.strict) == (1 if k > 0 else -1, True)
     rejects(K.sign_of_increasing_difference, above, expr=5 * sp.tanh(s) - 4 * sp.tanh(1), inner=5 * sp.tanh(s),
             c=sp.Integer(1))
-    rejects(K.sign_of_increasing_difference, above, expr=sp.pi * sp.tanh(s) - sp.pi * sp.tanh(1),
-            inner=sp.pi * sp.tanh(s), c=sp.Integer(1))
+    rejects(K.sign_of_increasing_difference, above, expr=sp.Integer(0), inner=0 * sp.tanh(s), c=sp.Integer(1))
+    rejects(K.sign_of_increasing_difference, above, expr=s * sp.tanh(s) - s * sp.tanh(1), inner=s * sp.tanh(s),
+            c=sp.Integer(1))
+    # G(c) as SymPy evaluates it: e/2 - e exp(-(2s - 3)^2)/2 >= 0 (k = -e/2, c = 0; the erf join's kf - F')
+    y = -(2 * s - 3) ** 2
+    nonpositive = sturm(y, s, 1, 3, want=-1, strict=False)
+    th = K.sign_of_increasing_difference(nonpositive, expr=sp.E / 2 - sp.E * sp.exp(y) / 2,
+                                         inner=-sp.E * sp.exp(y) / 2, c=sp.Integer(0))
+    assert (th.claim.expr, th.claim.want, th.claim.strict) == (sp.srepr(sp.E / 2 - sp.E * sp.exp(y) / 2), 1, False)
 
 
 def diverges_s():
@@ -835,10 +842,12 @@ def test_diverges_through_increasing():
     g = s * sp.diff(Y, s) - 1
     lower = log_rate(g, s)
     div = K.diverges_by_growth(lower, expr=Y, var=s, R=sp.Integer(1), rate="log", k=sp.Integer(1))
-    for E in (sp.log(Y), sp.sqrt(Y), Y ** Q(3, 2), sp.asinh(Y), sp.sinh(Y)):
+    for E in (sp.log(Y), sp.sqrt(Y), Y ** Q(3, 2), sp.asinh(Y), sp.sinh(Y), 1 + sp.log(Y), sp.sinh(Y) - sp.pi):
         d = K.diverges_through_increasing(div, expr=E)
         assert d.claim == Claim("diverges", sp.srepr(E), sp.srepr(s), sp.srepr(sp.Integer(1)), "oo", False, True)
-    for E in (sp.tanh(Y), sp.atan(Y), 1 / Y, Y ** Q(-1, 2), sp.log(Y + 1), sp.log(s + 1)):
+    # a + G(Y) only for an exact constant a and G itself increasing
+    for E in (sp.tanh(Y), sp.atan(Y), 1 / Y, Y ** Q(-1, 2), sp.log(Y + 1), sp.log(s + 1), 1 - sp.log(Y),
+              sp.Float(1.5) + sp.log(Y), sp.tanh(s) + sp.log(Y), 2 * sp.log(Y)):
         rejects(K.diverges_through_increasing, div, expr=E)
     rejects(K.diverges_through_increasing, lower, expr=sp.log(Y))            # not a divergence
 

@@ -1330,12 +1330,19 @@ def test_sign_of_increasing_difference_claims_and_messages():
     above = sturm(s - 1, s, 1, 3, lo_open=True, strict=False)          # s - 1 >= 0 on (1, 3]
     th = D(above, expr=sp.exp(s) - sp.E, inner=sp.exp(s), c=I1)
     assert th.claim == sign(sp.exp(s) - sp.E, s, 1, 3, True, False, strict=False)
-    assert th.assumptions == {"sympy-core", "sympy-polys"}
+    assert th.assumptions == {"arb", "sympy-core", "sympy-polys"}       # the sign of k
     below = sturm(s - 3, s, 1, 3, hi_open=True, want=-1)
     assert D(below, expr=sp.atan(s) - sp.atan(3), inner=sp.atan(s), c=I3).claim == \
         sign(sp.atan(s) - sp.atan(3), s, 1, 3, False, True, want=-1)
-    assert why(D, above, expr=sp.cos(s) - sp.cos(1), inner=sp.cos(s), c=I1) == "inner must be k G(Y), k > 0 rational, c finite"
-    assert why(D, above, expr=sp.tanh(s) - 1, inner=sp.tanh(s), c=oo) == "inner must be k G(Y), k > 0 rational, c finite"
+    assert why(D, above, expr=sp.cos(s) - sp.cos(1), inner=sp.cos(s), c=I1) == "inner must be k G(Y), c finite"
+    assert why(D, above, expr=sp.tanh(s) - 1, inner=sp.tanh(s), c=oo) == "inner must be k G(Y), c finite"
+    assert why(D, above, expr=sp.Integer(0), inner=0 * sp.tanh(s), c=I1) == "inner must be k G(Y), c finite"
+    zero = (1 + sp.sqrt(2)) ** 2 - 3 - 2 * sp.sqrt(2)                     # k = 0 in disguise: no sign
+    assert why(D, above, expr=zero * sp.tanh(s) - zero * sp.tanh(1), inner=zero * sp.tanh(s), c=I1).startswith(
+        "sign of ")
+    k = sp.sqrt(2) - sp.sqrt(2) * (1 + sp.Integer(10) ** -80)          # k < 0, tiny: decided by 256-bit Arb
+    neg = D(above, expr=k * sp.tanh(s) - k * sp.tanh(1), inner=k * sp.tanh(s), c=I1)
+    assert (neg.claim.want, neg.claim.strict) == (-1, False)
     msg = lambda e: f"{e} is not k (G(Y) - G(c)) with the premise Y - c"      # noqa: E731
     assert why(D, above, expr=sp.tanh(s) - sp.tanh(2), inner=sp.tanh(s), c=I2) == msg(sp.tanh(s) - sp.tanh(2))
     assert why(D, above, expr=sp.tanh(s) - sp.tanh(2), inner=sp.tanh(s), c=I1) == msg(sp.tanh(s) - sp.tanh(2))

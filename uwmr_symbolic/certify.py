@@ -55,7 +55,7 @@ TAIL_UNITS = 2
 CANCEL_UNITS = 4
 CHEAP_RATIONAL = 30     # larger rational functions try the sign rules of their parts first
 WORK = 60_000           # for one lemma (about 0.5 s here); the verdict does not depend on it
-DESIGN_WORK = 200_000   # for all the lemmas of one design (see `design_budget`)
+DESIGN_WORK = 300_000   # for all the lemmas of one design (see `design_budget`)
 CPU_CAP = 8.0           # a budget also ends after CPU_CAP times its nominal CPU seconds (backstop)
 UNIT_SECONDS = 8e-6
 _charged = 0
@@ -356,9 +356,8 @@ class Prover:
         if e.is_Add:
             diff = _increasing_difference(e, var)
             if diff is not None:
-                g, c = diff
-                return _rule(K.sign_of_increasing_difference, sub(g.as_coeff_Mul()[1].args[0] - c, want), expr=e,
-                             inner=g, c=c)
+                g, c, y, sign = diff
+                return _rule(K.sign_of_increasing_difference, sub(y - c, want * sign), expr=e, inner=g, c=c)
             try:
                 if any(_against(t, var, I, want) for t in e.args if t.has(var)):
                     raise NoProof("a term of {} has the other sign", e)
@@ -671,13 +670,19 @@ def _factored(e):
 
 
 def _increasing_difference(e, var):
-    """(k G(Y), c) if e = k G(Y) - k G(c), G increasing, c constant, k > 0
-    rational; else None."""
+    """(k G(Y), c, Y, sign of k) if e = k G(Y) - k G(c), G increasing, c and
+    k != 0 constants (G(c) as SymPy evaluates it: exp(0) = 1); else None."""
     if len(e.args) == 2:
         for a, b in (e.args, e.args[::-1]):
-            (k, g), (m, G) = a.as_coeff_Mul(), (-b).as_coeff_Mul()
-            if type(g) in _INCREASING and type(G) is type(g) and k == m and k > 0 and not b.has(var) and g.has(var):
-                return a, G.args[0]
+            k, g = a.as_independent(var, as_Add=False)
+            if type(g) not in _INCREASING or b.has(var) or k == 0:
+                continue
+            v = -b / k                  # = G(c)
+            for c in ([v.args[0]] if type(v) is type(g) else []) + ([sp.Integer(0)] if g.func(0) == v else []):
+                try:
+                    return a, c, g.args[0], K._const_sign(k)
+                except K.KernelError:
+                    return None
     return None
 
 
@@ -931,12 +936,14 @@ def growth_theorems(F, var, last=None) -> list:
 
 
 def _diverges_inside(F, var) -> list:
-    """F = G(Y) -> oo because Y -> oo, G increasing and unbounded (log, exp,
-    sinh, asinh, Y^p): `diverges_through_increasing` (log(1 + log(1 + s^2)),
-    slower than any rate `diverges_by_growth` knows)."""
-    if not (isinstance(F, (sp.log, sp.exp, sp.sinh, sp.asinh)) or (F.is_Pow and F.exp.is_Rational and F.exp > 0)):
+    """F = a + G(Y) -> oo because Y -> oo, a constant, G increasing and
+    unbounded (log, exp, sinh, asinh, Y^p): `diverges_through_increasing`
+    (log(1 + log(1 + s^2)), slower than any rate `diverges_by_growth` knows;
+    nested deeper through a = 1)."""
+    G = F.as_independent(var, as_Add=True)[1]
+    if not (isinstance(G, (sp.log, sp.exp, sp.sinh, sp.asinh)) or (G.is_Pow and G.exp.is_Rational and G.exp > 0)):
         return []
-    inner = growth_theorems(F.args[0], var)
+    inner = growth_theorems(G.args[0], var)
     try:
         return [_rule(K.diverges_through_increasing, inner[0], expr=F)] if inner else []
     except NoProof:

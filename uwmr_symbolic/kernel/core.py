@@ -569,20 +569,22 @@ def _log_argument(g):
 
 
 def sign_of_increasing_difference(arg, *, expr, inner, c):
-    """k (G(Y) - G(c)) has the sign (and strictness) of Y - c on I, the
-    premise, for G strictly increasing on R (tanh, atan, asinh, sinh, erf,
-    exp), an exact constant c and a rational k > 0.  `inner` is k G(Y)."""
+    """k (G(Y) - G(c)) has the sign of k (Y - c) on I, strict as the premise
+    (the sign of Y - c on I), for G strictly increasing on R (tanh, atan,
+    asinh, sinh, erf, exp), an exact constant c and an exact constant k != 0
+    (e/2 - e exp(-Y^2)/2 is k = -e/2, c = 0).  `inner` is k G(Y)."""
     _is_sign(arg)
     p = arg.claim
     var = p.x()
-    e, (k, g), c = _expr(expr, var), _expr(inner, var).as_coeff_Mul(), _number(c)
-    _need(type(g) in (*_ODD_INCREASING, sp.exp) and c not in (OO, -OO) and k.is_Rational and k > 0,
-          "inner must be k G(Y), k > 0 rational, c finite")
+    e, (k, g), c = _expr(expr, var), _expr(inner, var).as_independent(var, as_Add=False), _number(c)
+    _need(type(g) in (*_ODD_INCREASING, sp.exp) and c not in (OO, -OO), "inner must be k G(Y), c finite")
+    sk = _const_sign(k)
+    _need(sk != 0, "k must not be 0")
     _need(e == k * g - k * g.func(c) and p.expr == _s(g.args[0] - c),
           lambda: f"{e} is not k (G(Y) - G(c)) with the premise Y - c")
     lo, hi = p.ends()
-    return _sign_claim(e, var, lo, hi, p.lo_open, p.hi_open, p.want, p.strict)
-sign_of_increasing_difference = rule("sympy-core")(sign_of_increasing_difference)
+    return _sign_claim(e, var, lo, hi, p.lo_open, p.hi_open, sk * p.want, p.strict)
+sign_of_increasing_difference = rule("arb", "sympy-core")(sign_of_increasing_difference)
 
 
 def join(left, right):
@@ -1251,17 +1253,19 @@ diverges_by_growth = rule("arb", "sympy-core", "sympy-diff")(diverges_by_growth)
 
 
 def diverges_through_increasing(div, *, expr):
-    """G(Y) -> +oo as x -> oo when Y -> +oo (premise `div`), for G = log,
-    exp, sinh, asinh or a power Y^p with rational p > 0 (increasing and
-    unbounded on the values Y takes for large x); E = G(Y) defined for every
-    x > 0 (`defined_for_positive`).  Claim on the premise's [R, oo)."""
+    """a + G(Y) -> +oo as x -> oo when Y -> +oo (premise `div`), for an
+    exact constant a (0 too) and G = log, exp, sinh, asinh or a power Y^p
+    with rational p > 0 (increasing and unbounded on the values Y takes for
+    large x); E = a + G(Y) defined for every x > 0 (`defined_for_positive`).
+    Claim on the premise's [R, oo)."""
     c = div.claim
     _need(c.kind == "diverges", "premise must be a diverges theorem")
     var = c.x()
     e = _expr(expr, var)
-    unbounded = isinstance(e, (sp.log, sp.exp, sp.sinh, sp.asinh)) or (
-        e.is_Pow and e.exp.is_Rational and _const_sign(e.exp) > 0)
-    _need(unbounded and c.expr == _s(e.args[0]), lambda: f"{e} is not G(Y) with the premise about Y")
+    a, g = e.as_independent(var, as_Add=True)
+    unbounded = _number_ok(a) and (isinstance(g, (sp.log, sp.exp, sp.sinh, sp.asinh)) or (
+        g.is_Pow and g.exp.is_Rational and _const_sign(g.exp) > 0))
+    _need(unbounded and c.expr == _s(g.args[0]), lambda: f"{e} is not a + G(Y) with the premise about Y")
     _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
     return dataclasses.replace(c, expr=_s(e))
 diverges_through_increasing = rule("sympy-core")(diverges_through_increasing)
