@@ -182,11 +182,8 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Fa
     expired_before = timeouts.expired
     analysis = Analysis(design)
     props: dict[str, Verdict] = {}
-    # P4 first: it decides whether the radial reduction is available; then the
-    # properties whose kernel lemmas are cheap (continuity, limits at 0+), so
-    # that the costly sups and tails (P1, P3, P6) cannot spend the proposer's
-    # budget for the design (`certify.design_budget`) before them
-    for name in ("P4", "P2", "P8", "P7", "P5", "P1", "P3", "P6"):
+    # P4 first: it decides whether the radial reduction is available
+    for name in ("P4", "P2", "P1", "P3", "P5", "P6", "P7", "P8"):
         remaining = deadline - time.monotonic()
         if remaining <= 0:
             props[name] = _timed_out(name, timeout)
