@@ -54,6 +54,7 @@ class Analysis:
     def __init__(self, design: Design):
         self.design = design
         self.f = design.f
+        self._derivatives: dict = {}
 
     # ---- radial reduction -------------------------------------------------
     @cached_property
@@ -93,7 +94,13 @@ class Analysis:
         return self.split[0]
 
     def derivative(self, expr, k):
-        return prepare(sp.diff(expr, S, k)) if k else expr
+        """d^k expr/ds^k, prepared; memoised (each piece's F' and F'' are asked
+        for by several properties: 128 times for a chain of 16 joins)."""
+        if not k:
+            return expr
+        if (expr, k) not in self._derivatives:
+            self._derivatives[expr, k] = prepare(sp.diff(expr, S, k))
+        return self._derivatives[expr, k]
 
     # ---- continuity facts (order k = 0, 1, 2) -----------------------------
     def _piece_continuity(self, k) -> Verdict:

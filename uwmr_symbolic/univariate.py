@@ -215,10 +215,23 @@ def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
     e = e.replace(lambda n: isinstance(n, sp.atan) and n.args[0].is_positive and
                   (1 / n.args[0]).count_ops() < n.args[0].count_ops(),
                   lambda n: sp.pi / 2 - sp.atan(sp.cancel(1 / n.args[0])))
-    if not e.has(sp.Function, sp.Piecewise):
+    if not e.has(sp.Function, sp.Piecewise) and not _finite_terms(e):
         parts = rational_parts(e, T)
         e = parts[0].as_expr() / parts[1].as_expr() if parts is not None else sp.cancel(e)
     return _checked_rewrite(substitute(expr, s, 1 / T), e)
+
+
+#: a rational tail form of more terms than this, each finite at t = 0, stays a sum
+TERMWISE_TERMS = 4
+
+
+def _finite_terms(e) -> bool:
+    """e is a sum of more than TERMWISE_TERMS terms whose denominators do not
+    vanish at t = 0.  Over one denominator such a sum has a numerator of high
+    degree whose interval enclosure is too wide to sign (the derivative of a
+    chain of 16 C^2 joins: 4,000 boxes undecided, term by term 1.6 s)."""
+    terms = sp.Add.make_args(e)
+    return len(terms) > TERMWISE_TERMS and all(sp.denom(t).subs(T, 0) != 0 for t in terms)
 
 
 @lru_cache(maxsize=4096)
