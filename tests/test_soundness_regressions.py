@@ -270,6 +270,28 @@ def test_tail_form_of_nested_logs_stays_small():
             assert abs(a - b) <= sp.Float(10) ** -40 * (1 + abs(b))
 
 
+def test_tail_form_of_a_long_rational_sum_stays_a_sum():
+    """F' of the C^2 chain log(1 + s^2) + sum_k (s^2 - k)^3/(10 (1 + (s^2 -
+    k)^3)), k = 1..8: 17 terms, each finite at t = 0, whose denominators have
+    total degree 140.  Its t-form stays a sum, and interval arithmetic signs
+    it on [12, oo); over one denominator (degree 284 at n = 16) the enclosure
+    was too wide for 4,000 boxes.  A short sum (the fuzzer's chain branch
+    4 s^2/(2 (4 s^2 + 1)) + (s^2 - 1/2)^2/((s^2 - 1/2)^2 + 1), degree 18) is
+    still merged, and still signed beyond its join at sqrt(2)/2.  Each form
+    is F'(1/t) at 50 digits."""
+    from uwmr_symbolic.univariate import T, tail_form
+    chain = sp.log(1 + S ** 2) + sum((S ** 2 - k) ** 3 / (10 * (1 + (S ** 2 - k) ** 3)) for k in range(1, 9))
+    short = 4 * S ** 2 / (2 * (4 * S ** 2 + 1)) + (S ** 2 - sp.Rational(1, 2)) ** 2 / ((S ** 2 - sp.Rational(1, 2)) ** 2 + 1)
+    for F, terms, lo, lo_open in ((chain, 17, 12, False), (short, 1, sp.sqrt(2) / 2, True)):
+        d = sp.diff(F, S)
+        form = tail_form(d, S)
+        assert len(sp.Add.make_args(form)) == terms
+        for t in (sp.Rational(1, 3), sp.Rational(1, 13), sp.Rational(1, 50)):
+            a, b = sp.N(form.subs(T, t), 50), sp.N(d.subs(S, 1 / t), 50)
+            assert abs(a - b) <= sp.Float(10) ** -40 * abs(b)
+        assert prove_sign(d, S, lo, sp.oo, lo_open=lo_open).proved
+
+
 def test_one_sided_values_by_continuity_and_by_limits():
     """one_sided_value substitutes where interval evaluation proves the formula
     continuous on a closed one-sided box, and falls back on the limit calculus:
