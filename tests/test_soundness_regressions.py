@@ -292,6 +292,23 @@ def test_tail_form_of_a_long_rational_sum_stays_a_sum():
         assert prove_sign(d, S, lo, sp.oo, lo_open=lo_open).proved
 
 
+def test_enclose_sup_stops_below_a_floor_and_only_there():
+    """sup s/(1 + s^2) = 1/2 (at s = 1).  With a floor 3/4 that another piece
+    reaches, the search may stop once every box is below 3/4: its upper bound
+    is then below 3/4 and still at least 1/2.  With a floor 1/4 or 1/2 (not
+    strictly above the sup) it must not stop early: the enclosure is tight."""
+    from uwmr_symbolic.univariate import enclose_sup
+    E = S / (1 + S ** 2)
+    early = enclose_sup(E, S, 0, sp.oo, rel_tol=1e-9, floor=Fraction(3, 4))
+    assert Fraction(1, 2) <= early.upper < Fraction(3, 4)
+    full = enclose_sup(E, S, 0, sp.oo, rel_tol=1e-9)
+    for floor in (Fraction(1, 4), Fraction(1, 2)):
+        enc = enclose_sup(E, S, 0, sp.oo, rel_tol=1e-9, floor=floor)
+        assert enc.lower <= Fraction(1, 2) <= enc.upper and enc.upper - enc.lower <= Fraction(1, 10 ** 9)
+        assert (enc.lower, enc.upper) == (full.lower, full.upper)
+    assert early.upper - early.lower > full.upper - full.lower
+
+
 def test_one_sided_values_by_continuity_and_by_limits():
     """one_sided_value substitutes where interval evaluation proves the formula
     continuous on a closed one-sided box, and falls back on the limit calculus:

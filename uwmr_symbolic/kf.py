@@ -177,6 +177,7 @@ def _prove_bound(c, exprs, pieces, zeros_of) -> tuple[bool, bool | None]:
 
 
 NEAR_ZERO = Fraction(1, 8)
+QUICK_BOXES = 30            # per piece, for `_quick_lower`
 
 
 def _continued_at(exprs, pieces, point, value) -> bool:
@@ -188,6 +189,13 @@ def _continued_at(exprs, pieces, point, value) -> bool:
                 if v is None or v in (sp.oo, -sp.oo) or exact_sign(v - value) != 0:
                     return False
     return True
+
+
+def _quick_lower(exprs, pieces):
+    """The largest lower bound of the sup that a short branch and bound on each
+    piece finds (None if none): a floor for the pieces that cannot hold it."""
+    lows = [enclose_sup(E, S, p.lo, p.hi, budget=QUICK_BOXES).lower for E, p in zip(exprs, pieces)]
+    return max((x for x in lows if x is not None), default=None)
 
 
 def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
@@ -220,6 +228,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
             except NoLimit:
                 pass
     lower, upper, top = None, Fraction(0), None
+    floor = _quick_lower(exprs, pieces) if len(pieces) > 2 else None   # pieces below it need no tight sup
     for i, (E, piece) in enumerate(zip(exprs, pieces)):
         lo = piece.lo
         if i == 0 and near_zero is not None and exact_value(E, S, 0) is None \
@@ -230,7 +239,8 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
             elif upper is not None:
                 upper = max(upper, near.upper)      # an upper bound only (see above)
             lo = sp.Rational(NEAR_ZERO)
-        enc = enclose_sup(E, S, lo, piece.hi, rel_tol=REL_WIDTH)
+        known = [x for x in (floor, lower) if x is not None]
+        enc = enclose_sup(E, S, lo, piece.hi, rel_tol=REL_WIDTH, floor=max(known) if known else None)
         if enc.lower is not None and (lower is None or enc.lower > lower):
             lower, top = enc.lower, (E, piece, enc)
         if enc.upper is None:

@@ -763,10 +763,13 @@ def _mean_value_upper(fn, dfn, u, v):
     return em_hi + max(right, left)
 
 
-def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
+def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> SupEnclosure:
     """Rigorous enclosure of sup expr over [lo, hi] (hi may be oo) by interval
     branch and bound: every box keeps an upper bound, every evaluated value a
-    lower bound, until they agree to rel_tol."""
+    lower bound, until they agree to rel_tol.  `floor`: a value the caller
+    knows the sup elsewhere reaches; once every box's bound is below it this
+    interval cannot hold the sup and the search stops (the upper bound
+    returned is then below floor, the lower bound whatever was seen)."""
     expr = prepare(sp.sympify(expr))
     parts = []   # (variable, expression, derivative) per region
     if hi == sp.oo:
@@ -826,7 +829,9 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000) -> SupEnclosure:
     for kind, _, a, b in parts:
         push(kind, a, b)
     for count in range(budget):
-        _, _, kind, u, v, up = heap[0]
+        key, _, kind, u, v, up = heap[0]
+        if floor is not None and up is not None and -key < float(floor) and max(h[-1] for h in heap) < floor:
+            return SupEnclosure(lower, max(h[-1] for h in heap), at_infinity=False, near=None, point=point)
         if up is not None and lower is not None and \
                 up - lower <= Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 9)):
             near = float((u + v) / 2) if kind == "s" else None
