@@ -447,6 +447,7 @@ def test_defined_for_positive():
               1 / (2 + sp.log(1 + (s - 1) ** 2)), sp.log(sp.log(1 + s)),
               # G(w) > 0 where w > 0, >= 0 where w >= 0, for G odd increasing
               sp.log(1 + sp.asinh(s ** 2)), 1 / sp.tanh(s), 1 / (1 + sp.atan((s - 1) ** 2)), sp.sqrt(sp.erf(s)),
+              1 / (1 + s * (s - 1) ** 2),                                  # s >= 0 because s > 0
               1 / (s + sp.sinh((s - 2) ** 2))):
         assert d(e, s), e
     # not (or not syntactically) defined for every s > 0
@@ -1353,6 +1354,23 @@ def test_sign_of_increasing_difference_claims_and_messages():
 def _diverging_s():
     half = K.sign_by_sturm(expr=Q(1, 2), var=s, lo=I1, hi=oo, lo_open=False, hi_open=True, want=1, strict=False)
     return K.diverges_by_growth(half, expr=s, var=s, R=I1, rate="linear", k=Q(1, 2))
+
+
+def test_diverges_through_increasing_messages():
+    """s -> oo, so 1 + log(s) -> oo; not from a premise that is no divergence,
+    not for 2 log(s) or 3 + sqrt(s - 1) (G of another Y), and not for
+    log(s - 2), which s - 2 -> oo makes diverge but which is not defined for
+    every s > 0."""
+    D, div = K.diverges_through_increasing, _diverging_s()
+    assert D(div, expr=1 + sp.log(s)).claim == Claim("diverges", R(1 + sp.log(s)), R(s), R(I1), "oo", False, True)
+    sign_only = sturm(s, s, 1, 4)
+    assert why(D, sign_only, expr=sp.log(s)) == "premise must be a diverges theorem"
+    assert why(D, div, expr=2 * sp.log(s)) == "2*log(s) is not a + G(Y) with the premise about Y"
+    assert why(D, div, expr=3 + sp.sqrt(s - 1)) == "sqrt(s - 1) + 3 is not a + G(Y) with the premise about Y"
+    half = K.sign_by_sturm(expr=Q(1, 2), var=s, lo=sp.Integer(3), hi=oo, lo_open=False, hi_open=True, want=1,
+                           strict=False)
+    shifted = K.diverges_by_growth(half, expr=s - 2, var=s, R=sp.Integer(3), rate="linear", k=Q(1, 2))
+    assert why(D, shifted, expr=sp.log(s - 2)) == "log(s - 2) not shown defined for all s > 0"
 
 
 def test_limit_rules_claims_and_messages():

@@ -578,8 +578,7 @@ def sign_of_increasing_difference(arg, *, expr, inner, c):
     var = p.x()
     e, (k, g), c = _expr(expr, var), _expr(inner, var).as_independent(var, as_Add=False), _number(c)
     _need(type(g) in (*_ODD_INCREASING, sp.exp) and c not in (OO, -OO), "inner must be k G(Y), c finite")
-    sk = _const_sign(k)
-    _need(sk != 0, "k must not be 0")
+    sk = _const_sign(k)                     # not 0: SymPy makes 0 G(Y) the number 0
     _need(e == k * g - k * g.func(c) and p.expr == _s(g.args[0] - c),
           lambda: f"{e} is not k (G(Y) - G(c)) with the premise Y - c")
     lo, hi = p.ends()
