@@ -228,7 +228,7 @@ TERMWISE_DEGREE = 64
 
 def _finite_terms(e) -> bool:
     """e is a sum of terms whose denominators, polynomials in t, do not
-    vanish at t = 0 and have distinct factors of total degree above
+    vanish at t = 0 and, counted once each, have a total degree above
     TERMWISE_DEGREE.  Over one denominator such a sum has a numerator of
     high degree whose interval enclosure is too wide to sign (the derivative
     of a chain of 16 C^2 joins, degree 284: 4,000 boxes undecided; term by
