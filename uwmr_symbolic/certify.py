@@ -678,11 +678,13 @@ def _increasing_difference(e, var):
             if type(g) not in _INCREASING or b.has(var) or k == 0:
                 continue
             v = -b / k                  # = G(c)
-            for c in ([v.args[0]] if type(v) is type(g) else []) + ([sp.Integer(0)] if g.func(0) == v else []):
-                try:
-                    return a, c, g.args[0], K._const_sign(k)
-                except K.KernelError:
-                    return None
+            c = v.args[0] if type(v) is type(g) else sp.Integer(0) if g.func(0) == v else None
+            if c is None:
+                continue
+            try:
+                return a, c, g.args[0], K._const_sign(k)
+            except K.KernelError:
+                return None
     return None
 
 

@@ -830,8 +830,10 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
         push(kind, a, b)
     for count in range(budget):
         key, _, kind, u, v, up = heap[0]
-        if floor is not None and up is not None and -key < float(floor) and max(h[-1] for h in heap) < floor:
-            return SupEnclosure(lower, max(h[-1] for h in heap), at_infinity=False, near=None, point=point)
+        if floor is not None and up is not None and -key < float(floor):
+            top = max(h[-1] for h in heap)      # the exact largest bound (the heap orders by float)
+            if top < floor:
+                return SupEnclosure(lower, top, at_infinity=False, near=None, point=point)
         if up is not None and lower is not None and \
                 up - lower <= Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 9)):
             near = float((u + v) / 2) if kind == "s" else None
