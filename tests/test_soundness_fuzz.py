@@ -84,6 +84,22 @@ def test_oracle_reads_a_float_as_the_verifier_documents():
     assert "f(0, 0) = -2.0000000000000000000E-16" in found[0].evidence, found[0].evidence
 
 
+def test_oracle_takes_p2_from_f_as_read_where_sympy_folded_a_float():
+    """c (sqrt(1 + e2^2) - 1) + sqrt(1 + e1^2) - 1 with c = 0.30000000000000004
+    is 0 at the origin by construction, but SymPy folds -1 - c to the double
+    -1.3: as read, f(0, 0) = 4e-17 (seed 4181609, design 79).  Refuting P2
+    is then right, proving it is not."""
+    c = sp.Float(0.1 + 0.2)
+    f = sp.sqrt(1 + e1 ** 2) - 1 + c * (sp.sqrt(1 + e2 ** 2) - 1)
+    assert sp.Float(-1.3) in f.atoms(sp.Float)
+    case = Case("separable", f, {"P2": True})
+    assert oracle.check(case, _result({"P2": "refuted"})) == []
+    found = oracle.check(case, _result({"P2": "proved"}))
+    assert [(c.prop, c.kind) for c in found] == [("P2", "false proof")]
+    exact = Case("separable", sp.sqrt(1 + e1 ** 2) - 1 + sp.Rational(3, 10) * (sp.sqrt(1 + e2 ** 2) - 1), {"P2": True})
+    assert [(c.prop, c.kind) for c in oracle.check(exact, _result({"P2": "refuted"}))] == [("P2", "wrong refutation")]
+
+
 def test_oracle_flags_a_kf_enclosure_below_the_true_value_and_a_made_up_exact_value():
     c = 0.30000000000000004
     f = sp.Float(c) * sp.log(1 + RHO)           # kf = c exactly (at |e| = 1)
