@@ -570,10 +570,10 @@ class Prover:
         M (Y^p - 1)/p, p > 0 where M has the sign -want, p = -1 (1 - 1/Y)
         where it has the sign want (an algebraic tail where log's is not)."""
         for term in e.args:
-            logs = [a for a in sp.Mul.make_args(term) if isinstance(a, (sp.log, sp.asinh))]
-            if len(logs) != 1:
+            split = K._log_term(term)
+            if split is None:
                 continue
-            y, m = K._log_argument(logs[0]), sp.Mul(*[a for a in sp.Mul.make_args(term) if a != logs[0]])
+            m, y = split
             rest = [a for a in e.args if a != term]
             for p in (sp.Rational(1, 4), sp.Rational(1, 16), -sp.Integer(1)):
                 b, m_sign = sp.Add(*rest, m * (y ** p - 1) / p), -want * (1 if p > 0 else -1)
@@ -943,7 +943,7 @@ def _diverges_inside(F, var) -> list:
     (log(1 + log(1 + s^2)), slower than any rate `diverges_by_growth` knows;
     nested deeper through a = 1)."""
     G = F.as_independent(var, as_Add=True)[1]
-    if not (isinstance(G, (sp.log, sp.exp, sp.sinh, sp.asinh)) or (G.is_Pow and G.exp.is_Rational and G.exp > 0)):
+    if not K.unbounded_increasing(G):
         return []
     inner = growth_theorems(G.args[0], var)
     try:

@@ -546,10 +546,9 @@ def sign_by_log_bound(bound, coeff, positive, *, expr, term, p):
     var = c.x()
     e, t, p = _expr(expr, var), _expr(term, var), _number(p)
     _need(p.is_Rational and p != 0 and -1 <= p <= 1, "p is rational, 0 < |p| <= 1")
-    logs = [a for a in sp.Mul.make_args(t) if isinstance(a, (sp.log, sp.asinh))]
-    _need(e.is_Add and t in e.args and len(logs) == 1, lambda: f"{t} is not a term M log(Y) of {e}")
-    y = _log_argument(logs[0])
-    m = sp.Mul(*[a for a in sp.Mul.make_args(t) if a != logs[0]])
+    split = _log_term(t)
+    _need(e.is_Add and t in e.args and split is not None, lambda: f"{t} is not a term M log(Y) of {e}")
+    m, y = split
     b = sp.Add(*[a for a in e.args if a != t], m * (y ** p - 1) / p)
     w = c.want
     _need(positive.claim.expr == _s(y) and positive.claim.want == 1 and positive.claim.strict,
@@ -562,10 +561,16 @@ def sign_by_log_bound(bound, coeff, positive, *, expr, term, p):
 sign_by_log_bound = rule("sympy-core")(sign_by_log_bound)
 
 
-def _log_argument(g):
-    """Y with g = log(Y): g's argument, or X + sqrt(X^2 + 1) for g = asinh(X)."""
-    x = g.args[0]
-    return x if isinstance(g, sp.log) else x + sp.sqrt(x ** 2 + 1)
+def _log_term(t):
+    """(M, Y) for a product t = M log(Y) with one log among its factors,
+    M asinh(X) read as M log(X + sqrt(X^2 + 1)) (asinh's definition, for
+    every real X); None for any other t."""
+    logs = [a for a in sp.Mul.make_args(t) if isinstance(a, (sp.log, sp.asinh))]
+    if len(logs) != 1:
+        return None
+    g, x = logs[0], logs[0].args[0]
+    m = sp.Mul(*[a for a in sp.Mul.make_args(t) if a != g])
+    return m, x if isinstance(g, sp.log) else x + sp.sqrt(x ** 2 + 1)
 
 
 def sign_of_increasing_difference(arg, *, expr, inner, c):
@@ -1262,12 +1267,18 @@ def diverges_through_increasing(div, *, expr):
     var = c.x()
     e = _expr(expr, var)
     a, g = e.as_independent(var, as_Add=True)
-    unbounded = _number_ok(a) and (isinstance(g, (sp.log, sp.exp, sp.sinh, sp.asinh)) or (
-        g.is_Pow and g.exp.is_Rational and _const_sign(g.exp) > 0))
-    _need(unbounded and c.expr == _s(g.args[0]), lambda: f"{e} is not a + G(Y) with the premise about Y")
+    _need(_number_ok(a) and unbounded_increasing(g) and c.expr == _s(g.args[0]),
+          lambda: f"{e} is not a + G(Y) with the premise about Y")
     _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
     return dataclasses.replace(c, expr=_s(e))
 diverges_through_increasing = rule("sympy-core")(diverges_through_increasing)
+
+
+def unbounded_increasing(g) -> bool:
+    """g = G(Y) with G increasing and unbounded above on the values Y takes
+    for large x: log, exp, sinh, asinh, or Y^p with rational p > 0."""
+    return isinstance(g, (sp.log, sp.exp, sp.sinh, sp.asinh)) or (
+        g.is_Pow and g.exp.is_Rational and _const_sign(g.exp) > 0)
 
 
 def diverges_by_comparison(lower, div, *, expr):
