@@ -215,7 +215,7 @@ def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
     e = e.replace(lambda n: isinstance(n, sp.atan) and n.args[0].is_positive and
                   (1 / n.args[0]).count_ops() < n.args[0].count_ops(),
                   lambda n: sp.pi / 2 - sp.atan(sp.cancel(1 / n.args[0])))
-    if not e.has(sp.Function, sp.Piecewise) and not _finite_terms(e):
+    if not e.has(sp.Function, sp.Piecewise) and not _stays_a_sum(e):
         parts = rational_parts(e, T)
         e = parts[0].as_expr() / parts[1].as_expr() if parts is not None else sp.cancel(e)
     return _checked_rewrite(substitute(expr, s, 1 / T), e)
@@ -226,7 +226,7 @@ def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
 TERMWISE_DEGREE = 64
 
 
-def _finite_terms(e) -> bool:
+def _stays_a_sum(e) -> bool:
     """e is a sum of terms whose denominators, polynomials in t, do not
     vanish at t = 0 and, counted once each, have a total degree above
     TERMWISE_DEGREE.  Over one denominator such a sum has a numerator of
