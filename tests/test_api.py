@@ -61,16 +61,18 @@ def test_verify_in_a_worker_process_gives_the_same_report():
     assert there.exit_status == here.exit_status == 0
 
 
-def test_kernel_only_in_the_api_reaches_the_worker():
-    """kernel_only=True, in a worker process as here: three nested logs
-    (tests/_cli.py) have P1 proved by the search only (no kernel bound of F'
-    on the tail), so it becomes unknown and the report is inconclusive; P2
-    stays proved.  The kernel summary is the same either way."""
+def test_kernel_only_is_the_default_and_its_opposite_reaches_the_worker():
+    """Three nested logs (tests/_cli.py) have P1 proved by the search only
+    (no kernel bound of F' on the tail).  By default (kernel_only=True) P1
+    is unknown and the report inconclusive, P2 stays proved;
+    kernel_only=False, in a worker process as here, counts the search's
+    proof.  The kernel summary is the same either way."""
     nested = sp.sympify(NESTED_LOGS, locals={"rho": e1**2 + e2**2})
-    searched = verify(nested, name="nested_logs", worker=False)
-    strict = verify(nested, name="nested_logs", kernel_only=True)
+    searched = verify(nested, name="nested_logs", kernel_only=False)
+    strict = verify(nested, name="nested_logs", worker=False)
     assert searched.properties["P1"].status == "proved" and strict.properties["P1"].status == "unknown"
-    assert strict.properties["P1"].reason.startswith("not re-checked by the kernel (the search says proved")
+    assert strict.properties["P1"].reason.startswith(
+        "not re-checked by the kernel (the search says proved, which counts only with --trust-search: ")
     assert strict.properties["P2"].status == "proved" and strict.exit_status == 3
     assert strict.kernel == searched.kernel and "P1" in strict.kernel["search"]
 

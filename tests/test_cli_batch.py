@@ -415,14 +415,15 @@ def test_the_kernel_line_says_what_the_certificate_rechecks(tmp_path):
     assert again["cached"] is False and again["kernel"] == one["kernel"]
 
 
-def test_kernel_only_counts_what_the_kernel_rechecked(tmp_path):
-    """--kernel-only: f = log(1 + log(1 + log(1 + rho))) is proved
+def test_kernel_only_by_default_and_trust_search(tmp_path):
+    """By default only the kernel's verdicts count (--kernel-only says it
+    again): f = log(1 + log(1 + log(1 + rho))) is proved
     throughout by the search; its P1 needs a bound of F' = 2s/((1 + s^2)(1 +
     L1)(1 + L2)) on the tail, and the kernel has none: the form in t = 1/s
     is not defined at t = 0 and `sign_by_log_bound` replaces one log at a
     time.  P1 then becomes unknown, bound (10) is not checked (no
     kernel-checked kf: W undecided) and the exit status is 3, while P2, P4
-    and P5 (F' > 0) stay proved.  Without the switch P1 is proved and the W
+    and P5 (F' > 0) stay proved.  With --trust-search P1 is proved and the W
     bound is checked with the enclosure.  r09 (F = u - sin u) has P5
     refuted with a kernel-checked witness (F' = 0 exactly at u = 2 pi) and
     every proof kernel-checked: exit 1 either way.  Design 1 is
@@ -434,7 +435,7 @@ def test_kernel_only_counts_what_the_kernel_rechecked(tmp_path):
                       f"f = {NESTED_LOGS}\n"
                       "gains = {'easy': dict(k1=0.1, k2=0.1, lam=0.1, Vmax=1.0, Wmax=2.0, Vr_max=0.5, Wr_max=0.5)}\n")
     designs = [ROOT / "designs/design1_jiang.py", ROOT / "tests/designs/r09_slope_zero.py", nested]
-    proc = run([*designs, "--format", "json", "--kernel-only"], tmp_path / "cache")
+    proc = run([*designs, "--format", "json"], tmp_path / "cache")
     one, slope, slow = json.loads(proc.stdout)
     assert one["exit_status"] == 0 and {v["verdict"] for v in one["properties"].values()} == {"proved"}
     verdicts = {p: v["verdict"] for p, v in slope["properties"].items()}
@@ -443,11 +444,12 @@ def test_kernel_only_counts_what_the_kernel_rechecked(tmp_path):
     assert slope["exit_status"] == 1
     verdicts = {p: v["verdict"] for p, v in slow["properties"].items()}
     assert verdicts["P1"] == "unknown" and {verdicts[p] for p in ("P2", "P4", "P5")} == {"proved"}
-    assert slow["properties"]["P1"]["reason"].startswith("not re-checked by the kernel (the search says proved: ")
+    assert slow["properties"]["P1"]["reason"].startswith(
+        "not re-checked by the kernel (the search says proved, which counts only with --trust-search: ")
     assert "P1" in slow["kernel"]["search"] and slow["gains"]["easy"]["W_ok"] is None
     assert slow["exit_status"] == 3 and proc.returncode == 1      # the batch: r09's refutation
-    searched = json.loads(run([nested, "--format", "json"], tmp_path / "cache").stdout)
-    assert searched["cached"] is False                            # not the --kernel-only entry
+    searched = json.loads(run([nested, "--format", "json", "--trust-search"], tmp_path / "cache").stdout)
+    assert searched["cached"] is False                            # not the default's entry
     assert searched["properties"]["P1"]["verdict"] == "proved" and searched["gains"]["easy"]["W_ok"] is True
     assert searched["kernel"] == slow["kernel"]                   # the same certificate, the same summary
     again = json.loads(run([nested, "--format", "json", "--kernel-only"], tmp_path / "cache").stdout)
@@ -462,7 +464,8 @@ def test_kernel_verdict_and_kf_checked():
     from uwmr_symbolic.verify import _kf_checked, kernel_verdict
     kernel = {"checked": ["P1"], "search": ["P3", "P5"]}
     v = kernel_verdict("P3", proved("F > 0"), kernel)
-    assert (v.status, v.reason) == ("unknown", "not re-checked by the kernel (the search says proved: F > 0)")
+    assert (v.status, v.reason) == ("unknown", "not re-checked by the kernel (the search says proved, which "
+                                  "counts only with --trust-search: F > 0)")
     assert kernel_verdict("P5", refuted("F' = 0 at 1", {"e1": 1}), kernel).status == "unknown"
     kept = proved("C^1")
     assert kernel_verdict("P1", kept, kernel) is kept

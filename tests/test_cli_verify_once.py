@@ -16,7 +16,7 @@ def test_codegen_and_simulate_share_one_verification(tmp_path, monkeypatch):
     calls = []
     real = verify_module.verify_design
 
-    def counting(path, timeout=verify_module.DEFAULT_TIMEOUT, kernel_only=False):
+    def counting(path, timeout=verify_module.DEFAULT_TIMEOUT, kernel_only=True):
         calls.append((str(path), timeout))
         return real(path, timeout=timeout, kernel_only=kernel_only)
 

@@ -471,18 +471,20 @@ def test_slope_vanishing_on_circles_is_kernel_checked(refuted_certs):
     """r09, F = u - sin(u), u = sqrt(1 + s^2) - 1, F' = (1 - cos u) s/sqrt(1 + s^2):
     P3 from G(u) = u - sin(u) > 0 (`sign_by_substitution`) and F >= u - 1 -> oo
     (`diverges_by_comparison`); F' >= 0 only weakly (0 where u = 2 pi n), enough
-    for P1 (with F' <= 2.3, 2 * 9/8 rounded up) and for P6 (h >= 0).  kf = 2,
-    a sup approached along u = (2n + 1) pi, is only enclosed: the kernel
-    checks [L, 2.3] with L = F'(p) >= 1.9999993 at the search's best point p
-    (F'(p) < 2, so L < 2).  A narrower enclosure claimed is refused."""
+    for P1 (with F' <= 2: on the tail in t = 1/s, 1 - cos u <= 2 and
+    s/sqrt(1 + s^2) <= 1) and for P6 (h >= 0).  kf = 2, a sup approached
+    along u = (2n + 1) pi, is only enclosed: the kernel checks [L, 2] with
+    L = F'(p) >= 1.9999993 at the search's best point p (F'(p) < 2, so
+    L < 2).  A narrower enclosure claimed is refused."""
     cert = refuted_certs["r09_slope_zero"]
     checks = _by_name(DC.check(cert))
     assert all(checks[p].kernel_checked for p in ("P1", "P2", "P3", "P4", "P6", "P7", "P8", "kf"))
     assert checks["P5"].refutation_checked
     kf = cert["properties"]["kf"]
-    assert kf["exact"] is None and parse(kf["upper"]) == sp.Rational(23, 10)
-    assert sp.Rational(19, 10) < parse(kf["lower"]) < 2
-    for key, value in (("upper", sp.Integer(2)), ("lower", sp.Integer(2)), ("lower", sp.Rational(23, 10))):
+    assert kf["exact"] is None and parse(kf["upper"]) == 2
+    assert parse(kf["lower"]) == sp.Rational(19999993, 10**7)
+    for key, value in (("upper", sp.Rational(39999999, 2 * 10**7)), ("lower", sp.Rational(19999994, 10**7)),
+                       ("lower", sp.Integer(2))):
         bad = copy.deepcopy(cert)
         bad["properties"]["kf"][key] = sp.srepr(value)
         with pytest.raises(DC.CertificateError, match="kf: the kernel's conclusions"):
@@ -500,7 +502,7 @@ def test_slope_vanishing_on_circles_is_kernel_checked(refuted_certs):
         assert (first["kind"], first["want"], first["strict"]) == ("sign", 1, False)
     kernel = cert["properties"]["P1"]["kernel"]
     upper = kernel["theorems"][kernel["conclusions"][3]]["claim"]
-    assert (upper["kind"], parse(upper["other"])) == ("sup_upper", sp.Rational(23, 10))    # 2 * 9/8 to 2 digits, up
+    assert (upper["kind"], parse(upper["other"])) == ("sup_upper", 2)    # the search's upper end, exactly
 
 
 def test_one_branch_prefix_links_only_what_it_says():
@@ -565,14 +567,16 @@ def test_refutation_witnesses_have_a_budget_of_their_own(tmp_path):
 
 
 def test_kernel_only_checks_bound_10_on_the_kernels_kf_enclosure():
-    """r09 under --kernel-only: kf is only enclosed, so bound (10) uses the
-    kernel's [L, U] = [1.9999993, 2.3]: the loose scenario (Wr_max 1, lam 0.5,
-    Vr_max 0.5, k2 0.25, Wmax 2) has W <= 1 + 0.25 * 2.3 + 0.25 = 1.825 <= 2:
-    it passes on U, so it is decided (the search's kf <= 2 gives 1.75)."""
+    """r09 (kf = 2, not attained), by default: kf is only enclosed, so bound
+    (10) uses the kernel's [L, U] = [1.9999993, 2] (8 digits outward of the
+    search's enclosure): the loose scenario (Wr_max 1, lam 0.5, Vr_max 0.5,
+    k2 0.25, Wmax 2) has W <= 1 + 0.25 U + 0.25 = 1.75 <= 2.  The search's
+    own lower end (--trust-search) is the tighter 1.99999934..."""
     from fractions import Fraction
-    report = verify_design(ROOT / "tests" / "designs" / "r09_slope_zero.py", kernel_only=True)
-    assert report.kf.upper == Fraction(23, 10) and Fraction(19, 10) < report.kf.lower < 2
+    report = verify_design(ROOT / "tests" / "designs" / "r09_slope_zero.py")
+    assert report.kf.kernel_bounds == (Fraction(19999993, 10**7), 2)
+    assert (report.kf.lower, report.kf.upper) == report.kf.kernel_bounds
     assert "kernel's enclosure" in report.kf.reason
-    assert report.gains["loose"].W_ok is True and report.gains["loose"].W_bound == sp.Rational(1825, 1000)
-    default = verify_design(ROOT / "tests" / "designs" / "r09_slope_zero.py")
-    assert default.kf.upper < Fraction(23, 10)          # the search's tighter enclosure, by default
+    assert report.gains["loose"].W_ok is True and report.gains["loose"].W_bound == sp.Rational(7, 4)
+    searched = verify_design(ROOT / "tests" / "designs" / "r09_slope_zero.py", kernel_only=False)
+    assert searched.kf.upper == 2 and Fraction(19999993, 10**7) < searched.kf.lower < 2

@@ -67,7 +67,7 @@ def _stopped(path: Path, timeout: float, seconds: float) -> Report:
     return Report(path, None, props, None, seconds=seconds, timed_out=True)
 
 
-def _verify_here(namespace: dict, path: Path, timeout: float, kernel_only: bool = False) -> Report:
+def _verify_here(namespace: dict, path: Path, timeout: float, kernel_only: bool = True) -> Report:
     """verify() in this thread: check the names, then P1-P8, kf, replay, gains."""
     start = time.monotonic()
     try:
@@ -81,7 +81,7 @@ def _verify_here(namespace: dict, path: Path, timeout: float, kernel_only: bool 
     return verify_loaded(design, timeout, start, kernel_only)
 
 
-def _verify_file_here(path, timeout: float, kernel_only: bool = False) -> Report:
+def _verify_file_here(path, timeout: float, kernel_only: bool = True) -> Report:
     from .verify import verify_design      # looked up at each call (tests may replace it)
     return verify_design(path, timeout=timeout, kernel_only=kernel_only)
 
@@ -89,8 +89,8 @@ def _verify_file_here(path, timeout: float, kernel_only: bool = False) -> Report
 def verify_job(job: dict) -> Report:
     """Run a job of `_run` in this thread (here, or in the worker process)."""
     if job["kind"] == "file":
-        return _verify_file_here(job["path"], job["timeout"], job.get("kernel_only", False))
-    return _verify_here(job["namespace"], job["path"], job["timeout"], job.get("kernel_only", False))
+        return _verify_file_here(job["path"], job["timeout"], job.get("kernel_only", True))
+    return _verify_here(job["namespace"], job["path"], job["timeout"], job.get("kernel_only", True))
 
 
 def _run(job: dict, worker: bool) -> Report:
@@ -198,7 +198,7 @@ def _in_worker(data: bytes, job: dict) -> Report | None:
 
 
 def verify(f: sp.Expr, params: Mapping | None = None, gains: Mapping | None = None, *, name: str | None = None,
-           timeout: float = DEFAULT_TIMEOUT, worker: bool = True, kernel_only: bool = False) -> Report:
+           timeout: float = DEFAULT_TIMEOUT, worker: bool = True, kernel_only: bool = True) -> Report:
     """Verify a candidate ``f(e1, e2)`` for the controller family (9).
 
     Decides P1-P8 (proved, refuted with a witness, or unknown), certifies
@@ -257,7 +257,7 @@ def verify(f: sp.Expr, params: Mapping | None = None, gains: Mapping | None = No
 
 
 def verify_file(path: str | os.PathLike, *, timeout: float = DEFAULT_TIMEOUT, worker: bool = True,
-                kernel_only: bool = False) -> Report:
+                kernel_only: bool = True) -> Report:
     """Verify a design file (Python defining ``f`` and optionally ``params``,
     ``gains``, ``name``, ``description``), as ``uwmr-verify FILE`` does.
 

@@ -46,7 +46,7 @@ def expand_paths(args: list[str]) -> list[str]:
 
 
 def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool = True,
-               kernel_only: bool = False) -> dict:
+               kernel_only: bool = True) -> dict:
     """Verify one file, or serve its result from the cache."""
     start = time.monotonic()
     loaded = load_with_limit(path, timeout, start)
@@ -54,7 +54,7 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
         return {**to_dict(loaded), "cached": False} if loaded.error is None else to_dict(loaded)
     design = loaded
     cache = ResultCache(cache_dir) if use_cache else None
-    key = (design_key(design) | ({"kernel_only": True} if kernel_only else {})) if use_cache else None
+    key = (design_key(design) | ({} if kernel_only else {"trust_search": True})) if use_cache else None
     if cache is not None:
         hit = cache.get(key, timeout)     # not if computed with less time while a limit expired
         if hit is not None and isinstance(hit.get("exit_status"), int) and rechecks(hit, design, kernel_only):
@@ -66,7 +66,7 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
     return {**result, "cached": False}
 
 
-def rechecks(hit: dict, design, kernel_only: bool = False) -> bool:
+def rechecks(hit: dict, design, kernel_only: bool = True) -> bool:
     """A cached result is used only if its design certificate re-checks in
     the kernel, is about this design's f, and agrees with the cached verdicts
     (each the certificate's, or, with `kernel_only`, unknown where the kernel
@@ -136,7 +136,7 @@ def _child(conn, path, timeout, cache_dir, use_cache, kernel_only):
 
 def check_files(paths: list[str], timeout: float, use_cache: bool = True, jobs: int | None = None,
                 cache_dir: str | None = None, progress: Progress | None = None,
-                kernel_only: bool = False) -> list[dict]:
+                kernel_only: bool = True) -> list[dict]:
     """Results for `paths`, in order.  Each file is checked in a process of
     its own (forked: SymPy and the verifier are already imported), at most
     `jobs` at a time; a process that outlives `hard_limit(timeout)` is killed

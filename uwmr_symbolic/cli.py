@@ -112,11 +112,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--check-certificate", nargs="+", metavar="CERT",
                    help="re-check certificate file(s) in the kernel without any search (in parallel, --jobs) and "
                         "say what each property rests on (exit 0 all check, 1 one does not, 2 unreadable)")
-    p.add_argument("--kernel-only", action="store_true",
-                   help="count only verdicts the trusted kernel re-checked: a proof or refutation resting on "
-                        "the search alone becomes 'unknown', a gain check needs a kernel-checked kf (exit 0 "
-                        "only when P1-P8 are kernel-checked and each gain check passes on a kernel-checked kf; "
-                        "for CI that trusts the kernel alone)")
+    p.add_argument("--trust-search", dest="kernel_only", action="store_false",
+                   help="also count verdicts the search proved or refuted but the trusted kernel could not "
+                        "re-check (by default they are 'unknown' and a gain check needs a kernel-checked kf); "
+                        "the report's kernel line names them")
+    p.add_argument("--kernel-only", dest="kernel_only", action="store_true", default=True,
+                   help="count only the kernel's verdicts (the default; kept for scripts)")
     p.add_argument("--version", action="version", version=f"uwmr-verify {__version__}")
     return p
 

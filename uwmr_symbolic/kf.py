@@ -311,7 +311,7 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
     dF = sp.diff(analysis.kernel_F, S)
     positive = analysis.slope_sign
     L, upper = _decimal(cert.lower, -1), None
-    for U, work in ((_decimal(cert.upper, 1), WORK // 12), (_decimal(cert.upper * Fraction(9, 8), 1, 2), WORK)):
+    for U, work in ((_decimal(cert.upper, 1), WORK // 3), (_decimal(cert.upper * Fraction(9, 8), 1, 2), WORK)):
         upper = sup_upper_theorem(dF, U, S, work=work) if positive is not None and L > 0 else None
         if upper is not None:
             break

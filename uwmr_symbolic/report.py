@@ -176,7 +176,8 @@ def kernel_text(k: dict) -> str:
     if not k["search"]:
         return f"kernel: re-checked {' '.join(k['checked'])} (every decided verdict)"
     checked = f"re-checked {' '.join(k['checked'])}; " if k["checked"] else ""
-    return f"kernel: {checked}resting on the search alone: {' '.join(k['search'])} (--certificate FILE says why)"
+    return (f"kernel: {checked}resting on the search alone: {' '.join(k['search'])} (counted only with "
+            f"--trust-search; --certificate FILE says why)")
 
 
 NO_GAINS = "no gain scenarios given, so bound (10) was not checked"

@@ -32,7 +32,7 @@ class Stats:
     truth_verdicts: dict = field(default_factory=lambda: {p: collections.Counter() for p in PROPS})
     true_known: int = 0
     true_proved: int = 0
-    true_kernel: int = 0        # of those, kernel-checked: proved with --kernel-only
+    true_kernel: int = 0        # of those, kernel-checked: proved by default
     proved_total: int = 0       # proved properties plus exact kf claims
     kernel_checked: int = 0     # of those, checked by the kernel with nothing left to the search
     refuted_total: int = 0
@@ -70,8 +70,9 @@ class Stats:
             f"refuted properties with a kernel-checked witness: {self.refutations_checked}/{self.refuted_total}",
             f"crashes / hangs / rejected: {self.count('crash')} / {self.count('hang')} / {self.count('unusable')}",
             f"hang/death only in a reused process (fine in a fresh one): {len(self.state_leaks)}",
-            f"true properties (known by construction) proved: {self.true_proved}/{self.true_known} = {share:.1%}",
-            f"  of which kernel-checked (proved with --kernel-only): {self.true_kernel}/{self.true_known}",
+            f"true properties (known by construction) proved by the search (--trust-search): "
+            f"{self.true_proved}/{self.true_known} = {share:.1%}",
+            f"  of which kernel-checked (proved by default): {self.true_kernel}/{self.true_known}",
             f"false properties refuted: {self.false_refuted}/{self.false_known} = {rshare:.1%}",
         ]
         for path, case, c in self.contradictions:

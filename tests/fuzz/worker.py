@@ -36,7 +36,8 @@ def _answer(path: str, timeout: float) -> dict:
     from uwmr_symbolic.report import _jsonable
     from uwmr_symbolic.verify import verify_design
     try:
-        r = verify_design(path, timeout=timeout)     # the search's verdicts; r.kernel: what the kernel checked
+        # the search's verdicts (--trust-search), so that they are checked too; r.kernel: what the kernel checked
+        r = verify_design(path, timeout=timeout, kernel_only=False)
     except BaseException as exc:    # the CLI reports this as exit 2, "internal error"
         return {"crash": f"{exc.__class__.__name__}: {exc}", "traceback": traceback.format_exc()[-4000:]}
     if r.error is not None:
