@@ -10,10 +10,11 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 
 #: f in rho = e1^2 + e2^2 that the search proves P1-P8 for and the kernel does not yet
-#: re-check in full (P1, P6, kf): three nested logs, whose F' = 2s/((1 + s^2)(1 + L1)(1 + L2)),
-#: L1 = log(1 + s^2), L2 = log(1 + L1), has two logs in its denominator (no kernel bound
-#: on the tail: `sign_by_log_bound` replaces one log at a time).
-NESTED_LOGS = "log(1 + log(1 + log(1 + rho)))"
+#: re-check in full (P1, P6, kf): four nested logs, F' = 2s/((1 + s^2)(1 + L1)(1 + L2)(1 + L3)),
+#: L1 = log(1 + s^2), L(k+1) = log(1 + Lk).  The bound of F' on the tail (its numerator over
+#: one denominator, the logs' terms signed one by one) is found for three logs, but for four
+#: it is not within the proposer's budget for one lemma.
+NESTED_LOGS = "log(1 + log(1 + log(1 + log(1 + rho))))"
 
 #: Seconds one verifier run may take in the verdict tests (override with UWMR_TEST_TIMEOUT).
 DESIGN_TIMEOUT = float(os.environ.get("UWMR_TEST_TIMEOUT", "900"))

@@ -62,7 +62,7 @@ def test_verify_in_a_worker_process_gives_the_same_report():
 
 
 def test_kernel_only_is_the_default_and_its_opposite_reaches_the_worker():
-    """Three nested logs (tests/_cli.py) have P1 proved by the search only
+    """Four nested logs (tests/_cli.py) have P1 proved by the search only
     (no kernel bound of F' on the tail).  By default (kernel_only=True) P1
     is unknown and the report inconclusive, P2 stays proved;
     kernel_only=False, in a worker process as here, counts the search's

@@ -417,11 +417,10 @@ def test_the_kernel_line_says_what_the_certificate_rechecks(tmp_path):
 
 def test_kernel_only_by_default_and_trust_search(tmp_path):
     """By default only the kernel's verdicts count (--kernel-only says it
-    again): f = log(1 + log(1 + log(1 + rho))) is proved
-    throughout by the search; its P1 needs a bound of F' = 2s/((1 + s^2)(1 +
-    L1)(1 + L2)) on the tail, and the kernel has none: the form in t = 1/s
-    is not defined at t = 0 and `sign_by_log_bound` replaces one log at a
-    time.  P1 then becomes unknown, bound (10) is not checked (no
+    again): four nested logs (tests/_cli.py) are proved throughout by the
+    search; P1 needs a bound of F' on the tail that the proposer does not
+    find for the kernel within its budget.  P1 then becomes unknown, bound
+    (10) is not checked (no
     kernel-checked kf: W undecided) and the exit status is 3, while P2, P4
     and P5 (F' > 0) stay proved.  With --trust-search P1 is proved and the W
     bound is checked with the enclosure.  r09 (F = u - sin u) has P5

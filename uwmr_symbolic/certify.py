@@ -201,9 +201,9 @@ class Prover:
     def prove(self, e, var, I, want, strict=True, depth=0, near=False):
         """`near`: I is a one-sided neighbourhood of its open end; no further
         splitting there, Taylor at that end instead."""
-        self.charge(CLAIM_UNITS)
         key = (e, var, I, want, strict, depth, near)
         if key not in self.memo:
+            self.charge(CLAIM_UNITS)        # a claim met before costs a look-up only
             self.memo[key] = _CYCLE
             try:
                 self.memo[key] = self._prove(e, var, I, want, strict, depth, near)
@@ -359,15 +359,13 @@ class Prover:
                 g, c, y, sign = diff
                 return _rule(K.sign_of_increasing_difference, sub(y - c, want * sign), expr=e, inner=g, c=c)
             try:
-                if any(_against(t, var, I, want) for t in e.args if t.has(var)):
-                    raise NoProof("a term of {} has the other sign", e)
+                groups = _sum_groups(e, var, I, want)
                 premises = []
-                for t in e.args:
-                    if t.has(var):
-                        try:
-                            premises.append(sub(t, want))
-                        except NoProof:
-                            premises.append(sub(t, want, False))
+                for t in groups:
+                    try:
+                        premises.append(sub(t, want))
+                    except NoProof:
+                        premises.append(sub(t, want, False))
                 return _rule(K.sign_of_sum, *premises, expr=e, want=want)
             except NoProof as exc:
                 if exc is self.spent or want < 0 or not e.has(*_INCREASING, sp.sin, sp.cos):
@@ -686,6 +684,23 @@ def _increasing_difference(e, var):
             except K.KernelError:
                 return None
     return None
+
+
+def _sum_groups(e, var, I, want) -> list:
+    """The parts of the sum e for `sign_of_sum`, each to have the sign want:
+    its terms, or, where a term or the constant has the other sign
+    somewhere, the rational terms together (9 s^2 - 20 s + 9, signed by
+    Sturm) and the others one by one (the logs' terms of a numerator put over
+    one denominator); NoProof when a term with the other sign is left alone."""
+    terms = [t for t in e.args if t.has(var)]
+    constant = sp.Add(*[t for t in e.args if not t.has(var)])
+    if not any(_against(t, var, I, want) for t in terms) and K._const_sign(constant) != -want:
+        return terms
+    rational = [t for t in e.args if t.is_rational_function(var)]
+    others = [t for t in terms if not t.is_rational_function(var)]
+    if not others or any(_against(t, var, I, want) for t in others) or _against(sp.Add(*rational), var, I, want):
+        raise NoProof("a term of {} has the other sign", e)
+    return [sp.Add(*rational), *others]
 
 
 def _against(t, var, I, want) -> bool:
