@@ -19,6 +19,11 @@ def render_simulation_text(sim) -> str:
     return render(sim)
 
 EPILOG = """\
+who decides:
+  a verdict counts when the trusted kernel (uwmr_symbolic/kernel) re-checked the search's
+  proof or witness; one resting on the search alone is reported unknown (--trust-search
+  counts it).
+
 certificates:
   --certificate OUT.json writes what the trusted kernel (uwmr_symbolic/kernel) has checked of
   each property; --check-certificate OUT.json re-checks it with no search.  A cached result
