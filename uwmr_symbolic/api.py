@@ -229,10 +229,11 @@ def verify(f: sp.Expr, params: Mapping | None = None, gains: Mapping | None = No
         limit even inside a long C call; ``False`` verifies in the calling
         thread (faster to start; limited by a watchdog thread, any thread).
     kernel_only:
-        Count only the verdicts the trusted kernel re-checked: a proof or
-        refutation resting on the search alone becomes ``unknown``, and
-        bound (10) needs a kernel-checked kf (``report.kernel`` says which
-        verdicts the kernel re-checked, in either mode).
+        Count only the verdicts the trusted kernel re-checked (default): a
+        proof or refutation resting on the search alone becomes
+        ``unknown``, and bound (10) needs a kernel-checked kf.  ``False``
+        also counts the search's (``--trust-search``); ``report.kernel``
+        says which verdicts the kernel re-checked, in either mode.
 
     Returns a `Report` (``exit_status``, ``properties``, ``kf``, ``gains``;
     ``to_dict()``, rich display in a notebook, ``plot_profile()``).

@@ -3,8 +3,9 @@ check the gains against bound (10).  Returns a `Report`.
 
 The search proposes; `design_certificate` re-checks the certificate of its
 verdicts in the trusted kernel (``Report.kernel`` says what it re-checked).
-With ``kernel_only`` (``--kernel-only``) only the kernel's verdicts count: a
-proof or refutation it did not re-check becomes "unknown".
+With ``kernel_only`` (the default; ``--trust-search`` turns it off) only the
+kernel's verdicts count: a proof or refutation it did not re-check becomes
+"unknown".
 
 This module is callable: ``from uwmr_symbolic import verify; verify(f, params,
 gains)`` is `uwmr_symbolic.api.verify` (see its documentation)."""
@@ -116,8 +117,9 @@ def verify_loaded(design: Design, timeout: float = DEFAULT_TIMEOUT, start: float
                   kernel_only: bool = True) -> Report:
     """Decide P1-P8, kf, the proof replay and the gains of a loaded design;
     `start` (time.monotonic()) is when the `timeout` began to run.  With
-    `kernel_only` only the kernel's verdicts count (`kernel_verdict`) and
-    bound (10) is checked only with a kernel-checked kf."""
+    `kernel_only` (the default) only the kernel's verdicts count
+    (`kernel_verdict`) and bound (10) is checked only with a kernel-checked
+    kf."""
     start = time.monotonic() if start is None else start
     with design_budget():       # the kernel proposer's work budget for this design
         return _verify(design, timeout, start, kernel_only)
