@@ -30,6 +30,7 @@ from .verdict import Verdict, unknown
 DEFAULT_TIMEOUT = 60.0
 
 EXIT_OK, EXIT_REFUTED, EXIT_UNUSABLE, EXIT_INCONCLUSIVE = 0, 1, 2, 3
+SEARCH_ONLY = "not re-checked by the kernel (the search says "     # the start of `kernel_verdict`'s reason
 
 
 @dataclass
@@ -153,8 +154,7 @@ def kernel_verdict(name: str, v: Verdict, kernel: dict) -> Verdict:
     it is unknown), else unknown, its reason saying what the search found."""
     if name not in kernel["search"]:
         return v
-    return unknown(f"not re-checked by the kernel (the search says {v.status}, which counts only "
-                   f"with --trust-search: {v.reason})")
+    return unknown(f"{SEARCH_ONLY}{v.status}, which counts only with --trust-search: {v.reason})")
 
 
 def _kf_checked(certificate: dict | None, kernel: dict) -> bool:
