@@ -449,11 +449,17 @@ def test_defined_for_positive():
               sp.log(1 + sp.asinh(s ** 2)), 1 / sp.tanh(s), 1 / (1 + sp.atan((s - 1) ** 2)), sp.sqrt(sp.erf(s)),
               1 / (1 + s * (s - 1) ** 2),                                  # s >= 0 because s > 0
               1 / (s + sp.sinh((s - 2) ** 2))):
-        assert d(e, s), e
+        assert d(e, s) == (), e
+    # a rational function over Q whose numerator and denominator keep one sign on (0, oo) (Sturm)
+    for e in (1 / (1 + (s ** 2 - 1) ** 3), sp.log(1 + (s ** 2 - 1) ** 3), 1 / ((s - 1) ** 2 + (s - 2) ** 2),
+              sp.sqrt(1 + (1 / s ** 2 - 1) ** 3), 1 / (2 - 3 * s + 2 * s ** 2), 1 / ((s - 1) ** 3 + 3 * s + 1),
+              sp.log((s ** 2 - s + 1) / (s ** 2 + 1)) ** 2,
+              sp.log((s - 1) ** 3 + 1), 1 / (s + 1 - 1 / (s + 1))):
+        assert d(e, s) == ("sympy-polys",), e
     # not (or not syntactically) defined for every s > 0
     for e in (1 / (s - 1), sp.log(s - 1), sp.sqrt(s - 1), 1 / sp.sin(s), sp.log(sp.sin(s) + 2), s ** s,
               sp.gamma(s), 1 / (1 - s), (s - 1) ** Q(1, 2), 1 / ((s - 1) ** 2), sp.log(-s), sp.log(s * (s - 1)),
-              1 / (s - 1) ** 3, sp.log(sp.Abs(s - 1)), 1 / ((s - 1) ** 2 + (s - 2) ** 2), sp.log(1 - sp.exp(s)),
+              1 / (s - 1) ** 3, sp.log(sp.Abs(s - 1)), sp.log(1 - sp.exp(s)),
               1 / (sp.exp(s) - 1), sp.sqrt(sp.log(s)), 1 / sp.Integer(-1) * sp.log(s - 2), sp.log(sp.log(s)),
               sp.exp(1 / (s - 1)), sp.cosh(sp.log(s - 1)), sp.log(sp.Pow(-1, Q(1, 3)) + s), 1 / (s + sp.Pow(-1, Q(1, 3))),
               s + sp.Pow(-1, Q(1, 3)), 1 / (s + (s - 1) ** 3), sp.log(s ** s), sp.log(s + (s - 1) ** 3 * (s - 2) ** 2),
@@ -462,8 +468,13 @@ def test_defined_for_positive():
               sp.log(1 + sp.log(s)),
               # G(w) for G odd increasing has w's sign: not positive where w may be <= 0
               1 / sp.tanh(s - 1), sp.log(sp.asinh(s - 1)), 1 / sp.atan((s - 1) ** 2), 1 / (1 + sp.sin(s) + sp.erf(s)),
-              sp.log(1 + sp.tanh(sp.log(s))), 1 / sp.cosh(s) ** 0 / sp.sinh(s - 2)):
-        assert not d(e, s), e
+              sp.log(1 + sp.tanh(sp.log(s))), 1 / sp.cosh(s) ** 0 / sp.sinh(s - 2),
+              # rational, but n or d vanishes or changes sign on (0, oo), or not over Q
+              1 / (s ** 2 - 3 * s + 2 - s ** 3), 1 / (2 - 3 * s + s ** 2),
+              1 / (s ** 3 - 3 * s ** 2 + 4 * s - 1), sp.sqrt((s ** 2 - 25) / (s - 5)), 1 / ((s - 2) ** 2 * (s + 1)),
+              sp.log(-1 - s ** 2), 1 / (s ** 2 - sp.pi * s + 3), sp.log((s ** 2 + 1) / (s - 3) + 4 - s / 10),
+              1 / ((1 - 2 * s) / (s - 3) ** 2 - 1 / (s - 3) ** 2 + 7), sp.log(-(s ** 2 + 1) / (s + 2))):
+        assert d(e, s) is None, e
 
 
 def tail(E, Et, Rv, ident_lo=0, ident_hi=oo, ident_hi_open=True):

@@ -837,11 +837,13 @@ def _relation_signs(P, var, I, prover):
     return signs
 
 
-def piecewise_sup_theorems(F, c, point, var, ends):
+def piecewise_sup_theorems(F, c, point, var, ends, lower=None):
     """kf = sup F' = c on (0, oo) for a Piecewise F (`ends` its boundaries):
     the conclusions of `sup_theorems` -- F' > 0, c - F' >= 0, sup F' >= c
     (the value at `point` or the limit at oo of the branch there, `widen`ed
-    to (0, oo)) -- then F and F' continuous on (0, oo); or (None, why)."""
+    to (0, oo)) -- then F and F' continuous on (0, oo); or (None, why).
+    `lower` < c: kf is only enclosed in [lower, c], and the last conclusion
+    is sup F' >= lower, by F'(point) >= lower."""
     dF = sp.diff(F, var)
     try:
         try:
@@ -849,6 +851,8 @@ def piecewise_sup_theorems(F, c, point, var, ends):
         except NoProof:
             whole, jumps = branches_pair(F, var, ends), True
         if not isinstance(sp.piecewise_fold(dF), sp.Piecewise):      # one formula for F' (F jumps by constants)
+            if lower is not None:
+                raise NoProof("kf of a Piecewise F whose F' is one formula is enclosed only")
             positive, why = sign_theorems(dF, var, 0, OO)
             theorems, why = sup_theorems(dF, c, point, var, positive[0]) if positive else (None, why)
             if theorems is None:
@@ -860,10 +864,10 @@ def piecewise_sup_theorems(F, c, point, var, ends):
         if upper is None:
             raise NoProof(why)
         upper = _rule(K.sup_upper_by_sign, upper, expr=dF, bound=c)
-        lower = _piecewise_lower(dF, c, point, var, ends)
+        below = _piecewise_lower(dF, c if lower is None else lower, point, var, ends)
         if not jumps:       # (where F jumps, the sup must stay on a piece: see design_certificate._link_kf)
-            lower = _rule(K.widen, lower, lo=0, hi=OO, lo_open=True, hi_open=True)
-        return [positive, upper, lower, *whole], ""
+            below = _rule(K.widen, below, lo=0, hi=OO, lo_open=True, hi_open=True)
+        return [positive, upper, below, *whole], ""
     except (NoProof, K.KernelError, Undefined) as exc:
         return None, str(exc)
 

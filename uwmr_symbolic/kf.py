@@ -280,7 +280,7 @@ def _with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
     when F' changes sign (`side` = +-1: kf = sup side*F'), of |F'| <= kf and
     sup side*F' >= kf; or the reason it has none."""
     pieces = analysis.profile.pieces
-    if cert.exact is None and side is None and len(pieces) == 1 and cert.point is not None:
+    if cert.exact is None and side is None and cert.point is not None:
         return _enclosure_with_kernel(cert, analysis)
     if cert.exact is None or cert.attained is None:
         cert.unchecked = ["kf: " + ("no exact value" if cert.exact is None else "attainment undecided")]
@@ -307,11 +307,26 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
     """cert, when kf = sup F' (F' >= 0) is only enclosed, with the kernel's
     theorems F' >= 0, F' <= U and sup F' >= L (its value at cert.point),
     where L <= lower and U >= upper are short decimals (U about 1/8 above
-    when the tight one is not shown cheaply): `kernel_bounds`."""
+    when the tight one is not shown cheaply): `kernel_bounds`.  For a
+    Piecewise F, `piecewise_sup_theorems` with the enclosure [L, U]."""
+    L = _decimal(cert.lower, -1)
+    tiers = ((_decimal(cert.upper, 1), WORK // 3), (_decimal(cert.upper * Fraction(9, 8), 1, 2), WORK))
+    if len(analysis.profile.pieces) > 1:
+        for U, _ in tiers:
+            theorems, why = piecewise_sup_theorems(analysis.F, U, cert.point, S, analysis.profile.ends, lower=L) \
+                if L > 0 else (None, "the lower end is not positive")
+            if theorems:
+                break
+        if not theorems:
+            cert.unchecked = [f"kf in [{float(cert.lower):.10g}, {float(cert.upper):.10g}] (kernel: {why})"]
+            return cert
+        cert.kernel_bounds = (Fraction(L.p, L.q), Fraction(U.p, U.q))
+        cert.kernel, cert.unchecked = theorems, []
+        return cert
     dF = sp.diff(analysis.kernel_F, S)
     positive = analysis.slope_sign
-    L, upper = _decimal(cert.lower, -1), None
-    for U, work in ((_decimal(cert.upper, 1), WORK // 3), (_decimal(cert.upper * Fraction(9, 8), 1, 2), WORK)):
+    upper = None
+    for U, work in tiers:
         upper = sup_upper_theorem(dF, U, S, work=work) if positive is not None and L > 0 else None
         if upper is not None:
             break

@@ -735,8 +735,8 @@ def _decided_by(signs, var, lo, hi, lo_open, hi_open):
 
 
 def _pieces(signs, expr, var, cuts):
-    """(P, e, the ends 0 < b1 < ... < bn < oo, the branches) for the rules
-    below: cuts finite, exact and increasing; on each open piece between the
+    """(P, e, the ends 0 < b1 < ... < bn < oo, the branches, the extra
+    assumptions) for the rules below: cuts finite, exact and increasing; on each open piece between the
     ends the branch that applies (`_branch`, by the sign theorems `signs`)
     is defined, hence continuous, for every x > 0 (`defined_for_positive`)."""
     e = _expr(expr, var)
@@ -745,9 +745,8 @@ def _pieces(signs, expr, var, cuts):
     ends = [*(_cuts(var, [0, *cuts]) if cuts else [sp.Integer(0)]), OO]
     _interval(var, 0, OO, True, True)
     branches = [_branch(pw, _decided_by(signs, var, a, b, True, True)) for a, b in zip(ends, ends[1:])]
-    for g in branches:
-        _need(defined_for_positive(g, var), lambda: f"{g} not shown defined for all {var} > 0")
-    return pw, e, ends, branches
+    extra = {a for g in branches for a in _defined(g, var)}
+    return pw, e, ends, branches, extra
 
 
 def piecewise_branches(*signs, expr, var, cuts):
@@ -755,8 +754,8 @@ def piecewise_branches(*signs, expr, var, cuts):
     between 0 < b1 < ... < bn < oo with one expression defined, hence
     continuous, at every x > 0 (`_pieces`); nothing is said at the cuts
     (P may jump there).  Claim kind "pieces" on (0, oo), other = the cuts."""
-    _, e, ends, _ = _pieces(signs, expr, var, cuts)
-    return Claim("pieces", _s(e), _s(var), _s(0), "oo", True, True, other=_s(sp.Tuple(*ends[1:-1])))
+    _, e, ends, _, extra = _pieces(signs, expr, var, cuts)
+    return Claim("pieces", _s(e), _s(var), _s(0), "oo", True, True, other=_s(sp.Tuple(*ends[1:-1]))), extra
 piecewise_branches = rule("arb", "sympy-core")(piecewise_branches)
 
 
@@ -767,7 +766,7 @@ def continuous_piecewise(*signs, expr, var, cuts):
     value (their differences at b are exactly 0: SymPy's evaluation, or
     polynomial arithmetic with pi and the like as symbols; defined at b by
     Arb).  Claim kind "continuous" on (0, oo)."""
-    pw, e, ends, branches = _pieces(signs, expr, var, cuts)
+    pw, e, ends, branches, _ = _pieces(signs, expr, var, cuts)
     for b, left, right in zip(ends[1:-1], branches, branches[1:]):
         at = _branch(pw, lambda d, want, strict: _sign_ok(_const_sign(d.subs(var, b)), want, strict))
         for g in (left, right):
@@ -815,8 +814,10 @@ def sign_by_rewrite(thm, ident, *, cuts=None):
     lo, hi = c.ends()
     _need(_within(ic, lo, hi, c.lo_open, c.hi_open), "the identity does not hold on all of I")
     var, lhs = c.x(), ic.e()
+    extra = ()
     if cuts is None:
-        _need((_lt(0, lo) or (lo == 0 and c.lo_open)) and defined_for_positive(lhs, var), "L not shown defined on I")
+        extra = defined_for_positive(lhs, var) if _lt(0, lo) or (lo == 0 and c.lo_open) else None
+        _need(extra is not None, "L not shown defined on I")
     else:
         cuts = _cuts(var, cuts)
         _need(not (c.lo_open or c.hi_open) and cuts[0] == lo and cuts[-1] == hi, "cuts must tile the closed I")
@@ -825,16 +826,22 @@ def sign_by_rewrite(thm, ident, *, cuts=None):
                 evaluate(lhs, var, u, v)
             except Undefined as exc:
                 raise KernelError(f"L undefined on [{u}, {v}]: {exc}") from None
-    return dataclasses.replace(c, expr=ic.expr)
+    return dataclasses.replace(c, expr=ic.expr), extra
 sign_by_rewrite = rule("arb", "sympy-core")(sign_by_rewrite)
 
 
-def defined_for_positive(e, x) -> bool:
-    """Syntactic sufficient check that e is defined (real, finite) at every
-    x > 0: a denominator, a log's argument or a real power's base must be
-    built from x, positive constants, +, *, exp, cosh, powers of such,
-    log w with w - 1 so built (log w > 0; >= 0 when w - 1 >= 0), and G(w)
-    with G odd increasing (G(w) > 0 where w > 0, >= 0 where w >= 0)."""
+def defined_for_positive(e, x) -> tuple | None:
+    """Sufficient check that e is defined (real, finite) at every x > 0:
+    a denominator, a log's argument or a real power's base must be built
+    from x, positive constants, +, *, exp, cosh, powers of such, log w with
+    w - 1 so built (log w > 0; >= 0 when w - 1 >= 0), and G(w) with G odd
+    increasing (G(w) > 0 where w > 0, >= 0 where w >= 0); or be a rational
+    function n/d of x over Q, itself so defined, with neither n nor d
+    vanishing on (0, oo) and n/d > 0 there (`sign_by_sturm`).  Returns the
+    extra assumptions the check rests on (("sympy-polys",) when a Sturm
+    count was used, else ()), or None when definedness is not shown."""
+    polys = []
+
     def pos(u):
         if u == x:
             return True
@@ -844,16 +851,32 @@ def defined_for_positive(e, x) -> bool:
             except KernelError:
                 return False
         if u.is_Add:
-            return all(pos(a) or nonneg(a) for a in u.args) and any(pos(a) for a in u.args)
-        if u.is_Mul:
-            return all(pos(a) for a in u.args)
-        if u.is_Pow:
-            return u.exp.is_Rational and pos(u.base)
-        if isinstance(u, (sp.exp, sp.cosh)):
+            ok = all(pos(a) or nonneg(a) for a in u.args) and any(pos(a) for a in u.args)
+        elif u.is_Mul:
+            ok = all(pos(a) for a in u.args)
+        elif u.is_Pow:
+            ok = u.exp.is_Rational and pos(u.base)
+        elif isinstance(u, (sp.exp, sp.cosh)):
             return defined(u.args[0])
-        if isinstance(u, sp.log):               # log w > 0 where w - 1 > 0
+        elif isinstance(u, sp.log):             # log w > 0 where w - 1 > 0
             return pos(u.args[0] - 1)
-        return isinstance(u, _ODD_INCREASING) and pos(u.args[0])     # G(w) > G(0) = 0 where w > 0
+        else:
+            return isinstance(u, _ODD_INCREASING) and pos(u.args[0])     # G(w) > G(0) = 0 where w > 0
+        return ok or positive_rational(u)
+
+    def positive_rational(u):                   # u = n/d over Q, n and d without roots in (0, oo)
+        if not (u.is_rational_function(x) and defined(u)):
+            return False
+        signs = []
+        for p in sp.fraction(sp.cancel(u)):
+            try:
+                lead = sp.Poly(p, x).LC()
+                sign_by_sturm(expr=p, var=x, lo=0, hi=OO, lo_open=True, hi_open=True, want=1 if lead > 0 else -1)
+            except (KernelError, sp.PolynomialError, TypeError):
+                return False
+            signs.append(lead > 0)
+        polys.append(signs[0] == signs[1])
+        return polys[-1]
 
     def nonneg(u):
         if pos(u):
@@ -884,7 +907,17 @@ def defined_for_positive(e, x) -> bool:
         if isinstance(u, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.sin, sp.cos, sp.Abs)):
             return defined(u.args[0])
         return False
-    return defined(_sym(e))
+    if not defined(_sym(e)):
+        return None
+    return ("sympy-polys",) if any(polys) else ()
+
+
+def _defined(e, var) -> tuple:
+    """The extra assumptions of `defined_for_positive(e, var)`; KernelError
+    when e is not shown defined at every var > 0."""
+    how = defined_for_positive(e, var)
+    _need(how is not None, lambda: f"{e} not shown defined for all {var} > 0")
+    return how
 
 
 def _number_ok(u):
@@ -918,10 +951,11 @@ def sign_on_tail(tail, ident, *, expr, var, R):
     ia, ib = ic.ends()
     _need((ia == 0 or _lt(ia, 0)) and (_lt(1 / R, ib) or (ib == 1 / R and not ic.hi_open)),
           "the identity must hold on (0, 1/R]")
-    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
-    _need(defined_for_positive(e.subs(var, 1 / t), t), "E(1/t) not shown defined for t > 0")
+    extra = _defined(e, var)
+    at_t = defined_for_positive(e.subs(var, 1 / t), t)
+    _need(at_t is not None, "E(1/t) not shown defined for t > 0")
     _interval(var, R, OO, False, True)
-    return _sign_claim(e, var, R, OO, False, True, tc.want, tc.strict)
+    return _sign_claim(e, var, R, OO, False, True, tc.want, tc.strict), {*extra, *at_t}
 sign_on_tail = rule("sympy-core")(sign_on_tail)
 
 
@@ -962,14 +996,14 @@ def sign_by_monotone(deriv, *, expr, var, R):
     d = deriv.claim
     _need((d.expr, d.var, d.lo, d.lo_open, d.hi) == (_s(sp.diff(e, var)), _s(var), _s(R), False, "oo"),
           "premise must be a sign of E' on [R, oo)")
-    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    extra = _defined(e, var)
     try:
         at_r = evaluate(e, var, R, R, bits=256)
     except Undefined as exc:
         raise KernelError(f"E undefined at {R}: {exc}") from None
     _need(at_r.positive() if d.want > 0 else at_r.negative(), "E(R) has not the sign of E'")
     _interval(var, R, OO, False, True)
-    return _sign_claim(e, var, R, OO, False, True, d.want, True)
+    return _sign_claim(e, var, R, OO, False, True, d.want, True), extra
 sign_by_monotone = rule("arb", "sympy-core", "sympy-diff")(sign_by_monotone)
 
 
@@ -1226,9 +1260,9 @@ def continuous_on_positive(*, expr, var):
     log, cosh, sin, cos, tanh, atan, asinh, sinh, erf, Abs) is continuous
     where defined.  Claim kind "continuous" on (0, oo)."""
     e = _expr(expr, var)
-    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    extra = _defined(e, var)
     _interval(var, 0, OO, True, True)
-    return Claim("continuous", _s(e), _s(var), _s(0), "oo", True, True)
+    return Claim("continuous", _s(e), _s(var), _s(0), "oo", True, True), extra
 continuous_on_positive = rule("sympy-core")(continuous_on_positive)
 
 
@@ -1251,8 +1285,7 @@ def diverges_by_growth(lower, *, expr, var, R, rate, k):
     c = lower.claim
     _need((c.expr, c.var, c.lo, c.lo_open, c.hi, c.want) == (_s(g - k), _s(var), _s(R), False, "oo", 1),
           lambda: f"premise must be {g - k} >= 0 on [{R}, oo)")
-    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
-    return Claim("diverges", _s(e), _s(var), _s(R), "oo", False, True)
+    return Claim("diverges", _s(e), _s(var), _s(R), "oo", False, True), _defined(e, var)
 diverges_by_growth = rule("arb", "sympy-core", "sympy-diff")(diverges_by_growth)
 
 
@@ -1269,8 +1302,7 @@ def diverges_through_increasing(div, *, expr):
     a, g = e.as_independent(var, as_Add=True)
     _need(_number_ok(a) and unbounded_increasing(g) and c.expr == _s(g.args[0]),
           lambda: f"{e} is not a + G(Y) with the premise about Y")
-    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
-    return dataclasses.replace(c, expr=_s(e))
+    return dataclasses.replace(c, expr=_s(e)), _defined(e, var)
 diverges_through_increasing = rule("sympy-core")(diverges_through_increasing)
 
 
@@ -1292,9 +1324,9 @@ def diverges_by_comparison(lower, div, *, expr):
     e = _expr(expr, var)
     _need((c.var, c.hi, c.want) == (d.var, "oo", 1) and c.expr == _s(e - d.e()),
           "first premise must be E - G >= 0 on <R, oo), G the diverging expression")
-    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
+    extra = _defined(e, var)
     (a, _), (b, _) = c.ends(), d.ends()
-    return Claim("diverges", _s(e), _s(var), _s(b if _lt(a, b) else a), "oo", False, True)
+    return Claim("diverges", _s(e), _s(var), _s(b if _lt(a, b) else a), "oo", False, True), extra
 diverges_by_comparison = rule("sympy-core")(diverges_by_comparison)
 
 
@@ -1359,7 +1391,7 @@ def _tail_limit(ident, expr, var, width):
     """(E, c) with c = lim E(s) as s -> oo: the identity E_t(t) = E(1/t) on
     a t-interval containing (0, w]; E_t defined (hence continuous) on the
     closed [0, w] (Arb range evaluation); c = E_t(0) exactly (SymPy's value,
-    Arb agrees); E defined for all s > 0."""
+    Arb agrees); E defined for all s > 0 (and the extra assumptions of that)."""
     _need(ident.claim.kind == "identity", "premise must be an identity")
     ic = ident.claim
     t = ic.x()
@@ -1378,28 +1410,27 @@ def _tail_limit(ident, expr, var, width):
     except Undefined as exc:
         raise KernelError(f"E_t not defined on [0, {w}]: {exc}") from None
     _need(at0.hull().contains(0), lambda: f"Arb disagrees with E_t(0) = {c}")
-    _need(defined_for_positive(e, var), lambda: f"{e} not shown defined for all {var} > 0")
-    return e, c
+    return e, c, _defined(e, var)
 
 
 def sup_lower_by_limit(ident, *, expr, var, width, bound, lo, lo_open):
     """sup over <lo, oo) of E >= c where c = lim E(s) as s -> oo (the premises
     of `_tail_limit`), c the given bound exactly, lo >= 0: 1/t lies in
     <lo, oo) for small t, where E(1/t) = E_t(t) -> c."""
-    e, c = _tail_limit(ident, expr, var, width)
+    e, c, extra = _tail_limit(ident, expr, var, width)
     _need(c - _number(bound) == 0, lambda: f"E_t(0) is not exactly {bound}")
     lo = _number(lo)
     _interval(var, lo, OO, lo_open, True)
     _need(lo == 0 or _lt(0, lo), "lo >= 0")
-    return Claim("sup_lower", _s(e), _s(var), _s(lo), "oo", lo_open, True, other=_s(c))
+    return Claim("sup_lower", _s(e), _s(var), _s(lo), "oo", lo_open, True, other=_s(c)), extra
 sup_lower_by_limit = rule("arb", "sympy-core")(sup_lower_by_limit)
 
 
 def limit_at_infinity(ident, *, expr, var, width):
     """E(s) -> c as s -> oo (the premises of `_tail_limit`).  Claim kind
     "limit_oo" with other = c."""
-    e, c = _tail_limit(ident, expr, var, width)
-    return Claim("limit_oo", _s(e), _s(var), hi="oo", other=_s(c))
+    e, c, extra = _tail_limit(ident, expr, var, width)
+    return Claim("limit_oo", _s(e), _s(var), hi="oo", other=_s(c)), extra
 limit_at_infinity = rule("arb", "sympy-core")(limit_at_infinity)
 
 
