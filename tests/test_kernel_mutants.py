@@ -520,7 +520,7 @@ def test_sign_on_tail_claims_and_messages():
     pos5 = K.sign_of_product(sturm(1 + 5 * t, t, 0, Q(1, 4), lo_open=True), sturm(t, t, 0, Q(1, 4), lo_open=True),
                              expr=Et5)
     assert why(K.sign_on_tail, pos5, id5, expr=E5, var=s, R=4 * I1) == \
-        "(s**2 - 25)/(s - 5) not shown defined for all s > 0"
+        "(s**2 - 25)/(s - 5) not shown defined on (4, oo)"
 
 
 def test_sign_by_substitution_claims_and_messages():
@@ -594,9 +594,9 @@ def test_sign_by_monotone_claims_and_messages():
     dH = K.sign_of_product(sturm(s, s, 2, oo, hi_open=True), expr=sp.diff(H, s))
     assert why(M, dH, expr=H, var=s, R=I2) == "E(R) has not the sign of E'"
     assert why(M, dE, expr=E - 1, var=s, R=I2) == "E(R) has not the sign of E'"      # -1/s < 0 at 2
-    L = sp.log(s - 1) + 1
+    L = sp.log(s - 1) + 1                   # defined on (1, oo) only: enough on [2, oo)
     dL = K.sign_of_product(sturm(s - 1, s, 2, oo, hi_open=True), expr=sp.diff(L, s))
-    assert why(M, dL, expr=L, var=s, R=I2) == "log(s - 1) + 1 not shown defined for all s > 0"
+    assert M(dL, expr=L, var=s, R=I2).claim == sign(L, s, 2, oo, hi_open=True)
     ident = exact_identity(s, s, s, 2, oo, hi_open=True)
     assert why(M, ident, expr=E, var=s, R=I2) == "premise is a identity theorem, not a sign theorem"
 
@@ -792,12 +792,13 @@ def test_continuous_at_end_and_diverges_by_growth_claims_and_messages():
     assert why(D, xs, expr=s ** 2, var=s, R=I1, rate="linear", k=I2) == "premise must be 2*s - 2 >= 0 on [1, oo)"
     # log(s - 1) + s**2 grows, but is not defined for every s > 0
     L = sp.log(s - 1) + s ** 2
-    # log(s - 1) + s**2 + 2s: E' - 2 = 2s + 1/(s - 1) > 0 on [2, oo), but E is not defined on (0, 1]
+    # log(s - 1) + s**2 + 2s: E' - 2 = 2s + 1/(s - 1) > 0 on [2, oo); E is defined there (not on (0, 1])
     L = sp.log(s - 1) + s ** 2 + 2 * s
     pl = K.sign_of_sum(K.sign_of_product(sturm(s, s, 2, oo, hi_open=True), expr=2 * s),
                        K.sign_of_product(sturm(s - 1, s, 2, oo, hi_open=True), expr=1 / (s - 1)),
                        expr=2 * s + 1 / (s - 1), want=1)
-    assert why(D, pl, expr=L, var=s, R=I2, rate="linear", k=I2) == f"{L} not shown defined for all s > 0"
+    assert D(pl, expr=L, var=s, R=I2, rate="linear", k=I2).claim == Claim("diverges", R(L), R(s), R(I2), "oo",
+                                                                          False, True)
     ident = exact_identity(s, s, s, 1, oo, hi_open=True)
     assert why(D, ident, expr=s ** 2, var=s, R=I1, rate="linear", k=I2) == \
         "premise is a identity theorem, not a sign theorem"
@@ -907,11 +908,15 @@ def test_sup_lower_by_limit_and_sup_scaled_claims_and_messages():
     i2 = ident(lhs=1 / t, rhs=1 / t)
     assert why(L, i2, expr=s, var=s, width=half, bound=I1, lo=I0, lo_open=True) == \
         "E_t not defined on [0, 1/2]: division by an interval that may contain 0"
-    # E = 1 + 1/(s - 1): E(1/t) = 1/(1 - t) -> 1, but E is undefined at s = 1
+    # E = 1 + 1/(s - 1): E(1/t) = 1/(1 - t) -> 1; E is undefined at s = 1, but defined for s > 1/w = 2
     E1 = 1 + 1 / (s - 1)
     i3 = ident(lhs=1 / (1 - t), rhs=E1.subs(s, 1 / t))
-    assert why(L, i3, expr=E1, var=s, width=half, bound=I1, lo=I0, lo_open=True) == \
-        f"{E1} not shown defined for all s > 0"
+    assert L(i3, expr=E1, var=s, width=half, bound=I1, lo=I0, lo_open=True).claim.other == R(I1)
+    # E = 1 + (s^2 - 25)/((s - 5) s^2): E(1/t) = 1 + t + 5t^2 where both are defined, but E is undefined at s = 5 > 2
+    E5 = 1 + (s ** 2 - 25) / ((s - 5) * s ** 2)
+    i5 = ident(lhs=1 + t + 5 * t ** 2, rhs=E5.subs(s, 1 / t))
+    assert why(L, i5, expr=E5, var=s, width=half, bound=I1, lo=I0, lo_open=True) == \
+        f"{E5} not shown defined on (2, oo)"
     # lo must be >= 0: for s > 0 the interval check says so, for a real x the rule does
     assert why(L, idt, expr=E, var=s, width=half, bound=I1, lo=-I1, lo_open=True) == \
         "s > 0 assumed: interval must lie in (0, oo)"
@@ -1381,7 +1386,9 @@ def test_diverges_through_increasing_messages():
     half = K.sign_by_sturm(expr=Q(1, 2), var=s, lo=sp.Integer(3), hi=oo, lo_open=False, hi_open=True, want=1,
                            strict=False)
     shifted = K.diverges_by_growth(half, expr=s - 2, var=s, R=sp.Integer(3), rate="linear", k=Q(1, 2))
-    assert why(D, shifted, expr=sp.log(s - 2)) == "log(s - 2) not shown defined for all s > 0"
+    assert D(shifted, expr=sp.log(s - 2)).claim == Claim("diverges", R(sp.log(s - 2)), R(s), R(sp.Integer(3)), "oo", False, True)
+    below = K.diverges_by_growth(half, expr=s - 4, var=s, R=sp.Integer(3), rate="linear", k=Q(1, 2))
+    assert why(D, below, expr=sp.log(s - 4)) == "log(s - 4) not shown defined on (3, oo)"
 
 
 def test_limit_rules_claims_and_messages():

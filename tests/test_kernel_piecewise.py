@@ -208,9 +208,16 @@ def test_continuous_piecewise_refuses_jumps_points_and_gaps():
     assert why(K.continuous_piecewise, *eq, expr=D, var=s, cuts=[sp.Integer(1)]) == "the branches differ at 1"
     # the cut left out: on (0, oo) the condition changes truth and is not decided
     assert why(K.continuous_piecewise, *facts, expr=C, var=s, cuts=[]).startswith("condition")
-    # a branch that is not defined for every s > 0 (log(s - 1) near 0)
-    L = sp.Piecewise((sp.log(s + 1), s ** 2 <= 1), (sp.log(s - Q(1, 2)) + sp.log(4), True))
-    assert "not shown defined" in why(K.continuous_piecewise, *facts, expr=L, var=s, cuts=[sp.Integer(1)])
+    # a branch defined on its closed piece [1, oo) only: enough (log(2s - 1) + log 2 = log 2 at 1)
+    L = sp.Piecewise((sp.log(s + 1), s ** 2 <= 1), (sp.log(2 * s - 1) + sp.log(2), True))
+    assert K.continuous_piecewise(*facts, expr=L, var=s, cuts=[sp.Integer(1)]).claim.kind == "continuous"
+    # a branch undefined inside its piece (log(s - 3/2) on (1, 3/2]), or at the cut only (log(s - 1))
+    L2 = sp.Piecewise((sp.log(s + 1), s ** 2 <= 1), (sp.log(s - Q(3, 2)) + sp.log(4), True))
+    assert why(K.continuous_piecewise, *facts, expr=L2, var=s, cuts=[sp.Integer(1)]) == \
+        f"{L2.args[1][0]} not shown defined on (1, oo)"
+    L3 = sp.Piecewise((sp.log(s + 1), s ** 2 <= 1), (sp.log(s - 1) + sp.log(4), True))
+    assert why(K.continuous_piecewise, *facts, expr=L3, var=s, cuts=[sp.Integer(1)]).startswith(
+        f"{L3.args[1][0]} undefined at 1")
 
 
 def test_piecewise_branches_allows_jumps_but_not_undefined_branches():
@@ -223,8 +230,11 @@ def test_piecewise_branches_allows_jumps_but_not_undefined_branches():
     assert th.claim == K.Claim("pieces", sp.srepr(J), sp.srepr(s), "Integer(0)", "oo", True, True,
                                other=sp.srepr(sp.Tuple(1)))
     assert why(K.piecewise_branches, *facts, expr=J, var=s, cuts=[]).startswith("condition")
-    L = sp.Piecewise((sp.log(s + 1), s ** 2 <= 1), (sp.log(s - Q(1, 2)) + sp.log(4), True))
-    assert "not shown defined" in why(K.piecewise_branches, *facts, expr=L, var=s, cuts=[sp.Integer(1)])
+    L = sp.Piecewise((sp.log(s + 1), s ** 2 <= 1), (sp.log(s - Q(3, 2)) + sp.log(4), True))
+    assert "not shown defined on (1, oo)" in why(K.piecewise_branches, *facts, expr=L, var=s, cuts=[sp.Integer(1)])
+    # the branch beyond 1 is unbounded near the cut: refused, though P may jump there
+    U = sp.Piecewise((s, s ** 2 <= 1), (1 / (s - 1), True))
+    assert why(K.piecewise_branches, *facts, expr=U, var=s, cuts=[sp.Integer(1)]).startswith("1/(s - 1) undefined at 1")
     assert why(K.piecewise_branches, *facts, expr=J, var=s, cuts=[sp.Integer(2), sp.Integer(1)]) == \
         "cut points not increasing: 2, 1"
     assert why(K.piecewise_branches, *facts, expr=s + 1, var=s, cuts=[sp.Integer(1)]).endswith("is not a Piecewise")

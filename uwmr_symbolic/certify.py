@@ -88,16 +88,23 @@ _design = None      # the enclosing design's Budget, if any
 
 
 @contextmanager
-def design_budget(work=DESIGN_WORK):
+def design_budget(f=None):
     """The proposer's budget for one design's lemmas (`verify.verify_loaded`):
     the kernel certification of a design costs at most about DESIGN_WORK units
-    beyond its search, whatever it fails to prove."""
+    per branch of the Piecewise in f (`branches`; at least one) beyond its
+    search, whatever it fails to prove."""
     global _design
-    old, _design = _design, Budget(work)
+    old, _design = _design, Budget(DESIGN_WORK * branches(f))
     try:
         yield
     finally:
         _design = old
+
+
+def branches(f) -> int:
+    """How many branches the Piecewise in f have together (1 without any):
+    each lemma about a Piecewise is one lemma per piece."""
+    return max(1, sum(len(p.args) for p in f.atoms(sp.Piecewise))) if isinstance(f, sp.Basic) else 1
 
 
 class NoProof(Exception):
@@ -792,19 +799,19 @@ def _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work):
         return None, str(exc)
 
 
-def piecewise_sign_theorem(P, ends, var, want=1, strict=True):
+def piecewise_sign_theorem(P, ends, var, want=1, strict=True, work=2 * WORK):
     """want*P > 0 (>= 0 if not strict) on (0, oo) for P a Piecewise or an
     expression of one, as one kernel theorem, or (None, why).  `ends`: the
     search's boundaries 0 < b1 < ... < oo.  On each open piece the branch
     that applies is signed (`on_branch`); `join_at_point` joins the pieces
-    through P's value at each boundary."""
+    through P's value at each boundary.  Each piece is a lemma of its own,
+    with its own budget `work` (its relations' signs included)."""
     if not isinstance(sp.piecewise_fold(P), sp.Piecewise):
         return None, f"{P} is not a Piecewise"
-    prover = Prover(WORK)
     try:
         whole = None
         for lo, hi in zip(ends, ends[1:]):
-            I = (lo, hi, True, True)
+            I, prover = (lo, hi, True, True), Prover(work)
             th = on_branch(P, var, I, prover, lambda g: prover.prove(g, var, I, want, strict))
             whole = th if whole is None else _rule(K.join_at_point, whole, th)
         return whole, ""
@@ -837,13 +844,14 @@ def _relation_signs(P, var, I, prover):
     return signs
 
 
-def piecewise_sup_theorems(F, c, point, var, ends, lower=None):
+def piecewise_sup_theorems(F, c, point, var, ends, lower=None, work=2 * WORK):
     """kf = sup F' = c on (0, oo) for a Piecewise F (`ends` its boundaries):
     the conclusions of `sup_theorems` -- F' > 0, c - F' >= 0, sup F' >= c
     (the value at `point` or the limit at oo of the branch there, `widen`ed
     to (0, oo)) -- then F and F' continuous on (0, oo); or (None, why).
     `lower` < c: kf is only enclosed in [lower, c], and the last conclusion
-    is sup F' >= lower, by F'(point) >= lower."""
+    is sup F' >= lower, by F'(point) >= lower.  `work`: the budget of each
+    piece's sign lemmas."""
     dF = sp.diff(F, var)
     try:
         try:
@@ -858,8 +866,8 @@ def piecewise_sup_theorems(F, c, point, var, ends, lower=None):
             if theorems is None:
                 raise NoProof(why)
             return [*theorems, *whole], ""
-        positive, why = piecewise_sign_theorem(dF, ends, var, strict=not jumps)
-        upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False)
+        positive, why = piecewise_sign_theorem(dF, ends, var, strict=not jumps, work=work)
+        upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False, work=work)
                       if positive else (None, why))
         if upper is None:
             raise NoProof(why)

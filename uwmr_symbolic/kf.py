@@ -312,9 +312,9 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
     L = _decimal(cert.lower, -1)
     tiers = ((_decimal(cert.upper, 1), WORK // 3), (_decimal(cert.upper * Fraction(9, 8), 1, 2), WORK))
     if len(analysis.profile.pieces) > 1:
-        for U, _ in tiers:
-            theorems, why = piecewise_sup_theorems(analysis.F, U, cert.point, S, analysis.profile.ends, lower=L) \
-                if L > 0 else (None, "the lower end is not positive")
+        for U, work in tiers:
+            theorems, why = piecewise_sup_theorems(analysis.F, U, cert.point, S, analysis.profile.ends, lower=L,
+                                                   work=work) if L > 0 else (None, "the lower end is not positive")
             if theorems:
                 break
         if not theorems:

@@ -122,7 +122,7 @@ def verify_loaded(design: Design, timeout: float = DEFAULT_TIMEOUT, start: float
     (`kernel_verdict`) and bound (10) is checked only with a kernel-checked
     kf."""
     start = time.monotonic() if start is None else start
-    with design_budget():       # the kernel proposer's work budget for this design
+    with design_budget(design.f):       # the kernel proposer's work budget for this design
         return _verify(design, timeout, start, kernel_only)
 
 
@@ -214,7 +214,7 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Tr
         proof = {"ok": False, "steps": {"replay": {"ok": False, "detail": "timed out"}}}
         timed_out = True
     try:
-        with time_limit(max(deadline - time.monotonic(), 5.0)), design_budget():   # the witnesses' own budget
+        with time_limit(max(deadline - time.monotonic(), 5.0)), design_budget(design.f):   # the witnesses' own budget
             certificate, kernel = _kernel_check(Report(path, design, props, kf))
     except TimeLimit:
         certificate, kernel = None, {"checked": [], "search": [p for p, v in props.items() if v.proved or v.refuted],

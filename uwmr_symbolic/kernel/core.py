@@ -21,7 +21,7 @@ Claim semantics (I: an interval of the real line, ends exact):
 * continuous: E is defined and continuous at every point of (lo, hi);
 * pieces:     on each open interval between lo, the cut points listed in
               other and hi, E equals an expression defined and continuous
-              at every x > 0;
+              on the interval's closure in (0, oo);
 * diverges:   E is defined on [lo, oo) and E(x) -> +oo as x -> oo.
 
 Assumptions a theorem rests on are named strings: "arb" (python-flint's
@@ -34,6 +34,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import json
+import math
 from dataclasses import dataclass, field
 
 import sympy as sp
@@ -736,24 +737,33 @@ def _decided_by(signs, var, lo, hi, lo_open, hi_open):
 
 def _pieces(signs, expr, var, cuts):
     """(P, e, the ends 0 < b1 < ... < bn < oo, the branches, the extra
-    assumptions) for the rules below: cuts finite, exact and increasing; on each open piece between the
-    ends the branch that applies (`_branch`, by the sign theorems `signs`)
-    is defined, hence continuous, for every x > 0 (`defined_for_positive`)."""
+    assumptions) for the rules below: cuts finite, exact and increasing; on
+    each open piece between the ends the branch that applies (`_branch`, by
+    the sign theorems `signs`) is defined, hence continuous, on that piece
+    (`defined_for_positive`) and at its finite ends other than 0 (Arb), so
+    on the piece's closure in (0, oo)."""
     e = _expr(expr, var)
     pw = _folded(e)
     _need(isinstance(cuts, list), "cuts must be a list")
     ends = [*(_cuts(var, [0, *cuts]) if cuts else [sp.Integer(0)]), OO]
     _interval(var, 0, OO, True, True)
     branches = [_branch(pw, _decided_by(signs, var, a, b, True, True)) for a, b in zip(ends, ends[1:])]
-    extra = {a for g in branches for a in _defined(g, var)}
+    extra = set()
+    for g, a, b in zip(branches, ends, ends[1:]):
+        extra.update(_defined(g, var, a, b))
+        for end in {a, b} - {0, OO}:
+            try:
+                evaluate(g, var, end, end, bits=256)
+            except Undefined as exc:
+                raise KernelError(f"{g} undefined at {end}: {exc}") from None
     return pw, e, ends, branches, extra
 
 
 def piecewise_branches(*signs, expr, var, cuts):
     """P (a Piecewise, or an expression of one) agrees on each open piece
     between 0 < b1 < ... < bn < oo with one expression defined, hence
-    continuous, at every x > 0 (`_pieces`); nothing is said at the cuts
-    (P may jump there).  Claim kind "pieces" on (0, oo), other = the cuts."""
+    continuous, on that piece's closure in (0, oo) (`_pieces`); nothing is
+    said of P at the cuts (P may jump there).  Claim kind "pieces" on (0, oo), other = the cuts."""
     _, e, ends, _, extra = _pieces(signs, expr, var, cuts)
     return Claim("pieces", _s(e), _s(var), _s(0), "oo", True, True, other=_s(sp.Tuple(*ends[1:-1]))), extra
 piecewise_branches = rule("arb", "sympy-core")(piecewise_branches)
@@ -764,18 +774,18 @@ def continuous_piecewise(*signs, expr, var, cuts):
     (0, oo): each open piece as in `piecewise_branches`, and at each cut b
     the branches of both sides and the branch that applies at b have one
     value (their differences at b are exactly 0: SymPy's evaluation, or
-    polynomial arithmetic with pi and the like as symbols; defined at b by
-    Arb).  Claim kind "continuous" on (0, oo)."""
+    polynomial arithmetic with pi and the like as symbols; Arb agrees).
+    Claim kind "continuous" on (0, oo)."""
     pw, e, ends, branches, _ = _pieces(signs, expr, var, cuts)
     for b, left, right in zip(ends[1:-1], branches, branches[1:]):
         at = _branch(pw, lambda d, want, strict: _sign_ok(_const_sign(d.subs(var, b)), want, strict))
         for g in (left, right):
             d = g.subs(var, b) - at.subs(var, b)
             _need(d == 0 or _zero_when_generalized(d), lambda: f"the branches differ at {b}")
-        try:
-            _need(evaluate(at - left, var, b, b, bits=256).hull().contains(0), "Arb disagrees with exact 0")
-        except Undefined as exc:
-            raise KernelError(f"P undefined at {b}: {exc}") from None
+            try:
+                _need(evaluate(at - g, var, b, b, bits=256).hull().contains(0), "Arb disagrees with exact 0")
+            except Undefined as exc:
+                raise KernelError(f"P undefined at {b}: {exc}") from None
     return Claim("continuous", _s(e), _s(var), _s(0), "oo", True, True)
 continuous_piecewise = rule("arb", "sympy-core", "sympy-polys")(continuous_piecewise)
 
@@ -816,8 +826,11 @@ def sign_by_rewrite(thm, ident, *, cuts=None):
     var, lhs = c.x(), ic.e()
     extra = ()
     if cuts is None:
-        extra = defined_for_positive(lhs, var) if _lt(0, lo) or (lo == 0 and c.lo_open) else None
-        _need(extra is not None, "L not shown defined on I")
+        _need(_lt(0, lo) or (lo == 0 and c.lo_open), "L not shown defined on I")
+        try:
+            extra = _defined(lhs, var, lo, hi, c.lo_open, c.hi_open)
+        except KernelError:
+            raise KernelError("L not shown defined on I") from None
     else:
         cuts = _cuts(var, cuts)
         _need(not (c.lo_open or c.hi_open) and cuts[0] == lo and cuts[-1] == hi, "cuts must tile the closed I")
@@ -830,16 +843,21 @@ def sign_by_rewrite(thm, ident, *, cuts=None):
 sign_by_rewrite = rule("arb", "sympy-core")(sign_by_rewrite)
 
 
-def defined_for_positive(e, x) -> tuple | None:
-    """Sufficient check that e is defined (real, finite) at every x > 0:
-    a denominator, a log's argument or a real power's base must be built
-    from x, positive constants, +, *, exp, cosh, powers of such, log w with
-    w - 1 so built (log w > 0; >= 0 when w - 1 >= 0), and G(w) with G odd
-    increasing (G(w) > 0 where w > 0, >= 0 where w >= 0); or be a rational
-    function n/d of x over Q, itself so defined, with neither n nor d
-    vanishing on (0, oo) and n/d > 0 there (`sign_by_sturm`).  Returns the
-    extra assumptions the check rests on (("sympy-polys",) when a Sturm
-    count was used, else ()), or None when definedness is not shown."""
+def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
+    """Sufficient check that e is defined (real, finite) at every x in
+    (lo, hi), exact ends with 0 <= lo < hi <= oo (by default at every
+    x > 0): a denominator, a log's argument or a real power's base must be
+    built from x, positive constants, +, *, exp, cosh, powers of such, log w
+    with w - 1 so built (log w > 0; >= 0 when w - 1 >= 0), and G(w) with G
+    odd increasing (G(w) > 0 where w > 0, >= 0 where w >= 0); or be a
+    rational function n/d of x over Q, itself so defined, with neither n nor
+    d vanishing on (lo', hi') and n/d > 0 there (`sign_by_sturm`; lo' <= lo
+    and hi' >= hi rational, lo' >= 0).  Returns the extra assumptions the
+    check rests on (("sympy-polys",) when a Sturm count was used, else ()),
+    or None when definedness is not shown."""
+    lo, hi = _number(lo), _number(hi)
+    _need((lo == 0 or _lt(0, lo)) and _lt(lo, hi), "definedness is checked on some (lo, hi) with 0 <= lo < hi")
+    ends = (_rational_beyond(lo, -1), _rational_beyond(hi, 1))
     polys = []
 
     def pos(u):
@@ -864,17 +882,17 @@ def defined_for_positive(e, x) -> tuple | None:
             return isinstance(u, _ODD_INCREASING) and pos(u.args[0])     # G(w) > G(0) = 0 where w > 0
         return ok or positive_rational(u)
 
-    def positive_rational(u):                   # u = n/d over Q, n and d without roots in (0, oo)
+    def positive_rational(u):                   # u = n/d over Q, n and d without roots in (lo', hi')
         if not (u.is_rational_function(x) and defined(u)):
             return False
         signs = []
         for p in sp.fraction(sp.cancel(u)):
             try:
-                lead = sp.Poly(p, x).LC()
-                sign_by_sturm(expr=p, var=x, lo=0, hi=OO, lo_open=True, hi_open=True, want=1 if lead > 0 else -1)
-            except (KernelError, sp.PolynomialError, TypeError):
+                want = int(sp.sign(p.subs(x, (ends[0] + min(ends[1], ends[0] + 2)) / 2)))
+                sign_by_sturm(expr=p, var=x, lo=ends[0], hi=ends[1], lo_open=True, hi_open=True, want=want)
+            except (KernelError, TypeError):
                 return False
-            signs.append(lead > 0)
+            signs.append(want)
         polys.append(signs[0] == signs[1])
         return polys[-1]
 
@@ -912,12 +930,30 @@ def defined_for_positive(e, x) -> tuple | None:
     return ("sympy-polys",) if any(polys) else ()
 
 
-def _defined(e, var) -> tuple:
-    """The extra assumptions of `defined_for_positive(e, var)`; KernelError
-    when e is not shown defined at every var > 0."""
-    how = defined_for_positive(e, var)
-    _need(how is not None, lambda: f"{e} not shown defined for all {var} > 0")
+def _defined(e, var, lo=0, hi=OO, lo_open=True, hi_open=True) -> tuple:
+    """The extra assumptions of `defined_for_positive(e, var, lo, hi)`, e
+    also defined (Arb) at each closed end; KernelError when e is not shown
+    defined at every var in <lo, hi>."""
+    how = defined_for_positive(e, var, lo, hi)
+    _need(how is not None, lambda: f"{e} not shown defined for all {var} > 0" if (lo, hi) == (0, OO)
+          else f"{e} not shown defined on ({lo}, {hi})")
+    for end in [v for v, is_open in ((lo, lo_open), (hi, hi_open)) if not is_open]:
+        try:
+            evaluate(e, var, end, end, bits=256)
+        except Undefined as exc:
+            raise KernelError(f"{e} undefined at {end}: {exc}") from None
     return how
+
+
+def _rational_beyond(c, side):
+    """c itself when rational or infinite, else a rational q with q < c
+    (side -1; q >= 0 when c > 0) or q > c (side +1), certified by Arb."""
+    if c in (OO, -OO) or c.is_Rational:
+        return c
+    q = sp.Rational(math.floor(float(c) * 2 ** 24) + side * 2, 2 ** 24)
+    q = max(q, sp.Integer(0)) if side < 0 else q
+    _need(_lt(q, c) if side < 0 else _lt(c, q), lambda: f"no rational bound found for {c}")
+    return q
 
 
 def _number_ok(u):
@@ -933,7 +969,7 @@ def sign_on_tail(tail, ident, *, expr, var, R):
     (0, 1/R] in a variable t; (2) an identity theorem E_t(t) = E(1/t) on
     a t-interval containing (0, 1/R], where the right side is literally
     E.subs(s, 1/t); and the kernel's own check that E is defined for every
-    s > 0 (`defined_for_positive`, also for E(1/t) at every t > 0).  For s
+    s >= R (`_defined`, also for E(1/t) at every t in (0, 1/R)).  For s
     >= R, t = 1/s lies in (0, 1/R], both sides are defined there, so E(s) =
     E_t(t) has the sign: claim on [R, oo)."""
     _is_sign(tail)
@@ -951,9 +987,9 @@ def sign_on_tail(tail, ident, *, expr, var, R):
     ia, ib = ic.ends()
     _need((ia == 0 or _lt(ia, 0)) and (_lt(1 / R, ib) or (ib == 1 / R and not ic.hi_open)),
           "the identity must hold on (0, 1/R]")
-    extra = _defined(e, var)
-    at_t = defined_for_positive(e.subs(var, 1 / t), t)
-    _need(at_t is not None, "E(1/t) not shown defined for t > 0")
+    extra = _defined(e, var, R, lo_open=False)
+    at_t = defined_for_positive(e.subs(var, 1 / t), t, 0, 1 / R)
+    _need(at_t is not None, "E(1/t) not shown defined for t in (0, 1/R)")
     _interval(var, R, OO, False, True)
     return _sign_claim(e, var, R, OO, False, True, tc.want, tc.strict), {*extra, *at_t}
 sign_on_tail = rule("sympy-core")(sign_on_tail)
@@ -987,7 +1023,7 @@ sign_by_substitution = rule("sympy-core")(sign_by_substitution)
 def sign_by_monotone(deriv, *, expr, var, R):
     """Mean value theorem on [R, oo), R > 0: want*E(R) > 0 (Arb at the exact
     point R) and want*E' >= 0 on [R, oo) (premise about sympy.diff(E)), E
-    defined for every x > 0 (`defined_for_positive`) => for x >= R,
+    defined for every x > R (`defined_for_positive`) => for x >= R,
     want*E(x) = want*E(R) + want*E'(xi)(x - R) > 0."""
     _is_sign(deriv)
     R = _number(R)
@@ -996,7 +1032,7 @@ def sign_by_monotone(deriv, *, expr, var, R):
     d = deriv.claim
     _need((d.expr, d.var, d.lo, d.lo_open, d.hi) == (_s(sp.diff(e, var)), _s(var), _s(R), False, "oo"),
           "premise must be a sign of E' on [R, oo)")
-    extra = _defined(e, var)
+    extra = _defined(e, var, R)
     try:
         at_r = evaluate(e, var, R, R, bits=256)
     except Undefined as exc:
@@ -1270,7 +1306,7 @@ def diverges_by_growth(lower, *, expr, var, R, rate, k):
     """E(x) -> +oo as x -> oo.  Premise: G - k >= 0 on [R, oo), with k > 0
     exact and G = E' (rate "linear"), G = x E' (rate "log") or G = x^(1-p) E'
     (rate a rational p, 0 < p < 1), E' being `sympy.diff(E)`; E defined for
-    every x > 0 (`defined_for_positive`), R > 0.  By the mean value theorem
+    every x >= R (`_defined`), R > 0.  By the mean value theorem
     E(x) >= E(R) + k (x - R); integrating E' >= k/x, resp. E' >= k x^(p-1),
     E(x) >= E(R) + k log(x/R), resp. E(R) + (k/p)(x^p - R^p); all tend to +oo."""
     _is_sign(lower)
@@ -1285,7 +1321,7 @@ def diverges_by_growth(lower, *, expr, var, R, rate, k):
     c = lower.claim
     _need((c.expr, c.var, c.lo, c.lo_open, c.hi, c.want) == (_s(g - k), _s(var), _s(R), False, "oo", 1),
           lambda: f"premise must be {g - k} >= 0 on [{R}, oo)")
-    return Claim("diverges", _s(e), _s(var), _s(R), "oo", False, True), _defined(e, var)
+    return Claim("diverges", _s(e), _s(var), _s(R), "oo", False, True), _defined(e, var, R, lo_open=False)
 diverges_by_growth = rule("arb", "sympy-core", "sympy-diff")(diverges_by_growth)
 
 
@@ -1293,8 +1329,8 @@ def diverges_through_increasing(div, *, expr):
     """a + G(Y) -> +oo as x -> oo when Y -> +oo (premise `div`), for an
     exact constant a (0 too) and G = log, exp, sinh, asinh or a power Y^p
     with rational p > 0 (increasing and unbounded on the values Y takes for
-    large x); E = a + G(Y) defined for every x > 0 (`defined_for_positive`).
-    Claim on the premise's [R, oo)."""
+    large x); E = a + G(Y) defined for every x >= R (`_defined`).  Claim on
+    the premise's [R, oo)."""
     c = div.claim
     _need(c.kind == "diverges", "premise must be a diverges theorem")
     var = c.x()
@@ -1302,7 +1338,7 @@ def diverges_through_increasing(div, *, expr):
     a, g = e.as_independent(var, as_Add=True)
     _need(_number_ok(a) and unbounded_increasing(g) and c.expr == _s(g.args[0]),
           lambda: f"{e} is not a + G(Y) with the premise about Y")
-    return dataclasses.replace(c, expr=_s(e)), _defined(e, var)
+    return dataclasses.replace(c, expr=_s(e)), _defined(e, var, c.ends()[0], lo_open=False)
 diverges_through_increasing = rule("sympy-core")(diverges_through_increasing)
 
 
@@ -1316,7 +1352,7 @@ def unbounded_increasing(g) -> bool:
 def diverges_by_comparison(lower, div, *, expr):
     """E(x) -> +oo as x -> oo from E - G >= 0 on <R, oo) (premise `lower`)
     and G -> +oo (premise `div`, a `diverges` theorem); E defined for every
-    x > 0 (`defined_for_positive`).  Claim on [max(R, R'), oo)."""
+    x >= max(R, R') (`_defined`).  Claim on [max(R, R'), oo)."""
     _is_sign(lower)
     c, d = lower.claim, div.claim
     _need(d.kind == "diverges", "second premise must be a diverges theorem")
@@ -1324,9 +1360,9 @@ def diverges_by_comparison(lower, div, *, expr):
     e = _expr(expr, var)
     _need((c.var, c.hi, c.want) == (d.var, "oo", 1) and c.expr == _s(e - d.e()),
           "first premise must be E - G >= 0 on <R, oo), G the diverging expression")
-    extra = _defined(e, var)
     (a, _), (b, _) = c.ends(), d.ends()
-    return Claim("diverges", _s(e), _s(var), _s(b if _lt(a, b) else a), "oo", False, True), extra
+    R = b if _lt(a, b) else a
+    return Claim("diverges", _s(e), _s(var), _s(R), "oo", False, True), _defined(e, var, R, lo_open=False)
 diverges_by_comparison = rule("sympy-core")(diverges_by_comparison)
 
 
@@ -1391,7 +1427,7 @@ def _tail_limit(ident, expr, var, width):
     """(E, c) with c = lim E(s) as s -> oo: the identity E_t(t) = E(1/t) on
     a t-interval containing (0, w]; E_t defined (hence continuous) on the
     closed [0, w] (Arb range evaluation); c = E_t(0) exactly (SymPy's value,
-    Arb agrees); E defined for all s > 0 (and the extra assumptions of that)."""
+    Arb agrees); E defined for all s > 1/w (and the extra assumptions of that)."""
     _need(ident.claim.kind == "identity", "premise must be an identity")
     ic = ident.claim
     t = ic.x()
@@ -1410,7 +1446,7 @@ def _tail_limit(ident, expr, var, width):
     except Undefined as exc:
         raise KernelError(f"E_t not defined on [0, {w}]: {exc}") from None
     _need(at0.hull().contains(0), lambda: f"Arb disagrees with E_t(0) = {c}")
-    return e, c, _defined(e, var)
+    return e, c, _defined(e, var, 1 / w)
 
 
 def sup_lower_by_limit(ident, *, expr, var, width, bound, lo, lo_open):
