@@ -477,6 +477,33 @@ def test_defined_for_positive():
         assert d(e, s) is None, e
 
 
+def test_defined_on_an_interval():
+    """`defined_for_positive(e, s, lo, hi)`: defined on (lo, hi); the Sturm
+    count runs on rational bounds around irrational ends (outward, so a
+    root at an irrational end is not excluded); closed ends by Arb."""
+    d = K.defined_for_positive
+    assert d(1 / (s - 1), s) is None and d(1 / (s - 1), s, I2) == d(1 / (s - 1), s, I1) == ("sympy-polys",)
+    assert d(1 / (s - 1), s, Q(1, 2)) is None and d(1 / (1 - s), s, I0, I1) == ("sympy-polys",)
+    assert d(1 / (1 - s), s, I0, Q(3, 2)) is None and d(sp.log(s), s, I2, 4 * I1) == ()
+    assert d(1 / (s - 1), s, I0, I1) is None        # a base must be positive: s - 1 < 0 there is not enough
+    assert d(1 / (s ** 2 - 2), s, sp.sqrt(3)) == ("sympy-polys",) and d(1 / (s ** 2 - 2), s, sp.sqrt(2)) is None
+    assert d(1 / (2 - s ** 2), s, I0, sp.sqrt(2) - Q(1, 10 ** 6)) == ("sympy-polys",)
+    assert d(1 / (2 - s ** 2), s, I0, sp.sqrt(2)) is None and d(1 / (3 - s), s, I0, sp.pi) is None
+    assert d(1 / (3 - s), s, I0, 3 * I1) == ("sympy-polys",) and d(1 / (3 - s), s, I0, 4 * I1) is None
+    assert d(sp.log(s ** 2 - 3), s, Q(7, 4)) == ("sympy-polys",) and d(sp.log(s ** 2 - 3), s, Q(17, 10)) is None
+    for lo, hi in ((I2, I1), (-I1, I1), (I1, I1)):
+        with pytest.raises(KernelError, match="definedness is checked on some"):
+            d(s, s, lo, hi)
+    assert K._defined(sp.log(s - 2), s, I2) == ("sympy-polys",)
+    with pytest.raises(KernelError, match="log.s - 2. undefined at 2"):
+        K._defined(sp.log(s - 2), s, I2, lo_open=False)
+    with pytest.raises(KernelError, match="undefined at 3"):
+        K._defined(sp.log(3 - s), s, I1, 3 * I1, hi_open=False)
+    assert K._defined(sp.log(4 - s), s, I1, 3 * I1, lo_open=False, hi_open=False) == ("sympy-polys",)
+    with pytest.raises(KernelError, match=r"not shown defined on \(1, 5\)"):
+        K._defined(sp.log(4 - s), s, I1, 5 * I1)
+
+
 def tail(E, Et, Rv, ident_lo=0, ident_hi=oo, ident_hi_open=True):
     tt = K.sign_by_taylor(expr=Et, var=t, c=I0, side=1, width=1 / Rv, order=1)
     ident = K.identity(lhs=Et, rhs=E.subs(s, 1 / t), var=t, lo=sp.sympify(ident_lo), hi=sp.sympify(ident_hi),

@@ -217,7 +217,7 @@ def _link_smooth(name, F, claims) -> list[str]:
     finitely many cuts ("pieces"; F may jump): for fixed e1 != 0 and small
     e2 != 0, s lies in (|e1|, |e1| + d), inside one piece, where f = F(s)
     is differentiable and |df/de2| <= |F'(s)|, F' there being one expression
-    continuous at every s > 0, so bounded near |e1|."""
+    continuous on the piece's closure in (0, oo), so bounded near |e1|."""
     d1 = sp.diff(F, S)
     order = 1 if name == "P8" else 2
     ds = [d1, sp.diff(d1, S)][:order]
