@@ -221,8 +221,33 @@ def test_sign_by_sturm_claims_and_messages():
                strict=False) == "p(0) has the wrong sign"
     assert why(sturm, x, x, 0, 1, want=0) == "want is +1 or -1, strict a boolean"
     assert why(sturm, x, x, 0, 1, strict=0) == "want is +1 or -1, strict a boolean"
-    assert why(sturm, x, x, 0, sp.sqrt(2)) == "Sturm needs rational ends"
-    assert why(sturm, x, x, -sp.sqrt(2), 1) == "Sturm needs rational ends"
+    assert why(sturm, x, x, 0, sp.sqrt(2)) == "factor x has a root in the interval"      # closed at 0
+    assert why(sturm, x, x, -sp.sqrt(2), 1) == "factor x has a root in the interval"
+
+
+def test_sign_by_sturm_with_irrational_ends():
+    """Irrational ends: each root's isolating interval is refined until the
+    end lies outside it, or the end is exactly that root."""
+    S = K.sign_by_sturm
+    r2, r3 = sp.sqrt(2), sp.sqrt(3)
+    assert S(expr=x ** 2 - 2, var=x, lo=r2, hi=oo, lo_open=True, hi_open=True, want=1).claim == \
+        sign(x ** 2 - 2, x, r2, oo, True, True)
+    assert S(expr=x ** 2 - 2, var=x, lo=-r2, hi=r2, lo_open=True, hi_open=True, want=-1).claim.want == -1
+    assert S(expr=(x ** 2 - 2) ** 2, var=x, lo=I0, hi=r3, lo_open=True, hi_open=True, want=1,
+             strict=False).claim.strict is False
+    assert S(expr=x - 1, var=x, lo=I1, hi=r2, lo_open=True, hi_open=False, want=1).claim.hi == R(r2)
+    assert S(expr=x ** 3 - 3 * x, var=x, lo=r3, hi=sp.pi, lo_open=True, hi_open=False, want=1).claim.lo == R(r3)
+    for lo, lo_open, hi, hi_open in ((r2, False, oo, True), (I1, True, r2, False), (-r3, True, -I1, True),
+                                     (Q(141, 100), True, r3, True), (I0, True, sp.pi / 2, True)):
+        assert why(S, expr=x ** 2 - 2, var=x, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open,
+                   want=1) in ("factor x**2 - 2 has a root in the interval", f"p({Q(1, 2)}) has the wrong sign",
+                               "p(-2) has the wrong sign"), (lo, hi)
+    # a root just beyond an irrational end: refined until they separate
+    assert S(expr=x - Q(14142135623731, 10 ** 13), var=x, lo=I0, hi=r2, lo_open=True, hi_open=True,
+             want=-1).claim.want == -1
+    inside = x - Q(14142135623730, 10 ** 13)
+    assert why(S, expr=inside, var=x, lo=I0, hi=r2, lo_open=True, hi_open=True, want=-1) == \
+        f"factor {sp.Poly(inside, x).sqf_list()[1][0][0].as_expr()} has a root in the interval"
     assert why(sturm, 1 / x, x, 1, 2) == "not a polynomial: 1/x"
     assert why(sturm, sp.sqrt(2) * x, x, 1, 2) == "coefficients are not rational"
     assert why(sturm, I0, x, 1, 2) == "the zero polynomial has no strict sign"

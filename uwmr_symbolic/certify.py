@@ -42,17 +42,20 @@ REDUCTION = "f(e1, e2) = F(sqrt(e1^2 + r e2^2)) (the reduction to one variable; 
 # The proposer's budgets are counted in work units, not seconds, so that what
 # it certifies is the same on every machine: one unit per expression node Arb
 # evaluates (`arb.nodes`), CLAIM_UNITS per sign claim tried (its SymPy work),
-# and RATIONAL_UNITS * size^2.5 before factoring a rational function of
-# `count_ops` size or checking an identity (SymPy's factor and the kernel's
-# cancel grow so: 0.4 s at size 39, 2.3 s at 79); also STURM_UNITS * degree^2
-# per Sturm sequence and TAIL_UNITS * size^2 per s = 1/t form; an identity
-# the kernel checks by `cancel` alone (no simplify) CANCEL_UNITS * size^2.  About 8
+# and RATIONAL_UNITS * size^2.5 before an identity of `count_ops` size that
+# the kernel will try to simplify (0.4 s at size 39, 2.3 s at 79); also
+# STURM_UNITS * degree^2 per Sturm sequence and TAIL_UNITS * size^2 per
+# s = 1/t form; FACTOR_UNITS * size^2 before factoring a rational function
+# over Q and checking the identity (about 0.01-0.2 s up to size 260, the
+# identity in the field Q(s)); an identity the kernel checks by polynomial
+# arithmetic alone CANCEL_UNITS * size^2 (1 over Q: the field).  About 8
 # microseconds per unit here (4 to 24 measured); CPU_CAP is a backstop only.
 CLAIM_UNITS = 200
 RATIONAL_UNITS = 6
 STURM_UNITS = 2
 TAIL_UNITS = 2
 CANCEL_UNITS = 4
+FACTOR_UNITS = 2
 CHEAP_RATIONAL = 30     # larger rational functions try the sign rules of their parts first
 WORK = 60_000           # for one lemma (about 0.5 s here); the verdict does not depend on it
 DESIGN_WORK = 300_000   # for all the lemmas of one design (see `design_budget`)
@@ -232,7 +235,7 @@ class Prover:
     def _prove(self, e, var, I, want, strict, depth, near):
         lo, hi, lo_open, hi_open = I
         last = None
-        if e.is_polynomial(var) and all(x == OO or x.is_Rational for x in (lo, hi)):
+        if e.is_polynomial(var):
             try:
                 self.charge(STURM_UNITS * sp.degree(e, var) ** 2)
                 return _rule(K.sign_by_sturm, expr=e, var=var, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open,
@@ -248,7 +251,7 @@ class Prover:
                     last = exc
             try:                                # factored over Q: Sturm on each factor
                 if e not in self.factored:
-                    self.charge(_rational_units(size))
+                    self.charge(FACTOR_UNITS * size ** 2 if K._rational_over_q(e, var) else _rational_units(size))
                     self.factored[e] = sp.factor(sp.together(e))
                 return self._rewritten(e, self.factored[e], var, I, want, strict, depth, near)
             except NoProof as exc:
@@ -301,9 +304,10 @@ class Prover:
         if key in self.identities:
             return self.identities[key]
         size = max(sp.count_ops(claim["lhs"]), sp.count_ops(claim["rhs"]))
-        self.charge(CANCEL_UNITS * size ** 2)
         d = claim["lhs"] - claim["rhs"]
-        if not (K._rational_over_q(d, claim["var"]) or K._zero_when_generalized(d, claim["var"])):
+        over_q = K._rational_over_q(d, claim["var"])
+        self.charge((1 if over_q else CANCEL_UNITS) * size ** 2)
+        if not (over_q or K._zero_when_generalized(d, claim["var"])):
             self.charge(_rational_units(size))          # the kernel will try simplify
         if claim["var"].is_nonnegative:
             try:
