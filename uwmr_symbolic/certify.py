@@ -45,20 +45,24 @@ REDUCTION = "f(e1, e2) = F(sqrt(e1^2 + r e2^2)) (the reduction to one variable; 
 # and RATIONAL_UNITS * size^2.5 before an identity of `count_ops` size that
 # the kernel will try to simplify (0.4 s at size 39, 2.3 s at 79); also
 # STURM_UNITS * degree^2 per Sturm sequence and TAIL_UNITS * size^2 per
-# s = 1/t form; FACTOR_UNITS * size^2 before factoring a rational function
-# over Q and checking the identity (about 0.01-0.2 s up to size 260, the
-# identity in the field Q(s)); an identity the kernel checks by polynomial
-# arithmetic alone CANCEL_UNITS * size^2 (1 over Q: the field).  About 8
-# microseconds per unit here (4 to 24 measured); CPU_CAP is a backstop only.
+# s = 1/t form or common denominator (linear beyond size 100: `_tail_units`,
+# 0.6 s at size 400); FACTOR_UNITS * size^2 before factoring a rational function
+# over Q (about 0.01-0.2 s up to size 260); an identity the kernel checks
+# by polynomial arithmetic alone CANCEL_UNITS * size^2, or IDENTITY_UNITS *
+# size for a rational function over Q (the field Q(s): 0.2 ms per op, 0.67 s
+# at size 3,400).  About 8 microseconds per unit here (4 to 24 measured);
+# CPU_CAP is a backstop only.
 CLAIM_UNITS = 200
 RATIONAL_UNITS = 6
 STURM_UNITS = 2
 TAIL_UNITS = 2
 CANCEL_UNITS = 4
 FACTOR_UNITS = 2
+IDENTITY_UNITS = 30
 CHEAP_RATIONAL = 30     # larger rational functions try the sign rules of their parts first
 WORK = 60_000           # for one lemma (about 0.5 s here); the verdict does not depend on it
 DESIGN_WORK = 300_000   # for all the lemmas of one design (see `design_budget`)
+LEMMA_SIZE = 50         # a lemma about an expression of n > LEMMA_SIZE ops gets n/LEMMA_SIZE times the work
 CPU_CAP = 8.0           # a budget also ends after CPU_CAP times its nominal CPU seconds (backstop)
 UNIT_SECONDS = 8e-6
 _charged = 0
@@ -80,6 +84,33 @@ class Budget:
     def spent(self, extra=0) -> bool:
         """True if the budget is spent, or would be by `extra` more units."""
         return _work() + extra > self.limit or time.process_time() > self.cpu
+
+
+def _scaled(work, e) -> int:
+    """The budget of a lemma about e: `work`, times count_ops(e)/LEMMA_SIZE
+    when e is larger (its steps -- factoring, identities, Sturm sequences,
+    s = 1/t forms -- grow with its size)."""
+    return work * max(1, sp.count_ops(e) // LEMMA_SIZE)
+
+
+def _degree_bound(p, var) -> int:
+    """An upper bound of the degree of the polynomial p in var, read off its
+    tree (`sympy.degree` would expand p)."""
+    if not p.has(var):
+        return 0
+    if p.is_Add:
+        return max(_degree_bound(a, var) for a in p.args)
+    if p.is_Mul:
+        return sum(_degree_bound(a, var) for a in p.args)
+    if p.is_Pow:
+        return int(p.exp) * _degree_bound(p.base, var)
+    return 1
+
+
+def _tail_units(size) -> int:
+    """The cost of an s = 1/t form or a common denominator at `count_ops`
+    size: quadratic up to size 100, linear beyond (as measured)."""
+    return TAIL_UNITS * min(size ** 2, 100 * size)
 
 
 def _rational_units(size) -> int:
@@ -237,7 +268,7 @@ class Prover:
         last = None
         if e.is_polynomial(var):
             try:
-                self.charge(STURM_UNITS * sp.degree(e, var) ** 2)
+                self.charge(STURM_UNITS * _degree_bound(e, var) ** 2)
                 return _rule(K.sign_by_sturm, expr=e, var=var, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open,
                              want=want, strict=strict)
             except NoProof as exc:
@@ -249,6 +280,15 @@ class Prover:
                     return self._structure(e, var, I, want, strict, depth, near)
                 except NoProof as exc:
                     last = exc
+            try:                                # over one denominator: Sturm on the numerator as it is
+                if e not in self.together:
+                    self.charge(_tail_units(size))
+                    self.together[e] = sp.together(e)
+                return self._rewritten(e, self.together[e], var, I, want, strict, depth, near)
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
+                last = exc
             try:                                # factored over Q: Sturm on each factor
                 if e not in self.factored:
                     self.charge(FACTOR_UNITS * size ** 2 if K._rational_over_q(e, var) else _rational_units(size))
@@ -275,7 +315,7 @@ class Prover:
                                      for t in e.args):
             try:                                # 0/0 at the end: 1 - tanh(s)/s = (s - tanh(s))/s
                 if e not in self.together:
-                    self.charge(TAIL_UNITS * sp.count_ops(e) ** 2)
+                    self.charge(_tail_units(sp.count_ops(e)))
                     self.together[e] = sp.together(e)
                 return self._rewritten(e, self.together[e], var, I, want, strict, depth, near)
             except NoProof as exc:
@@ -306,7 +346,7 @@ class Prover:
         size = max(sp.count_ops(claim["lhs"]), sp.count_ops(claim["rhs"]))
         d = claim["lhs"] - claim["rhs"]
         over_q = K._rational_over_q(d, claim["var"])
-        self.charge((1 if over_q else CANCEL_UNITS) * size ** 2)
+        self.charge(IDENTITY_UNITS * size if over_q else CANCEL_UNITS * size ** 2)
         if not (over_q or K._zero_when_generalized(d, claim["var"])):
             self.charge(_rational_units(size))          # the kernel will try simplify
         if claim["var"].is_nonnegative:
@@ -605,7 +645,7 @@ class Prover:
         R = tail_start(lo)
         tail = None
         try:
-            self.charge(TAIL_UNITS * sp.count_ops(e) ** 2)
+            self.charge(_tail_units(sp.count_ops(e)))
             et = _tail_form(e, var)
             th = self.prove(et, T, (sp.Integer(0), 1 / R, True, False), want, strict, depth)
             ident = self._identity(lhs=et, rhs=e.subs(var, 1 / T), var=T, lo=0, hi=1 / R,
@@ -794,7 +834,7 @@ def _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work):
     lo, hi = sp.sympify(lo), sp.sympify(hi)
     pts = sorted(set(map(sp.sympify, zeros)), key=float)
     ends = [lo, *pts, hi]
-    prover = Prover(work)
+    prover = Prover(_scaled(work, e))
     try:
         return [prover.prove(sp.sympify(e), var, (ends[i], ends[i + 1], lo_open if i == 0 else True,
                                                   hi_open if i == len(ends) - 2 else True), want, strict)
@@ -809,9 +849,12 @@ def piecewise_sign_theorem(P, ends, var, want=1, strict=True, work=2 * WORK):
     search's boundaries 0 < b1 < ... < oo.  On each open piece the branch
     that applies is signed (`on_branch`); `join_at_point` joins the pieces
     through P's value at each boundary.  Each piece is a lemma of its own,
-    with its own budget `work` (its relations' signs included)."""
-    if not isinstance(sp.piecewise_fold(P), sp.Piecewise):
+    with its own budget `work` (its relations' signs included), scaled to
+    the largest branch (`_scaled`)."""
+    folded = sp.piecewise_fold(P)
+    if not isinstance(folded, sp.Piecewise):
         return None, f"{P} is not a Piecewise"
+    work = _scaled(work, max((g for g, _ in folded.args), key=sp.count_ops))
     try:
         whole = None
         for lo, hi in zip(ends, ends[1:]):
@@ -1077,7 +1120,7 @@ _POWER_RATES = (sp.Rational(1, 2), sp.Rational(1, 4))     # F ~ s^p: F' s^(1-p) 
 
 def _diverges(F, var, starts) -> list:
     d = sp.diff(F, var)
-    prover = Prover(WORK)        # one budget for every attempt
+    prover = Prover(_scaled(WORK, d))        # one budget for every attempt
     for R in starts:
         for rate, g in (("linear", d), ("log", var * d), *((p, var ** (1 - p) * d) for p in _POWER_RATES)):
             try:

@@ -355,11 +355,7 @@ def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
     lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     e = _expr(expr, var)
     _need(e.is_polynomial(var), lambda: f"not a polynomial: {e}")
-    try:
-        poly = sp.Poly(e, var)
-    except sp.PolynomialError:
-        raise KernelError(f"not a polynomial: {e}") from None
-    _need(poly.domain.is_ZZ or poly.domain.is_QQ, "coefficients are not rational")
+    poly = _poly_over_q(e, var)
     if poly.is_zero:                            # 0 >= 0 and 0 <= 0 everywhere, never > 0
         _need(not strict, "the zero polynomial has no strict sign")
         return _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict)
@@ -387,6 +383,22 @@ def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
     return _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict)
 
 
+def _poly_over_q(e, var) -> sp.Poly:
+    """The polynomial e (already shown one in var) as a Poly over Q, built by
+    arithmetic in the ring Q[var] (far faster than expanding e with SymPy's
+    core); KernelError when a coefficient is not rational."""
+    try:
+        f = FracField([var], sp.QQ).from_expr(e)
+    except (ValueError, sp.PolynomialError):
+        raise KernelError("coefficients are not rational") from None
+    _need(f.denom.is_ground, lambda: f"not a polynomial: {e}")
+    num = f.numer.quo_ground(f.denom.LC)
+    return sp.Poly.from_dict(dict(num.terms()) or {(0,): 0}, var, domain=sp.QQ)
+
+
+_poly_over_q = functools.lru_cache(maxsize=4096)(_poly_over_q)
+
+
 def _roots_in(q, lo, hi, lo_open, hi_open) -> int:
     """The number of distinct real roots of the square-free q (over Q) in
     <lo, hi>: a Sturm count for rational or infinite ends; else each root's
@@ -402,6 +414,9 @@ def _roots_in(q, lo, hi, lo_open, hi_open) -> int:
         count += all(_side_of_root(q, a, b, end) * sign > 0 or (_side_of_root(q, a, b, end) == 0 and not op)
                      for end, sign, op in ((lo, 1, lo_open), (hi, -1, hi_open)) if end not in (OO, -OO))
     return count
+
+
+_roots_in = functools.lru_cache(maxsize=4096)(_roots_in)
 
 
 def _side_of_root(q, a, b, end) -> int:
@@ -961,6 +976,9 @@ def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
     if not defined(_sym(e)):
         return None
     return ("sympy-polys",) if any(polys) else ()
+
+
+defined_for_positive = functools.lru_cache(maxsize=4096)(defined_for_positive)      # pure: see core.rule
 
 
 def _defined(e, var, lo=0, hi=OO, lo_open=True, hi_open=True) -> tuple:
