@@ -843,18 +843,18 @@ def _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work):
         return None, str(exc)
 
 
-def piecewise_sign_theorem(P, ends, var, want=1, strict=True, work=2 * WORK):
+def piecewise_sign_theorem(P, ends, var, want=1, strict=True, work=2 * WORK, scale=True):
     """want*P > 0 (>= 0 if not strict) on (0, oo) for P a Piecewise or an
     expression of one, as one kernel theorem, or (None, why).  `ends`: the
     search's boundaries 0 < b1 < ... < oo.  On each open piece the branch
     that applies is signed (`on_branch`); `join_at_point` joins the pieces
     through P's value at each boundary.  Each piece is a lemma of its own,
     with its own budget `work` (its relations' signs included), scaled to
-    the largest branch (`_scaled`)."""
+    the largest branch (`_scaled`) unless `scale` is false."""
     folded = sp.piecewise_fold(P)
     if not isinstance(folded, sp.Piecewise):
         return None, f"{P} is not a Piecewise"
-    work = _scaled(work, max((g for g, _ in folded.args), key=sp.count_ops))
+    work = _scaled(work, max((g for g, _ in folded.args), key=sp.count_ops)) if scale else work
     try:
         whole = None
         for lo, hi in zip(ends, ends[1:]):
@@ -891,14 +891,14 @@ def _relation_signs(P, var, I, prover):
     return signs
 
 
-def piecewise_sup_theorems(F, c, point, var, ends, lower=None, work=2 * WORK):
+def piecewise_sup_theorems(F, c, point, var, ends, lower=None, work=2 * WORK, scale=True):
     """kf = sup F' = c on (0, oo) for a Piecewise F (`ends` its boundaries):
     the conclusions of `sup_theorems` -- F' > 0, c - F' >= 0, sup F' >= c
     (the value at `point` or the limit at oo of the branch there, `widen`ed
     to (0, oo)) -- then F and F' continuous on (0, oo); or (None, why).
     `lower` < c: kf is only enclosed in [lower, c], and the last conclusion
-    is sup F' >= lower, by F'(point) >= lower.  `work`: the budget of each
-    piece's sign lemmas."""
+    is sup F' >= lower, by F'(point) >= lower.  `work`, `scale`: the budget
+    of each piece's sign lemmas (`piecewise_sign_theorem`)."""
     dF = sp.diff(F, var)
     try:
         try:
@@ -913,8 +913,8 @@ def piecewise_sup_theorems(F, c, point, var, ends, lower=None, work=2 * WORK):
             if theorems is None:
                 raise NoProof(why)
             return [*theorems, *whole], ""
-        positive, why = piecewise_sign_theorem(dF, ends, var, strict=not jumps, work=work)
-        upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False, work=work)
+        positive, why = piecewise_sign_theorem(dF, ends, var, strict=not jumps, work=work, scale=scale)
+        upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False, work=work, scale=scale)
                       if positive else (None, why))
         if upper is None:
             raise NoProof(why)
@@ -1005,7 +1005,8 @@ def growth_theorems(F, var, last=None) -> list:
         R = _beyond(last)
         prover = Prover(WORK)
         try:
-            return [on_branch(F, var, (R, OO, False, True), prover, lambda g: _diverges(g, var, (R,))[0])]
+            return [on_branch(F, var, (R, OO, False, True), prover,
+                              lambda g: (_diverges(g, var, (R,)) or _diverges_above(g, var, (R,)))[0])]
         except (NoProof, IndexError, K.KernelError, Undefined):
             return []
     return _diverges(F, var, (sp.Integer(4), sp.Integer(16))) or _diverges_above(F, var) or _diverges_inside(F, var)
@@ -1026,24 +1027,26 @@ def _diverges_inside(F, var) -> list:
         return []
 
 
-def _diverges_above(F, var) -> list:
-    """F -> oo because F >= G -> oo (`diverges_by_comparison`), G being F
-    with each term c B(Y), B = sin, cos (|B| <= 1) or tanh, erf, atan,
-    replaced by its floor -|c| sup|B|: F - G is then a + m B(Y) >= 0; or,
-    when F has algebraic terms, G their sum: F - G is the sum of the other
-    terms, which must be >= 0 (a vanishing transcendental term beside a
-    power, sqrt(h)/2 + 10 (1 - tanh(h^-2)^2)/(3 h); a product c(h) (A + B) is
-    read as c A + c B)."""
+def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
+    """F -> oo because F >= G -> oo (`diverges_by_comparison`) on [R, oo), R
+    from `starts`, G being F with each term c B(Y), B = sin, cos (|B| <= 1)
+    or tanh, erf, atan, replaced by its floor -|c| sup|B|: F - G is then
+    a + m B(Y) >= 0; or, when F has algebraic terms, G their sum, or the sum
+    of the others: F - G is the sum of the rest, which must be >= 0 (a
+    vanishing transcendental term beside a power, sqrt(h)/2 + 10 (1 -
+    tanh(h^-2)^2)/(3 h); bounded rational terms beside a log); a product
+    c(h) (A + B) is read as c A + c B."""
     spread = sp.expand_mul(F, deep=False)
     terms = sp.Add.make_args(spread)
     bounded = {t: abs(c) * {**K._SUP, **K._MAX}[type(b)] for t in terms
                for c, b in [t.as_independent(var)] if type(b) in (*K._SUP, *K._MAX) and not c.has(var)}
     algebraic = [t for t in terms if not t.atoms(sp.Function)]
+    transcendental = [t for t in terms if t.atoms(sp.Function)]
     floors = [sp.Add(*[-bounded[t] if t in bounded else t for t in terms])] if bounded else []
     leading = _leading_terms(terms, var)
-    prover = Prover(WORK)
-    for G in floors + [sp.Add(*ts) for ts in (algebraic, leading) if ts and len(ts) < len(terms)]:
-        for R in (sp.Integer(4), sp.Integer(16)) if _plausible(G - 2 * G.subs(var, 4) - 1, var, 10 ** 6, 1) else ():
+    prover = Prover(_scaled(WORK, F))
+    for G in floors + [sp.Add(*ts) for ts in (algebraic, leading, transcendental) if ts and len(ts) < len(terms)]:
+        for R in starts if _plausible(G - 2 * G.subs(var, starts[0]) - 1, var, 10 ** 6, 1) else ():
             try:
                 I = (R, OO, False, True)
                 lower = prover.prove(F - G, var, I, 1, False) if spread == F else \

@@ -308,13 +308,16 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
     theorems F' >= 0, F' <= U and sup F' >= L (its value at cert.point),
     where L <= lower and U >= upper are short decimals (U about 1/8 above
     when the tight one is not shown cheaply): `kernel_bounds`.  For a
-    Piecewise F, `piecewise_sup_theorems` with the enclosure [L, U]."""
+    Piecewise F, `piecewise_sup_theorems` with the enclosure [L, U]; the
+    tight U with a fixed budget per piece (its covers near the maximum grow
+    with the branch), the loose one with a budget scaled to the branch."""
     L = _decimal(cert.lower, -1)
     tiers = ((_decimal(cert.upper, 1), WORK // 3), (_decimal(cert.upper * Fraction(9, 8), 1, 2), WORK))
     if len(analysis.profile.pieces) > 1:
-        for U, work in tiers:
+        for (U, work), scale in zip(tiers, (False, True)):
             theorems, why = piecewise_sup_theorems(analysis.F, U, cert.point, S, analysis.profile.ends, lower=L,
-                                                   work=work) if L > 0 else (None, "the lower end is not positive")
+                                                   work=work, scale=scale) if L > 0 else \
+                (None, "the lower end is not positive")
             if theorems:
                 break
         if not theorems:
