@@ -90,7 +90,7 @@ def _scaled(work, e) -> int:
     """The budget of a lemma about e: `work`, times count_ops(e)/LEMMA_SIZE
     when e is larger (its steps -- factoring, identities, Sturm sequences,
     s = 1/t forms -- grow with its size)."""
-    return work * max(1, sp.count_ops(e) // LEMMA_SIZE)
+    return max(work, work * sp.count_ops(e) // LEMMA_SIZE)
 
 
 def _degree_bound(p, var) -> int:

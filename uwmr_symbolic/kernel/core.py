@@ -740,6 +740,9 @@ def _folded(e):
     return pw
 
 
+_folded = functools.lru_cache(maxsize=1024)(_folded)      # pure: see core.rule
+
+
 def _branch(pw, sign_ok):
     """The branch of the Piecewise pw that applies wherever the facts
     `sign_ok` hold: its condition holds there and every earlier one fails."""
@@ -1138,6 +1141,9 @@ def _zero_over_q(d, *variables) -> bool:
         return FracField(list(variables), sp.QQ).from_expr(d) == 0
     except (ValueError, sp.PolynomialError, ZeroDivisionError):
         return False
+
+
+_zero_over_q = functools.lru_cache(maxsize=1024)(_zero_over_q)
 
 
 def _rational_over_q(d, *variables) -> bool:
