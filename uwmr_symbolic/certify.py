@@ -48,9 +48,9 @@ REDUCTION = "f(e1, e2) = F(sqrt(e1^2 + r e2^2)) (the reduction to one variable; 
 # s = 1/t form or common denominator (linear beyond size 100: `_tail_units`,
 # 0.6 s at size 400); FACTOR_UNITS * size^2 before factoring a rational function
 # over Q (about 0.01-0.2 s up to size 260); an identity the kernel checks
-# by polynomial arithmetic alone CANCEL_UNITS * size^2, or IDENTITY_UNITS *
-# size for a rational function over Q (the field Q(s): 0.2 ms per op, 0.67 s
-# at size 3,400).  About 8 microseconds per unit here (4 to 24 measured);
+# by polynomial arithmetic alone CANCEL_UNITS * size^2 with radicals, else
+# IDENTITY_UNITS * size (in a field of rational functions over Q: 0.2 ms
+# per op, 0.67 s at size 3,400).  About 8 microseconds per unit here (4 to 24 measured);
 # CPU_CAP is a backstop only.
 CLAIM_UNITS = 200
 RATIONAL_UNITS = 6
@@ -346,7 +346,8 @@ class Prover:
         size = max(sp.count_ops(claim["lhs"]), sp.count_ops(claim["rhs"]))
         d = claim["lhs"] - claim["rhs"]
         over_q = K._rational_over_q(d, claim["var"])
-        self.charge(IDENTITY_UNITS * size if over_q else CANCEL_UNITS * size ** 2)
+        radicals = any(p.exp.is_Rational and not p.exp.is_Integer for p in d.atoms(sp.Pow))
+        self.charge(CANCEL_UNITS * size ** 2 if radicals else IDENTITY_UNITS * size)     # (no radicals: the field)
         if not (over_q or K._zero_when_generalized(d, claim["var"])):
             self.charge(_rational_units(size))          # the kernel will try simplify
         if claim["var"].is_nonnegative:

@@ -1224,10 +1224,14 @@ def _order_at_zero(poly, x) -> int:
 
 def _zero_when_generalized(d, *variables) -> bool:
     """d with its non-rational subterms generalised is 0 by polynomial
-    arithmetic over Q (`cancel`), so d is identically 0 where defined."""
+    arithmetic over Q (in the field of the variables and the fresh symbols,
+    `_zero_over_q`; with roots, `cancel` after reducing their powers), so d
+    is identically 0 where defined."""
     g, fresh, roots = _generalized(d, variables)       # a rational function over Q by construction
     if not fresh:
         return False
+    if not roots:
+        return _zero_over_q(g, *variables, *fresh.values())
     num = sp.expand(sp.numer(sp.together(g)))
     for _ in range(3):                          # r^k -> b^(k div q) r^(k mod q) for each root r = b^(1/q)
         for r, (q, b) in roots.items():
