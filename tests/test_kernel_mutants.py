@@ -529,6 +529,23 @@ def test_defined_on_an_interval():
         K._defined(sp.log(4 - s), s, I1, 5 * I1)
 
 
+def test_zero_over_q_and_poly_over_q():
+    """The field Q(x) decides exact identities; what it cannot read (a
+    radical, a float) is not an identity there; a polynomial comes back
+    expanded over Q."""
+    Z = K._zero_over_q
+    assert Z((x ** 2 - 1) / (x - 1) - x - 1, x) and Z(x / 3 - x / 3 + 0 * x, x)
+    assert not Z((x ** 2 - 1) / (x - 1) - x, x) and not Z(sp.sqrt(2) * x - x, x)
+    assert not Z(sp.sqrt(x) - sp.sqrt(x) + 1, x) and not Z(sp.pi * x, x)
+    y = sp.Symbol("y", real=True)
+    assert Z(x * y / (x + y) - y + y ** 2 / (x + y), x, y) and not Z(x * y / (x + y) - y, x, y)
+    P = K._poly_over_q
+    assert P((x - 1) * (x + 2) ** 2 / 4, x) == sp.Poly(x ** 3 / 4 + 3 * x ** 2 / 4 - 1, x, domain=sp.QQ)
+    assert P(sp.Integer(0), x).is_zero and P(sp.Integer(0), x).domain == sp.QQ
+    with pytest.raises(KernelError, match="coefficients are not rational"):
+        P(sp.sqrt(2) * x, x)
+
+
 def tail(E, Et, Rv, ident_lo=0, ident_hi=oo, ident_hi_open=True):
     tt = K.sign_by_taylor(expr=Et, var=t, c=I0, side=1, width=1 / Rv, order=1)
     ident = K.identity(lhs=Et, rhs=E.subs(s, 1 / t), var=t, lo=sp.sympify(ident_lo), hi=sp.sympify(ident_hi),
