@@ -50,8 +50,8 @@ REDUCTION = "f(e1, e2) = F(sqrt(e1^2 + r e2^2)) (the reduction to one variable; 
 # over Q (about 0.01-0.2 s up to size 260); an identity the kernel checks
 # by polynomial arithmetic alone CANCEL_UNITS * size^2 with radicals, else
 # IDENTITY_UNITS * size (in a field of rational functions over Q: 0.2 ms
-# per op, 0.67 s at size 3,400).  About 8 microseconds per unit here (4 to 24 measured);
-# CPU_CAP is a backstop only.
+# per op, 0.67 s at size 3,400).  About 8 microseconds per unit here (4 to
+# 24 measured); CPU_CAP is a backstop only.
 CLAIM_UNITS = 200
 RATIONAL_UNITS = 6
 STURM_UNITS = 2
@@ -114,7 +114,8 @@ def _tail_units(size) -> int:
 
 
 def _rational_units(size) -> int:
-    """The estimated cost of factoring, or of an identity check, at `count_ops` size."""
+    """The estimated cost, at `count_ops` size, of factoring a rational
+    function not over Q, or of an identity the kernel will try to simplify."""
     return int(RATIONAL_UNITS * size ** 2.5)
 
 

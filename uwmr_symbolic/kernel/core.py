@@ -799,14 +799,8 @@ def _pieces(signs, expr, var, cuts):
     ends = [*(_cuts(var, [0, *cuts]) if cuts else [sp.Integer(0)]), OO]
     _interval(var, 0, OO, True, True)
     branches = [_branch(pw, _decided_by(signs, var, a, b, True, True)) for a, b in zip(ends, ends[1:])]
-    extra = set()
-    for g, a, b in zip(branches, ends, ends[1:]):
-        extra.update(_defined(g, var, a, b))
-        for end in {a, b} - {0, OO}:
-            try:
-                evaluate(g, var, end, end, bits=256)
-            except Undefined as exc:
-                raise KernelError(f"{g} undefined at {end}: {exc}") from None
+    extra = {x for g, a, b in zip(branches, ends, ends[1:])
+             for x in _defined(g, var, a, b, lo_open=a == 0, hi_open=b == OO)}
     return pw, e, ends, branches, extra
 
 
@@ -814,7 +808,8 @@ def piecewise_branches(*signs, expr, var, cuts):
     """P (a Piecewise, or an expression of one) agrees on each open piece
     between 0 < b1 < ... < bn < oo with one expression defined, hence
     continuous, on that piece's closure in (0, oo) (`_pieces`); nothing is
-    said of P at the cuts (P may jump there).  Claim kind "pieces" on (0, oo), other = the cuts."""
+    said of P at the cuts (P may jump there).  Claim kind "pieces" on
+    (0, oo), other = the cuts."""
     _, e, ends, _, extra = _pieces(signs, expr, var, cuts)
     return Claim("pieces", _s(e), _s(var), _s(0), "oo", True, True, other=_s(sp.Tuple(*ends[1:-1]))), extra
 piecewise_branches = rule("arb", "sympy-core")(piecewise_branches)
