@@ -282,10 +282,7 @@ class Prover:
                 except NoProof as exc:
                     last = exc
             try:                                # over one denominator: Sturm on the numerator as it is
-                if e not in self.together:
-                    self.charge(_tail_units(size))
-                    self.together[e] = sp.together(e)
-                return self._rewritten(e, self.together[e], var, I, want, strict, depth, near)
+                return self._rewritten(e, self._together(e), var, I, want, strict, depth, near)
             except NoProof as exc:
                 if exc is self.spent:
                     raise
@@ -315,10 +312,7 @@ class Prover:
         if near and e.is_Add and any(t.is_Mul and any(a.is_Pow and a.exp.is_negative for a in t.args)
                                      for t in e.args):
             try:                                # 0/0 at the end: 1 - tanh(s)/s = (s - tanh(s))/s
-                if e not in self.together:
-                    self.charge(_tail_units(sp.count_ops(e)))
-                    self.together[e] = sp.together(e)
-                return self._rewritten(e, self.together[e], var, I, want, strict, depth, near)
+                return self._rewritten(e, self._together(e), var, I, want, strict, depth, near)
             except NoProof as exc:
                 if exc is self.spent:
                     raise
@@ -329,6 +323,14 @@ class Prover:
         if lo_open or hi_open:
             return self._split(e, var, I, want, strict, depth)
         raise last
+
+    def _together(self, e):
+        """e over one denominator (`sympy.together`), charged `_tail_units`
+        the first time it is asked for."""
+        if e not in self.together:
+            self.charge(_tail_units(sp.count_ops(e)))
+            self.together[e] = sp.together(e)
+        return self.together[e]
 
     def _rewritten(self, e, form, var, I, want, strict, depth, near):
         """The sign of e from that of an identical form (`sign_by_rewrite`)."""

@@ -307,25 +307,24 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
     """cert, when kf = sup F' (F' >= 0) is only enclosed, with the kernel's
     theorems F' >= 0, F' <= U and sup F' >= L (its value at cert.point),
     where L <= lower and U >= upper are short decimals (U about 1/8 above
-    when the tight one is not shown cheaply): `kernel_bounds`.  For a
-    Piecewise F, `piecewise_sup_theorems` with the enclosure [L, U]; the
-    tight U with a fixed budget per piece (its covers near the maximum grow
-    with the branch), the loose one with a budget scaled to the branch."""
+    when the tight one is not shown cheaply): `kernel_bounds`; for a
+    Piecewise F, `_piecewise_enclosure`."""
     L = _decimal(cert.lower, -1)
     tiers = ((_decimal(cert.upper, 1), WORK // 3), (_decimal(cert.upper * Fraction(9, 8), 1, 2), WORK))
-    if len(analysis.profile.pieces) > 1:
-        for (U, work), scale in zip(tiers, (False, True)):
-            theorems, why = piecewise_sup_theorems(analysis.F, U, cert.point, S, analysis.profile.ends, lower=L,
-                                                   work=work, scale=scale) if L > 0 else \
-                (None, "the lower end is not positive")
-            if theorems:
-                break
-        if not theorems:
-            cert.unchecked = [f"kf in [{float(cert.lower):.10g}, {float(cert.upper):.10g}] (kernel: {why})"]
-            return cert
-        cert.kernel_bounds = (Fraction(L.p, L.q), Fraction(U.p, U.q))
-        cert.kernel, cert.unchecked = theorems, []
+    enclose = _piecewise_enclosure if len(analysis.profile.pieces) > 1 else _formula_enclosure
+    U, theorems, why = enclose(cert, analysis, L, tiers)
+    if theorems is None:
+        cert.unchecked = [f"kf in [{float(cert.lower):.10g}, {float(cert.upper):.10g}] (kernel: {why})"]
         return cert
+    cert.kernel_bounds = (Fraction(L.p, L.q), Fraction(U.p, U.q))
+    cert.kernel, cert.unchecked = theorems, []
+    return cert
+
+
+def _formula_enclosure(cert: SupCertificate, analysis, L, tiers):
+    """(U, [F' >= 0, F' <= U, sup F' >= L], "") for an F of one formula, the
+    first U of `tiers` (with its budget) that the kernel takes; or (None,
+    None, why)."""
     dF = sp.diff(analysis.kernel_F, S)
     positive = analysis.slope_sign
     upper = None
@@ -334,17 +333,26 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
         if upper is not None:
             break
     if upper is None:
-        cert.unchecked = [f"kf in [{float(cert.lower):.10g}, {float(cert.upper):.10g}] (kernel: "
-                          f"F' >= 0 and F' <= {U} not shown)"]
-        return cert
+        return None, None, f"F' >= 0 and F' <= {U} not shown"
     lower = sup_lower_theorem(dF, L, cert.point, S)
     if lower is None:
-        cert.unchecked = [f"kf in [{float(cert.lower):.10g}, {float(cert.upper):.10g}] (kernel: "
-                          f"F'({cert.point}) >= {L} not shown)"]
-        return cert
-    cert.kernel_bounds = (Fraction(L.p, L.q), Fraction(U.p, U.q))
-    cert.kernel, cert.unchecked = [positive, upper, lower], []
-    return cert
+        return None, None, f"F'({cert.point}) >= {L} not shown"
+    return U, [positive, upper, lower], ""
+
+
+def _piecewise_enclosure(cert: SupCertificate, analysis, L, tiers):
+    """(U, theorems of `piecewise_sup_theorems` with the enclosure [L, U],
+    "") for a Piecewise F: the tight U with a fixed budget per piece (its
+    covers near the maximum grow with the branch), the loose one with a
+    budget scaled to the branch; or (None, None, why)."""
+    if L <= 0:
+        return None, None, "the lower end is not positive"
+    for (U, work), scale in zip(tiers, (False, True)):
+        theorems, why = piecewise_sup_theorems(analysis.F, U, cert.point, S, analysis.profile.ends, lower=L,
+                                               work=work, scale=scale)
+        if theorems:
+            return U, theorems, ""
+    return None, None, why
 
 
 def _decimal(x: Fraction, side: int, digits: int = 8) -> sp.Rational:
