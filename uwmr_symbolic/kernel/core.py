@@ -26,7 +26,7 @@ Claim semantics (I: an interval of the real line, ends exact):
 
 Assumptions a theorem rests on are named strings: "arb" (python-flint's
 outward rounding), "sympy-core" (automatic evaluation, substitution, srepr),
-"sympy-diff" (symbolic derivatives), "sympy-polys" (cancel, Sturm counts),
+"sympy-diff" (symbolic derivatives), "sympy-polys" (cancel, real-root isolation),
 "sympy-simplify" (an identity that only `simplify` could show).
 """
 from __future__ import annotations
@@ -355,10 +355,16 @@ def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
     lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     e = _expr(expr, var)
     _need(e.is_polynomial(var), lambda: f"not a polynomial: {e}")
+    _polynomial_sign(e, var, lo, hi, lo_open, hi_open, want, strict)
+    return _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict)
+
+
+def _polynomial_sign(e, var, lo, hi, lo_open, hi_open, want, strict):
+    """`sign_by_sturm`'s check, without a theorem (also `defined_for_positive`'s)."""
     poly = _poly_over_q(e, var)
     if poly.is_zero:                            # 0 >= 0 and 0 <= 0 everywhere, never > 0
         _need(not strict, "the zero polynomial has no strict sign")
-        return _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict)
+        return
     coeff, factors = poly.sqf_list()
     for q, m in factors:
         if strict:
@@ -380,7 +386,6 @@ def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
         raise KernelError("no inner point found")
     _need(x0.is_Rational and _lt(lo, x0) and _lt(x0, hi), "inner point outside")
     _need(sp.sign(poly.eval(x0)) == want, lambda: f"p({x0}) has the wrong sign")
-    return _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict)
 
 
 def _poly_over_q(e, var) -> sp.Poly:
@@ -401,19 +406,15 @@ _poly_over_q = functools.lru_cache(maxsize=4096)(_poly_over_q)
 
 def _roots_in(q, lo, hi, lo_open, hi_open) -> int:
     """The number of distinct real roots of the square-free q (over Q) in
-    <lo, hi>: a Sturm count for rational or infinite ends; else each root's
-    isolating interval [a, b] (rational) is refined until the end lies
-    outside it, or the end is that root (q(end) = 0 exactly, end in [a, b])."""
-    if all(v in (OO, -OO) or v.is_Rational for v in (lo, hi)):
-        lo_f, hi_f = (None if lo == -OO else lo), (None if hi == OO else hi)
-        n = q.count_roots(lo_f, hi_f)          # roots in the closed [lo, hi]
-        return n - sum(1 for v, op in ((lo_f, lo_open), (hi_f, hi_open)) if v is not None and op and q.eval(v) == 0)
-    count = 0
-    for (a, b), _ in q.intervals():
-        a, b = sp.Rational(a), sp.Rational(b)
-        count += all(_side_of_root(q, a, b, end) * sign > 0 or (_side_of_root(q, a, b, end) == 0 and not op)
-                     for end, sign, op in ((lo, 1, lo_open), (hi, -1, hi_open)) if end not in (OO, -OO))
-    return count
+    <lo, hi>: each root's exact isolating interval [a, b] (rational;
+    SymPy's real-root isolation, far cheaper than a Sturm sequence at high
+    degree) is refined until a finite end lies outside it, or the end is
+    that root (q(end) = 0 exactly, end in [a, b])."""
+    def inside(a, b, end, sign, is_open):
+        side = _side_of_root(q, sp.Rational(a), sp.Rational(b), end)
+        return side * sign > 0 or (side == 0 and not is_open)
+    return sum(all(inside(a, b, end, sign, op) for end, sign, op in ((lo, 1, lo_open), (hi, -1, hi_open))
+                   if end not in (OO, -OO)) for (a, b), _ in q.intervals())
 
 
 _roots_in = functools.lru_cache(maxsize=4096)(_roots_in)
@@ -935,7 +936,7 @@ def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
         for p in sp.fraction(sp.cancel(u)):
             try:
                 want = int(sp.sign(p.subs(x, (ends[0] + min(ends[1], ends[0] + 2)) / 2)))
-                sign_by_sturm(expr=p, var=x, lo=ends[0], hi=ends[1], lo_open=True, hi_open=True, want=want)
+                _polynomial_sign(p, x, ends[0], ends[1], True, True, want, True)
             except (KernelError, TypeError):
                 return False
             signs.append(want)
