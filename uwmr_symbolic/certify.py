@@ -38,6 +38,7 @@ OO = sp.oo
 WIDTHS = [sp.Rational(1, 2 ** k) for k in range(1, 16, 2)]
 TAYLOR_ORDER = 6
 BOX_BUDGET = 3000
+QUICK_BOXES = 256       # a large rational function's cover before its common denominator
 REDUCTION = "f(e1, e2) = F(sqrt(e1^2 + r e2^2)) (the reduction to one variable; P4 when r = 1)"
 # The proposer's budgets are counted in work units, not seconds, so that what
 # it certifies is the same on every machine: one unit per expression node Arb
@@ -193,19 +194,20 @@ def _mid(a, b):
     return (a + b) / 2
 
 
-def _cover(e, var, a, b, want, strict):
+def _cover(e, var, a, b, want, strict, boxes=BOX_BUDGET):
     """sign_by_cover on the closed [a, b] from a bisection (the search)."""
-    return _rule(K.sign_by_cover, expr=e, var=var, cuts=_cover_cuts(e, var, a, b, want, strict), want=want,
+    return _rule(K.sign_by_cover, expr=e, var=var, cuts=_cover_cuts(e, var, a, b, want, strict, boxes), want=want,
                  strict=strict)
 
 
-def _cover_cuts(e, var, a, b, want, strict):
-    """Cut points a = c0 < ... < cn = b with e signed want on every [ci, ci+1] (Arb)."""
+def _cover_cuts(e, var, a, b, want, strict, boxes=BOX_BUDGET):
+    """Cut points a = c0 < ... < cn = b with e signed want on every [ci, ci+1]
+    (Arb), from at most `boxes` evaluations."""
     leaves, stack, n = [], [(a, b)], 0
     while stack:
         u, v = stack.pop()
         n += 1
-        if n > BOX_BUDGET:
+        if n > boxes:
             raise NoProof("cover of [{}, {}]: budget exhausted", a, b)
         try:
             if _ok(evaluate(e, var, u, v), want, strict):
@@ -276,11 +278,15 @@ class Prover:
                 last = exc
         if e.is_rational_function(var) and not e.is_polynomial(var) and not e.has(sp.Float, sp.NumberSymbol):
             size = sp.count_ops(e)
-            if size > CHEAP_RATIONAL:           # factoring a large sum costs seconds: its terms' signs first
-                try:
-                    return self._structure(e, var, I, want, strict, depth, near)
-                except NoProof as exc:
-                    last = exc
+            if size > CHEAP_RATIONAL:           # factoring a large sum costs seconds: a short cover, its terms
+                for attempt in ([lambda: self._weaken(_cover(e, var, lo, hi, want, strict, QUICK_BOXES), I, strict)]
+                                if hi != OO else []) + [lambda: self._structure(e, var, I, want, strict, depth, near)]:
+                    try:
+                        return attempt()
+                    except NoProof as exc:
+                        if exc is self.spent:
+                            raise
+                        last = exc
             try:                                # over one denominator: Sturm on the numerator as it is
                 return self._rewritten(e, self._together(e), var, I, want, strict, depth, near)
             except NoProof as exc:
@@ -751,11 +757,26 @@ def _sum_groups(e, var, I, want) -> list:
     constant = sp.Add(*[t for t in e.args if not t.has(var)])
     if not any(_against(t, var, I, want) for t in terms) and K._const_sign(constant) != -want:
         return terms
+    shared = _by_denominator(terms, var)
+    if 1 < len(shared) < len(terms) and K._const_sign(constant) != -want and \
+            not any(_against(t, var, I, want) for t in shared):
+        return shared
     rational = [t for t in e.args if t.is_rational_function(var)]
     others = [t for t in terms if not t.is_rational_function(var)]
     if not others or any(_against(t, var, I, want) for t in others) or _against(sp.Add(*rational), var, I, want):
         raise NoProof("a term of {} has the other sign", e)
     return [sp.Add(*rational), *others]
+
+
+def _by_denominator(terms, var) -> list:
+    """The terms summed in groups of one denominator (the set of bases of
+    their negative powers): a derivative's terms 6 s x^2/(10 x^3 + 10) - 60 s
+    x^5/(10 x^3 + 10)^2 of opposite signs, whose sum has one sign."""
+    groups = {}
+    for t in terms:
+        key = frozenset(b for b, n in (f.as_base_exp() for f in sp.Mul.make_args(t)) if n.is_negative and b.has(var))
+        groups.setdefault(key, []).append(t)
+    return [sp.Add(*g) for g in groups.values()]
 
 
 def _against(t, var, I, want) -> bool:
@@ -816,7 +837,7 @@ def _unique(premises):
     return out
 
 
-_FOUND: dict = {}          # sign lemmas already proved in this process (failures depend on the budget: not kept)
+_FOUND: dict = {}          # lemmas already proved in this process (failures depend on the budget: not kept)
 
 
 def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), strict=True, work=WORK):
@@ -828,10 +849,15 @@ def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), 
         theorems, why = _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work)
         if theorems is None:
             return None, why
-        if len(_FOUND) > 512:
-            _FOUND.clear()
-        _FOUND[key] = theorems
+        _remember(key, theorems)
     return _FOUND[key], ""
+
+
+def _remember(key, found):
+    """Keep a lemma proved (`_FOUND`): asked again, it costs no budget."""
+    if len(_FOUND) > 512:
+        _FOUND.clear()
+    _FOUND[key] = found
 
 
 def _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work):
@@ -858,6 +884,9 @@ def piecewise_sign_theorem(P, ends, var, want=1, strict=True, work=2 * WORK, sca
     folded = sp.piecewise_fold(P)
     if not isinstance(folded, sp.Piecewise):
         return None, f"{P} is not a Piecewise"
+    key = ("piecewise", P, tuple(ends), var, want, strict)
+    if key in _FOUND:
+        return _FOUND[key], ""
     work = _scaled(work, max((g for g, _ in folded.args), key=sp.count_ops)) if scale else work
     try:
         whole = None
@@ -865,9 +894,10 @@ def piecewise_sign_theorem(P, ends, var, want=1, strict=True, work=2 * WORK, sca
             I, prover = (lo, hi, True, True), Prover(work)
             th = on_branch(P, var, I, prover, lambda g: prover.prove(g, var, I, want, strict))
             whole = th if whole is None else _rule(K.join_at_point, whole, th)
-        return whole, ""
     except (NoProof, K.KernelError, Undefined) as exc:
         return None, str(exc)
+    _remember(key, whole)
+    return whole, ""
 
 
 def on_branch(P, var, I, prover, about):
@@ -917,7 +947,7 @@ def piecewise_sup_theorems(F, c, point, var, ends, lower=None, work=2 * WORK, sc
             if theorems is None:
                 raise NoProof(why)
             return [*theorems, *whole], ""
-        positive, why = piecewise_sign_theorem(dF, ends, var, strict=not jumps, work=work, scale=scale)
+        positive, why = piecewise_sign_theorem(dF, ends, var, strict=not jumps)     # (whatever c: its own budget)
         upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False, work=work, scale=scale)
                       if positive else (None, why))
         if upper is None:
@@ -962,12 +992,16 @@ def continuity_theorem(P, ends, var, rule=K.continuous_piecewise):
     rule=`piecewise_branches`: P continuous on each open piece only."""
     if not isinstance(P, sp.Piecewise):
         return None
-    prover = Prover(WORK)
-    try:
-        signs = [t for lo, hi in zip(ends, ends[1:]) for t in _relation_signs(P, var, (lo, hi, True, True), prover)]
-        return _rule(rule, *signs, expr=P, var=var, cuts=list(ends[1:-1]))
-    except (NoProof, K.KernelError, Undefined):
-        return None
+    key = ("continuous", P, tuple(ends), var, rule.__name__)
+    if key not in _FOUND:
+        prover = Prover(WORK * (len(ends) - 1))     # every relation signed on every piece
+        try:
+            signs = [t for lo, hi in zip(ends, ends[1:])
+                     for t in _relation_signs(P, var, (lo, hi, True, True), prover)]
+            _remember(key, _rule(rule, *signs, expr=P, var=var, cuts=list(ends[1:-1])))
+        except (NoProof, K.KernelError, Undefined):
+            return None
+    return _FOUND[key]
 
 
 def one_branch_theorems(F, var):
@@ -1013,6 +1047,10 @@ def growth_theorems(F, var, last=None) -> list:
                               lambda g: (_diverges(g, var, (R,)) or _diverges_above(g, var, (R,)))[0])]
         except (NoProof, IndexError, K.KernelError, Undefined):
             return []
+    G = F.as_independent(var, as_Add=True)[1]
+    if K.unbounded_increasing(G) and G.args[0].atoms(sp.Function):     # a nest: the rates grow slow and dear
+        return _diverges_inside(F, var) or _diverges(F, var, (sp.Integer(4), sp.Integer(16))) or \
+            _diverges_above(F, var)
     return _diverges(F, var, (sp.Integer(4), sp.Integer(16))) or _diverges_above(F, var) or _diverges_inside(F, var)
 
 
@@ -1159,6 +1197,9 @@ def origin_theorems(F, var, ends=None) -> list:
     0 at s = 0 (mean value theorem), or [].  For a Piecewise F (boundaries
     `ends`) also F and F' continuous on (0, oo), so that F' is F's derivative
     across the boundaries too."""
+    key = ("origin", F, tuple(ends or ()), var)
+    if key in _FOUND:
+        return _FOUND[key]
     d = sp.diff(F, var)
     for w in (sp.Rational(1, 2), sp.Rational(1, 16)):
         try:
@@ -1168,6 +1209,7 @@ def origin_theorems(F, var, ends=None) -> list:
         except NoProof:
             continue
         if out[1].claim.other == K._s(0):
+            _remember(key, out)
             return out
     return []
 
