@@ -259,6 +259,20 @@ def test_sign_by_sturm_with_irrational_ends():
     assert sturm(x * (x - 1), x, 0, 1, lo_open=True, hi_open=True, want=-1).claim.want == -1
 
 
+def test_roots_whose_isolating_intervals_touch():
+    """SymPy isolates the roots -1, -1/2 of this quintic as [-1, -1] and
+    [-1, 0]: the end -1 of the second interval is the other root, not the one
+    isolated there, so the interval is refined before -1 is placed (a
+    rational end once counted -1/2 out of (-1, 0])."""
+    q = K._poly_over_q(x ** 5 + Q(13, 2) * x ** 4 + 10 * x ** 3 + Q(31, 2) * x ** 2 + 16 * x + 5, x)  # (x+5)(x+1)(x+1/2)(x^2+2)
+    assert ((-1, -1), 1) in q.intervals() and ((-1, 0), 1) in q.intervals()
+    counts = [K._roots_in(q, lo, hi, lo_open, hi_open) for lo, hi, lo_open, hi_open in
+              ((-I1, I0, True, False), (-I1, I0, False, False), (-5 * I1, -I1, True, True),
+               (-5 * I1, -I1, False, True), (-Q(1, 2), I0, True, True), (-Q(1, 2), I0, False, True))]
+    assert counts == [1, 2, 0, 1, 0, 1]
+    assert why(sturm, q.as_expr(), x, -1, 0, lo_open=True) == f"factor {q.as_expr()} has a root in the interval"
+
+
 # ---------------------------------------------------------- products and sums
 
 def test_sign_of_product_claims_and_messages():

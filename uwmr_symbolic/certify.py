@@ -128,9 +128,11 @@ def design_budget(f=None):
     """The proposer's budget for one design's lemmas (`verify.verify_loaded`):
     the kernel certification of a design costs at most about DESIGN_WORK units
     per branch of the Piecewise in f (`branches`; at least one) beyond its
-    search, whatever it fails to prove."""
+    search, whatever it fails to prove.  The failures remembered are
+    forgotten: a design's verdicts do not depend on the designs before it."""
     global _design
     old, _design = _design, Budget(DESIGN_WORK * branches(f))
+    _FAILED.clear()
     try:
         yield
     finally:
@@ -837,7 +839,8 @@ def _unique(premises):
     return out
 
 
-_FOUND: dict = {}          # lemmas already proved in this process (failures depend on the budget: not kept)
+_FOUND: dict = {}          # lemmas already proved in this process
+_FAILED: dict = {}         # sign lemmas not proved: the work they had, and why
 
 
 def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), strict=True, work=WORK):
@@ -846,8 +849,13 @@ def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), 
     or None with the reason when the kernel did not accept a step."""
     key = (e, var, lo, hi, want, lo_open, hi_open, tuple(zeros), strict)
     if key not in _FOUND:
+        if _FAILED.get(key, (-1, ""))[0] >= work:      # failed before with as much work: fails again
+            return None, _FAILED[key][1]
         theorems, why = _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work)
         if theorems is None:
+            if len(_FAILED) > 512:
+                _FAILED.clear()
+            _FAILED[key] = (work, why)
             return None, why
         _remember(key, theorems)
     return _FOUND[key], ""
