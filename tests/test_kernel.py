@@ -220,6 +220,29 @@ def test_sign_below_sup():
         rejects(K.sign_below_sup, pos, expr=e, bounded=g)
 
 
+def test_sign_below_product():
+    """c - A B >= 0 from A <= a, 0 <= B <= b, c >= a b: 1 - s^3 = 1 - (s)(s^2)
+    on [0, 1] (weak: c = a b), 2 - s^3 strictly."""
+    I1 = sp.Integer(1)
+    a_bound, b_sign, b_bound = (sturm(e, s, 0, 1, strict=False) for e in (1 - s, s ** 2, 1 - s ** 2))
+    thm = K.sign_below_product(a_bound, b_sign, b_bound, expr=1 - s ** 3, a=I1, b=I1)
+    assert thm.claim == Claim("sign", sp.srepr(1 - s ** 3), sp.srepr(s), sp.srepr(ZERO), sp.srepr(I1),
+                              False, False, 1, False)
+    assert K.sign_below_product(a_bound, b_sign, b_bound, expr=2 - s ** 3, a=I1, b=I1).claim.strict
+    rejects(K.sign_below_product, a_bound, b_sign, b_bound, expr=Q(1, 2) - s ** 3, a=I1, b=I1)   # c < a b
+    rejects(K.sign_below_product, a_bound, b_sign, b_bound, expr=1 - s ** 3, a=I1, b=2 * I1)      # 2 - s^2: no premise
+    rejects(K.sign_below_product, a_bound, b_sign, b_bound, expr=1 - s ** 4, a=I1, b=I1)          # not c - A B
+    rejects(K.sign_below_product, a_bound, b_sign, a_bound, expr=1 - s ** 3, a=I1, b=I1)          # b - B is 1 - s^2
+    rejects(K.sign_below_product, a_bound, sturm(s ** 2, s, 0, 2, strict=False), b_bound,
+            expr=1 - s ** 3, a=I1, b=I1)                                                          # two intervals
+    rejects(K.sign_below_product, a_bound, sturm(-s ** 2 - 1, s, 0, 1, want=-1), b_bound,
+            expr=1 - s ** 3, a=I1, b=I1)                                                          # a <= 0 claim
+    # a = -1 < 0: A = -1 - s <= a, yet -1/2 - A s^2 = -1/2 + (1 + s) s^2 is -1/2 at 0 (c - a b = 1/2 >= 0)
+    A = -1 - s
+    rejects(K.sign_below_product, sturm(s, s, 0, 1, strict=False), b_sign, b_bound, expr=-Q(1, 2) - A * s ** 2,
+            a=-I1, b=I1)
+
+
 def test_sign_of_increasing_difference():
     """G(Y) - G(c) has the sign of Y - c for G increasing: tanh(s) - tanh(1) on (1, 3]."""
     above = sturm(s - 1, s, 1, 3, lo_open=True)

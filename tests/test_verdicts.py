@@ -247,8 +247,7 @@ def test_p6_reports_h_in_factored_form(tmp_path):
     2s/((1 + L0)(1 + L1)...(1 + L5)), so F'(s)/s -> 2 at 0+ and decreases: k = 2
     and h = F'(s)/(2 s) = 1/((1 + L0)...(1 + L5)).  The report gives that product
     as it is, not multiplied out (5 kB of text here, 40 kB at eight logs).
-    The kernel does not re-check this P6 (six logs in h's denominator), so
-    the search's verdict is read, as --trust-search does."""
+    The search's verdict and its details are read, as --trust-search does."""
     from uwmr_symbolic.verify import verify_design
     e1, e2 = sp.symbols("e1 e2", real=True)
     L = [e1 ** 2 + e2 ** 2]
@@ -261,3 +260,32 @@ def test_p6_reports_h_in_factored_form(tmp_path):
     h = sp.sympify(v.details["h"], locals={"e1": e1, "e2": e2})
     assert h == 1 / sp.Mul(*[1 + x for x in L[:-1]])
     assert len(v.reason) < 400
+
+
+def test_nested_logs_are_proved_by_the_kernel(tmp_path):
+    """f = L6 as above: every property is kernel-checked, kf included.  kf =
+    sup F' is only enclosed (no closed form), and the kernel's upper bound U
+    needs F' <= U on [R, oo), where F'(1/t) is not defined at t = 0 (logs of
+    1/t): F' = A B with A = 2 s/(1 + s^2) <= U there and B = 1/((1 + L1)...
+    (1 + L5)) in [0, 1], each 1 - 1/(1 + Lk) = Lk/(1 + Lk) >= 0
+    (`sign_below_product`).  P3's F -> oo goes through the logs one by one
+    (`diverges_through_increasing`)."""
+    from uwmr_symbolic.verify import verify_design
+    e1, e2 = sp.symbols("e1 e2", real=True)
+    L = e1 ** 2 + e2 ** 2
+    for _ in range(6):
+        L = sp.log(1 + L)
+    path = tmp_path / "nested6.py"
+    path.write_text(f'import sympy as sp\nfrom sympy import log\ne1, e2 = sp.symbols("e1 e2", real=True)\nf = {L}\n')
+    report = verify_design(path, timeout=120)
+    assert {n: v.status.value for n, v in report.properties.items()} == {f"P{i}": "proved" for i in range(1, 9)}
+    lo, hi = report.kf.kernel_bounds
+    assert 0.3 < lo <= report.kf.lower and report.kf.upper <= hi < 0.5
+    rules = {t.rule for t in _walk(report.kf.kernel)}
+    assert "sign_below_product" in rules
+
+
+def _walk(theorems):
+    for t in theorems:
+        yield t
+        yield from _walk(t.premises)

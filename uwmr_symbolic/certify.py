@@ -127,11 +127,15 @@ _design = None      # the enclosing design's Budget, if any
 def design_budget(f=None):
     """The proposer's budget for one design's lemmas (`verify.verify_loaded`):
     the kernel certification of a design costs at most about DESIGN_WORK units
-    per branch of the Piecewise in f (`branches`; at least one) beyond its
-    search, whatever it fails to prove.  The failures remembered are
-    forgotten: a design's verdicts do not depend on the designs before it."""
+    per branch of the Piecewise in f (`branches`; at least one) or, if more,
+    per LEMMA_SIZE operations of df/de1 (whose lemmas' budgets grow so, see
+    `_scaled`), beyond its search, whatever it fails to prove.  The failures
+    remembered are forgotten: a design's verdicts do not depend on the
+    designs before it."""
     global _design
-    old, _design = _design, Budget(DESIGN_WORK * branches(f))
+    size = sp.count_ops(sp.diff(f, sorted(f.free_symbols, key=str)[0])) if isinstance(f, sp.Basic) and \
+        f.free_symbols else 0
+    old, _design = _design, Budget(DESIGN_WORK * max(branches(f), size // LEMMA_SIZE))
     _FAILED.clear()
     try:
         yield
@@ -431,7 +435,11 @@ class Prover:
                         premises.append(sub(t, want, False))
                 return _rule(K.sign_of_sum, *premises, expr=e, want=want)
             except NoProof as exc:
-                if exc is self.spent or want < 0 or not e.has(*_INCREASING, sp.sin, sp.cos):
+                if exc is self.spent or want < 0:
+                    raise
+                if _product_split(e, var) is not None:
+                    return self._below_product(e, var, I, depth, near)
+                if not e.has(*_INCREASING, sp.sin, sp.cos):
                     raise
                 try:
                     return self._below_sup(e, var, I, strict, depth, near)
@@ -451,6 +459,22 @@ class Prover:
                         if exc is self.spent or attempt is _factored or size > CHEAP_RATIONAL:
                             raise
         raise NoProof("no structural rule for {}", e)
+
+    def _below_product(self, e, var, I, depth, near):
+        """c - A B >= 0 (`sign_below_product`, see `_product_split`) from
+        c - A >= 0, B >= 0 and 1 - B >= 0, the last by the same rule again
+        or, for B = k/Y^n, as (Y^n - k)/Y^n: F' = 2 s/(s^2 + 1) times
+        factors 1/(1 + log(...)) <= 1 stays below c on [R, oo) where
+        2 s/(s^2 + 1) does (a nest of logs, whose forms in t = 1/s are not
+        defined at t = 0)."""
+        c, A, B = _product_split(e, var)
+        sub = lambda x: self.prove(x, var, I, 1, False, depth, near)    # noqa: E731
+        below = sub(c - A)
+        if len(sp.Mul.make_args(B)) == 1 and B.is_Pow and B.exp.is_negative:
+            last = self._rewritten(1 - B, sp.together(1 - B), var, I, 1, False, depth, near)
+        else:
+            last = sub(1 - B)
+        return _rule(K.sign_below_product, below, sub(B), last, expr=e, a=c, b=1)
 
     def _above_floor(self, e, var, I, strict, depth, near):
         """e > 0 where a term t = M G(Y) of e, G increasing, M >= 0, and a
@@ -779,6 +803,24 @@ def _by_denominator(terms, var) -> list:
         key = frozenset(b for b, n in (f.as_base_exp() for f in sp.Mul.make_args(t)) if n.is_negative and b.has(var))
         groups.setdefault(key, []).append(t)
     return [sp.Add(*g) for g in groups.values()]
+
+
+def _product_split(e, var):
+    """(c, A, B) for e = c - A B, c > 0 a constant, A the rational factors
+    of the product (its constant included) and B the others, or A the first
+    of these and B the rest when there are no rational factors; None when e
+    is not of this form or A or B would be constant."""
+    c, rest = e.as_independent(var, as_Add=True)
+    if not (c.is_number and c.is_positive) or rest.is_Add or not rest.could_extract_minus_sign():
+        return None
+    factors = sp.Mul.make_args(-rest)
+    rational = [f for f in factors if f.is_rational_function(var)]
+    others = [f for f in factors if not f.is_rational_function(var)]
+    if not others:
+        return None
+    A, B = (sp.Mul(*rational), sp.Mul(*others)) if any(f.has(var) for f in rational) else \
+        (sp.Mul(*rational, others[0]), sp.Mul(*others[1:]))
+    return (c, A, B) if A.has(var) and B.has(var) else None
 
 
 def _against(t, var, I, want) -> bool:

@@ -642,6 +642,31 @@ def sign_of_increasing_difference(arg, *, expr, inner, c):
 sign_of_increasing_difference = rule("arb", "sympy-core")(sign_of_increasing_difference)
 
 
+def sign_below_product(bound_a, sign_b, bound_b, *, expr, a, b):
+    """E = c - A B on I with A B a product and c exact: from a - A >= 0,
+    B >= 0 and b - B >= 0 on I (exact a >= 0, b), A B <= a B <= a b, so
+    E >= c - a b; E >= 0 if c - a b >= 0, > 0 if c - a b > 0 (exact / Arb).
+    A and B are read off the premises (A = a - the first's E)."""
+    for t in (bound_a, sign_b, bound_b):
+        _is_sign(t)
+        _same_interval(t.claim, bound_a.claim)
+        _need(t.claim.want == 1, "premises must be >= 0 claims")
+    c0 = bound_a.claim
+    var = c0.x()
+    e, a, b = _expr(expr, var), _number(a), _number(b)
+    A, B = a - bound_a.claim.e(), sign_b.claim.e()
+    _need(bound_b.claim.expr == _s(b - B), lambda: f"third premise must be about {b - B}")
+    _need(A.has(var) and B.has(var), "A and B must depend on the variable")
+    c = e + A * B
+    _need(not c.has(var), lambda: f"{e} is not c - ({A}) ({B})")
+    _need(_const_sign(a) >= 0, "needs a >= 0")
+    margin = _const_sign(c - a * b)
+    _need(margin >= 0, "needs c - a b >= 0")
+    lo, hi = c0.ends()
+    return _sign_claim(e, var, lo, hi, c0.lo_open, c0.hi_open, 1, margin > 0)
+sign_below_product = rule("arb", "sympy-core")(sign_below_product)
+
+
 def join(left, right):
     """Same E, variable and sign on I1 = <a, m> and I2 = <m, b> (m the same
     exact point, closed in at least one): E has the sign on <a, b>; strict
@@ -671,8 +696,7 @@ def _join_at_point(left, right):
         box = evaluate(e, var, m, m, bits=256)          # also: E defined at m
     except Undefined as exc:
         raise KernelError(f"E undefined at {m}: {exc}") from None
-    zero = v == 0 or _zero_when_generalized(v)
-    _need(not zero or box.hull().contains(0), "Arb disagrees with exact 0")
+    zero = box.hull().contains(0) and (v == 0 or _zero_when_generalized(v))    # (Arb first: exact 0 may cost)
     return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, False), v, zero, box
 
 
@@ -1486,9 +1510,9 @@ def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
         v = evaluate(e, var, p, p, bits=256)       # also: E defined at p
     except Undefined as exc:
         raise KernelError(f"E undefined at {p}: {exc}") from None
-    d = sp.sympify(e.subs(var, p) - L)
-    if d != 0 and not _zero_when_generalized(d):
-        _need(bool(v.lo >= evaluate(L, bits=256).hi), lambda: f"E({p}) >= {L} not shown")
+    if not v.lo >= evaluate(L, bits=256).hi:      # else E(p) - L exactly 0 (Arb first: exact 0 may cost)
+        d = sp.sympify(e.subs(var, p) - L)
+        _need(d == 0 or _zero_when_generalized(d), lambda: f"E({p}) >= {L} not shown")
     return Claim("sup_lower", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(L))
 sup_lower_by_point = rule("arb", "sympy-core")(sup_lower_by_point)
 
