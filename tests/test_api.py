@@ -16,7 +16,7 @@ import pytest  # noqa: E402
 import sympy as sp  # noqa: E402
 
 import uwmr_symbolic  # noqa: E402
-from _cli import NESTED_LOGS  # noqa: E402
+from _cli import SEARCH_ONLY  # noqa: E402
 from uwmr_symbolic import DesignError, e1, e2, generate, simulate, verify, verify_file  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -62,14 +62,14 @@ def test_verify_in_a_worker_process_gives_the_same_report():
 
 
 def test_kernel_only_is_the_default_and_its_opposite_reaches_the_worker():
-    """Four nested logs (tests/_cli.py) have P1 proved by the search only
-    (no kernel bound of F' on the tail).  By default (kernel_only=True) P1
+    """log(1 + log(1 + rho)^2) (tests/_cli.py) has P1 proved by the search
+    only (no kernel bound of F' on the tail).  By default (kernel_only=True) P1
     is unknown and the report inconclusive, P2 stays proved;
     kernel_only=False, in a worker process as here, counts the search's
     proof.  The kernel summary is the same either way."""
-    nested = sp.sympify(NESTED_LOGS, locals={"rho": e1**2 + e2**2})
-    searched = verify(nested, name="nested_logs", kernel_only=False)
-    strict = verify(nested, name="nested_logs", worker=False)
+    f = sp.sympify(SEARCH_ONLY, locals={"rho": e1**2 + e2**2})
+    searched = verify(f, name="search_only", kernel_only=False)
+    strict = verify(f, name="search_only", worker=False)
     assert searched.properties["P1"].status == "proved" and strict.properties["P1"].status == "unknown"
     assert strict.properties["P1"].reason.startswith(
         "not re-checked by the kernel (the search says proved, which counts only with --trust-search: ")

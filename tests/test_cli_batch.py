@@ -16,7 +16,7 @@ from xml.etree import ElementTree as ET
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from _cli import NESTED_LOGS, ROOT  # noqa: E402
+from _cli import SEARCH_ONLY, ROOT  # noqa: E402
 
 from uwmr_symbolic import batch, cache  # noqa: E402
 from uwmr_symbolic.batch import Progress, expand_paths, worst_status  # noqa: E402
@@ -417,9 +417,9 @@ def test_the_kernel_line_says_what_the_certificate_rechecks(tmp_path):
 
 def test_kernel_only_by_default_and_trust_search(tmp_path):
     """By default only the kernel's verdicts count (--kernel-only says it
-    again): four nested logs (tests/_cli.py) are proved throughout by the
-    search; P1 needs a bound of F' on the tail that the proposer does not
-    find for the kernel within its budget.  P1 then becomes unknown, bound
+    again): log(1 + log(1 + rho)^2) (tests/_cli.py) is proved throughout by
+    the search; P1 needs a bound of F' on the tail that the proposer does not
+    find for the kernel.  P1 then becomes unknown, bound
     (10) is not checked (no
     kernel-checked kf: W undecided) and the exit status is 3, while P2, P4
     and P5 (F' > 0) stay proved.  With --trust-search P1 is proved and the W
@@ -431,7 +431,7 @@ def test_kernel_only_by_default_and_trust_search(tmp_path):
     nested = tmp_path / "nested_logs.py"
     nested.write_text("import sympy as sp\nfrom sympy import log\n"
                       "e1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
-                      f"f = {NESTED_LOGS}\n"
+                      f"f = {SEARCH_ONLY}\n"
                       "gains = {'easy': dict(k1=0.1, k2=0.1, lam=0.1, Vmax=1.0, Wmax=2.0, Vr_max=0.5, Wr_max=0.5)}\n")
     designs = [ROOT / "designs/design1_jiang.py", ROOT / "tests/designs/r09_slope_zero.py", nested]
     proc = run([*designs, "--format", "json"], tmp_path / "cache")

@@ -438,7 +438,11 @@ class Prover:
                 if exc is self.spent or want < 0:
                     raise
                 if _product_split(e, var) is not None:
-                    return self._below_product(e, var, I, depth, near)
+                    try:
+                        return self._below_product(e, var, I, depth, near)
+                    except NoProof as again:
+                        if again is self.spent:
+                            raise
                 if not e.has(*_INCREASING, sp.sin, sp.cos):
                     raise
                 try:
