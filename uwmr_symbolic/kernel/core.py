@@ -409,7 +409,7 @@ def _roots_in(q, lo, hi, lo_open, hi_open) -> int:
     <lo, hi>: each root's exact isolating interval [a, b] (rational;
     SymPy's real-root isolation, far cheaper than a Sturm sequence at high
     degree) is refined until a finite end lies outside it, or the end is
-    that root (q(end) = 0 exactly, end in [a, b])."""
+    that root (`_side_of_root`)."""
     def inside(a, b, end, sign, is_open):
         side = _side_of_root(q, sp.Rational(a), sp.Rational(b), end)
         return side * sign > 0 or (side == 0 and not is_open)
