@@ -472,6 +472,8 @@ class Prover:
         2 s/(s^2 + 1) does (a nest of logs, whose forms in t = 1/s are not
         defined at t = 0)."""
         c, A, B = _product_split(e, var)
+        if _against(c - A, var, I, 1) or _against(1 - B, var, I, 1):
+            raise NoProof("A <= {} or B <= 1 fails inside {}", c, I)
         sub = lambda x: self.prove(x, var, I, 1, False, depth, near)    # noqa: E731
         below = sub(c - A)
         if len(sp.Mul.make_args(B)) == 1 and B.is_Pow and B.exp.is_negative:
@@ -683,14 +685,22 @@ class Prover:
         from .univariate import T, tail_start
         lo, _, lo_open, _ = I
         R = tail_start(lo)
-        tail = None
+        tail, last = None, NoProof("no tail rule for {}", e)
+        for start in (R, 4 * R, 16 * R) if want > 0 and not strict and _product_split(e, var) else ():
+            try:                                # c - A B in s: no identity with a form in t to check
+                tail, R = self._below_product(e, var, (start, OO, False, True), depth, False), start
+                break
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
         try:
-            self.charge(_tail_units(sp.count_ops(e)))
-            et = _tail_form(e, var)
-            th = self.prove(et, T, (sp.Integer(0), 1 / R, True, False), want, strict, depth)
-            ident = self._identity(lhs=et, rhs=e.subs(var, 1 / T), var=T, lo=0, hi=1 / R,
-                                   lo_open=True, hi_open=False)       # only now: simplify may be slow
-            tail = _rule(K.sign_on_tail, th, ident, expr=e, var=var, R=R)
+            if tail is None:
+                self.charge(_tail_units(sp.count_ops(e)))
+                et = _tail_form(e, var)
+                th = self.prove(et, T, (sp.Integer(0), 1 / R, True, False), want, strict, depth)
+                ident = self._identity(lhs=et, rhs=e.subs(var, 1 / T), var=T, lo=0, hi=1 / R,
+                                       lo_open=True, hi_open=False)       # only now: simplify may be slow
+                tail = _rule(K.sign_on_tail, th, ident, expr=e, var=var, R=R)
         except NoProof as exc:
             last = exc
         if tail is None and e.has(sp.tanh, sp.sinh, sp.erf, sp.atan, sp.sin, sp.cos):
