@@ -467,7 +467,7 @@ class Prover:
     def _below_product(self, e, var, I, depth, near):
         """c - A B >= 0 (`sign_below_product`, see `_product_split`) from
         c - A >= 0, B >= 0 and 1 - B >= 0, the last by the same rule again
-        or, for B = k/Y^n, as (Y^n - k)/Y^n: F' = 2 s/(s^2 + 1) times
+        or over one denominator (for B = k/Y^n, (Y^n - k)/Y^n): F' = 2 s/(s^2 + 1) times
         factors 1/(1 + log(...)) <= 1 stays below c on [R, oo) where
         2 s/(s^2 + 1) does (a nest of logs, whose forms in t = 1/s are not
         defined at t = 0)."""
@@ -476,10 +476,14 @@ class Prover:
             raise NoProof("A <= {} or B <= 1 fails inside {}", c, I)
         sub = lambda x: self.prove(x, var, I, 1, False, depth, near)    # noqa: E731
         below = sub(c - A)
-        if len(sp.Mul.make_args(B)) == 1 and B.is_Pow and B.exp.is_negative:
-            last = self._rewritten(1 - B, sp.together(1 - B), var, I, 1, False, depth, near)
-        else:
+        try:
+            if len(sp.Mul.make_args(B)) == 1 and B.is_Pow and B.exp.is_negative:
+                raise NoProof("1 - 1/Y^n: over one denominator")
             last = sub(1 - B)
+        except NoProof as exc:
+            if exc is self.spent:
+                raise
+            last = self._rewritten(1 - B, sp.together(1 - B), var, I, 1, False, depth, near)
         return _rule(K.sign_below_product, below, sub(B), last, expr=e, a=c, b=1)
 
     def _above_floor(self, e, var, I, strict, depth, near):
