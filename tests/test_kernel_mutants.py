@@ -259,6 +259,39 @@ def test_sign_by_sturm_with_irrational_ends():
     assert sturm(x * (x - 1), x, 0, 1, lo_open=True, hi_open=True, want=-1).claim.want == -1
 
 
+def test_sign_below_product_claims_and_messages():
+    """c - A B >= 0 on an open interval keeps its flags; a = 0 is allowed
+    (A <= 0 and B >= 0 give -A B >= 0); b enters as a product; each refusal
+    names what failed."""
+    P = K.sign_below_product
+    a_bound, b_sign, b_bound = (sturm(e, s, 0, 1, lo_open=True, hi_open=True, strict=False)
+                                for e in (1 - s, s ** 2, 2 - s ** 2))
+    thm = P(a_bound, b_sign, b_bound, expr=2 - s ** 3, a=I1, b=I2)             # c = a b: weak
+    assert thm.claim == sign(2 - s ** 3, s, 0, 1, True, True, 1, False) and thm.rule == "sign_below_product"
+    assert P(a_bound, b_sign, b_bound, expr=3 - s ** 3, a=I1, b=I2).claim.strict
+    assert why(P, a_bound, b_sign, b_bound, expr=Q(3, 2) - s ** 3, a=I1, b=I2) == "needs c - a b >= 0"
+    zero = P(sturm(s, s, 0, 1, lo_open=True, hi_open=True, strict=False), b_sign, b_bound, expr=s ** 3, a=I0, b=I2)
+    assert zero.claim == sign(s ** 3, s, 0, 1, True, True, 1, False)            # A = -s <= 0
+    assert why(P, sturm(s, s, 0, 1, lo_open=True, hi_open=True, strict=False), b_sign, b_bound,
+               expr=-Q(1, 2) + (1 + s) * s ** 2, a=-I1, b=I1) == "third premise must be about 1 - s**2"
+    assert why(P, sturm(s, s, 0, 1, lo_open=True, hi_open=True, strict=False), b_sign, b_bound,
+               expr=-Q(1, 2) - (-1 - s) * s ** 2, a=-I1, b=I2) == "needs a >= 0"     # false at 0+
+    assert why(P, a_bound, b_sign, b_bound, expr=2 - s ** 4, a=I1, b=I2) == "2 - s**4 is not c - (s) (s**2)"
+    assert why(P, a_bound, sturm(-s ** 2, s, 0, 1, lo_open=True, hi_open=True, want=-1, strict=False), b_bound,
+               expr=2 - s ** 3, a=I1, b=I2) == "premises must be >= 0 claims"
+
+
+def test_weak_sturm_checks_every_odd_factor():
+    """(x - 2)^2 (x - 1)^3 >= 0 on [0, 3] is false (negative below 1): the
+    square-free factors come by multiplicity, x - 2 (even, skipped for a weak
+    claim) before x - 1 (odd, with its root inside), which must still be
+    checked; the inner point 3/2 alone would pass."""
+    p = (x - 2) ** 2 * (x - 1) ** 3
+    assert [m for _, m in sp.Poly(p, x).sqf_list()[1]] == [2, 3]
+    assert why(sturm, p, x, 0, 3, strict=False) == "factor x - 1 has a root in the interval"
+    assert sturm(p, x, 1, 3, strict=False).claim.strict is False                 # true on [1, 3]
+
+
 def test_roots_whose_isolating_intervals_touch():
     """SymPy isolates the roots -1, -1/2 of this quintic as [-1, -1] and
     [-1, 0]: the end -1 of the second interval is the other root, not the one
