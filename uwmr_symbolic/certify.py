@@ -467,10 +467,10 @@ class Prover:
     def _below_product(self, e, var, I, depth, near):
         """c - A B >= 0 (`sign_below_product`, see `_product_split`) from
         c - A >= 0, B >= 0 and 1 - B >= 0, the last by the same rule again
-        or over one denominator (for B = k/Y^n, (Y^n - k)/Y^n): F' = 2 s/(s^2 + 1) times
-        factors 1/(1 + log(...)) <= 1 stays below c on [R, oo) where
-        2 s/(s^2 + 1) does (a nest of logs, whose forms in t = 1/s are not
-        defined at t = 0)."""
+        or over one denominator (for B = k/Y^n, (Y^n - k)/Y^n): F' =
+        2 s/(s^2 + 1) times factors 1/(1 + log(...)) <= 1 stays below c on
+        [R, oo) where 2 s/(s^2 + 1) does (a nest of logs, whose forms in
+        t = 1/s are not defined at t = 0)."""
         c, A, B = _product_split(e, var)
         if _against(c - A, var, I, 1) or _against(1 - B, var, I, 1):
             raise NoProof("A <= {} or B <= 1 fails inside {}", c, I)
@@ -685,7 +685,8 @@ class Prover:
         raise NoProof("no term M log(Y) of {} to bound", e)
 
     def _unbounded(self, e, var, I, want, strict, depth):
-        """[lo, R] as a finite interval, [R, oo) by s = 1/t or monotonicity."""
+        """[lo, R] as a finite interval, [R, oo) by c - A B in s (R, 4R or
+        16R), s = 1/t or monotonicity."""
         from .univariate import T, tail_start
         lo, _, lo_open, _ = I
         R = tail_start(lo)
