@@ -285,14 +285,14 @@ class Prover:
         if e.is_rational_function(var) and not e.is_polynomial(var) and not e.has(sp.Float, sp.NumberSymbol):
             size = sp.count_ops(e)
             if size > CHEAP_RATIONAL:           # factoring a large sum costs seconds: a short cover, its terms
-                for attempt in ([lambda: self._weaken(_cover(e, var, lo, hi, want, strict, QUICK_BOXES), I, strict)]
-                                if hi != OO else []) + [lambda: self._structure(e, var, I, want, strict, depth, near)]:
-                    try:
-                        return attempt()
-                    except NoProof as exc:
-                        if exc is self.spent:
-                            raise
-                        last = exc
+                try:
+                    return _first_of(([lambda: self._weaken(_cover(e, var, lo, hi, want, strict, QUICK_BOXES), I,
+                                                            strict)] if hi != OO else []) +
+                                     [lambda: self._structure(e, var, I, want, strict, depth, near)], self)
+                except NoProof as exc:
+                    if exc is self.spent:
+                        raise
+                    last = exc
             try:                                # over one denominator: Sturm on the numerator as it is
                 return self._rewritten(e, self._together(e), var, I, want, strict, depth, near)
             except NoProof as exc:
@@ -914,19 +914,18 @@ def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), 
             return None, _FAILED[key][1]
         theorems, why = _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work)
         if theorems is None:
-            if len(_FAILED) > 512:
-                _FAILED.clear()
-            _FAILED[key] = (work, why)
+            _remember(key, (work, why), _FAILED)
             return None, why
         _remember(key, theorems)
     return _FOUND[key], ""
 
 
-def _remember(key, found):
-    """Keep a lemma proved (`_FOUND`): asked again, it costs no budget."""
-    if len(_FOUND) > 512:
-        _FOUND.clear()
-    _FOUND[key] = found
+def _remember(key, found, store=_FOUND):
+    """Keep a lemma proved (in `_FOUND`: asked again, it costs no budget),
+    or a failure (in `_FAILED`); at most 512 of each."""
+    if len(store) > 512:
+        store.clear()
+    store[key] = found
 
 
 def _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work):
