@@ -11,7 +11,7 @@ whole lemma `None` (the search's verdict then rests on the prover alone,
 and the certificate says so).
 
 Strategy, per piece between the caller's exact zeros:
-* a polynomial over Q: Sturm (`sign_by_sturm`);
+* a polynomial over Q: its roots isolated (`sign_by_sturm`);
 * an open end c: a one-sided lemma on (c, c+w] or [c-w, c) — a closed
   cover then `weaken` when E is defined at c, else by the structure of E
   (products, sums, odd increasing functions, log), else Taylor at c;
@@ -45,7 +45,7 @@ REDUCTION = "f(e1, e2) = F(sqrt(e1^2 + r e2^2)) (the reduction to one variable; 
 # evaluates (`arb.nodes`), CLAIM_UNITS per sign claim tried (its SymPy work),
 # and RATIONAL_UNITS * size^2.5 before an identity of `count_ops` size that
 # the kernel will try to simplify (0.4 s at size 39, 2.3 s at 79); also
-# STURM_UNITS * degree^2 per Sturm sequence and TAIL_UNITS * size^2 per
+# STURM_UNITS * degree^2 per root isolation and TAIL_UNITS * size^2 per
 # s = 1/t form or common denominator (linear beyond size 100: `_tail_units`,
 # 0.6 s at size 400); FACTOR_UNITS * size^2 before factoring a rational function
 # over Q (about 0.01-0.2 s up to size 260); an identity the kernel checks
@@ -89,7 +89,7 @@ class Budget:
 
 def _scaled(work, e) -> int:
     """The budget of a lemma about e: `work`, times count_ops(e)/LEMMA_SIZE
-    when e is larger (its steps -- factoring, identities, Sturm sequences,
+    when e is larger (its steps -- factoring, identities, root isolation,
     s = 1/t forms -- grow with its size)."""
     return max(work, work * sp.count_ops(e) // LEMMA_SIZE)
 

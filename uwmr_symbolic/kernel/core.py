@@ -922,9 +922,9 @@ def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
     with w - 1 so built (log w > 0; >= 0 when w - 1 >= 0), and G(w) with G
     odd increasing (G(w) > 0 where w > 0, >= 0 where w >= 0); or be a
     rational function n/d of x over Q, itself so defined, with neither n nor
-    d vanishing on (lo', hi') and n/d > 0 there (`sign_by_sturm`; lo' <= lo
+    d vanishing on (lo', hi') and n/d > 0 there (`_polynomial_sign`; lo' <= lo
     and hi' >= hi rational, lo' >= 0).  Returns the extra assumptions the
-    check rests on (("sympy-polys",) when a Sturm count was used, else ()),
+    check rests on (("sympy-polys",) when roots were isolated, else ()),
     or None when definedness is not shown."""
     lo, hi = _number(lo), _number(hi)
     _need((lo == 0 or _lt(0, lo)) and _lt(lo, hi), "definedness is checked on some (lo, hi) with 0 <= lo < hi")
