@@ -125,6 +125,25 @@ def test_sign_by_cover_one_step_below_the_zero():
     rejects(K.sign_by_cover, expr=x - c0, var=x, cuts=[c0 - step, 1], want=1, strict=False)
 
 
+def test_sign_by_cover_mean_value():
+    """E = 1 + 10^-6 - x (2 - x) has its minimum 10^-6 at x = 1.  Over a box of
+    width 10^-3 the range enclosure loses about 10^-3 to the two copies of x;
+    the mean value form E(m) + E'(B)(B - m) loses only about the width squared."""
+    e = 1 + Q(1, 10 ** 6) - x * (2 - x)
+    cuts = [Q(999, 1000), 1, Q(1001, 1000)]
+    rejects(K.sign_by_cover, expr=e, var=x, cuts=cuts, want=1)
+    thm = K.sign_by_cover(expr=e, var=x, cuts=cuts, want=1, mean_value=True)
+    assert "sympy-diff" in thm.assumptions and thm.claim.strict and thm.claim.lo == "Rational(999, 1000)"
+    assert "sympy-diff" not in K.sign_by_cover(expr=x + 1, var=x, cuts=[0, 1], want=1).assumptions
+    rejects(K.sign_by_cover, expr=e - Q(2, 10 ** 6), var=x, cuts=cuts, want=1, mean_value=True)   # -10^-6 at 1
+    rejects(K.sign_by_cover, expr=e, var=x, cuts=[Q(99, 100), 1, Q(101, 100)], want=1, mean_value=True)
+    rejects(K.sign_by_cover, expr=e, var=x, cuts=cuts, want=1, mean_value=1)        # not a boolean
+    # |x - 1|^3 is C^1, but its derivative has sign(x - 1): the form is refused
+    rejects(K.sign_by_cover, expr=e + sp.Abs(x - 1) ** 3, var=x, cuts=cuts, want=1, mean_value=True)
+    # the form needs E defined on the whole box, not only E': log(x) has 1/x on [-2, -1]
+    rejects(K.sign_by_cover, expr=sp.log(x) + 5, var=x, cuts=[-2, -1], want=1, mean_value=True)
+
+
 def test_sign_by_taylor():
     thm = K.sign_by_taylor(expr=x - sp.sin(x), var=x, c=ZERO, side=1, width=Q(1, 2), order=3)
     assert (thm.claim.want, thm.claim.lo_open, thm.claim.hi_open) == (1, True, False)

@@ -3,6 +3,7 @@ random expressions, random intervals; whenever a rule accepts a sign claim,
 the claim is checked independently at many points in 40-digit mpmath (and,
 for Sturm, against SymPy's exact real roots).  A single false acceptance
 fails.  KERNEL_FUZZ_SCALE=n runs n times as many cases."""
+import itertools
 import os
 import random
 
@@ -88,14 +89,13 @@ def test_cover_never_accepts_a_false_sign():
         lo, hi = random_interval(rng)
         n = rng.choice([1, 4, 16])
         cuts = [lo + (hi - lo) * Q(k, n) for k in range(n + 1)]
-        for want in (1, -1):
-            for strict in (True, False):
-                try:
-                    K.sign_by_cover(expr=e, var=x, cuts=cuts, want=want, strict=strict)
-                except KernelError:
-                    continue
-                accepted += 1
-                assert holds(e, lo, hi, want, strict), (e, lo, hi, want, strict)
+        for want, strict, mean_value in itertools.product((1, -1), (True, False), (False, True)):
+            try:
+                K.sign_by_cover(expr=e, var=x, cuts=cuts, want=want, strict=strict, mean_value=mean_value)
+            except KernelError:
+                continue
+            accepted += 1
+            assert holds(e, lo, hi, want, strict), (e, lo, hi, want, strict, mean_value)
     assert accepted > 20
 
 

@@ -130,8 +130,13 @@ def test_sign_by_cover_claims_and_messages():
         "sign not shown on [-1, 0]: Iv(")
     assert why(K.sign_by_cover, expr=x ** 2, var=x, cuts=[-1, 0, 1], want=-1, strict=False).startswith(
         "sign not shown on [-1, 0]: Iv(")
-    for bad in (dict(want=0), dict(want=1, strict=1), dict(want=2)):
-        assert why(K.sign_by_cover, expr=x, var=x, cuts=[1, 2], **bad) == "want is +1 or -1, strict a boolean"
+    for bad in (dict(want=0), dict(want=1, strict=1), dict(want=2), dict(want=1, mean_value=0)):
+        assert why(K.sign_by_cover, expr=x, var=x, cuts=[1, 2], **bad) == \
+            "want is +1 or -1, strict and mean_value booleans"
+    mv = K.sign_by_cover(expr=-x ** 2 - 1, var=x, cuts=[-1, 0, 1], want=-1, mean_value=True)
+    assert mv.claim == thm.claim and mv.assumptions == ARB | {"sympy-diff"}
+    assert why(K.sign_by_cover, expr=sp.Abs(x) - 1, var=x, cuts=[-1, 1], want=1, mean_value=True) == \
+        "Abs(x) - 1 not evaluable on [-1, 1]: unsupported function sign"
     assert why(K.sign_by_cover, expr=1 / x, var=x, cuts=[-1, 1], want=1) == \
         "1/x not evaluable on [-1, 1]: division by an interval that may contain 0"
     assert why(K.sign_by_cover, expr=x, var=x, cuts=[1], want=1) == \

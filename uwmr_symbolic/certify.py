@@ -31,7 +31,7 @@ from fractions import Fraction
 import sympy as sp
 
 from .kernel import arb, core as K
-from .kernel.arb import Undefined, evaluate
+from .kernel.arb import Undefined, centered, evaluate
 from .profile import _relationals
 
 OO = sp.oo
@@ -201,15 +201,18 @@ def _mid(a, b):
 
 
 def _cover(e, var, a, b, want, strict, boxes=BOX_BUDGET):
-    """sign_by_cover on the closed [a, b] from a bisection (the search)."""
-    return _rule(K.sign_by_cover, expr=e, var=var, cuts=_cover_cuts(e, var, a, b, want, strict, boxes), want=want,
-                 strict=strict)
+    """sign_by_cover on the closed [a, b] from a bisection (the search); its
+    mean value form where the range enclosure of a box has no sign."""
+    cuts, used = _cover_cuts(e, var, a, b, want, strict, boxes, mean_value=True)
+    return _rule(K.sign_by_cover, expr=e, var=var, cuts=cuts, want=want, strict=strict,
+                 **({"mean_value": True} if used else {}))
 
 
-def _cover_cuts(e, var, a, b, want, strict, boxes=BOX_BUDGET):
+def _cover_cuts(e, var, a, b, want, strict, boxes=BOX_BUDGET, mean_value=False):
     """Cut points a = c0 < ... < cn = b with e signed want on every [ci, ci+1]
-    (Arb), from at most `boxes` evaluations."""
-    leaves, stack, n = [], [(a, b)], 0
+    (Arb), from at most `boxes` evaluations; with `mean_value`, the pair
+    (cuts, whether a box needed the mean value form `arb.centered`)."""
+    leaves, stack, n, slope, used = [], [(a, b)], 0, None, False
     while stack:
         u, v = stack.pop()
         n += 1
@@ -219,6 +222,12 @@ def _cover_cuts(e, var, a, b, want, strict, boxes=BOX_BUDGET):
             if _ok(evaluate(e, var, u, v), want, strict):
                 leaves.append(u)
                 continue
+            if mean_value and n > 1:
+                slope = sp.diff(e, var) if slope is None else slope
+                if _ok(centered(e, slope, var, u, v), want, strict):
+                    leaves.append(u)
+                    used = True
+                    continue
         except Undefined:
             pass
         if n == 1:                              # undefined or unsigned at an end: no cover can work
@@ -233,7 +242,8 @@ def _cover_cuts(e, var, a, b, want, strict, boxes=BOX_BUDGET):
             raise NoProof("cover of [{}, {}]: stuck near {}", a, b, f"{float(u):.6g}")
         m = _mid(u, v)
         stack += [(m, v), (u, m)]
-    return sorted(leaves, key=float) + [b]
+    cuts = sorted(leaves, key=float) + [b]
+    return (cuts, used) if mean_value else cuts
 
 
 class Prover:
@@ -941,21 +951,21 @@ def _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work):
         return None, str(exc)
 
 
-def piecewise_sign_theorem(P, ends, var, want=1, strict=True, work=2 * WORK, scale=True):
+def piecewise_sign_theorem(P, ends, var, want=1, strict=True, work=2 * WORK):
     """want*P > 0 (>= 0 if not strict) on (0, oo) for P a Piecewise or an
     expression of one, as one kernel theorem, or (None, why).  `ends`: the
     search's boundaries 0 < b1 < ... < oo.  On each open piece the branch
     that applies is signed (`on_branch`); `join_at_point` joins the pieces
     through P's value at each boundary.  Each piece is a lemma of its own,
     with its own budget `work` (its relations' signs included), scaled to
-    the largest branch (`_scaled`) unless `scale` is false."""
+    the largest branch (`_scaled`)."""
     folded = sp.piecewise_fold(P)
     if not isinstance(folded, sp.Piecewise):
         return None, f"{P} is not a Piecewise"
     key = ("piecewise", P, tuple(ends), var, want, strict)
     if key in _FOUND:
         return _FOUND[key], ""
-    work = _scaled(work, max((g for g, _ in folded.args), key=sp.count_ops)) if scale else work
+    work = _scaled(work, max((g for g, _ in folded.args), key=sp.count_ops))
     try:
         whole = None
         for lo, hi in zip(ends, ends[1:]):
@@ -993,14 +1003,14 @@ def _relation_signs(P, var, I, prover):
     return signs
 
 
-def piecewise_sup_theorems(F, c, point, var, ends, lower=None, work=2 * WORK, scale=True):
+def piecewise_sup_theorems(F, c, point, var, ends, lower=None, work=2 * WORK):
     """kf = sup F' = c on (0, oo) for a Piecewise F (`ends` its boundaries):
     the conclusions of `sup_theorems` -- F' > 0, c - F' >= 0, sup F' >= c
     (the value at `point` or the limit at oo of the branch there, `widen`ed
     to (0, oo)) -- then F and F' continuous on (0, oo); or (None, why).
     `lower` < c: kf is only enclosed in [lower, c], and the last conclusion
-    is sup F' >= lower, by F'(point) >= lower.  `work`, `scale`: the budget
-    of each piece's sign lemmas (`piecewise_sign_theorem`)."""
+    is sup F' >= lower, by F'(point) >= lower.  `work`: the budget of each
+    piece's sign lemmas (`piecewise_sign_theorem`)."""
     dF = sp.diff(F, var)
     try:
         try:
@@ -1016,7 +1026,7 @@ def piecewise_sup_theorems(F, c, point, var, ends, lower=None, work=2 * WORK, sc
                 raise NoProof(why)
             return [*theorems, *whole], ""
         positive, why = piecewise_sign_theorem(dF, ends, var, strict=not jumps)     # (whatever c: its own budget)
-        upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False, work=work, scale=scale)
+        upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False, work=work)
                       if positive else (None, why))
         if upper is None:
             raise NoProof(why)

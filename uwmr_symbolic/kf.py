@@ -307,10 +307,10 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
     """cert, when kf = sup F' (F' >= 0) is only enclosed, with the kernel's
     theorems F' >= 0, F' <= U and sup F' >= L (its value at cert.point),
     where L <= lower and U >= upper are short decimals (U about 1/8 above
-    when the tight one is not shown cheaply): `kernel_bounds`; for a
+    when the tight one is not shown within its budget): `kernel_bounds`; for a
     Piecewise F, `_piecewise_enclosure`."""
     L = _decimal(cert.lower, -1)
-    tiers = ((_decimal(cert.upper, 1), WORK // 3), (_decimal(cert.upper * Fraction(9, 8), 1, 2), WORK))
+    tiers = ((_decimal(cert.upper, 1), WORK), (_decimal(cert.upper * Fraction(9, 8), 1, 2), WORK))
     enclose = _piecewise_enclosure if len(analysis.profile.pieces) > 1 else _formula_enclosure
     U, theorems, why = enclose(cert, analysis, L, tiers)
     if theorems is None:
@@ -342,14 +342,14 @@ def _formula_enclosure(cert: SupCertificate, analysis, L, tiers):
 
 def _piecewise_enclosure(cert: SupCertificate, analysis, L, tiers):
     """(U, theorems of `piecewise_sup_theorems` with the enclosure [L, U],
-    "") for a Piecewise F: the tight U with a fixed budget per piece (its
-    covers near the maximum grow with the branch), the loose one with a
-    budget scaled to the branch; or (None, None, why)."""
+    "") for a Piecewise F, each U of `tiers` with its budget scaled to the
+    branch (the covers near the maximum use the mean value form, so the
+    tight U costs about what the loose one does); or (None, None, why)."""
     if L <= 0:
         return None, None, "the lower end is not positive"
-    for (U, work), scale in zip(tiers, (False, True)):
+    for U, work in tiers:
         theorems, why = piecewise_sup_theorems(analysis.F, U, cert.point, S, analysis.profile.ends, lower=L,
-                                               work=work, scale=scale)
+                                               work=work)
         if theorems:
             return U, theorems, ""
     return None, None, why

@@ -41,7 +41,7 @@ import sympy as sp
 from flint import arb
 from sympy.polys.fields import FracField
 
-from .arb import Iv, Undefined, evaluate
+from .arb import Iv, Undefined, centered, evaluate
 from .parse import ParseError, parse
 
 _TOKEN = object()
@@ -289,22 +289,33 @@ def _cuts(var, cuts):
 
 # ------------------------------------------------------------------ rules
 
-def sign_by_cover(*, expr, var, cuts, want, strict=True):
+def sign_by_cover(*, expr, var, cuts, want, strict=True, mean_value=False):
     """want*E > 0 (>= 0 if not strict) on the closed [c0, cn], where
     c0 < c1 < ... < cn are exact and, for each i, the Arb range enclosure of
     E over [ci, c(i+1)] has that sign.  The closed boxes share their ends,
-    so they tile [c0, cn] with no gap; range evaluation shows E defined on each."""
-    _need(want in (1, -1) and isinstance(strict, bool), "want is +1 or -1, strict a boolean")
+    so they tile [c0, cn] with no gap; range evaluation shows E defined on each.
+    `mean_value`: a box whose range enclosure has no sign may show it by the
+    mean value form E(m) + E'(B)(B - m) (`arb.centered`), E' = sympy.diff(E)
+    evaluable on the closed box B.  Every function the evaluator supports is
+    differentiable, with SymPy's derivative, wherever that derivative's
+    formula is evaluable (|u| and the like have none: sign(u) is refused),
+    so E is C^1 on B and E(x) = E(m) + E'(xi)(x - m)."""
+    _need(want in (1, -1) and isinstance(strict, bool) and isinstance(mean_value, bool),
+          "want is +1 or -1, strict and mean_value booleans")
     cuts = _cuts(var, cuts)
     _interval(var, cuts[0], cuts[-1], False, False, at_zero=True)
     e = _expr(expr, var)
+    d = sp.diff(e, var) if mean_value else None
     for a, b in zip(cuts, cuts[1:]):
         try:
             v = evaluate(e, var, a, b)
+            if d is not None and not _box_ok(v, want, strict):
+                v = centered(e, d, var, a, b)
         except Undefined as exc:
             raise KernelError(f"{e} not evaluable on [{a}, {b}]: {exc}") from None
         _need(_box_ok(v, want, strict), lambda: f"sign not shown on [{a}, {b}]: {v}")
-    return _sign_claim(e, var, cuts[0], cuts[-1], False, False, want, strict)
+    claim = _sign_claim(e, var, cuts[0], cuts[-1], False, False, want, strict)
+    return (claim, ("sympy-diff",)) if d is not None else claim
 sign_by_cover = rule("arb", "sympy-core")(sign_by_cover)
 
 
