@@ -30,11 +30,15 @@ from uwmr_symbolic.verify import verify_design      # noqa: E402
 
 def _forget():
     """Empty the memos that would make a second run cheaper than a first:
-    the proposer's proved lemmas, the checker's checked steps, the kernel's
-    zero tests (SymPy's own cache stays warm, as in any long process)."""
+    the proposer's proved lemmas, the checker's checked steps, and every cache
+    of the kernel (parsed and printed expressions, root isolation, zero tests,
+    domains), so that the check does not reuse what the proof computed.
+    SymPy's own cache stays warm, as in any long process."""
     certify._FOUND.clear()
     kernel_certificate._CHECKED.clear()
-    core._zero_when_generalized.cache_clear()
+    for value in vars(core).values():      # `parse` among them
+        if hasattr(value, "cache_clear"):
+            value.cache_clear()
 
 
 def _median(fn, n=3):

@@ -37,7 +37,7 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .certify import REDUCTION
 from .kernel.certificate import CertificateError, check_certificate, to_certificate  # noqa: F401 (re-exported)
-from .kernel.core import _TRUE_WHEN            # when a relation l < r (<=, >, >=) holds: the sign of r - l
+from .kernel.core import _TRUE_WHEN, _srepr    # when a relation l < r (<=, >, >=) holds: the sign of r - l; srepr, cached
 from .kernel.parse import ParseError, parse
 from .profile import S
 
@@ -68,15 +68,15 @@ def build(report) -> dict:
                                unchecked=[] if theorems else [f"{WITNESS_SEARCH} ({why})"])
     kf = report.kf
     if kf is not None and kf.exact is not None:
-        props["kf"] = {"status": "proved", "reason": kf.reason, "exact": sp.srepr(kf.exact),
+        props["kf"] = {"status": "proved", "reason": kf.reason, "exact": _srepr(kf.exact),
                        "kernel": to_certificate(kf.kernel) if kf.kernel else None,
                        "unchecked": list(kf.unchecked)}
     elif kf is not None and kf.kernel and kf.kernel_bounds is not None:     # kf enclosed: lower <= kf <= upper
-        lower, upper = (sp.srepr(sp.Rational(b.numerator, b.denominator)) for b in kf.kernel_bounds)
+        lower, upper = (_srepr(sp.Rational(b.numerator, b.denominator)) for b in kf.kernel_bounds)
         props["kf"] = {"status": "proved", "reason": kf.reason, "exact": None, "lower": lower, "upper": upper,
                        "kernel": to_certificate(kf.kernel), "unchecked": list(kf.unchecked)}
     return {"format": FORMAT, "version": VERSION,
-            "design": {"name": report.design.name, "file": str(report.path), "f": sp.srepr(report.design.f)},
+            "design": {"name": report.design.name, "file": str(report.path), "f": _srepr(report.design.f)},
             "properties": props}
 
 
@@ -139,22 +139,22 @@ def _link_kf(dF, bounds, claims, k=1, cuts=None) -> list[str]:
     s = b, where df/de2 exists (e2 != 0) F is differentiable at b, hence
     continuous, and by the mean value theorem on [b, b + h] F'(b) lies in
     [0, c]; at e2 = 0 it is 0."""
-    on = (sp.srepr(S), "Integer(0)", "oo", True, True)
+    on = (_srepr(S), "Integer(0)", "oo", True, True)
     got = [(c.kind, c.expr, (c.var, c.lo, c.hi, c.lo_open, c.hi_open), c.want, c.strict) for c in claims]
     sup = (on, 0, False)
     if len(claims) == 3:
-        want = [[("sign", sp.srepr(dF), on, 1, True), ("sign", sp.srepr(dF), on, 1, False)],
-                [("sup_upper", sp.srepr(dF), *sup)], [("sup_lower", sp.srepr(dF), *sup)]]
+        want = [[("sign", _srepr(dF), on, 1, True), ("sign", _srepr(dF), on, 1, False)],
+                [("sup_upper", _srepr(dF), *sup)], [("sup_lower", _srepr(dF), *sup)]]
         if cuts is not None and _off_cuts(claims[2], cuts):
             got[2] = got[2][:2] + (on,) + got[2][3:]
     else:
-        want = [[("sup_upper", sp.srepr(sp.Abs(dF)), *sup)],
-                [("sup_lower", sp.srepr(dF), *sup), ("sup_lower", sp.srepr(-dF), *sup)]]
+        want = [[("sup_upper", _srepr(sp.Abs(dF)), *sup)],
+                [("sup_lower", _srepr(dF), *sup), ("sup_lower", _srepr(-dF), *sup)]]
     from .kernel.core import _lt
     lower, upper = bounds
     if lower == upper:
-        ok = len(claims) >= 2 and claims[-2].other == claims[-1].other and sp.srepr(k * parse(claims[-1].other)) \
-            == sp.srepr(lower)
+        ok = len(claims) >= 2 and claims[-2].other == claims[-1].other and _srepr(k * parse(claims[-1].other)) \
+            == _srepr(lower)
     else:
         L, U = (sp.sympify(k * parse(c.other)) for c in claims[-1:-3:-1]) if len(claims) >= 2 else (None, None)
         ok = L is not None and (lower == L or _lt(lower, L)) and (U == upper or _lt(U, upper))     # certified <=
@@ -170,7 +170,7 @@ def _off_cuts(claim, cuts) -> bool:
     lies inside it or at a closed end."""
     from .kernel.core import _lt
     lo, hi = parse(claim.lo), parse(claim.hi)
-    return claim.var == sp.srepr(S) and (lo == 0 or _lt(0, lo)) and _lt(lo, hi) and all(
+    return claim.var == _srepr(S) and (lo == 0 or _lt(0, lo)) and _lt(lo, hi) and all(
         _lt(b, lo) or _lt(hi, b) or (b == lo and claim.lo_open) or (b == hi and claim.hi_open) for b in cuts)
 
 
@@ -184,20 +184,20 @@ def _link_p1_p6(name, F, claims) -> list[str]:
     (For a Piecewise F the continuity comes from a pair of claims instead:
     see `_link`.)"""
     dF = sp.diff(F, S)
-    on = (sp.srepr(S), "Integer(0)", "oo", True, True)
+    on = (_srepr(S), "Integer(0)", "oo", True, True)
     got = [(c.kind, c.expr, (c.var, c.lo, c.hi, c.lo_open, c.hi_open)) for c in claims]
     if name == "P1":
         signed = bool(claims) and claims[0].kind == "sign"     # F' > 0, or |F'| <= U (F' changes sign)
         if signed:
-            ok = got[0] == ("sign", sp.srepr(dF), on) and claims[0].want == 1
+            ok = got[0] == ("sign", _srepr(dF), on) and claims[0].want == 1
             claims, got = claims[1:], got[1:]
         ok = ((not signed or ok) and len(claims) == 3
-              and [g[:2] for g in got[:2]] == [("limit", sp.srepr(F)), ("limit", sp.srepr(dF))]
+              and [g[:2] for g in got[:2]] == [("limit", _srepr(F)), ("limit", _srepr(dF))]
               and claims[0].lo == claims[1].lo == "Integer(0)" and claims[1].other == "Integer(0)"
-              and got[2] == ("sup_upper", sp.srepr(dF if signed else sp.Abs(dF)), on))
+              and got[2] == ("sup_upper", _srepr(dF if signed else sp.Abs(dF)), on))
     else:
-        ok = (len(claims) == 2 and got[0] == ("sign", sp.srepr(dF), on) and claims[0].want == 1
-              and got[1] == ("sup_upper", sp.srepr(dF / S), on) and parse(claims[1].other).is_positive)
+        ok = (len(claims) == 2 and got[0] == ("sign", _srepr(dF), on) and claims[0].want == 1
+              and got[1] == ("sup_upper", _srepr(dF / S), on) and parse(claims[1].other).is_positive)
     if not ok:
         raise CertificateError(f"{name}: the kernel's conclusions are not the ones {name} needs for this f")
     return []
@@ -221,11 +221,11 @@ def _link_smooth(name, F, claims) -> list[str]:
     d1 = sp.diff(F, S)
     order = 1 if name == "P8" else 2
     ds = [d1, sp.diff(d1, S)][:order]
-    want = [("continuous", sp.srepr(d), "Integer(0)") for d in ds] + [
-        ("limit", sp.srepr(d), "Integer(0)") for d in ([d1] if order == 1 else [*ds, F])] + [
-        ("continuous", sp.srepr(F), "Integer(0)")] * F.has(sp.Piecewise)
+    want = [("continuous", _srepr(d), "Integer(0)") for d in ds] + [
+        ("limit", _srepr(d), "Integer(0)") for d in ([d1] if order == 1 else [*ds, F])] + [
+        ("continuous", _srepr(F), "Integer(0)")] * F.has(sp.Piecewise)
     got = [("continuous" if c.kind == "pieces" and name == "P8" else c.kind, c.expr, c.lo) for c in claims]
-    if got != want or claims[order].other != "Integer(0)" or any(c.var != sp.srepr(S) for c in claims):
+    if got != want or claims[order].other != "Integer(0)" or any(c.var != _srepr(S) for c in claims):
         raise CertificateError(f"{name}: the kernel's conclusions are not the ones {name} needs for this f")
     return []
 
@@ -235,14 +235,14 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
     claims = [t.claim for t in theorems]
     if name == "P2":
         ok = len(claims) == 1 and claims[0].kind == "value_sign" and claims[0].want == 0 \
-            and claims[0].expr == sp.srepr(f.subs({E1: 0, E2: 0}))
+            and claims[0].expr == _srepr(f.subs({E1: 0, E2: 0}))
         if not ok:
             raise CertificateError("P2: the kernel's conclusion is not f(0, 0) = 0")
         return []
     if name == "P4":
         rhs = _profile(f).subs(S, sp.sqrt(E1 ** 2 + E2 ** 2))
-        if not (len(claims) == 1 and claims[0].kind == "identity_plane" and claims[0].expr == sp.srepr(f)
-                and claims[0].other == sp.srepr(rhs) and claims[0].var == sp.srepr(sp.Tuple(E1, E2))):
+        if not (len(claims) == 1 and claims[0].kind == "identity_plane" and claims[0].expr == _srepr(f)
+                and claims[0].other == _srepr(rhs) and claims[0].var == _srepr(sp.Tuple(E1, E2))):
             raise CertificateError("P4: the kernel's conclusion is not f(e1, e2) = F(sqrt(e1^2 + e2^2))")
         return []
     if name not in ("P1", "P3", "P5", "P6", "P7", "P8", "kf"):
@@ -254,7 +254,7 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
     reduction = [] if k is not None else [REDUCTION]      # unless P4 is kernel-checked (see `check`)
     want = F if name == "P3" else dF
     piecewise = F.has(sp.Piecewise)
-    if piecewise and name not in ("P7", "P8") and not (claims and claims[0].expr == sp.srepr(want)):
+    if piecewise and name not in ("P7", "P8") and not (claims and claims[0].expr == _srepr(want)):
         return reduction + ["the kernel's claims are about the pieces of F (the split of F is the search's)"]
     return reduction + _link_reduced(name, F, dF, claims, k or 1, bounds)
 
@@ -271,7 +271,7 @@ def _reduction(f, F, claims):
         r = parse(claims[1].expr)
         rhs = F.subs(S, sp.sqrt(E1 ** 2 + r * E2 ** 2))
         if (claims[0].expr, claims[0].other, claims[0].var, claims[1].want) == (
-                sp.srepr(f), sp.srepr(rhs), sp.srepr(sp.Tuple(E1, E2)), 1):
+                _srepr(f), _srepr(rhs), _srepr(sp.Tuple(E1, E2)), 1):
             return claims[2:], sp.sqrt(r)
     return claims, None
 
@@ -288,10 +288,10 @@ def _one_branch(F, claims, open_only=False):
         return claims, F
     G = parse(claims[0].other)
     if G.has(sp.Piecewise) or (claims[0].expr, claims[0].var, claims[0].lo, claims[0].hi, claims[0].lo_open,
-                               claims[0].hi_open) != (sp.srepr(F), sp.srepr(S), "Integer(0)", "oo", True, True):
+                               claims[0].hi_open) != (_srepr(F), _srepr(S), "Integer(0)", "oo", True, True):
         return claims, F
     if len(claims) >= 2 and claims[1].kind == "value_sign" and claims[1].want == 0 and \
-            claims[1].expr == sp.srepr(F.subs(S, 0) - G.subs(S, 0)):
+            claims[1].expr == _srepr(F.subs(S, 0) - G.subs(S, 0)):
         return claims[2:], G
     return (claims[1:], G) if open_only else (claims, F)
 
@@ -304,7 +304,7 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
     if piecewise and name in ("P1", "P5", "P6", "kf"):
         # F and F' continuous on (0, oo): F is C^1 with derivative F' across the boundaries too
         # (a continuous function whose derivative off finitely many points extends continuously)
-        pair = [(sp.srepr(e), sp.srepr(S), "Integer(0)", "oo") for e in (F, dF)]
+        pair = [(_srepr(e), _srepr(S), "Integer(0)", "oo") for e in (F, dF)]
         got = [(c.kind, (c.expr, c.var, c.lo, c.hi)) for c in claims[-2:]]
         if got == [("continuous", p) for p in pair]:
             claims = claims[:-2]
@@ -321,16 +321,16 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
         return _link_smooth(name, F, claims)
     ok = len(claims) in (1, 2, 3) and claims[0].kind == "sign" and (
         claims[0].expr, claims[0].var, claims[0].lo, claims[0].hi, claims[0].lo_open, claims[0].hi_open,
-        claims[0].want, claims[0].strict) == (sp.srepr(want), sp.srepr(S), "Integer(0)", "oo", True, True, 1, True)
+        claims[0].want, claims[0].strict) == (_srepr(want), _srepr(S), "Integer(0)", "oo", True, True, 1, True)
     if not ok:
         raise CertificateError(f"{name}: the kernel's conclusion is not {'F' if name == 'P3' else 'dF/ds'} > 0 "
                                "on (0, oo) for this f")
     rest = [(c.kind, c.expr, c.var, c.lo) for c in claims[1:]]
-    if name == "P3" and rest and not (len(rest) == 1 and rest[0][:3] == ("diverges", sp.srepr(F), sp.srepr(S))):
+    if name == "P3" and rest and not (len(rest) == 1 and rest[0][:3] == ("diverges", _srepr(F), _srepr(S))):
         raise CertificateError("P3: the second conclusion is not F(s) -> oo")
     if name == "P5" and rest and not (
-            len(rest) == 2 and [r[:4] for r in rest] == [("limit", sp.srepr(F), sp.srepr(S), "Integer(0)"),
-                                                         ("limit", sp.srepr(dF), sp.srepr(S), "Integer(0)")]
+            len(rest) == 2 and [r[:4] for r in rest] == [("limit", _srepr(F), _srepr(S), "Integer(0)"),
+                                                         ("limit", _srepr(dF), _srepr(S), "Integer(0)")]
             and claims[2].other == "Integer(0)"):
         raise CertificateError("P5: the further conclusions are not F, F' continuous at 0+ with F'(0+) = 0")
     return gap
@@ -511,7 +511,7 @@ def _tail_branch(f, v, witness, claims, at, order, bad):
     if not (isinstance(f, sp.Piecewise) and type(i) is int and 0 <= i < len(f.args) and at == "oo" and order == 1
             and R.is_Rational and R >= 0) or f.args[i][0].has(*_SMOOTH_ONLY):
         raise bad
-    on = (sp.srepr(H), "Integer(0)", "oo", True, True)
+    on = (_srepr(H), "Integer(0)", "oo", True, True)
     conds = branch_conditions(f, R, 1, i, sp.oo, v)
     if len(claims) <= len(conds) or not all(_one_of(c, options, on) for c, options in zip(claims, conds)):
         raise bad
@@ -522,7 +522,7 @@ def _one_of(c, options, on) -> bool:
     """The claim c is a sign claim on the interval `on` that shows one of
     the acceptable (expression, want, strict) of `branch_conditions`."""
     return c is not None and c.kind == "sign" and (c.var, c.lo, c.hi, c.lo_open, c.hi_open) == on and any(
-        c.expr == sp.srepr(e) and c.want == want and (c.strict or not strict) for e, want, strict in options)
+        c.expr == _srepr(e) and c.want == want and (c.strict or not strict) for e, want, strict in options)
 
 
 def _link_jump(name, f, claims, witness, bad) -> str:
@@ -537,7 +537,7 @@ def _link_jump(name, f, claims, witness, bad) -> str:
         raise bad
     if order and any(f.args[i][0].has(*_SMOOTH_ONLY) for i in branches):
         raise CertificateError(f"{name}: a jump of a derivative needs branches without Piecewise, Max, Min or sign")
-    on = (sp.srepr(H), "Integer(0)", sp.srepr(w), True, False)
+    on = (_srepr(H), "Integer(0)", _srepr(w), True, False)
     k = 0
     limits = []
     for side, i, part in zip((-1, 1), branches, jump_parts(f, b, branches, w, v, order)):
@@ -546,15 +546,15 @@ def _link_jump(name, f, claims, witness, bad) -> str:
                 raise bad
             k += 1
         c = claims[k] if k < len(claims) else None
-        if c is None or (c.kind, c.expr, c.var, c.lo, c.hi) != ("limit", sp.srepr(part), sp.srepr(H), "Integer(0)",
-                                                                 sp.srepr(w)):
+        if c is None or (c.kind, c.expr, c.var, c.lo, c.hi) != ("limit", _srepr(part), _srepr(H), "Integer(0)",
+                                                                 _srepr(w)):
             raise bad
         limits.append(parse(c.other))
         k += 1
     value = _at(f, (x, y))
     gaps = {"sides": limits[1] - limits[0], "left": value - limits[0], "right": value - limits[1]}
     gap = gaps.get(witness.get("compare")) if order == 0 or witness.get("compare") == "sides" else None
-    if gap is None or len(claims) != k + 1 or claims[k].kind != "value_sign" or claims[k].expr != sp.srepr(gap) \
+    if gap is None or len(claims) != k + 1 or claims[k].kind != "value_sign" or claims[k].expr != _srepr(gap) \
             or claims[k].want == 0:
         raise bad
     what = {0: "f", 1: f"df/d{v}", 2: f"d2f/d{v}^2"}[order]
@@ -603,19 +603,19 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
             raise CertificateError(f"{name}: an origin jump of df/d{witness.get('var')} does not refute {name}")
         ends = [axis_derivative(f, v, side) for side in (1, -1)]
         if not (len(claims) == 3 and [(c.kind, c.expr, c.var, c.lo) for c in claims[:2]]
-                == [("limit", sp.srepr(e), sp.srepr(H), "Integer(0)") for e in ends]):
+                == [("limit", _srepr(e), _srepr(H), "Integer(0)") for e in ends]):
             raise bad
         jump = parse(claims[0].other) - parse(claims[1].other)
-        if not (claims[2].kind == "value_sign" and claims[2].expr == sp.srepr(jump) and claims[2].want != 0):
+        if not (claims[2].kind == "value_sign" and claims[2].expr == _srepr(jump) and claims[2].want != 0):
             raise bad
         return (f"df/d{v} -> {parse(claims[0].other)} and {parse(claims[1].other)} "
                 f"along the {v} axis on either side of the origin"), True
-    on_h = (sp.srepr(H), "Integer(0)", "oo", True)
+    on_h = (_srepr(H), "Integer(0)", "oo", True)
     if kind == "bounded":
         d = tuple(parse(c, design=True) for c in witness.get("direction", ()))
         if len(d) != 2 or (_sign(d[0]) == 0 and _sign(d[1]) == 0):
             raise bad
-        if not (len(claims) == 1 and claims[0].kind == "sup_upper" and claims[0].expr == sp.srepr(along_ray(f, d))
+        if not (len(claims) == 1 and claims[0].kind == "sup_upper" and claims[0].expr == _srepr(along_ray(f, d))
                 and (claims[0].var, claims[0].lo, claims[0].hi, claims[0].lo_open) == on_h
                 and parse(claims[0].other) not in (sp.oo, -sp.oo)):
             raise bad
@@ -631,7 +631,7 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         if tail:
             claims, g = _tail_branch(f, v, witness, claims, at, order, bad)
         if not (len(claims) == 1 and claims[0].kind == "diverges"
-                and claims[0].expr == sp.srepr(growing(g, v, order, at, divided)) and claims[0].var == sp.srepr(H)):
+                and claims[0].expr == _srepr(growing(g, v, order, at, divided)) and claims[0].var == _srepr(H)):
             raise bad
         what = {(E2, 1): "df/de2(0, h)", (E1, 1): "df/de1(h, 0)/h" if divided else "df/de1(h, 0)",
                 (E2, 2): "d2f/de2^2(0, h)"}[(v, order)]
@@ -642,7 +642,7 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
     if len(points) != (2 if kind in ("circle", "step") else 1) or any(len(p) != 2 for p in points):
         raise bad
     values = witness_values(kind, f, points)
-    if not (len(claims) == 1 and claims[0].kind == "value_sign" and claims[0].expr == sp.srepr(values[0])):
+    if not (len(claims) == 1 and claims[0].kind == "value_sign" and claims[0].expr == _srepr(values[0])):
         raise bad
     want = claims[0].want
     p = points[0]
