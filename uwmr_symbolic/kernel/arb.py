@@ -185,10 +185,17 @@ nodes = 0
 
 
 def _eval(e: sp.Expr, env: dict) -> Iv:
+    """The enclosure of e, each distinct subexpression evaluated once per
+    `evaluate` (env holds the variable's interval and the enclosures so far:
+    a subexpression has one range over the box wherever it occurs)."""
     global nodes
-    nodes += 1
-    if e in env:
-        return env[e]
+    if e not in env:
+        nodes += 1
+        env[e] = _node(e, env)
+    return env[e]
+
+
+def _node(e: sp.Expr, env: dict) -> Iv:
     if e.is_Symbol:
         raise Undefined(f"free symbol {e}")
     if e.is_Number or e.is_NumberSymbol:
