@@ -31,6 +31,7 @@ import sympy as sp
 from flint import arb
 
 from .interval import Interval, IntervalFunction, Undefined
+from .kernel.arb import Undefined as KernelUndefined, centered
 from .limits import NoLimit, exact_sign, limit_right, rational_parts, rational_poly
 from .verdict import Verdict, proved, refuted, unknown
 
@@ -554,6 +555,22 @@ def _accepts(box, want, strict):
     return box.is_nonnegative() if want > 0 else box.is_nonpositive()
 
 
+def _mean_value_accepts(expr, var, u, v, want, strict, slope) -> bool:
+    """The mean value form expr(m) + expr'([u, v]) ([u, v] - m) (the kernel's
+    `arb.centered`, m the midpoint) has the sign: near a small positive
+    minimum it loses about the box width squared, where the range form loses
+    about the width.  `slope` caches expr' (a one-element list once known)."""
+    if not slope:
+        slope.append(sp.diff(expr, var))
+    try:
+        box = centered(expr, slope[0], var, u, v)
+    except KernelUndefined:
+        return False
+    if strict:
+        return box.positive() if want > 0 else box.negative()
+    return box.nonnegative() if want > 0 else box.nonpositive()
+
+
 def _cover(expr, var, lo, hi, want, left_open, right_open, budget, strict=True) -> Verdict:
     """want*expr > 0 on the finite interval between lo and hi (exact), using
     one-sided lemmas at open ends, bisection in between."""
@@ -574,6 +591,7 @@ def _cover(expr, var, lo, hi, want, left_open, right_open, budget, strict=True) 
     queue = [(a, b)]
     evaluations = 0
     stuck = None        # a spot no box could decide: keep looking for a witness elsewhere
+    slope = []          # expr', once a box needs the mean value form
     while queue:
         u, v = queue.pop()
         evaluations += 1
@@ -581,7 +599,8 @@ def _cover(expr, var, lo, hi, want, left_open, right_open, budget, strict=True) 
             return unknown(stuck or f"undecided near {var} = {float((u + v) / 2):.6g} after {budget} boxes")
         try:
             box = fn(Interval.of(u, v))
-            if _accepts(box, want, strict):
+            if _accepts(box, want, strict) or (evaluations > 1 and _mean_value_accepts(expr, var, u, v, want,
+                                                                                      strict, slope)):
                 continue
         except Undefined as exc:
             if float(v - u) < 1e-12:
