@@ -310,6 +310,8 @@ class Prover:
                     raise
                 last = exc
             try:                                # factored over Q: Sturm on each factor
+                if not _factorable(e):
+                    raise NoProof("{} has constants that factor cannot take", e)
                 if e not in self.factored:
                     self.charge(FACTOR_UNITS * size ** 2 if K._rational_over_q(e, var) else _rational_units(size))
                     self.factored[e] = sp.factor(sp.together(e))
@@ -766,11 +768,19 @@ def _tanh_form(e):
     return sp.collect(sp.expand(out), var) if var is not None else out
 
 
+def _factorable(e) -> bool:
+    """e has no constant power of E: `factor` reads exp(-85525571/64) as
+    a power of E^(1/64) (x^2 - exp(-85525571/64) did not factor within a
+    minute), where it takes sqrt(3), pi or erf(31/32) as one more generator."""
+    return all(a.free_symbols for a in e.atoms(sp.exp))
+
+
 def _factored(e):
     """e factored when it holds a square or higher power of a bounded
     function (1 - tanh(y)^2 = (1 - tanh y)(1 + tanh y)), each factor of the
     form c - B with the sign that makes it nonnegative for B below sup, else e."""
-    if not any(p.exp.is_Integer and p.exp > 1 and type(p.base) in (*K._SUP, *K._MAX) for p in e.atoms(sp.Pow)):
+    if not any(p.exp.is_Integer and p.exp > 1 and type(p.base) in (*K._SUP, *K._MAX) for p in e.atoms(sp.Pow)) \
+            or not _factorable(e):
         return e
     f = sp.factor(e)
     coeff, factors = f.as_coeff_mul()

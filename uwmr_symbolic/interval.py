@@ -1402,6 +1402,30 @@ class IntervalFunction:
         return Interval._make(lo, hi)
 
 
+def mean_value_form(fn: IntervalFunction, slope: IntervalFunction, lo, hi, sign: int) -> Interval | None:
+    """fn(m) + slope([lo, hi]) ([lo, hi] - m), m the midpoint of the finite
+    [lo, hi]: an enclosure of the range of fn there when slope encloses fn'
+    on the box (mean value theorem; compile slope in "continuous" mode, so
+    that it fails where fn' is undefined).  Near a small extremum of fn it
+    loses about the square of the box width, where `fn` loses the width.
+    None, without evaluating slope, unless sign*fn(m) > 0 (sign = +-1): a
+    caller after that sign on the box has no use for the form then."""
+    box = Interval.of(lo, hi)
+    m = box.mid()
+    at = fn(Interval.point(m))
+    if not (at.is_positive() if sign > 0 else at.is_negative()):
+        return None
+    d = slope(box)
+    old = ctx.prec
+    ctx.prec = max(fn.prec, slope.prec)
+    try:
+        c = arb(fmpq(m.numerator, m.denominator))
+        p = _mul((d.lo, d.hi), (_lo(box.lo - c), _hi(box.hi - c)))
+        return Interval._make(_lo(at.lo + p[0]), _hi(at.hi + p[1]))
+    finally:
+        ctx.prec = old
+
+
 def evaluate(expr, env, mode="range", prec=128) -> Interval:
     """Enclosure of ``expr`` over the box ``env`` (dict Symbol -> Interval)."""
     syms = list(env.keys())

@@ -30,8 +30,7 @@ from functools import lru_cache
 import sympy as sp
 from flint import arb
 
-from .interval import Interval, IntervalFunction, Undefined
-from .kernel.arb import Undefined as KernelUndefined, centered
+from .interval import Interval, IntervalFunction, Undefined, mean_value_form
 from .limits import NoLimit, exact_sign, limit_right, rational_parts, rational_poly
 from .verdict import Verdict, proved, refuted, unknown
 
@@ -555,20 +554,28 @@ def _accepts(box, want, strict):
     return box.is_nonnegative() if want > 0 else box.is_nonpositive()
 
 
-def _mean_value_accepts(expr, var, u, v, want, strict, slope) -> bool:
-    """The mean value form expr(m) + expr'([u, v]) ([u, v] - m) (the kernel's
-    `arb.centered`, m the midpoint) has the sign: near a small positive
-    minimum it loses about the box width squared, where the range form loses
-    about the width.  `slope` caches expr' (a one-element list once known)."""
-    if not slope:
-        slope.append(sp.diff(expr, var))
+MEAN_VALUE_MISSES = 256     # a cover stops trying the mean value form after this many failures in a row
+
+
+def _mean_value_accepts(fn, expr, var, u, v, want, strict, state) -> bool:
+    """The mean value form of expr on [u, v] (`interval.mean_value_form`)
+    has the sign: near a small positive minimum it loses about the box width
+    squared, where the range form loses about the width.  `state` (per
+    cover, empty at first): the compiled expr' (None if it cannot be
+    compiled) and the failures in a row; after MEAN_VALUE_MISSES of them the
+    form is not tried again (a sign change, or a region it does not help)."""
     try:
-        box = centered(expr, slope[0], var, u, v)
-    except KernelUndefined:
-        return False
-    if strict:
-        return box.positive() if want > 0 else box.negative()
-    return box.nonnegative() if want > 0 else box.nonpositive()
+        if not state:
+            state += [None, 0]
+            state[0] = _compiled(sp.diff(expr, var), var, "continuous")
+        if state[0] is None or state[1] >= MEAN_VALUE_MISSES:
+            return False
+        box = mean_value_form(fn, state[0], u, v, want)
+        ok = box is not None and _accepts(box, want, strict)
+    except (Undefined, ValueError, TypeError):
+        ok = False
+    state[1] = 0 if ok else state[1] + 1
+    return ok
 
 
 def _cover(expr, var, lo, hi, want, left_open, right_open, budget, strict=True) -> Verdict:
@@ -591,7 +598,7 @@ def _cover(expr, var, lo, hi, want, left_open, right_open, budget, strict=True) 
     queue = [(a, b)]
     evaluations = 0
     stuck = None        # a spot no box could decide: keep looking for a witness elsewhere
-    slope = []          # expr', once a box needs the mean value form
+    mean_value = []     # `_mean_value_accepts`'s state
     while queue:
         u, v = queue.pop()
         evaluations += 1
@@ -599,8 +606,8 @@ def _cover(expr, var, lo, hi, want, left_open, right_open, budget, strict=True) 
             return unknown(stuck or f"undecided near {var} = {float((u + v) / 2):.6g} after {budget} boxes")
         try:
             box = fn(Interval.of(u, v))
-            if _accepts(box, want, strict) or (evaluations > 1 and _mean_value_accepts(expr, var, u, v, want,
-                                                                                      strict, slope)):
+            if _accepts(box, want, strict) or (evaluations > 1 and _mean_value_accepts(fn, expr, var, u, v,
+                                                                                      want, strict, mean_value)):
                 continue
         except Undefined as exc:
             if float(v - u) < 1e-12:
