@@ -554,7 +554,7 @@ def _accepts(box, want, strict):
     return box.is_nonnegative() if want > 0 else box.is_nonpositive()
 
 
-MEAN_VALUE_MISSES = 256     # a cover stops trying the mean value form after this many failures in a row
+MEAN_VALUE_MISSES = 64     # a cover stops trying the mean value form after this many failures in a row
 
 
 def _mean_value_accepts(fn, expr, var, u, v, want, strict, state) -> bool:
