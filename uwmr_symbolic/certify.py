@@ -209,9 +209,10 @@ def _cover(e, var, a, b, want, strict, boxes=BOX_BUDGET):
 
 
 def _cover_cuts(e, var, a, b, want, strict, boxes=BOX_BUDGET, mean_value=False):
-    """Cut points a = c0 < ... < cn = b with e signed want on every [ci, ci+1]
-    (Arb), from at most `boxes` evaluations; with `mean_value`, the pair
-    (cuts, whether a box needed the mean value form `arb.centered`)."""
+    """(cut points a = c0 < ... < cn = b with e signed want on every
+    [ci, ci+1] (Arb), whether a box needed the mean value form
+    `arb.centered`, tried only with `mean_value`), from at most `boxes`
+    evaluations."""
     leaves, stack, n, slope, used = [], [(a, b)], 0, None, False
     while stack:
         u, v = stack.pop()
@@ -242,8 +243,7 @@ def _cover_cuts(e, var, a, b, want, strict, boxes=BOX_BUDGET, mean_value=False):
             raise NoProof("cover of [{}, {}]: stuck near {}", a, b, f"{float(u):.6g}")
         m = _mid(u, v)
         stack += [(m, v), (u, m)]
-    cuts = sorted(leaves, key=float) + [b]
-    return (cuts, used) if mean_value else cuts
+    return sorted(leaves, key=float) + [b], used
 
 
 class Prover:
@@ -597,7 +597,7 @@ class Prover:
                 raise exc from None
             if not (sigma.positive() or sigma.negative()):
                 raise
-            cuts = _cover_cuts(d, var, lo, hi, 1 if sigma.positive() else -1, True)
+            cuts, _ = _cover_cuts(d, var, lo, hi, 1 if sigma.positive() else -1, True)
             th = _rule(K.sign_by_taylor, expr=e, var=var, c=c, side=side, width=hi - lo, order=m, cuts=cuts)
         if th.claim.want != want:
             raise NoProof("{} has the other sign beside {}", e, c)
