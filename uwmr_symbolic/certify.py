@@ -488,13 +488,14 @@ class Prover:
             raise NoProof("A <= {} or B <= 1 fails inside {}", c, I)
         sub = lambda x: self.prove(x, var, I, 1, False, depth, near)    # noqa: E731
         below = sub(c - A)
-        try:
-            if len(sp.Mul.make_args(B)) == 1 and B.is_Pow and B.exp.is_negative:
-                raise NoProof("1 - 1/Y^n: over one denominator")
-            last = sub(1 - B)
-        except NoProof as exc:
-            if exc is self.spent:
-                raise
+        last = None
+        if not (len(sp.Mul.make_args(B)) == 1 and B.is_Pow and B.exp.is_negative):    # 1/Y^n: at once below
+            try:
+                last = sub(1 - B)
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
+        if last is None:
             last = self._rewritten(1 - B, sp.together(1 - B), var, I, 1, False, depth, near)
         return _rule(K.sign_below_product, below, sub(B), last, expr=e, a=c, b=1)
 
