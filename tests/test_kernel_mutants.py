@@ -1062,7 +1062,8 @@ def test_sup_lower_by_limit_and_sup_scaled_claims_and_messages():
 def test_parse_accepts_srepr_and_refuses_the_rest():
     from uwmr_symbolic.kernel.parse import ParseError, parse
     assert parse("Add(Integer(1), Integer(2))") == 3
-    assert parse("Integer(-3)") == -3 and parse("-Integer(3)") == -3          # a unary minus is allowed
+    assert parse("Integer(-3)") == -3 and parse(" Integer( -3 ) ") == -3     # spaces are skipped
+    assert parse("-oo") == -oo and parse("-Integer(3)") == -3                 # a unary minus (srepr(-oo))
     assert parse("Symbol('x', real=True)") == x
     assert parse("Rational(1, 3)") == Q(1, 3)
     assert parse("Max(Integer(1), Integer(2))", design=True) == 2
@@ -1071,30 +1072,37 @@ def test_parse_accepts_srepr_and_refuses_the_rest():
         "Max(Integer(1), Integer(2))": "name not allowed: Max",            # design names only with design=True
         "getattr(Integer(1), 'p')": "name not allowed: getattr",
         "Integer(x)": "name not allowed: x",
-        "Integer(1.5)": "literal not allowed: 1.5",
-        "Integer(True)": "literal not allowed: True",
-        "Integer(None)": "literal not allowed: None",
+        "Integer(1.5)": "character not allowed: '.'",
+        "Integer(True)": "name not allowed: True",
+        "Integer(None)": "name not allowed: None",
+        "Integer('x')": "Integer: invalid literal for int() with base 10: 'x'",
+        "Symbol()": "Symbol: Symbol.__new__() missing 1 required positional argument: 'name'",
         "Symbol('x', integer=True)": "keyword not allowed: integer",
         "Symbol('x', real=False)": "keyword not allowed: real",
         "Symbol('x', real=1)": "keyword not allowed: real",
         "Symbol('x', real='True')": "keyword not allowed: real",
-        "Symbol('x', **{'real': True})": "keyword not allowed: None",
+        "Symbol('x', **{'real': True})": "character not allowed: '*'",
         "Symbol('x', real=Integer(1))": "keyword not allowed: real",
+        "Symbol(real=True, 'x')": "a positional argument after a keyword",
+        "Symbol('x\\n')": "character not allowed: \"'\"",
+        "--oo": "expected 'name', found '-'",
+        "+Integer(1)": "character not allowed: '+'",
+        "~Integer(1)": "character not allowed: '~'",
+        "Integer(1).p": "character not allowed: '.'",
+        "Integer(1)(2)": "expected 'end', found '('",
+        "[Integer(1)]": "character not allowed: '['",
+        "Integer(1) + Integer(2)": "character not allowed: '+'",
+        "Integer(1) Integer(2)": "expected 'end', found 'Integer'",
+        "Integer(1": "expected ',', found the end",
+        "Integer(1,": "expected 'name', found the end",
+        "Integer(\u0661)": "character not allowed: '\u0661'",       # an Arabic-Indic digit: ASCII only
+        "Add(" * 2000 + ")" * 2000: "nested too deeply",
     }
     for text, msg in cases.items():
         with pytest.raises(ParseError) as err:
             parse(text)
         assert str(err.value) == msg, text
-    for text, start in (("+Integer(1)", "syntax not allowed: UnaryOp(op=UAdd()"),
-                        ("~Integer(1)", "syntax not allowed: UnaryOp(op=Invert()"),
-                        ("Integer(1).p", "syntax not allowed: Attribute("),
-                        ("Integer(1)(2)", "syntax not allowed: Call(func=Call("),
-                        ("[Integer(1)]", "syntax not allowed: List("),
-                        ("Integer(1) + Integer(2)", "syntax not allowed: BinOp("),
-                        ("Integer(1", "not an srepr: ")):
-        with pytest.raises(ParseError) as err:
-            parse(text)
-        assert str(err.value).startswith(start), text
+    assert parse("Integer") is sp.Integer         # a bare name is the constructor itself: no rule takes it
     for bad in (12, None, "Integer(1)" + " " * 200_000):
         with pytest.raises(ParseError) as err:
             parse(bad)
@@ -1389,11 +1397,10 @@ def test_parse_design_scope_reaches_every_argument():
     assert parse("-Max(Integer(1), Integer(2))", design=True) == -2
     assert parse("Add(Max(Integer(1), Integer(2)), Integer(1))", design=True) == 3
     assert parse("Max(Integer(1), Min(Integer(2), Integer(3)))", design=True) == 2
-    import ast
-    text = "[Integer(1), Integer(2), Integer(3), Integer(4)]"
-    with pytest.raises(ParseError) as err:
-        parse(text)
-    assert str(err.value) == "syntax not allowed: " + ast.dump(ast.parse(text, mode="eval").body)[:60]
+    with pytest.raises(ParseError, match="^name not allowed: Max$"):
+        parse("Add(Integer(1), Max(Integer(1), Integer(2)))")          # the scope holds in every argument
+    # blanks around tokens are skipped, also at the end of a long text (no backtracking: linear time)
+    assert parse("Integer(1)" + " " * 199_990) == 1 and parse(" Add( Integer(1) ,Integer(2) ) ") == 3
 
 
 def test_evaluator_refuses_nan():

@@ -21,7 +21,7 @@ from .timeouts import attempt
 from .certify import (WORK, piecewise_sup_theorems, sign_theorems, sup_abs_theorems, sup_lower_theorem, sup_theorems,
                       sup_upper_theorem)
 from .univariate import (certified_inside, enclose_sup, exact_sign, exact_value, limit_at_infinity, prepare,
-                         prove_sign)
+                         prove_sign, tail_start)
 
 REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
 
@@ -193,8 +193,11 @@ def _continued_at(exprs, pieces, point, value) -> bool:
 
 def _quick_lower(exprs, pieces):
     """The largest lower bound of the sup that a short branch and bound on each
-    piece finds (None if none): a floor for the pieces that cannot hold it."""
-    lows = [enclose_sup(E, S, p.lo, p.hi, budget=QUICK_BOXES).lower for E, p in zip(exprs, pieces)]
+    piece finds (None if none): a floor for the pieces that cannot hold it.
+    An unbounded piece is searched on [lo, R] only (`tail_start`): a lower
+    bound there is one of the sup, without the tail's set-up."""
+    lows = [enclose_sup(E, S, p.lo, p.hi if p.hi != sp.oo else tail_start(p.lo), budget=QUICK_BOXES).lower
+            for E, p in zip(exprs, pieces)]
     return max((x for x in lows if x is not None), default=None)
 
 

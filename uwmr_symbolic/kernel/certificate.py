@@ -7,7 +7,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from .core import RULES, Claim, Theorem, decode
+from .core import RULES, Claim, Theorem
 
 FORMAT = "uwmr-kernel-certificate"
 VERSION = 1
@@ -85,7 +85,7 @@ def check_certificate(data) -> list[Theorem]:
         t = _CHECKED.get(key)
         if t is None:                  # a rule's result depends only on the key: the same step is checked once
             try:
-                t = fn(*[built[p] for p in prem], **{k: decode(v) for k, v in node["data"].items()})
+                t = fn.from_json(*[built[p] for p in prem], data=node["data"])
             except Exception as exc:   # noqa: BLE001 -- whatever goes wrong in a step, the step is rejected
                 raise CertificateError(f"theorem {i} ({node['rule']}) does not check: {exc}") from None
             if len(_CHECKED) > 4096:

@@ -125,6 +125,15 @@ def _encode(v):
     raise KernelError(f"rule data must be SymPy objects, numbers, strings or lists: {v!r}")
 
 
+def _encoded(v) -> bool:
+    """v has the shape `_encode` gives (rule data read from a certificate)."""
+    if isinstance(v, dict):
+        return set(v) == {"$"} and isinstance(v["$"], str)
+    if isinstance(v, list):
+        return all(_encoded(u) for u in v)
+    return v is None or isinstance(v, (bool, int, str))
+
+
 def decode(v):
     if isinstance(v, dict):
         return parse(v["$"])
@@ -142,17 +151,20 @@ def rule(*assumes):
     def deco(fn):
         @functools.wraps(fn)
         def apply(*premises, **data):
-            return _apply(fn, assumes, premises, data)
+            return _apply(fn, assumes, premises, {k: _encode(v) for k, v in data.items()})
+        # a certificate's step: its data already encoded (no srepr of what was just parsed)
+        apply.from_json = lambda *premises, data: _apply(fn, assumes, premises, data)
         RULES[fn.__name__] = apply
         return apply
     return deco
 
 
-def _apply(fn, assumes, premises, data) -> Theorem:
-    """One application of the rule fn (see `rule`)."""
+def _apply(fn, assumes, premises, enc: dict) -> Theorem:
+    """One application of the rule fn (see `rule`) to its encoded data."""
     for p in premises:
         _need(isinstance(p, Theorem), lambda: f"{fn.__name__}: a premise is not a theorem")
-    enc = {k: _encode(v) for k, v in data.items()}      # fails early on non-JSON data
+    _need(isinstance(enc, dict) and all(_encoded(v) for v in enc.values()),
+          lambda: f"{fn.__name__}: rule data must be SymPy objects, numbers, strings or lists")
     try:
         data = {k: decode(v) for k, v in enc.items()}     # exactly what a checker sees
     except ParseError as exc:
@@ -1007,12 +1019,24 @@ def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
         if isinstance(u, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.sin, sp.cos, sp.Abs)):
             return defined(u.args[0])
         return False
+    pos, nonneg, defined = map(_memoized, (pos, nonneg, defined))     # (a sum asks pos and nonneg of each term)
     if not defined(_sym(e)):
         return None
     return ("sympy-polys",) if any(polys) else ()
 
 
 defined_for_positive = functools.lru_cache(maxsize=4096)(defined_for_positive)      # pure: see core.rule
+
+
+def _memoized(fn):
+    """fn (of one SymPy expression, pure) with its answers kept."""
+    seen = {}
+
+    def once(u):
+        if u not in seen:
+            seen[u] = fn(u)
+        return seen[u]
+    return once
 
 
 def _defined(e, var, lo=0, hi=OO, lo_open=True, hi_open=True) -> tuple:

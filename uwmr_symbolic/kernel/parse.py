@@ -1,9 +1,11 @@
-"""Read an `srepr` string back into a SymPy expression without `eval` of
-arbitrary text: only calls of allow-listed SymPy constructors, with literal
-arguments, are accepted (a certificate is data, never code)."""
+"""Read an `srepr` string back into a SymPy expression.  The text is data,
+never code: a small tokenizer and recursive descent accept only calls of
+allow-listed SymPy constructors whose arguments are such calls, integers,
+quoted names and the keywords real/positive/nonnegative=True, with a minus
+sign before a number or an expression; nothing is `eval`ed."""
 from __future__ import annotations
 
-import ast
+import re
 from functools import lru_cache
 
 import sympy as sp
@@ -20,34 +22,30 @@ _SCOPE = {n: getattr(sp, n) for n in _NAMES} | {"ExprCondPair": sp.functions.ele
 _DESIGN_NAMES = "Max Min sign erfc erfi gamma acosh atanh asin acos tan sqrt".split()
 _DESIGN_SCOPE = {**_SCOPE, **{n: getattr(sp, n) for n in _DESIGN_NAMES}}
 _ASSUMPTIONS = {"real", "positive", "nonnegative"}
+# a name, an integer (with its sign), a quoted name without quotes or
+# backslashes inside, a punctuation mark, blanks; anything else is one bad
+# character (every character starts a match: no backtracking over the text)
+_TOKEN = re.compile(r"([A-Za-z_]\w*)|(-?[0-9]+)|'([^'\\]*)'|([(),=-])|(\s+)|(.)", re.ASCII | re.DOTALL)
 
 
 class ParseError(ValueError):
     pass
 
 
-def _check(node, scope=_SCOPE):
-    if isinstance(node, ast.Expression):
-        return _check(node.body, scope)
-    if isinstance(node, ast.Name):
-        if node.id not in scope:
-            raise ParseError(f"name not allowed: {node.id}")
-        return
-    if isinstance(node, ast.Constant):
-        if not isinstance(node.value, (int, str)) or isinstance(node.value, bool):
-            raise ParseError(f"literal not allowed: {node.value!r}")
-        return
-    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
-        return _check(node.operand, scope)
-    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
-        _check(node.func, scope)
-        for a in node.args:
-            _check(a, scope)
-        for k in node.keywords:
-            if k.arg not in _ASSUMPTIONS or not (isinstance(k.value, ast.Constant) and k.value.value is True):
-                raise ParseError(f"keyword not allowed: {k.arg}")
-        return
-    raise ParseError(f"syntax not allowed: {ast.dump(node)[:60]}")
+def _tokens(text):
+    for m in _TOKEN.finditer(text):
+        name, number, quoted, mark, blank, bad = m.groups()
+        if blank is not None:
+            continue
+        if bad is not None:
+            raise ParseError(f"character not allowed: {bad!r}")
+        if number is not None:
+            try:
+                yield "int", int(number)
+            except ValueError as exc:           # more digits than Python converts
+                raise ParseError(f"integer not allowed: {exc}") from None
+        else:
+            yield ("name", name) if name is not None else ("str", quoted) if quoted is not None else (mark, mark)
 
 
 def parse(text: str, design: bool = False) -> sp.Expr:
@@ -56,12 +54,60 @@ def parse(text: str, design: bool = False) -> sp.Expr:
     scope = _DESIGN_SCOPE if design else _SCOPE
     if not isinstance(text, str) or len(text) > 200_000:
         raise ParseError("expected an srepr string")
+    tokens = list(_tokens(text)) + [("end", None)]
+    at = 0
+
+    def expect(kind):
+        nonlocal at
+        if tokens[at][0] != kind:
+            found = "the end" if tokens[at][0] == "end" else repr(tokens[at][1])
+            raise ParseError(f"expected {kind!r}, found {found}")
+        at += 1
+        return tokens[at - 1][1]
+
+    def value():                                # an argument: a literal or an expression
+        kind, v = tokens[at]
+        if kind in ("int", "str"):
+            expect(kind)
+            return v
+        if kind == "-":                         # srepr(-oo) is "-oo"
+            expect(kind)
+            return -expression()
+        return expression()
+
+    def expression():                           # NAME, or NAME(arguments)
+        nonlocal at
+        name = expect("name")
+        if name not in scope:
+            raise ParseError(f"name not allowed: {name}")
+        if tokens[at][0] != "(":
+            return scope[name]
+        at += 1
+        args, keywords = [], {}
+        while tokens[at][0] != ")":
+            if tokens[at][0] == "name" and tokens[at + 1][0] == "=":
+                key = tokens[at][1]
+                if key not in _ASSUMPTIONS or tokens[at + 2] != ("name", "True"):
+                    raise ParseError(f"keyword not allowed: {key}")
+                keywords[key] = True
+                at += 3
+            elif keywords:
+                raise ParseError("a positional argument after a keyword")
+            else:
+                args.append(value())
+            if tokens[at][0] != ")":
+                expect(",")
+        at += 1
+        try:
+            return scope[name](*args, **keywords)
+        except (TypeError, ValueError, AttributeError) as exc:
+            raise ParseError(f"{name}: {exc}") from None
     try:
-        tree = ast.parse(text, mode="eval")
-    except SyntaxError as exc:
-        raise ParseError(f"not an srepr: {exc}") from None
-    _check(tree, scope)
-    return eval(compile(tree, "<srepr>", "eval"), {"__builtins__": {}}, dict(scope))  # noqa: S307
+        out = value()
+    except RecursionError:
+        raise ParseError("nested too deeply") from None
+    expect("end")
+    return out
 
 
 parse = lru_cache(maxsize=4096)(parse)      # not a decorator: see core.rule
