@@ -28,6 +28,7 @@ CASES = {
     "numpy_log.py": "np.log of a SymPy expression",
     "math_sqrt.py": "math.sqrt of a SymPy expression",
     "caret_power.py": "^ written for a power",
+    "undefined_function.py": "f = g(rho) with g = sympy.Function('g')",
 }
 
 #: file -> the words of the one line that name the fix
@@ -36,6 +37,7 @@ FIXES = {
     "numpy_log.py": ["at line 6", "numpy's log", "use sympy.log"],
     "math_sqrt.py": ["at line 7", "math.sqrt", "use sympy.sqrt"],
     "caret_power.py": ["at line 5", "write powers with **"],
+    "undefined_function.py": ["the undefined function 'g'", "write f with SymPy's functions"],
 }
 HANGS = "sleep_forever.py"
 

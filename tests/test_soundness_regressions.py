@@ -345,3 +345,51 @@ def test_radicals_with_a_huge_denominator_are_not_expanded(tmp_path):
     assert not report.timed_out
     assert v == {"P1": "refuted", "P2": "proved", "P3": "proved", "P4": "proved", "P5": "proved",
                  "P6": "refuted", "P7": "refuted", "P8": "proved"}
+
+
+# ------------------------------------------- constants beyond the doubles (audit, 2026-11-25)
+
+def test_a_scale_below_the_doubles_keeps_its_exact_kf(tmp_path):
+    # F = log(1 + s^2)/10^400: F' = 2s/(1 + s^2)/10^400 <= 10^-400, equality at s = 1, so kf = 10^-400
+    # exactly; F'/s = 2/(1 + s^2)/10^400 <= 2/10^400 = k (at s -> 0).  The decimal exponent of such a
+    # bound underflowed a float (math domain error: exit 2, "internal error").
+    report, v = verify(tmp_path, "f = log(1 + rho)/10**400\n")
+    assert report.kf.exact == sp.Rational(1, 10 ** 400) and "kf" in report.kernel["checked"]
+    assert all(v[p] == "proved" for p in ("P1", "P2", "P4", "P5", "P6", "P7", "P8")), v
+    assert v["P3"] != "refuted"
+    assert "in [1.0e-400, 1.0e-400]" in report.properties["P1"].reason       # not "[0, 0]"
+
+
+def test_a_scale_beyond_the_doubles_does_not_crash(tmp_path):
+    # F = 10^400 log(1 + s^2): every property holds, kf = 10^400 (at s = 1).  The growth rate of F
+    # overflowed a float (OverflowError: exit 2); now nothing may be refuted.
+    report, v = verify(tmp_path, "f = 10**400*log(1 + rho)\n")
+    assert all(v[p] == "proved" for p in ("P2", "P4", "P5", "P7", "P8")), v
+    assert "refuted" not in v.values()
+    assert report.kf is None or report.kf.upper is None or report.kf.upper >= 10 ** 400
+
+
+def test_a_tiny_parameter_gives_an_enclosure_of_the_true_kf(tmp_path):
+    # F = log(1 + c s^2), c = 10^-400: F' = 2cs/(1 + c s^2) has its maximum sqrt(c) = 10^-200 at
+    # s = 1/sqrt(c); P6's k = 2c = 2 10^-400 underflowed a float while rounded to a decimal.
+    report, v = verify(tmp_path, "c = sp.Symbol('c', positive=True)\nf = log(1 + c*rho)\n"
+                                 "params = {c: Rational(1, 10**400)}\n")
+    assert report.kf.lower <= Fraction(1, 10 ** 200) <= report.kf.upper
+    assert "refuted" not in v.values() and v["P2"] == v["P4"] == v["P5"] == "proved"
+
+
+def test_a_tower_of_exponentials_loads(tmp_path):
+    # exp(exp(exp(20000))) at the sample point (100, 100) has too many digits for SymPy's evalf
+    # (OverflowError at load: exit 2); the screen skips such a point, the design is usable
+    from uwmr_symbolic.design import load_design
+    path = tmp_path / "tower.py"
+    path.write_text(HEADER + "f = log(1 + sp.exp(sp.exp(sp.exp(rho)))) - log(1 + sp.exp(sp.exp(1)))\n")
+    assert load_design(path).f.has(sp.exp)
+
+
+def test_a_nest_deeper_than_the_recursion_limit_is_unknown(tmp_path):
+    # 60 nested logs: every property holds, but SymPy's diff recurses past Python's limit
+    # (RecursionError: exit 2, "internal error"); now every verdict is unknown and says why
+    report, v = verify(tmp_path, "f = rho\nfor _ in range(60):\n    f = log(1 + f)\n")
+    assert set(v.values()) == {"unknown"} and report.exit_status == 3
+    assert "nested too deeply" in report.properties["P1"].reason

@@ -1263,6 +1263,7 @@ def _diverges(F, var, starts) -> list:
                 continue
             if not lo > 0:
                 continue
+            lo = min(lo, 1e300)     # (a rate beyond the doubles: any smaller k serves)
             for k in (Fraction(lo / 2).limit_denominator(1000), Fraction(lo / 16).limit_denominator(1000)):
                 if k <= 0:
                     continue

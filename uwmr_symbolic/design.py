@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from . import e1 as E1, e2 as E2
 
@@ -253,6 +254,8 @@ def _check_real_valued(f: sp.Expr) -> None:
             if isinstance(v, sp.Piecewise) or v.free_symbols:
                 continue
             v = v.evalf(30)
+        except (OverflowError, RecursionError):
+            continue            # too large for SymPy to evaluate here: not a sign of bad input
         except (ZeroDivisionError, TypeError, ValueError):
             raise DesignError(f"f cannot be evaluated at (e1, e2) = ({a}, {b})") from None
         if v.has(sp.nan, sp.zoo) or v.has(sp.oo) or v.has(-sp.oo):
@@ -281,6 +284,10 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
     if isinstance(f_source, bool) or not isinstance(f_source, sp.Expr):
         raise DesignError(f"`f` is a {type(f_source).__name__}, not a SymPy expression in e1, e2")
     f = _canonical_symbols(f_source)
+    undefined = sorted(str(g.func) for g in f.atoms(AppliedUndef))
+    if undefined:
+        raise DesignError(f"f uses the undefined function {undefined[0]!r}; write f with SymPy's functions "
+                          f"(sympy.log, sympy.sqrt, ...) of e1 and e2")
     # floats in f (0.5, or 1/3 evaluated by Python) are read by `exact_float`,
     # like params and gains
     if any(not x.is_finite for x in f.atoms(sp.Float)):

@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+import mpmath
 import sympy as sp
 
 from .interval import Interval
@@ -48,7 +49,7 @@ class SupCertificate:
             return str(self.exact) if approx == str(self.exact) else f"{self.exact} = {approx}"
         if self.upper is None:
             return "unbounded" if self.unbounded_witness else "undecided"
-        return f"[{float(self.lower):.10g}, {float(self.upper):.10g}]"
+        return f"[{show(self.lower)}, {show(self.upper)}]"
 
 
 KfCertificate = SupCertificate
@@ -273,7 +274,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
         return exact_certificate(value, attained,
                               f"sup {name} = {value} {where}, proved by {value} - {name} >= 0 on [0, oo)")
     return SupCertificate(lower, upper, None, None,
-                          f"interval branch and bound: sup {name} in [{float(lower):.10g}, {float(upper):.10g}]",
+                          f"interval branch and bound: sup {name} in [{show(lower)}, {show(upper)}]",
                           point=enc.point)
 
 
@@ -312,12 +313,12 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
     where L <= lower and U >= upper are short decimals (U about 1/8 above
     when the tight one is not shown within its budget): `kernel_bounds`; for a
     Piecewise F, `_piecewise_enclosure`."""
-    L = _decimal(cert.lower, -1)
-    tiers = ((_decimal(cert.upper, 1), WORK), (_decimal(cert.upper * Fraction(9, 8), 1, 2), WORK))
+    L = decimal_beyond(cert.lower, -1)
+    tiers = ((decimal_beyond(cert.upper, 1), WORK), (decimal_beyond(cert.upper * Fraction(9, 8), 1, 2), WORK))
     enclose = _piecewise_enclosure if len(analysis.profile.pieces) > 1 else _formula_enclosure
     U, theorems, why = enclose(cert, analysis, L, tiers)
     if theorems is None:
-        cert.unchecked = [f"kf in [{float(cert.lower):.10g}, {float(cert.upper):.10g}] (kernel: {why})"]
+        cert.unchecked = [f"kf in [{show(cert.lower)}, {show(cert.upper)}] (kernel: {why})"]
         return cert
     cert.kernel_bounds = (Fraction(L.p, L.q), Fraction(U.p, U.q))
     cert.kernel, cert.unchecked = theorems, []
@@ -358,9 +359,27 @@ def _piecewise_enclosure(cert: SupCertificate, analysis, L, tiers):
     return None, None, why
 
 
-def _decimal(x: Fraction, side: int, digits: int = 8) -> sp.Rational:
-    """A decimal of `digits` significant digits >= x (side 1) or <= x (side -1), x > 0."""
-    scale = Fraction(10) ** (digits - 1 - math.floor(math.log10(x)))
+def show(x, digits: int = 10) -> str:
+    """x (a Fraction or rational of any size) with `digits` significant digits,
+    for messages: as a float where that is exact enough, else by mpmath (a
+    float would print 10^-400 as 0 and fail on 10^400)."""
+    x = Fraction(x)
+    try:
+        v = float(x)
+    except OverflowError:
+        v = math.inf
+    if x == 0 or 1e-300 < abs(v) < math.inf:
+        return f"{v:.{digits}g}"
+    return mpmath.nstr(mpmath.mpf(x.numerator) / x.denominator, digits)
+
+
+def decimal_beyond(x: Fraction, side: int, digits: int = 8) -> sp.Rational:
+    """A decimal of about `digits` significant digits >= x (side 1) or <= x
+    (side -1); the decimal exponent of x > 0 comes from its integers, so no
+    size of x overflows or underflows a float (x <= 0: `digits` - 1 places)."""
+    x = Fraction(x)
+    exp10 = math.floor(math.log10(x.numerator) - math.log10(x.denominator)) if x > 0 else 0
+    scale = Fraction(10) ** (digits - 1 - exp10)
     n = math.ceil(x * scale) if side > 0 else math.floor(x * scale)
     return sp.Rational(n) / sp.Rational(scale)
 

@@ -18,7 +18,6 @@ witnesses (P2 exactly; values along rays via the limit calculus) and says
 """
 from __future__ import annotations
 
-import math
 from dataclasses import replace
 from fractions import Fraction
 from functools import cached_property
@@ -31,7 +30,7 @@ from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
                       origin_value_theorems, piecewise_sign_theorem, radial_theorems, sign_theorems,
                       smoothness_theorems, sup_upper_theorem)
-from .kf import KfCertificate, certify_kf, certify_sup, scale
+from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, scale, show
 from .limits import NoLimit, limit_right
 from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
                       radial_profile,
@@ -339,13 +338,13 @@ def verify_p1(a: Analysis) -> Verdict:
         return c1
     if kf.upper is None:
         return unknown(f"C^1 proved, but no finite bound on |df/de2| found: {kf.reason}")
-    v = proved(f"{c1.reason}; kf = sup|F'| in [{float(kf.lower):.9g}, {float(kf.upper):.9g}]")
+    v = proved(f"{c1.reason}; kf = sup|F'| in [{show(kf.lower, 9)}, {show(kf.upper, 9)}]")
     if kf.kernel:
         # F' > 0 and F' <= c on (0, oo) (`certify.sup_theorems`), or |F'| <= c (`certify.sup_abs_theorems`)
         own = kf.kernel[len(a.reduction) + len(a.one_branch[1]):]
         bound = (own[:1], own[1]) if own[0].claim.kind == "sign" else ([], own[0])
     else:       # P1 needs some finite bound only: F' >= 0 and F' <= U, U about 1/8 above the enclosure of kf
-        bound = _p1_bound(a, round_up(Fraction(kf.upper) * Fraction(9, 8), 2))
+        bound = _p1_bound(a, decimal_beyond(Fraction(kf.upper) * Fraction(9, 8), 1, 2))
         if bound is None:
             return _lemmas(v, v, "f is C^1 with kf finite (continuity and the bound are the search's)")
     signed, upper = bound
@@ -510,7 +509,7 @@ def verify_p6(a: Analysis) -> Verdict:
         return unknown(f"no finite bound for F'(s)/s found: {sup.reason}")
     if not exists.proved:
         return unknown(f"k = {sup.show()}, but {exists.reason}")
-    k = sup.exact if sup.exact is not None else round_up(sup.upper)
+    k = sup.exact if sup.exact is not None else decimal_beyond(sup.upper, 1, 7)
     h = a.derivative(a.F, 1) / (k * S)
     # for the report only: simplify takes seconds on a large h (and expand multiplies it out)
     h = (sp.simplify(h) if sp.count_ops(h) <= 40 else h).subs(S, a.radius)
@@ -519,7 +518,7 @@ def verify_p6(a: Analysis) -> Verdict:
     v = proved(f"k = {k} ({smallest}), h = F'(s)/(k s) in [0, 1]: h(e1, e2) = {shown}",
                k=str(k), k_float=float_of(k), h=str(h))
     # the kernel needs some k: the exact sup, else (or when that bound has no room) one about 1/8 above it
-    loose = round_up(Fraction(sup.upper if sup.exact is not None else k) * Fraction(9, 8), 2)
+    loose = decimal_beyond(Fraction(sup.upper if sup.exact is not None else k) * Fraction(9, 8), 1, 2)
     tries = [k, loose] if sup.exact is not None else [loose]
     return _lemmas(v, v, "0 <= h <= 1 (the bound of F'(s)/s is the search's)",
                    lambda: next((th for c in tries for th in [_p6_theorems(a, c)] if th), []))
@@ -550,13 +549,6 @@ def _piecewise_p6(a: Analysis, k) -> list:
         return [positive, upper, *continuity_pair(a.F, S, ends)] if upper else []
     except NoProof:
         return []
-
-
-def round_up(x: Fraction, digits: int = 7) -> sp.Rational:
-    """A short decimal >= x (a valid constant k when x bounds a supremum)."""
-    exp10 = math.floor(math.log10(float(x))) if x > 0 else 0
-    scale = Fraction(10) ** (digits - 1 - exp10)
-    return sp.Rational(math.ceil(x * scale)) / sp.Rational(scale)
 
 
 def verify_p7(a: Analysis) -> Verdict:

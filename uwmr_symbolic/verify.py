@@ -20,7 +20,7 @@ import sympy as sp
 from .certify import design_budget
 from .design import Design, DesignError, load_design
 from .gains import GainCheck, check_gains
-from .kf import SupCertificate
+from .kf import SupCertificate, show
 from .properties import PROPERTIES, VERIFIERS, Analysis
 from .replay import replay
 from . import timeouts
@@ -122,8 +122,13 @@ def verify_loaded(design: Design, timeout: float = DEFAULT_TIMEOUT, start: float
     (`kernel_verdict`) and bound (10) is checked only with a kernel-checked
     kf."""
     start = time.monotonic() if start is None else start
-    with design_budget(design.f):       # the kernel proposer's work budget for this design
-        return _verify(design, timeout, start, kernel_only)
+    try:
+        with design_budget(design.f):       # the kernel proposer's work budget for this design
+            return _verify(design, timeout, start, kernel_only)
+    except RecursionError:                  # SymPy recurses once per level of f (diff, subs, printing)
+        why = "f is nested too deeply for SymPy (Python's recursion limit was reached): nothing was decided"
+        return Report(design.path, design, {p: unknown(why) for p in PROPERTIES}, None,
+                      seconds=time.monotonic() - start)
 
 
 def kernel_summary(checked) -> dict:
@@ -228,7 +233,7 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Tr
         if checked_kf is not None and kf.exact is None and kf.kernel_bounds is not None:
             L, U = kf.kernel_bounds
             checked_kf = replace(kf, lower=L, upper=U, reason=f"the kernel's enclosure: sup |F'| in "
-                                             f"[{float(L):.10g}, {float(U):.10g}] (the search's: {kf.reason})")
+                                             f"[{show(L)}, {show(U)}] (the search's: {kf.reason})")
             kf = checked_kf         # the report shows the enclosure the gain checks use
     gains = _gains(design, checked_kf)
     timed_out = timed_out or timeouts.expired != expired_before
