@@ -393,3 +393,18 @@ def test_a_nest_deeper_than_the_recursion_limit_is_unknown(tmp_path):
     report, v = verify(tmp_path, "f = rho\nfor _ in range(60):\n    f = log(1 + f)\n")
     assert set(v.values()) == {"unknown"} and report.exit_status == 3
     assert "nested too deeply" in report.properties["P1"].reason
+
+
+def test_a_steep_exponential_is_not_expanded_by_solveset(tmp_path):
+    # F = log(1 + s^2) - c exp(-K (s^2 - 3)^2), c = 1e-12, K = 1e30 (their binary values).  With
+    # u = s^2 - 3, F'(s) = 2s/(1 + s^2) + 4 c K s u exp(-K u^2), and at u = -1/sqrt(2K) (s just below
+    # sqrt(3)) the second term is about -4 c sqrt(3) sqrt(K/2) e^(-1/2) = -2970.5 (mpmath, 60
+    # digits): P5 and P6 fail; f(0, 0) = -c exp(-9K) < 0: P2 fails.  SymPy's solveset wrote
+    # exp(-K u^2) as a power of exp(u^2) of degree 10^30 and filled 9 GB within the timeout.
+    from uwmr_symbolic.univariate import solveset_may_try
+    report, v = verify(tmp_path, "f = log(1 + rho) - 1e-12*sp.exp(-(rho - 3)**2*1e30)\n")
+    assert v["P2"] == v["P5"] == v["P6"] == "refuted" and v["P4"] == "proved"
+    assert "refuted" not in (v["P1"], v["P7"], v["P8"])
+    s = sp.Symbol("s", positive=True)
+    assert not solveset_may_try(sp.exp(-(s**2 - 3)**2 * 10**6)) and not solveset_may_try(s**1001 - 2)
+    assert solveset_may_try(sp.exp(-(s**2 - 3)**2 * 100)) and solveset_may_try(s**1000 - 2)

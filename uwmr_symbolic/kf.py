@@ -22,7 +22,7 @@ from .timeouts import attempt
 from .certify import (WORK, piecewise_sup_theorems, sign_theorems, sup_abs_theorems, sup_lower_theorem, sup_theorems,
                       sup_upper_theorem)
 from .univariate import (certified_inside, enclose_sup, exact_sign, exact_value, limit_at_infinity, prepare,
-                         prove_sign, tail_start)
+                         prove_sign, solveset_may_try, tail_start)
 
 REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
 
@@ -86,7 +86,7 @@ def _candidates(expr, lo, hi, interior=True):
     d = sp.diff(expr, S)
     # SymPy solves E' = 0 in closed form only for algebraic or singly transcendental E'
     # (exp(-s^2)(1 - 2 s^2)); with functions of functions it searches until the time limit
-    solvable = interior and _nesting(d) <= 1
+    solvable = interior and _nesting(d) <= 1 and solveset_may_try(d)
     crit = None
     if solvable:
         crit = _rational_critical(d, lo, hi)

@@ -507,11 +507,27 @@ def _exact_zero_in(expr, var, lo, hi):
 ZERO_SEARCH_OPS = 150
 
 
+#: SymPy's solveset writes exp(k u) as exp(u)**k and x**k as a polynomial of degree k:
+#: beyond this k its dense polynomials fill memory (exp(-10^6 (s^2 - 3)^2): 9 GB in a minute)
+SOLVESET_MAX_RATE = 1000
+
+
+def solveset_may_try(expr) -> bool:
+    """expr is small enough for SymPy's solveset: at most ZERO_SEARCH_OPS
+    operations, and no power or exponential rate beyond SOLVESET_MAX_RATE."""
+    if sp.count_ops(expr) > ZERO_SEARCH_OPS:
+        return False
+    rates = [p.exp for p in expr.atoms(sp.Pow)]
+    rates += [t.as_coeff_Mul()[0] for g in expr.atoms(sp.exp) for t in sp.Add.make_args(sp.expand(g.args[0]))
+              if t.free_symbols]
+    return all(not (r.is_Number and abs(r) > SOLVESET_MAX_RATE) for r in rates)
+
+
 def exact_zeros_in(expr, var, lo, hi) -> list:
     """The zeros of expr in (lo, hi) that SymPy proposes and exact
     substitution confirms (SymPy may miss some: a proposal, not a census;
-    none for an expression of more than ZERO_SEARCH_OPS operations)."""
-    if sp.count_ops(expr) > ZERO_SEARCH_OPS:
+    none where `solveset_may_try` says no)."""
+    if not solveset_may_try(expr):
         return []
     try:
         sols = sp.solveset(sp.Eq(expr, 0), var, sp.Interval.open(lo, hi))
