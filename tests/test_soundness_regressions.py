@@ -408,3 +408,13 @@ def test_a_steep_exponential_is_not_expanded_by_solveset(tmp_path):
     s = sp.Symbol("s", positive=True)
     assert not solveset_may_try(sp.exp(-(s**2 - 3)**2 * 10**6)) and not solveset_may_try(s**1001 - 2)
     assert solveset_may_try(sp.exp(-(s**2 - 3)**2 * 100)) and solveset_may_try(s**1000 - 2)
+
+
+def test_f_identically_zero(tmp_path):
+    # f = 0: kf = 0, f(0, 0) = 0, f(2, 0) = 0 is not positive (P3 fails), df/de1 = 0 (P5 fails),
+    # df/de1 = k e1 h with h = 0 for any k > 0 (P6 holds), P1, P4, P7, P8 hold.  The search offered
+    # k = 0 (its sup F'(s)/s) with h = nan, and the certificate did not re-check: all unknown.
+    report, v = verify(tmp_path, "f = 0*rho\n")
+    assert v == {"P1": "proved", "P2": "proved", "P3": "refuted", "P4": "proved", "P5": "refuted",
+                 "P6": "proved", "P7": "proved", "P8": "proved"}
+    assert report.properties["P6"].reason.startswith("k = 1 (sup F'(s)/s = 0)") and report.kf.exact == 0

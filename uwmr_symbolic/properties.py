@@ -510,6 +510,8 @@ def verify_p6(a: Analysis) -> Verdict:
     if not exists.proved:
         return unknown(f"k = {sup.show()}, but {exists.reason}")
     k = sup.exact if sup.exact is not None else decimal_beyond(sup.upper, 1, 7)
+    if not k > 0:       # F' >= 0 and F'(s)/s <= 0: F' = 0, and h = 0 serves with any k > 0
+        k = sp.Integer(1)
     h = a.derivative(a.F, 1) / (k * S)
     # for the report only: simplify takes seconds on a large h (and expand multiplies it out)
     h = (sp.simplify(h) if sp.count_ops(h) <= 40 else h).subs(S, a.radius)
