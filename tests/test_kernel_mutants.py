@@ -1086,6 +1086,8 @@ def test_parse_accepts_srepr_and_refuses_the_rest():
         "Symbol(real=True, 'x')": "a positional argument after a keyword",
         "Symbol('x\\n')": "character not allowed: \"'\"",
         "--oo": "expected 'name', found '-'",
+        "-Integer": "a minus sign before what is not an expression",
+        "-true": "a minus sign before what is not an expression",
         "+Integer(1)": "character not allowed: '+'",
         "~Integer(1)": "character not allowed: '~'",
         "Integer(1).p": "character not allowed: '.'",

@@ -72,7 +72,10 @@ def parse(text: str, design: bool = False) -> sp.Expr:
             return v
         if kind == "-":                         # srepr(-oo) is "-oo"
             expect(kind)
-            return -expression()
+            operand = expression()
+            if not isinstance(operand, sp.Expr):
+                raise ParseError("a minus sign before what is not an expression")
+            return -operand
         return expression()
 
     def expression():                           # NAME, or NAME(arguments)
