@@ -216,6 +216,9 @@ def _lt(a, b) -> bool:
     return d.positive()
 
 
+_lt = functools.lru_cache(maxsize=8192)(_lt)      # pure: see core.rule (ends are compared again and again)
+
+
 def _const_sign(c) -> int:
     """The sign of an exact constant: exactly 0, or an Arb enclosure that
     excludes 0; KernelError otherwise."""
@@ -828,7 +831,8 @@ def _decided_by(signs, var, lo, hi, lo_open, hi_open):
     def sign_ok(d, want, strict):
         if not d.has(var):
             return _sign_ok(_const_sign(d), want, strict)
-        return any(p.claim.expr == _s(d) and p.claim.var == _s(var) and p.claim.want == want
+        e, x = _s(d), _s(var)
+        return any(p.claim.expr == e and p.claim.var == x and p.claim.want == want
                    and (p.claim.strict or not strict) and _within(p.claim, lo, hi, lo_open, hi_open)
                    for p in signs)
     return sign_ok
