@@ -1105,11 +1105,22 @@ def test_parse_accepts_srepr_and_refuses_the_rest():
             parse(text)
         assert str(err.value) == msg, text
     assert parse("Integer") is sp.Integer         # a bare name is the constructor itself: no rule takes it
+    # a quoted "(", ")" or "=" is a name, never punctuation
+    assert parse("Symbol(')')") == sp.Symbol(")") and parse("Symbol('(')") == sp.Symbol("(")
+    for text, msg in (("pi'('", "expected 'end', found '('"), ("Tuple(Integer(1)')')", "expected ',', found ')'"),
+                      ("Symbol(x'=')", "name not allowed: x")):
+        with pytest.raises(ParseError) as err:
+            parse(text)
+        assert str(err.value) == msg, text
+    with pytest.raises(ParseError, match="^integer not allowed: Exceeds the limit"):
+        parse("Integer(" + "9" * 5000 + ")")                # more digits than Python converts
     for bad in (12, None, "Integer(1)" + " " * 200_000):
         with pytest.raises(ParseError) as err:
             parse(bad)
         assert str(err.value) == "expected an srepr string"
     assert parse("Integer(1)" + " " * (200_000 - 10)) == 1                 # exactly 200,000 characters
+    with pytest.raises(ParseError, match="^expected an srepr string$"):
+        parse("Integer(1)" + " " * (200_001 - 10))                            # one more
     # names outside the scope are not builtins either
     with pytest.raises(ParseError, match="^name not allowed: __import__$"):
         parse("__import__('os')")
@@ -1659,3 +1670,17 @@ def test_sign_by_log_bound_reads_asinh_as_a_log():
                strict=False).startswith("sign not shown")
     assert why(L, cover(2 - 1 / W), sturm(I1, s, 1, 4), cover(W), expr=1 + sp.sinh(s), term=sp.sinh(s),
                p=-I1) == "sinh(s) is not a term M log(Y) of sinh(s) + 1"
+
+
+def test_rule_data_read_from_a_certificate_has_the_encoded_shape():
+    # a certificate's step is applied as written (`apply.from_json`): the same theorem as the rule
+    # applied to the objects, and data of any other shape is refused before the rule runs
+    two = {"$": sp.srepr(sp.Integer(2))}
+    assert K.value_sign.from_json(data={"value": two}) == K.value_sign(value=sp.Integer(2))
+    msg = "value_sign: rule data must be SymPy objects, numbers, strings or lists"
+    for bad in ({"$": 5}, {"$": "Integer(2)", "x": 1}, [1.5], [two, {"y": 1}], [[two, {"$": None}]], 1.5):
+        with pytest.raises(KernelError) as err:
+            K.value_sign.from_json(data={"value": bad})
+        assert str(err.value) == msg, bad
+    with pytest.raises(KernelError, match="^value_sign: rule data must be"):
+        K.value_sign.from_json(data=[("value", two)])       # not a dict at all
