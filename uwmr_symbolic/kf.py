@@ -22,7 +22,7 @@ from .timeouts import attempt
 from .certify import (WORK, piecewise_sup_theorems, sign_theorems, sup_abs_theorems, sup_lower_theorem, sup_theorems,
                       sup_upper_theorem)
 from .univariate import (certified_inside, enclose_sup, exact_sign, exact_value, limit_at_infinity, prepare,
-                         prove_sign, solveset_may_try, tail_start)
+                         prove_sign, small_rates, tail_start)
 
 REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
 
@@ -86,12 +86,12 @@ def _candidates(expr, lo, hi, interior=True):
     d = sp.diff(expr, S)
     # SymPy solves E' = 0 in closed form only for algebraic or singly transcendental E'
     # (exp(-s^2)(1 - 2 s^2)); with functions of functions it searches until the time limit
-    solvable = interior and _nesting(d) <= 1 and solveset_may_try(d)
+    solvable = interior and _nesting(d) <= 1
     crit = None
     if solvable:
         crit = _rational_critical(d, lo, hi)
         if crit is False:
-            crit = attempt(lambda: sp.solveset(d, S, sp.Interval.open(lo, hi)), 3.0)
+            crit = attempt(lambda: sp.solveset(d, S, sp.Interval.open(lo, hi)), 3.0) if small_rates(d) else None
     if isinstance(crit, sp.FiniteSet) and any(c.has(sp.CRootOf, sp.RootOf) for c in crit):
         crit = None     # algebraic numbers without radicals: no closed form to offer
     if isinstance(crit, sp.FiniteSet):

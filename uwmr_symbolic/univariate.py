@@ -512,11 +512,9 @@ ZERO_SEARCH_OPS = 150
 SOLVESET_MAX_RATE = 1000
 
 
-def solveset_may_try(expr) -> bool:
-    """expr is small enough for SymPy's solveset: at most ZERO_SEARCH_OPS
-    operations, and no power or exponential rate beyond SOLVESET_MAX_RATE."""
-    if sp.count_ops(expr) > ZERO_SEARCH_OPS:
-        return False
+def small_rates(expr) -> bool:
+    """No power or exponential rate in expr beyond SOLVESET_MAX_RATE, so
+    that SymPy's solveset may be asked about it."""
     rates = [p.exp for p in expr.atoms(sp.Pow)]
     rates += [t.as_coeff_Mul()[0] for g in expr.atoms(sp.exp) for t in sp.Add.make_args(sp.expand(g.args[0]))
               if t.free_symbols]
@@ -526,8 +524,9 @@ def solveset_may_try(expr) -> bool:
 def exact_zeros_in(expr, var, lo, hi) -> list:
     """The zeros of expr in (lo, hi) that SymPy proposes and exact
     substitution confirms (SymPy may miss some: a proposal, not a census;
-    none where `solveset_may_try` says no)."""
-    if not solveset_may_try(expr):
+    none for an expression of more than ZERO_SEARCH_OPS operations or
+    without `small_rates`)."""
+    if sp.count_ops(expr) > ZERO_SEARCH_OPS or not small_rates(expr):
         return []
     try:
         sols = sp.solveset(sp.Eq(expr, 0), var, sp.Interval.open(lo, hi))

@@ -1023,24 +1023,13 @@ def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
         if isinstance(u, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.sin, sp.cos, sp.Abs)):
             return defined(u.args[0])
         return False
-    pos, nonneg, defined = map(_memoized, (pos, nonneg, defined))     # (a sum asks pos and nonneg of each term)
+    pos, nonneg, defined = map(functools.cache, (pos, nonneg, defined))   # (a sum asks pos and nonneg of each term)
     if not defined(_sym(e)):
         return None
     return ("sympy-polys",) if any(polys) else ()
 
 
 defined_for_positive = functools.lru_cache(maxsize=4096)(defined_for_positive)      # pure: see core.rule
-
-
-def _memoized(fn):
-    """fn (of one SymPy expression, pure) with its answers kept."""
-    seen = {}
-
-    def once(u):
-        if u not in seen:
-            seen[u] = fn(u)
-        return seen[u]
-    return once
 
 
 def _defined(e, var, lo=0, hi=OO, lo_open=True, hi_open=True) -> tuple:
