@@ -1,7 +1,16 @@
 """uwmr-symbolic: machine verification of the saturated controller family (9)
 of Moreno-Valenzuela et al. (ISA Transactions, 2020) for unicycle robots."""
 
-import sympy as _sp
+import os as _os
+
+# SymPy keeps 1000 results per cached function by default; one proof asks for
+# the same derivatives, substitutions and assumption queries far more often
+# (the chain of 16 joins in benchmarks/bench_scaling.py: 35 s with 1000, 26 s
+# with 20000, for 40 MB more).  SymPy reads this once, at its first import; a
+# value the user has set is kept.
+_os.environ.setdefault("SYMPY_CACHE_SIZE", "20000")
+
+import sympy as _sp  # noqa: E402
 
 __version__ = "0.1.0"
 
