@@ -311,6 +311,32 @@ def test_roots_whose_isolating_intervals_touch():
     assert why(sturm, q.as_expr(), x, -1, 0, lo_open=True) == f"factor {q.as_expr()} has a root in the interval"
 
 
+def test_descartes_says_rootless_only_where_no_root_can_be():
+    """Descartes' rule on a rational (a, b) around <lo, hi>: a closed or
+    irrational end is pushed outward, so a root at a closed end, or just past
+    an irrational one, is inside (a, b) and the test cannot tell (False); an
+    open rational end is a itself.  Every True agrees with the isolation."""
+    cases = [(x - 1, I1, I2, True, True, True), (x - 1, I1, I2, False, True, False),
+             (x - 2, I1, I2, True, True, True), (x - 2, I1, I2, True, False, False),
+             (x - 3, I1, I2, False, False, True), (x - 3, I1, 4 * I1, False, False, False),
+             (x + 1, -2 * I1, I0, True, True, False), (x + 1, -sp.oo, I0, True, True, False),
+             (x ** 2 - 2, 2 * I1, sp.oo, True, True, True), (x ** 2 - 2, I1, 3 * I1, True, True, False),
+             (x ** 2 - 2, I0, I1, False, False, True), (x ** 2 - 2, sp.sqrt(3), 5 * I1, False, False, True),
+             (x ** 2 - 2, I0, sp.sqrt(2), True, True, False), (x ** 2 - 2, sp.sqrt(2), 3 * I1, True, True, False),
+             (x ** 2 - 2, -I1, I1, False, False, True), (x ** 2 + 1, -sp.oo, sp.oo, True, True, False),
+             (x ** 2 - 2, -sp.sqrt(3), -Q(3, 2), False, False, True), (x + 1, -sp.sqrt(2), I0, True, True, False)]
+    for e, lo, hi, lo_open, hi_open, rootless in cases:
+        q = K._poly_over_q(e, x)
+        assert K._rootless_by_descartes(q, lo, hi, lo_open, hi_open) is rootless, (e, lo, hi, lo_open, hi_open)
+        if rootless:
+            assert K._roots_in.__wrapped__(q, lo, hi, lo_open, hi_open) == 0
+    # (x - 1/2)(x - 3/2)(x^2 + 1): two roots in (0, 2) whose transform has two sign changes; none past 2
+    q = K._poly_over_q((x - Q(1, 2)) * (x - Q(3, 2)) * (x ** 2 + 1), x)
+    assert not K._rootless_by_descartes(q, I0, I2, True, True) and K._roots_in(q, I0, I2, True, True) == 2
+    assert K._rootless_by_descartes(q, I2, sp.oo, False, True) and K._rootless_by_descartes(q, Q(3, 2), I2, True, True)
+    assert why(sturm, q.as_expr(), x, 1, 2) == f"factor {q.as_expr()} has a root in the interval"
+
+
 # ---------------------------------------------------------- products and sums
 
 def test_sign_of_product_claims_and_messages():

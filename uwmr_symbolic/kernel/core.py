@@ -39,6 +39,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 from flint import arb
+from sympy.polys.densetools import dup_shift, dup_transform
 from sympy.polys.fields import FracField
 
 from .arb import Iv, Undefined, centered, evaluate
@@ -439,11 +440,31 @@ def _roots_in(q, lo, hi, lo_open, hi_open) -> int:
     def inside(a, b, end, sign, is_open):
         side = _side_of_root(q, sp.Rational(a), sp.Rational(b), end)
         return side * sign > 0 or (side == 0 and not is_open)
+    if _rootless_by_descartes(q, lo, hi, lo_open, hi_open):
+        return 0
     return sum(all(inside(a, b, end, sign, op) for end, sign, op in ((lo, 1, lo_open), (hi, -1, hi_open))
                    if end not in (OO, -OO)) for (a, b), _ in q.intervals())
 
 
 _roots_in = functools.lru_cache(maxsize=4096)(_roots_in)
+
+
+def _rootless_by_descartes(q, lo, hi, lo_open, hi_open) -> bool:
+    """True if Descartes' rule of signs shows q has no root in <lo, hi>: on a
+    rational (a, b) containing it, the positive roots of q(a + y) (b = oo)
+    or of (1 + y)^d q((a + b y)/(1 + y)) are q's roots in (a, b), and with
+    no sign change among its coefficients it has none.  (A milli-second
+    test; false when it cannot tell.)"""
+    if lo == -OO:
+        return False
+    a, b = (end if is_open and end.is_Rational or end == OO else
+            end + side * sp.Rational(1, 2 ** 24) if end.is_Rational else _rational_beyond(end, side)
+            for end, side, is_open in ((lo, -1, lo_open), (hi, 1, hi_open)))
+    f, Q = q.rep.to_list(), sp.QQ
+    g = dup_shift(f, Q(a.p, a.q), Q) if b == OO else \
+        dup_transform(f, [Q(b.p, b.q), Q(a.p, a.q)], [Q(1), Q(1)], Q)
+    signs = [c > 0 for c in g if c]
+    return all(x == signs[0] for x in signs)
 
 
 def _side_of_root(q, a, b, end) -> int:
@@ -1054,7 +1075,7 @@ def _rational_beyond(c, side):
     if c in (OO, -OO) or c.is_Rational:
         return c
     q = sp.Rational(math.floor(float(c) * 2 ** 24) + side * 2, 2 ** 24)
-    q = max(q, sp.Integer(0)) if side < 0 else q
+    q = max(q, sp.Integer(0)) if side < 0 and _lt(0, c) else q
     _need(_lt(q, c) if side < 0 else _lt(c, q), lambda: f"no rational bound found for {c}")
     return q
 
