@@ -5,7 +5,8 @@ the set satisfies  lower(lo) <= x <= upper(hi)  (lower/upper: the ends of a
 ball).  Arb rounds outward, so each operation below keeps this invariant:
 
 * x + y: [lo1 + lo2, hi1 + hi2];  -x: [-hi, -lo];
-* x * y: min and max of the four corner products (Arb's min/max of balls);
+* x * y: min and max of the four corner products (Arb's min/max of balls),
+  or [lo1 lo2, hi1 hi2] when lower(lo1), lower(lo2) >= 0;
 * 1/x only if 0 < lower(x) or upper(x) < 0 is *certified*;
 * an increasing function g: [g(lo), g(hi)] (g(ball) contains g of every point
   of the ball, in particular of its lower end); decreasing: swapped;
@@ -88,6 +89,8 @@ def _add(x: Iv, y: Iv) -> Iv:
 
 
 def _mul(x: Iv, y: Iv) -> Iv:
+    if x.lo >= 0 and y.lo >= 0:     # both sets >= 0: the products of the lower ends and of the upper ends
+        return Iv(x.lo * y.lo, x.hi * y.hi)
     p = [x.lo * y.lo, x.lo * y.hi, x.hi * y.lo, x.hi * y.hi]
     lo, hi = p[0], p[0]
     for q in p[1:]:
