@@ -15,14 +15,14 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from .interval import Interval
+from .interval import Interval, Undefined
 from .limits import NoLimit, rational_parts
 from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
 from .certify import (WORK, piecewise_sup_theorems, sign_theorems, sup_abs_theorems, sup_lower_theorem, sup_theorems,
                       sup_upper_theorem)
 from .univariate import (certified_inside, enclose_sup, exact_sign, exact_value, limit_at_infinity, prepare,
-                         prove_sign, small_rates, tail_start)
+                         prove_sign, small_rates, tail_start, value_at)
 
 REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
 
@@ -162,14 +162,17 @@ def _nesting(expr) -> int:
     return inner + 1 if isinstance(expr, sp.Function) else inner
 
 
-def _prove_bound(c, exprs, pieces, zeros_of) -> tuple[bool, bool | None]:
+def _prove_bound(c, exprs, pieces, zeros_of, strictly=True) -> tuple[bool, bool | None]:
     """Prove c - E_i >= 0 on every piece; returns (proved, strictly): strictly
-    is True when c - E_i > 0 was proved everywhere, None when undecided."""
+    is True when c - E_i > 0 was proved everywhere, None when undecided (or
+    not asked for: `strictly` False)."""
     for E, piece in zip(exprs, pieces):
         zeros = [z for z in zeros_of.get(id(piece), []) if z is not None and z not in (piece.lo, piece.hi)]
         if not (prove_sign(c - E, S, piece.lo, piece.hi, want=1, strict=False, zeros=zeros).proved
                 or sign_theorems(c - E, S, piece.lo, piece.hi, zeros=tuple(zeros), strict=False)[0]):
             return False, None          # (the kernel's proposer rewrites, e.g. a square over Q, where boxes fail)
+    if not strictly:
+        return True, None
     for E, piece in zip(exprs, pieces):
         zeros = [z for z in zeros_of.get(id(piece), []) if z is not None]
         if zeros or not prove_sign(c - E, S, piece.lo, piece.hi, want=1).proved:
@@ -178,7 +181,7 @@ def _prove_bound(c, exprs, pieces, zeros_of) -> tuple[bool, bool | None]:
 
 
 NEAR_ZERO = Fraction(1, 8)
-QUICK_BOXES = 30            # per piece, for `_quick_lower`
+QUICK_POINTS = 15           # per piece, for `_quick_lower`
 
 
 def _continued_at(exprs, pieces, point, value) -> bool:
@@ -193,13 +196,20 @@ def _continued_at(exprs, pieces, point, value) -> bool:
 
 
 def _quick_lower(exprs, pieces):
-    """The largest lower bound of the sup that a short branch and bound on each
-    piece finds (None if none): a floor for the pieces that cannot hold it.
-    An unbounded piece is searched on [lo, R] only (`tail_start`): a lower
-    bound there is one of the sup, without the tail's set-up."""
-    lows = [enclose_sup(E, S, p.lo, p.hi if p.hi != sp.oo else tail_start(p.lo), budget=QUICK_BOXES).lower
-            for E, p in zip(exprs, pieces)]
-    return max((x for x in lows if x is not None), default=None)
+    """The largest lower bound of the sup that the values at a few inner
+    points of each piece give (None if none): a floor for the pieces that
+    cannot hold it.  An unbounded piece is sampled on [lo, R] (`tail_start`)."""
+    best = None
+    for E, p in zip(exprs, pieces):
+        hi = p.hi if p.hi != sp.oo else tail_start(p.lo)
+        for k in range(1, QUICK_POINTS + 1):
+            try:
+                low = value_at(E, S, p.lo + (hi - p.lo) * sp.Rational(k, QUICK_POINTS + 1), prec=128).lower_fraction()
+            except Undefined:
+                continue
+            if low is not None and (best is None or low > best):
+                best = low
+    return best
 
 
 def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
@@ -260,7 +270,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
         if not (float(lower) - 1e-9 * abs(fv) - 1e-300 <= fv <= float(upper) + 1e-9 * abs(fv)):
             continue
         zeros = {id(piece): [point] if point is not None else []}
-        ok, strict = _prove_bound(value, exprs, pieces, zeros)
+        ok, strict = _prove_bound(value, exprs, pieces, zeros, strictly=point is None)     # (see `attained`)
         if not ok:
             continue
         if point is not None and point != sp.oo:
