@@ -586,6 +586,26 @@ def classic_designs(draw):
     return Case("classic", f, t, None, note=which)
 
 
+@st.composite
+def extreme_designs(draw):
+    """Constants beyond the doubles' range and steep exponentials (the audit
+    of 2026-11-25 found crashes there), every property true by construction
+    (each term is increasing, 0 at the origin, analytic; growth log):
+    c log(1 + rho): F' = 2 c s/(1 + s^2), kf = c at s = 1;
+    log(1 + c rho): F' = 2 c s/(1 + c s^2), kf = sqrt(c) at s = 1/sqrt(c);
+    log(1 + rho) + c (1 - exp(-K rho)): F'/s <= 2 + 2 c K, kf not known here."""
+    kind = draw(st.sampled_from(["outer", "inner", "steep"]))
+    c = sp.Integer(10) ** (draw(st.sampled_from([12, 40, 310, 400])) * draw(st.sampled_from([1, -1])))
+    truth = radial_truth((Fraction(0), Fraction(1)))
+    if kind == "outer":
+        return Case("extreme", c * sp.log(1 + RHO), truth, c, note=f"c log(1 + rho), c = {c}")
+    if kind == "inner":
+        return Case("extreme", sp.log(1 + c * RHO), truth, sp.sqrt(c), note=f"log(1 + c rho), c = {c}")
+    K = sp.Integer(10) ** draw(st.sampled_from([3, 6, 30]))
+    return Case("extreme", sp.log(1 + RHO) + c * (1 - sp.exp(-K * RHO)), truth, None,
+                note=f"log(1 + rho) + c (1 - exp(-K rho)), c = {c}, K = {K}")
+
+
 FAMILIES = {
     "radial": radial_designs, "float-offset": float_offset_designs, "power": power_designs,
     "elliptic": elliptic_designs, "separable": separable_designs, "cross": cross_term_designs,
@@ -593,7 +613,7 @@ FAMILIES = {
     "point-value": point_value_designs, "origin": origin_designs, "dip": dip_designs,
     "classic": classic_designs, "mixed": mixed_sign_designs, "far-dip": far_dip_designs,
     "almost-radial": almost_radial_designs, "chain": chain_designs, "maxmin": maxmin_designs,
-    "float-power": float_power_designs,
+    "float-power": float_power_designs, "extreme": extreme_designs,
 }
 
 
