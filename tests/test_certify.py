@@ -10,6 +10,8 @@ import sympy as sp
 from uwmr_symbolic.certify import sign_theorems
 from uwmr_symbolic.profile import S
 
+Q = sp.Rational
+
 pytestmark = pytest.mark.slow     # verifies designs / runs the proposer: seconds of CPU
 
 
@@ -169,6 +171,20 @@ def test_linear_growth_through_an_increasing_function():
     assert th.rule == "diverges_by_growth" and '"rate": "linear"' in th.data
     (th,) = growth_theorems(sp.log(1 + h ** 2), h)
     assert '"rate": "log"' in th.data
+
+
+def test_growth_of_a_nest_with_a_constant_factor():
+    """c log(1 + log(1 + 9 h^2/7)) grows slower than any rate
+    `diverges_by_growth` knows; it diverges through the increasing log of a
+    diverging argument, also with a factor c > 0 (a float coefficient read
+    as its exact binary value); not with c < 0."""
+    from uwmr_symbolic.certify import growth_theorems
+    h, c = S, sp.Rational(6121026514868073, 2 ** 51)       # the double nearest e
+    for F in (sp.log(1 + sp.log(1 + Q(9, 7) * h ** 2)), c * sp.log(1 + sp.log(1 + Q(9, 7) * h ** 2)) + 1):
+        th = growth_theorems(F, h)[0]
+        assert th.rule == "diverges_through_increasing" and th.claim.kind == "diverges"
+        assert th.claim.expr == sp.srepr(F)
+    assert growth_theorems(-c * sp.log(1 + sp.log(1 + h ** 2)), h) == []
 
 
 def test_growth_through_sinh_over_cosh_and_beside_a_vanishing_term():

@@ -884,12 +884,14 @@ def test_diverges_through_increasing():
     g = s * sp.diff(Y, s) - 1
     lower = log_rate(g, s)
     div = K.diverges_by_growth(lower, expr=Y, var=s, R=sp.Integer(1), rate="log", k=sp.Integer(1))
-    for E in (sp.log(Y), sp.sqrt(Y), Y ** Q(3, 2), sp.asinh(Y), sp.sinh(Y), 1 + sp.log(Y), sp.sinh(Y) - sp.pi):
+    for E in (sp.log(Y), sp.sqrt(Y), Y ** Q(3, 2), sp.asinh(Y), sp.sinh(Y), 1 + sp.log(Y), sp.sinh(Y) - sp.pi,
+              2 * sp.log(Y), Q(1, 10 ** 400) * sp.sinh(Y) - 5, (sp.pi - 3) * sp.sqrt(Y)):
         d = K.diverges_through_increasing(div, expr=E)
         assert d.claim == Claim("diverges", sp.srepr(E), sp.srepr(s), sp.srepr(sp.Integer(1)), "oo", False, True)
-    # a + G(Y) only for an exact constant a and G itself increasing
+    # a + m G(Y) only for exact constants a and m > 0 and G itself increasing
     for E in (sp.tanh(Y), sp.atan(Y), 1 / Y, Y ** Q(-1, 2), sp.log(Y + 1), sp.log(s + 1), 1 - sp.log(Y),
-              sp.Float(1.5) + sp.log(Y), sp.tanh(s) + sp.log(Y), 2 * sp.log(Y)):
+              sp.Float(1.5) + sp.log(Y), sp.tanh(s) + sp.log(Y), -2 * sp.log(Y), (3 - sp.pi) * sp.sqrt(Y),
+              sp.Float(2) * sp.log(Y), s * sp.log(Y), sp.tanh(s) * sp.log(Y)):
         rejects(K.diverges_through_increasing, div, expr=E)
     rejects(K.diverges_through_increasing, lower, expr=sp.log(Y))            # not a divergence
 

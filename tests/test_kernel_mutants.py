@@ -1544,15 +1544,16 @@ def _diverging_s():
 
 def test_diverges_through_increasing_messages():
     """s -> oo, so 1 + log(s) -> oo; not from a premise that is no divergence,
-    not for 2 log(s) or 3 + sqrt(s - 1) (G of another Y), and not for
+    not for -2 log(s) (m < 0) or 3 + sqrt(s - 1) (G of another Y), and not for
     log(s - 2), which s - 2 -> oo makes diverge but which is not defined for
     every s > 0."""
     D, div = K.diverges_through_increasing, _diverging_s()
     assert D(div, expr=1 + sp.log(s)).claim == Claim("diverges", R(1 + sp.log(s)), R(s), R(I1), "oo", False, True)
     sign_only = sturm(s, s, 1, 4)
     assert why(D, sign_only, expr=sp.log(s)) == "premise must be a diverges theorem"
-    assert why(D, div, expr=2 * sp.log(s)) == "2*log(s) is not a + G(Y) with the premise about Y"
-    assert why(D, div, expr=3 + sp.sqrt(s - 1)) == "sqrt(s - 1) + 3 is not a + G(Y) with the premise about Y"
+    assert why(D, div, expr=-2 * sp.log(s)) == "-2*log(s) is not a + m G(Y), m > 0, with the premise about Y"
+    assert why(D, div, expr=3 + sp.sqrt(s - 1)) == "sqrt(s - 1) + 3 is not a + m G(Y), m > 0, with the premise about Y"
+    assert D(div, expr=2 * sp.log(s)).claim.expr == R(2 * sp.log(s))
     half = K.sign_by_sturm(expr=Q(1, 2), var=s, lo=sp.Integer(3), hi=oo, lo_open=False, hi_open=True, want=1,
                            strict=False)
     shifted = K.diverges_by_growth(half, expr=s - 2, var=s, R=sp.Integer(3), rate="linear", k=Q(1, 2))

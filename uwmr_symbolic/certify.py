@@ -1136,7 +1136,7 @@ def growth_theorems(F, var, last=None) -> list:
                               lambda g: (_diverges(g, var, (R,)) or _diverges_above(g, var, (R,)))[0])]
         except (NoProof, IndexError, K.KernelError, Undefined):
             return []
-    G = F.as_independent(var, as_Add=True)[1]
+    G = F.as_independent(var, as_Add=True)[1].as_independent(var)[1]
     if K.unbounded_increasing(G) and G.args[0].atoms(sp.Function):     # a nest: the rates grow slow and dear
         return _diverges_inside(F, var) or _diverges(F, var, (sp.Integer(4), sp.Integer(16))) or \
             _diverges_above(F, var)
@@ -1144,11 +1144,11 @@ def growth_theorems(F, var, last=None) -> list:
 
 
 def _diverges_inside(F, var) -> list:
-    """F = a + G(Y) -> oo because Y -> oo, a constant, G increasing and
-    unbounded (log, exp, sinh, asinh, Y^p): `diverges_through_increasing`
+    """F = a + m G(Y) -> oo because Y -> oo, a and m > 0 constants, G
+    increasing and unbounded (log, exp, sinh, asinh, Y^p): `diverges_through_increasing`
     (log(1 + log(1 + s^2)), slower than any rate `diverges_by_growth` knows;
     nested deeper through a = 1)."""
-    G = F.as_independent(var, as_Add=True)[1]
+    G = F.as_independent(var, as_Add=True)[1].as_independent(var)[1]      # (a constant factor m > 0: the kernel checks)
     if not K.unbounded_increasing(G):
         return []
     inner = growth_theorems(G.args[0], var)

@@ -1468,18 +1468,19 @@ diverges_by_growth = rule("arb", "sympy-core", "sympy-diff")(diverges_by_growth)
 
 
 def diverges_through_increasing(div, *, expr):
-    """a + G(Y) -> +oo as x -> oo when Y -> +oo (premise `div`), for an
-    exact constant a (0 too) and G = log, exp, sinh, asinh or a power Y^p
-    with rational p > 0 (increasing and unbounded on the values Y takes for
-    large x); E = a + G(Y) defined for every x >= R (`_defined`).  Claim on
-    the premise's [R, oo)."""
+    """a + m G(Y) -> +oo as x -> oo when Y -> +oo (premise `div`), for exact
+    constants a (0 too) and m > 0 (1 too) and G = log, exp, sinh, asinh or a
+    power Y^p with rational p > 0 (increasing and unbounded on the values Y
+    takes for large x); E = a + m G(Y) defined for every x >= R (`_defined`).
+    Claim on the premise's [R, oo)."""
     c = div.claim
     _need(c.kind == "diverges", "premise must be a diverges theorem")
     var = c.x()
     e = _expr(expr, var)
-    a, g = e.as_independent(var, as_Add=True)
-    _need(_number_ok(a) and unbounded_increasing(g) and c.expr == _s(g.args[0]),
-          lambda: f"{e} is not a + G(Y) with the premise about Y")
+    a, mg = e.as_independent(var, as_Add=True)
+    m, g = mg.as_independent(var)
+    _need(_number_ok(a) and _const_sign(m) > 0 and unbounded_increasing(g) and c.expr == _s(g.args[0]),
+          lambda: f"{e} is not a + m G(Y), m > 0, with the premise about Y")
     return dataclasses.replace(c, expr=_s(e)), _defined(e, var, c.ends()[0], lo_open=False)
 diverges_through_increasing = rule("sympy-core")(diverges_through_increasing)
 
