@@ -193,28 +193,33 @@ class Evidence:
 
         def apart(u, v):
             return u is not None and v is not None and abs(u - v) > 1e-6 * max(1, abs(u), abs(v))
+
+        def kept(gaps):     # a jump's gap stays as the distance shrinks 10^12-fold; a slope's shrinks with it
+            return abs(gaps[1]) >= abs(gaps[0]) / 2
         for b in self.case.radii:
             for (cx, cy) in dirs:
                 seen = [(self.num.both(k, cx * b * (1 - d), cy * b * (1 - d)),
                          self.num.both(k, cx * b * (1 + d), cy * b * (1 + d))) for d in SMALL]
-                if all(apart(lo, hi) for lo, hi in seen):
+                if all(apart(lo, hi) for lo, hi in seen) and kept([hi - lo for lo, hi in seen]):
                     lo, hi = seen[1]
                     return (f"{k} jumps across |e| = {b} in direction ({cx}, {cy}): {mpmath.nstr(lo, 12)} "
                             f"inside, {mpmath.nstr(hi, 12)} outside at distance 1e-24 (50 and 100 digits)")
             if k == "f":     # the value on the circle against the limit
                 on = sp.N(self.num.fx.subs({e1: b, e2: 0}), 60)
                 outs = [self.num.both("f", b * (1 + d), 0) for d in SMALL]
-                if on.is_number and all(apart(mpmath.mpf(str(on)), o) for o in outs):
+                if on.is_number and all(apart(mpmath.mpf(str(on)), o) for o in outs) and \
+                        kept([o - mpmath.mpf(str(on)) for o in outs]):
                     return f"f({b}, 0) = {sp.N(on, 15)} but f -> {mpmath.nstr(outs[1], 15)} next to it"
         # the origin: the value against the limit, derivatives from different directions
         rows = [[self.num.both(k, cx * d, cy * d) for cx, cy in dirs + [(-1, 0), (0, -1)]] for d in SMALL]
         if all(v is not None for row in rows for v in row):
-            if all(apart(max(row), min(row)) for row in rows):
+            if all(apart(max(row), min(row)) for row in rows) and kept([max(row) - min(row) for row in rows]):
                 return (f"{k} near the origin at radius 1e-24 takes the values "
                         f"{[mpmath.nstr(v, 8) for v in rows[1]]} in different directions (50 and 100 digits)")
             if k == "f":
                 at0 = sp.N(self.num.fx.subs({e1: 0, e2: 0}), 60)
-                if at0.is_number and all(apart(mpmath.mpf(str(at0)), row[0]) for row in rows):
+                if at0.is_number and all(apart(mpmath.mpf(str(at0)), row[0]) for row in rows) and \
+                        kept([row[0] - mpmath.mpf(str(at0)) for row in rows]):
                     return f"f(0, 0) = {sp.N(at0, 15)} but f -> {mpmath.nstr(rows[1][0], 15)} at the origin"
         return None
 
