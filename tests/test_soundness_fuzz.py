@@ -189,3 +189,20 @@ def test_the_design_file_rebuilds_f_bit_for_bit():
     exec(grammar.design_source(case), ns)
     assert ns["f"] == case.f
     assert {float(a) for a in ns["f"].atoms(sp.Float)} == {0.30000000000000004}
+
+
+def test_the_origin_value_is_read_before_sympy_folds_a_float():
+    """5/3 (1 - exp(-rho)) + 5/3 log cosh(rho) + Float(pi) - pi: SymPy folds
+    5/3 + Float(pi) into the double 4.80825932025646, so f(0, 0) as read is
+    4.80825932025646 - 5/3 - pi = +9.5e-17 and P3 holds (F increases from
+    it), although Float(pi) - pi < 0.  Substituting the origin into f first
+    folds -5/3 into that double once more and gave the sign -1: the grammar
+    called P3 false and the fuzzer reported the verifier's proof as false
+    (seed 20261125)."""
+    import math
+    f = sp.Rational(5, 3) * (1 - sp.exp(-RHO)) + sp.Rational(5, 3) * sp.log(sp.cosh(RHO)) \
+        + grammar.fl(math.pi) - sp.pi
+    assert [repr(float(a)) for a in f.atoms(sp.Float)] == ["4.80825932025646"]
+    assert grammar._exact_sign(grammar.fl(math.pi) - sp.pi) == -1
+    assert grammar._exact_sign(f.subs({e1: 0, e2: 0})) == -1
+    assert grammar._exact_sign(grammar._origin_as_read(f)) == 1
