@@ -205,7 +205,7 @@ def test_sign_by_taylor_claims_and_messages():
 def test_sign_by_sturm_claims_and_messages():
     thm = sturm(x ** 2 - 2, x, Q(3, 2), oo, hi_open=True)
     assert thm.claim == sign(x ** 2 - 2, x, Q(3, 2), oo, hi_open=True)
-    assert thm.assumptions == {"sympy-polys"} and thm.rule == "sign_by_sturm"
+    assert thm.assumptions == {"sympy-polys", "flint-polys"} and thm.rule == "sign_by_sturm"
     assert sturm(x - 2, x, 1, 2, hi_open=True, want=-1).claim == sign(x - 2, x, 1, 2, hi_open=True, want=-1)
     assert why(sturm, x - 2, x, 1, 2, want=-1) == "factor x - 2 has a root in the interval"
     assert why(sturm, x - 1, x, 1, 2) == "factor x - 1 has a root in the interval"
@@ -253,7 +253,8 @@ def test_sign_by_sturm_with_irrational_ends():
     inside = x - Q(14142135623730, 10 ** 13)
     assert why(S, expr=inside, var=x, lo=I0, hi=r2, lo_open=True, hi_open=True, want=-1) == \
         f"factor {sp.Poly(inside, x).sqf_list()[1][0][0].as_expr()} has a root in the interval"
-    assert why(sturm, 1 / x, x, 1, 2) == "not a polynomial: 1/x"
+    assert why(sturm, 1 / x, x, -1, 2) == "factor x has a root in the interval"
+    assert why(sturm, sp.sqrt(2) / x, x, 1, 2) == "not a rational function over Q: sqrt(2)/x"
     assert why(sturm, sp.sqrt(2) * x, x, 1, 2) == "coefficients are not rational"
     assert why(sturm, I0, x, 1, 2) == "the zero polynomial has no strict sign"
     zero = sturm(I0, x, 1, sp.oo, hi_open=True, want=-1, strict=False)          # 0 <= 0 on [1, oo)
@@ -337,6 +338,42 @@ def test_descartes_says_rootless_only_where_no_root_can_be():
     assert why(sturm, q.as_expr(), x, 1, 2) == f"factor {q.as_expr()} has a root in the interval"
 
 
+def test_sign_by_sturm_of_a_rational_function():
+    """e = N/D over Q: wherever G != 0, e is defined and equals N/D, where G
+    collects every denominator of e's tree (a negative power's base too), so
+    a removable singularity still refutes: the claim is about e as written."""
+    e = (x ** 2 + 1) / (x - 3)
+    assert sturm(e, x, 0, 3, hi_open=True, want=-1).claim == sign(e, x, 0, 3, hi_open=True, want=-1)
+    assert sturm(e, x, 0, 3, hi_open=True, want=-1).assumptions == {"sympy-polys", "flint-polys"}
+    assert why(sturm, e, x, 0, 3, want=-1) == "factor x - 3 has a root in the interval"     # closed at the pole
+    assert why(sturm, e, x, 0, 2) == "p(1) has the wrong sign"
+    assert sturm(-1 / (x + 1), x, 0, oo, hi_open=True, want=-1).claim.want == -1   # the sign of D counts
+    assert why(sturm, -1 / (x + 1), x, 0, oo, hi_open=True) == "p(1/2) has the wrong sign"
+    # (x^2 - 1)/(x - 1) = x + 1 except at 1, where it is undefined
+    assert why(sturm, (x ** 2 - 1) / (x - 1), x, 0, 2) == "factor x - 1 has a root in the interval"
+    assert sturm((x ** 2 - 1) / (x - 1), x, 1, 2, lo_open=True).claim.lo_open is True
+    # (1 + 1/(x - 1))^-2 = (x - 1)^2/x^2, undefined at 1 (the inner 1/(x - 1)) and at 0
+    inv = (1 + 1 / (x - 1)) ** -2
+    assert why(sturm, inv, x, Q(1, 2), 2, strict=False) == "factor x**2 - x has a root in the interval"
+    assert sturm(inv, x, 1, 2, lo_open=True).claim.strict is True
+    # weak: a double root of N inside is allowed, a strict claim is not
+    dbl = (x - 1) ** 2 / (x + 1)
+    assert sturm(dbl, x, 0, 2, strict=False).claim.strict is False
+    assert why(sturm, dbl, x, 0, 2) == "factor x - 1 has a root in the interval"
+    assert why(sturm, sp.sqrt(x) / (x + 1), x, 0, 1) == "not a rational function over Q: sqrt(x)/(x + 1)"
+    assert why(sturm, 1 / (x ** 40 + 1) ** 60, x, 0, 1) == "degree too high"
+
+
+def test_fraction_over_q():
+    N, D, G = K._fraction_over_q((1 + 1 / (x - 1)) ** -2 + x / 3, x)
+    # (x - 1)^2/x^2 + x/3 = (3 (x - 1)^2 + x^3)/(3 x^2); G = x (x - 1): both denominators met
+    to = lambda q: sp.Poly(list(reversed([sp.Rational(int(c.p), int(c.q)) for c in q.coeffs()])), x).as_expr()
+    assert sp.expand(to(N) * 3 * x ** 2 - to(D) * (3 * (x - 1) ** 2 + x ** 3)) == 0
+    assert sp.factor(to(G)) == x * (x - 1) * sp.LC(to(G), x) and sp.degree(to(D), x) == 2
+    N, D, G = K._fraction_over_q(2 * x ** 3 * (x + 1) ** -2 * (x + 1), x)   # SymPy keeps it (x + 1)**(-1) here
+    assert sp.cancel(to(N) / to(D) - 2 * x ** 3 / (x + 1)) == 0 and sp.degree(to(G), x) == 1
+
+
 # ---------------------------------------------------------- products and sums
 
 def test_sign_of_product_claims_and_messages():
@@ -356,7 +393,7 @@ def test_sign_of_product_claims_and_messages():
     for prem, e, w, st in cases:
         thm = P(*prem, expr=e)
         assert thm.claim == sign(e, x, 1, 2, want=w, strict=st), e
-    assert thm.assumptions == ARB | {"sympy-polys"} and thm.rule == "sign_of_product"
+    assert thm.assumptions == ARB | {"sympy-polys", "flint-polys"} and thm.rule == "sign_of_product"
     assert why(P, pos, expr=(x + 1) * sp.sin(x)) == "no premise for factor sin(x)"
     assert why(P, pos, expr=(x + 1) * (x + 2) ** 2) == "no premise for factor (x + 2)**2 nor its base"
     assert why(P, weak, expr=1 / (x - 1)) == "1/(x - 1): a negative power needs a strict sign of its base"
@@ -382,7 +419,7 @@ def test_sign_of_sum_claims_and_messages():
     nq = sturm(-x ** 2, x, -1, 1, want=-1, strict=False)
     assert S(nq, expr=-x ** 2 - 1, want=-1).claim == sign(-x ** 2 - 1, x, -1, 1, want=-1)
     two = S(sq, sturm(x ** 4, x, -1, 1, strict=False), expr=x ** 2 + 1 + x ** 4, want=1)
-    assert two.claim == sign(x ** 4 + x ** 2 + 1, x, -1, 1) and two.assumptions == ARB | {"sympy-polys"}
+    assert two.claim == sign(x ** 4 + x ** 2 + 1, x, -1, 1) and two.assumptions == ARB | {"sympy-polys", "flint-polys"}
     # strict because one term is: x**2 > 0 on [1/2, 1]
     one = S(sturm(x ** 2, x, Q(1, 2), 1), sturm(x ** 4, x, Q(1, 2), 1, strict=False), expr=x ** 2 + x ** 4, want=1)
     assert one.claim == sign(x ** 4 + x ** 2, x, Q(1, 2), 1)
@@ -412,7 +449,7 @@ def test_sign_through_increasing_claims_and_messages():
         assert T(y, expr=G(x - 1)).claim == sign(G(x - 1), x, 1, 2, lo_open=True, strict=False)
         assert T(ny, expr=G(x - 3)).claim == sign(G(x - 3), x, 1, 2, hi_open=True, want=-1)
     thm = T(ny, expr=sp.exp(x - 3))
-    assert thm.claim == sign(sp.exp(x - 3), x, 1, 2, hi_open=True) and thm.assumptions == {"sympy-core", "sympy-polys"}
+    assert thm.claim == sign(sp.exp(x - 3), x, 1, 2, hi_open=True) and thm.assumptions == {"sympy-core", "sympy-polys", "flint-polys"}
     assert T(y, expr=sp.cosh(x - 1)).claim == sign(sp.cosh(x - 1), x, 1, 2, lo_open=True)
     assert why(T, y, expr=sp.cos(x - 1)) == "not G(Y): cos(x - 1)"
     assert why(T, y, expr=sp.tanh(x)) == "premise must be about the argument"
@@ -441,7 +478,7 @@ def test_join_claims_and_messages():
     b = sturm(x + 1, x, 1, 2, lo_open=True, hi_open=True)
     j = K.join(a, b)
     assert j.claim == sign(x + 1, x, 0, 2, True, True, strict=False) and j.rule == "join"
-    assert j.assumptions == {"sympy-polys"}
+    assert j.assumptions == {"sympy-polys", "flint-polys"}
     assert K.join(sturm(x + 1, x, 0, 1), b).claim == sign(x + 1, x, 0, 2, hi_open=True)
     assert why(K.join, a, sturm(x + 2, x, 1, 2)) == "different claims"
     assert why(K.join, a, sturm(x + 1, x, 2, 3)) == "not adjacent"
@@ -456,7 +493,7 @@ def test_join_at_zero_claims_and_messages():
     left = sturm(e, x, 0, 1, lo_open=True, hi_open=True)
     right = sturm(e, x, 1, 2, lo_open=True, hi_open=True)
     j = K.join_at_zero(left, right)
-    assert j.claim == sign(e, x, 0, 2, True, True, strict=False) and j.assumptions == ARB | {"sympy-polys"}
+    assert j.claim == sign(e, x, 0, 2, True, True, strict=False) and j.assumptions == ARB | {"sympy-polys", "flint-polys"}
     assert why(K.join_at_zero, left, sturm(e + 1, x, 1, 2, lo_open=True)) == "different claims"
     assert why(K.join_at_zero, left, sturm(e, x, Q(3, 2), 2, lo_open=True)) == "not adjacent"
     f = x ** 2 - 2 * x + 2
@@ -472,7 +509,7 @@ def test_weaken_claims_and_messages():
     W = K.weaken
     w = W(j, lo=Q(1, 2), hi=I2, lo_open=False, hi_open=True, strict=False)
     assert w.claim == sign(x + 1, x, Q(1, 2), 2, hi_open=True, strict=False) and w.rule == "weaken"
-    assert w.assumptions == {"arb", "sympy-polys"}
+    assert w.assumptions == {"arb", "sympy-polys", "flint-polys"}
     # the same interval, and its ends: (0, 2] inside (0, 2], (0, 1) inside; [0, 2] not
     assert W(j, lo=I0, hi=I2, lo_open=True, hi_open=False, strict=True).claim == j.claim
     assert W(j, lo=I0, hi=I1, lo_open=True, hi_open=True, strict=True).claim == sign(x + 1, x, 0, 1, True, True)
@@ -501,7 +538,7 @@ def test_sign_by_rewrite_claims_and_messages():
     ident = exact_identity(L, s + 1, s, 0, oo, True, True)
     thm = K.sign_by_rewrite(Rw, ident)
     assert thm.claim == sign(L, s, 0, oo, True, True) and thm.rule == "sign_by_rewrite"
-    assert thm.assumptions == ARB | {"sympy-polys"}
+    assert thm.assumptions == ARB | {"sympy-polys", "flint-polys"}
     # I = [1, 2] inside (0, oo): lo > 0, defined for s > 0
     assert K.sign_by_rewrite(sturm(s + 1, s, 1, 2), ident).claim == sign(L, s, 1, 2)
     # the identity on (0, oo) does not cover [0, 2] (x real, closed at 0)
@@ -558,7 +595,7 @@ def test_defined_for_positive():
               sp.sqrt(1 + (1 / s ** 2 - 1) ** 3), 1 / (2 - 3 * s + 2 * s ** 2), 1 / ((s - 1) ** 3 + 3 * s + 1),
               sp.log((s ** 2 - s + 1) / (s ** 2 + 1)) ** 2,
               sp.log((s - 1) ** 3 + 1), 1 / (s + 1 - 1 / (s + 1))):
-        assert d(e, s) == ("sympy-polys",), e
+        assert d(e, s) == ("sympy-polys", "flint-polys"), e
     # not (or not syntactically) defined for every s > 0
     for e in (1 / (s - 1), sp.log(s - 1), sp.sqrt(s - 1), 1 / sp.sin(s), sp.log(sp.sin(s) + 2), s ** s,
               sp.gamma(s), 1 / (1 - s), (s - 1) ** Q(1, 2), 1 / ((s - 1) ** 2), sp.log(-s), sp.log(s * (s - 1)),
@@ -585,24 +622,24 @@ def test_defined_on_an_interval():
     count runs on rational bounds around irrational ends (outward, so a
     root at an irrational end is not excluded); closed ends by Arb."""
     d = K.defined_for_positive
-    assert d(1 / (s - 1), s) is None and d(1 / (s - 1), s, I2) == d(1 / (s - 1), s, I1) == ("sympy-polys",)
-    assert d(1 / (s - 1), s, Q(1, 2)) is None and d(1 / (1 - s), s, I0, I1) == ("sympy-polys",)
+    assert d(1 / (s - 1), s) is None and d(1 / (s - 1), s, I2) == d(1 / (s - 1), s, I1) == ("sympy-polys", "flint-polys")
+    assert d(1 / (s - 1), s, Q(1, 2)) is None and d(1 / (1 - s), s, I0, I1) == ("sympy-polys", "flint-polys")
     assert d(1 / (1 - s), s, I0, Q(3, 2)) is None and d(sp.log(s), s, I2, 4 * I1) == ()
     assert d(1 / (s - 1), s, I0, I1) is None        # a base must be positive: s - 1 < 0 there is not enough
-    assert d(1 / (s ** 2 - 2), s, sp.sqrt(3)) == ("sympy-polys",) and d(1 / (s ** 2 - 2), s, sp.sqrt(2)) is None
-    assert d(1 / (2 - s ** 2), s, I0, sp.sqrt(2) - Q(1, 10 ** 6)) == ("sympy-polys",)
+    assert d(1 / (s ** 2 - 2), s, sp.sqrt(3)) == ("sympy-polys", "flint-polys") and d(1 / (s ** 2 - 2), s, sp.sqrt(2)) is None
+    assert d(1 / (2 - s ** 2), s, I0, sp.sqrt(2) - Q(1, 10 ** 6)) == ("sympy-polys", "flint-polys")
     assert d(1 / (2 - s ** 2), s, I0, sp.sqrt(2)) is None and d(1 / (3 - s), s, I0, sp.pi) is None
-    assert d(1 / (3 - s), s, I0, 3 * I1) == ("sympy-polys",) and d(1 / (3 - s), s, I0, 4 * I1) is None
-    assert d(sp.log(s ** 2 - 3), s, Q(7, 4)) == ("sympy-polys",) and d(sp.log(s ** 2 - 3), s, Q(17, 10)) is None
+    assert d(1 / (3 - s), s, I0, 3 * I1) == ("sympy-polys", "flint-polys") and d(1 / (3 - s), s, I0, 4 * I1) is None
+    assert d(sp.log(s ** 2 - 3), s, Q(7, 4)) == ("sympy-polys", "flint-polys") and d(sp.log(s ** 2 - 3), s, Q(17, 10)) is None
     for lo, hi in ((I2, I1), (-I1, I1), (I1, I1)):
         with pytest.raises(KernelError, match="definedness is checked on some"):
             d(s, s, lo, hi)
-    assert K._defined(sp.log(s - 2), s, I2) == ("sympy-polys",)
+    assert K._defined(sp.log(s - 2), s, I2) == ("sympy-polys", "flint-polys")
     with pytest.raises(KernelError, match="log.s - 2. undefined at 2"):
         K._defined(sp.log(s - 2), s, I2, lo_open=False)
     with pytest.raises(KernelError, match="undefined at 3"):
         K._defined(sp.log(3 - s), s, I1, 3 * I1, hi_open=False)
-    assert K._defined(sp.log(4 - s), s, I1, 3 * I1, lo_open=False, hi_open=False) == ("sympy-polys",)
+    assert K._defined(sp.log(4 - s), s, I1, 3 * I1, lo_open=False, hi_open=False) == ("sympy-polys", "flint-polys")
     with pytest.raises(KernelError, match=r"not shown defined on \(1, 5\)"):
         K._defined(sp.log(4 - s), s, I1, 5 * I1)
 
@@ -679,7 +716,7 @@ def test_sign_by_substitution_claims_and_messages():
     hi_b = sturm(3 - x ** 2, x, Q(3, 2), Q(8, 5))
     thm = S(outer, lo_b, hi_b, inner=x ** 2)
     assert thm.claim == sign(x ** 2 - 1, x, Q(3, 2), Q(8, 5)) and thm.rule == "sign_by_substitution"
-    assert thm.assumptions == {"sympy-core", "sympy-polys"}
+    assert thm.assumptions == {"sympy-core", "sympy-polys", "flint-polys"}
     # a weak bound suffices at the closed end 2 of J, not at the open end 3
     lo_w = sturm(x ** 2 - 2, x, Q(3, 2), Q(8, 5), strict=False)
     hi_w = sturm(3 - x ** 2, x, Q(3, 2), Q(8, 5), strict=False)
@@ -716,7 +753,7 @@ def test_sign_by_monotone_claims_and_messages():
     dE = K.sign_of_product(sturm(s, s, 2, oo, hi_open=True), expr=sp.diff(E, s))
     thm = M(dE, expr=E, var=s, R=I2)
     assert thm.claim == sign(E, s, 2, oo, hi_open=True) and thm.rule == "sign_by_monotone"
-    assert thm.assumptions == ARB | {"sympy-diff", "sympy-polys"}
+    assert thm.assumptions == ARB | {"sympy-diff", "sympy-polys", "flint-polys"}
     # decreasing and negative: 1/s - 1, E(2) = -1/2, E' = -s**-2 < 0
     F = 1 / s - 1
     dF = K.sign_of_product(sturm(s, s, 2, oo, hi_open=True), expr=sp.diff(F, s))
@@ -910,7 +947,7 @@ def test_continuous_at_end_and_diverges_by_growth_claims_and_messages():
     lin = sturm(2 * s - 2, s, 1, oo, hi_open=True, strict=False)          # (s**2)' - 2 = 2s - 2 >= 0 on [1, oo)
     d = D(lin, expr=s ** 2, var=s, R=I1, rate="linear", k=I2)
     assert d.claim == Claim("diverges", R(s ** 2), R(s), R(I1), "oo", False, True) and d.rule == "diverges_by_growth"
-    assert d.assumptions == ARB | {"sympy-diff", "sympy-polys"}
+    assert d.assumptions == ARB | {"sympy-diff", "sympy-polys", "flint-polys"}
     # log rate: s * (s**2)' - 2 = 2 s**2 - 2 >= 0 on [1, oo)
     lg = sturm(2 * s ** 2 - 2, s, 1, oo, hi_open=True, strict=False)
     assert D(lg, expr=s ** 2, var=s, R=I1, rate="log", k=I2).claim == d.claim
@@ -974,7 +1011,7 @@ def test_sup_upper_rules_claims_and_messages():
     sq = sturm(1 - g, x, -1, 3, lo_open=True, strict=False)         # 1 - (2x - x**2) = (x - 1)**2 >= 0
     thm = S(sq, expr=g, bound=I1)
     assert thm.claim == Claim("sup_upper", R(g), R(x), R(-I1), R(I3), True, False, other=R(I1))
-    assert thm.assumptions == {"sympy-polys"} and thm.rule == "sup_upper_by_sign"
+    assert thm.assumptions == {"sympy-polys", "flint-polys"} and thm.rule == "sup_upper_by_sign"
     assert why(S, sq, expr=g, bound=I2) == "premise must be U - E >= 0"
     neg = sturm(-x ** 2 - 1, x, 0, 1, want=-1)                       # 0 - (x**2 + 1) < 0
     assert why(S, neg, expr=x ** 2 + 1, bound=I0) == "premise must be U - E >= 0"
@@ -1254,7 +1291,7 @@ def test_to_certificate_lists_premises_once_and_first():
     assert [n["id"] for n in cert["theorems"]] == [0, 1, 2, 3, 4]
     assert [n["premises"] for n in cert["theorems"]] == [[], [0], [], [0, 2], []]   # base listed once
     assert cert["conclusions"] == [1, 3, 4]
-    assert cert["assumptions"] == ["arb", "sympy-core", "sympy-polys"]
+    assert cert["assumptions"] == ["arb", "flint-polys", "sympy-core", "sympy-polys"]
     assert (cert["format"], cert["version"]) == ("uwmr-kernel-certificate", 1)
     assert cert["theorems"][1]["claim"] == th.claim.to_json()
     assert [t.claim for t in check_certificate(cert)] == [th.claim, both.claim, vs.claim]
@@ -1303,7 +1340,7 @@ def test_certificate_checker_messages():
     for bad in ([], [3], [-1], ["0"]):
         assert refused(lambda c: c.update(conclusions=bad)) == concl, bad
     assert refused(lambda c: c.update(assumptions=["arb", "sympy-core"])) == (
-        "the certificate rests on ['arb', 'sympy-core', 'sympy-polys'], it lists ['arb', 'sympy-core']")
+        "the certificate rests on ['arb', 'flint-polys', 'sympy-core', 'sympy-polys'], it lists ['arb', 'sympy-core']")
     assert refused(lambda c: "{") .startswith("not JSON: ")
     # the listed assumptions may come in any order; only the last conclusion may be named
     ok = copy.deepcopy(good)
@@ -1331,7 +1368,7 @@ def test_command_line(tmp_path, capsys):
         f"{good}: checked value_sign -1 + sqrt(2) want=1 strict=True",
         f"{good}: checked sup_upper x want=0 strict=False other=1 for x in [0, 1]",
         f"{good}: checked sign x + 1 want=1 strict=True for x in [0, 1)",
-        f"{good}: rests on arb, sympy-core, sympy-polys"]
+        f"{good}: rests on arb, flint-polys, sympy-core, sympy-polys"]
     bad = tmp_path / "bad.json"
     bad.write_text("{")
     missing = tmp_path / "missing.json"
@@ -1375,7 +1412,7 @@ def test_theorem_records_its_rule_premises_data_and_assumptions():
     b = K.sign_by_cover(expr=x + 2, var=x, cuts=[0, Q(1, 2), 1], want=1)
     thm = K.sign_of_product(a, b, expr=(x + 1) * (x + 2))
     assert thm.rule == "sign_of_product" and thm.premises == (a, b)
-    assert thm.assumptions == {"arb", "sympy-core", "sympy-polys"}        # the rule's, a's and b's
+    assert thm.assumptions == {"arb", "sympy-core", "sympy-polys", "flint-polys"}        # the rule's, a's and b's
     assert json.loads(thm.data) == {"expr": {"$": R((x + 1) * (x + 2))}}
     # the data as JSON with sorted keys, SymPy objects as srepr, ints as ints; strict was not given
     assert b.data == json.dumps({"cuts": [0, {"$": "Rational(1, 2)"}, 1],
@@ -1489,7 +1526,7 @@ def test_sign_below_sup_claims_and_messages():
     B = K.sign_below_sup
     pos = sturm(s, s, 0, 2, lo_open=True)                  # (0, 2]
     th = B(pos, expr=2 - 2 * sp.tanh(s), bounded=sp.tanh(s))
-    assert th.claim == sign(2 - 2 * sp.tanh(s), s, 0, 2, True, False) and th.assumptions == ARB | {"sympy-polys"}
+    assert th.claim == sign(2 - 2 * sp.tanh(s), s, 0, 2, True, False) and th.assumptions == ARB | {"sympy-polys", "flint-polys"}
     closed = B(sturm(s, s, 1, 2), expr=sp.pi / 2 - sp.atan(s), bounded=sp.atan(s))
     assert closed.claim == sign(sp.pi / 2 - sp.atan(s), s, 1, 2)
     msg = "bounded must be G(Y) and the premise about Y"
@@ -1517,7 +1554,7 @@ def test_sign_of_increasing_difference_claims_and_messages():
     above = sturm(s - 1, s, 1, 3, lo_open=True, strict=False)          # s - 1 >= 0 on (1, 3]
     th = D(above, expr=sp.exp(s) - sp.E, inner=sp.exp(s), c=I1)
     assert th.claim == sign(sp.exp(s) - sp.E, s, 1, 3, True, False, strict=False)
-    assert th.assumptions == {"arb", "sympy-core", "sympy-polys"}       # the sign of k
+    assert th.assumptions == {"arb", "sympy-core", "sympy-polys", "flint-polys"}       # the sign of k
     below = sturm(s - 3, s, 1, 3, hi_open=True, want=-1)
     assert D(below, expr=sp.atan(s) - sp.atan(3), inner=sp.atan(s), c=I3).claim == \
         sign(sp.atan(s) - sp.atan(3), s, 1, 3, False, True, want=-1)
@@ -1615,7 +1652,7 @@ def test_sign_of_sum_groups_messages():
     assert why(K.sign_of_sum, sturm(2 - x, x, -1, 1), sturm(x ** 2 - x + 1, x, -1, 1), expr=x ** 2 - x + 2,
                want=1) == "premises share a term"
     grouped = K.sign_of_sum(sturm(2 - x, x, -1, 1), sq, expr=x ** 2 - x + 2, want=1)
-    assert grouped.claim == sign(x ** 2 - x + 2, x, -1, 1) and grouped.assumptions == ARB | {"sympy-polys"}
+    assert grouped.claim == sign(x ** 2 - x + 2, x, -1, 1) and grouped.assumptions == ARB | {"sympy-polys", "flint-polys"}
 
 
 def test_sign_below_sup_of_sin_and_cos_is_weak_at_the_maximum():
@@ -1661,7 +1698,7 @@ def test_sign_by_log_bound_claims_and_messages():
     B = sturm(4 - s, s, 1, 4, strict=False)
     th = L(B, neg, pos, expr=E, term=T, p=I1)
     assert th.claim == Claim("sign", R(E), R(s), R(I1), R(sp.Integer(4)), False, False, 1, False)
-    assert th.rule == "sign_by_log_bound" and th.assumptions == {"sympy-core", "sympy-polys"}
+    assert th.rule == "sign_by_log_bound" and th.assumptions == {"sympy-core", "sympy-polys", "flint-polys"}
     low = K.sign_by_cover(expr=2 - 1 / s, var=s, cuts=[I1, sp.Integer(4)], want=1, strict=True)
     up = L(low, sturm(I1, s, 1, 4), pos, expr=1 + sp.log(s), term=sp.log(s), p=-I1)
     assert (up.claim.expr, up.claim.want, up.claim.strict) == (R(1 + sp.log(s)), 1, True)

@@ -196,7 +196,7 @@ def test_continuous_piecewise_accepts_a_continuous_join():
     facts = [sturm(1 - s ** 2, s, 0, 1, lo_open=True, hi_open=True), sturm(1 - s ** 2, s, 1, sp.oo, True, True, -1)]
     th = K.continuous_piecewise(*facts, expr=C, var=s, cuts=[sp.Integer(1)])
     assert th.claim == K.Claim("continuous", sp.srepr(C), sp.srepr(s), "Integer(0)", "oo", True, True)
-    assert th.assumptions == {"arb", "sympy-core", "sympy-polys"}
+    assert th.assumptions == {"arb", "sympy-core", "sympy-polys", "flint-polys"}
     # equal values at the cut only by polynomial arithmetic with pi as a symbol:
     # (1 + pi)^2 / (pi^2 + 2 pi + 1), which SymPy leaves as it is
     E = sp.Piecewise(((s + sp.pi) ** 2 / (sp.pi ** 2 + 2 * sp.pi + 1), s <= 1), (1, True))

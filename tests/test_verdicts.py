@@ -309,11 +309,12 @@ def test_piecewise_kf_enclosure_is_tight_in_the_kernel(tmp_path):
     """f = log(1 + rho) + h(rho - 1)/10 [rho > 1] + h(rho - 2)/10 [rho > 2], h(x) =
     x^3/(1 + x^3): two C^2 joins.  kf = sup F' has no closed form; its maximum
     lies on the last piece with F' only about 10^-7 below the tight upper end,
-    where Arb's range enclosure of U - F' over a box loses about the box width.
-    The mean value form (`sign_by_cover` with `mean_value`) loses about its
-    square, so the kernel proves the search's enclosure to 8 digits rather than
-    a bound 1/8 above.  The reference sup comes from mpmath (50 digits, dense
-    grid and a local maximisation), independent of the verifier."""
+    where a cover by boxes would need very fine ones.  Each branch of U - F' is
+    a rational function over Q, which the kernel signs exactly (`sign_by_sturm`
+    on its numerator and denominators), so it proves the search's enclosure to
+    8 digits rather than a bound 1/8 above.  The reference sup comes from
+    mpmath (50 digits, dense grid and a local maximisation), independent of
+    the verifier."""
     from uwmr_symbolic.verify import verify_design
     path = tmp_path / "chain2.py"
     path.write_text('import sympy as sp\nfrom sympy import log, Piecewise\ne1, e2 = sp.symbols("e1 e2", real=True)\n'
@@ -329,8 +330,11 @@ def test_piecewise_kf_enclosure_is_tight_in_the_kernel(tmp_path):
     grid, top = _sup_by_zooming(dF)
     lo, hi = report.kf.kernel_bounds
     assert grid ** 2 > 2 and mp.mpf(lo.numerator) / lo.denominator <= top <= mp.mpf(hi.numerator) / hi.denominator and (hi - lo) / hi < 1e-6, (lo, top, hi)
-    covers = [t for t in _walk(report.kf.kernel) if t.rule == "sign_by_cover" and "mean_value" in t.data]
-    assert covers and all("sympy-diff" in t.assumptions for t in covers)
+    from uwmr_symbolic.kernel.parse import parse
+    exact = [t for t in _walk(report.kf.kernel) if t.rule == "sign_by_sturm" and t.claim.strict is False
+             and not parse(t.claim.expr).is_polynomial()]
+    assert exact and all("flint-polys" in t.assumptions for t in exact)
+    assert all(parse(t.claim.expr).has(sp.Rational(int(hi.numerator), int(hi.denominator))) for t in exact)
 
 
 def test_bounded_chain_with_a_small_slope_far_out(tmp_path):

@@ -23,6 +23,7 @@ Strategy, per piece between the caller's exact zeros:
 """
 from __future__ import annotations
 
+import functools
 import math
 import time
 from contextlib import contextmanager
@@ -105,6 +106,19 @@ def _degree_bound(p, var) -> int:
         return sum(_degree_bound(a, var) for a in p.args)
     if p.is_Pow:
         return int(p.exp) * _degree_bound(p.base, var)
+    return 1
+
+
+def _fraction_degree(e, var) -> int:
+    """An upper bound of the degrees of N and D in e = N/D, a rational
+    function of var, read off its tree (about 3 times the true one on sums
+    of fractions)."""
+    if not e.has(var):
+        return 0
+    if e.is_Add or e.is_Mul:
+        return sum(_fraction_degree(a, var) for a in e.args)
+    if e.is_Pow:
+        return abs(int(e.exp)) * _fraction_degree(e.base, var)
     return 1
 
 
@@ -285,12 +299,16 @@ class Prover:
     def _prove(self, e, var, I, want, strict, depth, near):
         lo, hi, lo_open, hi_open = I
         last = None
-        if e.is_polynomial(var):
+        polynomial = e.is_polynomial(var)
+        if polynomial or K._rational_over_q(e, var):      # exact: Sturm on p, or on N and D of e = N/D
             try:
-                self.charge(STURM_UNITS * _degree_bound(e, var) ** 2)
+                self.charge(STURM_UNITS * (_degree_bound(e, var) ** 2 if polynomial else
+                                           _fraction_degree(e, var) ** 2 // 8))
                 return _rule(K.sign_by_sturm, expr=e, var=var, lo=lo, hi=hi, lo_open=lo_open, hi_open=hi_open,
                              want=want, strict=strict)
             except NoProof as exc:
+                if exc is self.spent:
+                    raise
                 last = exc
         if e.is_rational_function(var) and not e.is_polynomial(var) and not e.has(sp.Float, sp.NumberSymbol):
             size = sp.count_ops(e)
@@ -994,24 +1012,28 @@ def on_branch(P, var, I, prover, about):
     `about(G)`, a theorem about the branch G that applies on I: the
     relations r - l of P's conditions are signed on I (strict, the sign at
     an inner point), the kernel picks the branch from them (`select_branch`)."""
-    signs = _relation_signs(P, var, I, prover)
+    signs = _relation_signs(P, var, I)
     have = {(t.claim.expr, t.claim.want) for t in signs}
     branch = K._branch(K._folded(P), lambda d, w, st: K._sign_ok(K._const_sign(d), w, st) if not d.has(var)
                        else (K._s(d), w) in have)
     return _rule(K.select_branch, about(branch), *signs, expr=P)
 
 
-def _relation_signs(P, var, I, prover):
+def _relation_signs(P, var, I):
     """Strict sign theorems on I of every relation r - l of P's conditions
     (the sign at an inner point)."""
+    return [_relation_sign(d, var, I) for d in dict.fromkeys(r.rhs - r.lhs for _, c in K._folded(P).args
+                                                              for r in _relationals(c)) if d.has(var)]
+
+
+@functools.lru_cache(maxsize=4096)
+def _relation_sign(d, var, I):
+    """d > 0 or d < 0 on I, the sign at an inner point, with a budget of its
+    own; memoised (each theorem about a Piecewise asks for them again)."""
     lo, hi = I[:2]
     inner = _mid(lo, hi) if hi != OO else lo + 1
-    signs = []
-    for d in dict.fromkeys(r.rhs - r.lhs for _, c in K._folded(P).args for r in _relationals(c)):
-        if d.has(var):
-            box = evaluate(d, var, inner, inner, bits=128)
-            signs.append(prover.prove(d, var, I, 1 if box.positive() else -1, True))
-    return signs
+    box = evaluate(d, var, inner, inner, bits=128)
+    return Prover(WORK).prove(d, var, I, 1 if box.positive() else -1, True)
 
 
 def piecewise_sup_theorems(F, c, point, var, ends, lower=None, work=2 * WORK):
@@ -1083,10 +1105,9 @@ def continuity_theorem(P, ends, var, rule=K.continuous_piecewise):
         return None
     key = ("continuous", P, tuple(ends), var, rule.__name__)
     if key not in _FOUND:
-        prover = Prover(WORK * (len(ends) - 1))     # every relation signed on every piece
-        try:
+        try:                                        # every relation signed on every piece
             signs = [t for lo, hi in zip(ends, ends[1:])
-                     for t in _relation_signs(P, var, (lo, hi, True, True), prover)]
+                     for t in _relation_signs(P, var, (lo, hi, True, True))]
             _remember(key, _rule(rule, *signs, expr=P, var=var, cuts=list(ends[1:-1])))
         except (NoProof, K.KernelError, Undefined):
             return None
@@ -1240,12 +1261,14 @@ def _first_of(attempts, prover):
 def _tail_first(prover, e, var, R, want=1, strict=False, depth=0):
     """The sign of e on [R, oo), by s = 1/t first: a sum of terms of both
     signs (the rates of `_diverges`, the bounds of `_log_bound`) would spend
-    the budget in the sign rules."""
-    try:
-        return prover._unbounded(e, var, (R, OO, False, True), want, strict, depth)
-    except NoProof as exc:
-        if exc is prover.spent:
-            raise
+    the budget in the sign rules.  (A rational function over Q: Sturm first,
+    through `prove`.)"""
+    if not K._rational_over_q(e, var):
+        try:
+            return prover._unbounded(e, var, (R, OO, False, True), want, strict, depth)
+        except NoProof as exc:
+            if exc is prover.spent:
+                raise
     return prover.prove(e, var, (R, OO, False, True), want, strict, depth)
 
 

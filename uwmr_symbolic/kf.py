@@ -16,13 +16,14 @@ import mpmath
 import sympy as sp
 
 from .interval import Interval, Undefined
+from .kernel import core as K
 from .limits import NoLimit, rational_parts
 from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
 from .certify import (WORK, piecewise_sup_theorems, sign_theorems, sup_abs_theorems, sup_lower_theorem, sup_theorems,
                       sup_upper_theorem)
-from .univariate import (certified_inside, enclose_sup, exact_sign, exact_value, limit_at_infinity, prepare,
-                         prove_sign, small_rates, tail_start, value_at)
+from .univariate import (certified_inside, enclose_sup, exact_sign, exact_value, far_out_trend, limit_at_infinity,
+                         prepare, prove_sign, small_rates, tail_start, value_at)
 
 REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
 
@@ -81,7 +82,7 @@ def _candidates(expr, lo, hi, interior=True):
     """(value, point) candidates for the sup of expr on (lo, hi): critical
     points found by SymPy (only when `interior`: the best box of the branch
     and bound was not the one at infinity), one-sided values at the ends
-    (point None at oo)."""
+    (point None at oo, asked only when not `interior`: its limit calculus is slow)."""
     out = []
     d = sp.diff(expr, S)
     # SymPy solves E' = 0 in closed form only for algebraic or singly transcendental E'
@@ -105,14 +106,14 @@ def _candidates(expr, lo, hi, interior=True):
         v = one_sided_value(expr, lo, +1)
         if v is not None and v not in (sp.oo, -sp.oo):
             out.append((v, lo))
-    if hi == sp.oo:
+    if hi == sp.oo and not interior:
         try:
             v = limit_at_infinity(expr, S)
             if v not in (sp.oo, -sp.oo):
                 out.append((v, None))
         except NoLimit:
             pass
-    else:
+    elif hi != sp.oo:
         v = one_sided_value(expr, hi, -1)
         if v is not None and v not in (sp.oo, -sp.oo):
             out.append((v, hi))
@@ -168,9 +169,11 @@ def _prove_bound(c, exprs, pieces, zeros_of, strictly=True) -> tuple[bool, bool 
     not asked for: `strictly` False)."""
     for E, piece in zip(exprs, pieces):
         zeros = [z for z in zeros_of.get(id(piece), []) if z is not None and z not in (piece.lo, piece.hi)]
-        if not (prove_sign(c - E, S, piece.lo, piece.hi, want=1, strict=False, zeros=zeros).proved
-                or sign_theorems(c - E, S, piece.lo, piece.hi, zeros=tuple(zeros), strict=False)[0]):
-            return False, None          # (the kernel's proposer rewrites, e.g. a square over Q, where boxes fail)
+        search = lambda: prove_sign(c - E, S, piece.lo, piece.hi, want=1, strict=False, zeros=zeros).proved  # noqa
+        kernel = lambda: sign_theorems(c - E, S, piece.lo, piece.hi, zeros=tuple(zeros), strict=False)[0]  # noqa
+        # the kernel first where it is exact (a rational function over Q: Sturm), else where boxes fail
+        if not any(way() for way in ((kernel, search) if K._rational_over_q(c - E, S) else (search, kernel))):
+            return False, None
     if not strictly:
         return True, None
     for E, piece in zip(exprs, pieces):
@@ -212,9 +215,22 @@ def _quick_lower(exprs, pieces):
     return best
 
 
-def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
+def _unbounded_at_infinity(E, name: str) -> SupCertificate | None:
+    """The certificate that E, the formula of the last piece, tends to +oo as
+    s -> oo (limit calculus), or None."""
+    try:
+        if limit_at_infinity(E, S) == sp.oo:
+            return SupCertificate(None, None, None, None, f"{name} -> oo as s -> oo", {"s": "oo", "limit": "oo"})
+    except NoLimit:
+        pass
+    return None
+
+
+def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> SupCertificate:
     """Certify sup over s > 0 of a function given piecewise by ``exprs``
-    (one expression per piece of the profile).
+    (one expression per piece of the profile).  ``bound_by(c)``: True when
+    the kernel shows E <= c on (0, oo); tried before the search's own proof
+    that an exact candidate attained at a point bounds E.
 
     ``near_zero``: for E = F'/s, whose formula is 0/0 at s = 0, the caller
     passes F''; by the mean value theorem (F'(0) = 0) E(s) = F''(xi) with
@@ -234,13 +250,9 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
             if v == sp.oo:
                 return SupCertificate(None, None, None, None, f"{name} -> oo as s -> {c}",
                                       {"s": str(c), "limit": "oo"})
-        if piece.hi == sp.oo:
-            try:
-                if limit_at_infinity(E, S) == sp.oo:
-                    return SupCertificate(None, None, None, None, f"{name} -> oo as s -> oo",
-                                          {"s": "oo", "limit": "oo"})
-            except NoLimit:
-                pass
+    early = far_out_trend(exprs[-1], S) >= 0     # else the limit at oo only if no bound is found (it is slow)
+    if early and (unbounded := _unbounded_at_infinity(exprs[-1], name)):
+        return unbounded
     lower, upper, top = None, Fraction(0), None
     floor = _quick_lower(exprs, pieces) if len(pieces) > 2 else None   # pieces below it need no tight sup
     for i, (E, piece) in enumerate(zip(exprs, pieces)):
@@ -262,7 +274,8 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
         elif upper is not None:
             upper = max(upper, enc.upper)
     if upper is None or lower is None:
-        return SupCertificate(lower, None, None, None, f"branch and bound found no finite bound for {name}")
+        return (not early and _unbounded_at_infinity(exprs[-1], name)) or \
+            SupCertificate(lower, None, None, None, f"branch and bound found no finite bound for {name}")
     # exact candidates from the piece holding the supremum
     E, piece, enc = top
     for value, point in _candidates(E, piece.lo, piece.hi, interior=not enc.at_infinity):
@@ -270,7 +283,8 @@ def certify_sup(analysis, exprs, name: str, near_zero=None) -> SupCertificate:
         if not (float(lower) - 1e-9 * abs(fv) - 1e-300 <= fv <= float(upper) + 1e-9 * abs(fv)):
             continue
         zeros = {id(piece): [point] if point is not None else []}
-        ok, strict = _prove_bound(value, exprs, pieces, zeros, strictly=point is None)     # (see `attained`)
+        ok, strict = (True, None) if point is not None and bound_by is not None and bound_by(value) else \
+            _prove_bound(value, exprs, pieces, zeros, strictly=point is None)     # (see `attained`)
         if not ok:
             continue
         if point is not None and point != sp.oo:
@@ -401,8 +415,8 @@ def certify_kf(analysis) -> SupCertificate:
     pos = certify_sup(analysis, dF, "F'")
     if pos.upper is None:
         return pos
-    if all(prove_sign(e, S, p.lo, p.hi, want=1, strict=False, budget=1500).proved
-           for e, p in zip(dF, pieces)):
+    if analysis.slope_theorem is not None or all(prove_sign(e, S, p.lo, p.hi, want=1, strict=False, budget=1500).proved
+                                                 for e, p in zip(dF, pieces)):
         return _with_kernel(pos, analysis)    # F' >= 0 everywhere: sup |F'| = sup F'
     neg = certify_sup(analysis, [-e for e in dF], "-F'")
     if neg.upper is None:

@@ -31,6 +31,7 @@ import sympy as sp
 from flint import arb
 
 from .interval import Interval, IntervalFunction, Undefined, mean_value_form
+from .kernel import core as K
 from .limits import NoLimit, exact_sign, limit_right, rational_parts, rational_poly
 from .verdict import Verdict, proved, refuted, unknown
 
@@ -176,6 +177,17 @@ def _distribute(expr: sp.Expr) -> sp.Expr:
 def tail_start(lo) -> sp.Integer:
     """Where the unbounded part [R, oo) of an interval starting at lo begins."""
     return sp.Integer(max(4, int(2 * float(lo) + 4)))
+
+
+def far_out_trend(expr, var) -> int:
+    """-1 if expr(10^6) < expr(10^3), +1 if expr(10^6) > expr(10^3), 0 if
+    undecided (certified enclosures): a cheap look far out that orders the
+    search's work (a limit at oo is slow), never a verdict."""
+    try:
+        near, far = (value_at(expr, var, sp.Integer(10) ** k, prec=64) for k in (3, 6))
+    except (Undefined, OverflowError, ValueError):
+        return 0
+    return -1 if far.hi < near.lo else 1 if near.hi < far.lo else 0     # (Arb ends: exp(-10^12) fits no Fraction)
 
 
 @lru_cache(maxsize=2048)
@@ -816,10 +828,13 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
     returned is then below floor, the lower bound whatever was seen)."""
     expr = prepare(sp.sympify(expr))
     parts = []   # (variable, expression, derivative) per region
+    tail_bound = None       # a c >= expr on [R, oo) shown exactly: no tail form needed
     if hi == sp.oo:
         R = tail_start(lo)
-        tail = tail_form(expr, var)
         parts.append(("s", expr, lo, R))
+        tail_bound = _bound_on_tail(expr, var, R, floor)
+    if hi == sp.oo and tail_bound is None:
+        tail = tail_form(expr, var)
         try:
             box = _compiled(tail, T, "range")(Interval.of(0, 1 / R))
             blind = box.upper_fraction() is None
@@ -830,7 +845,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
             pass   # expr is non-increasing on [R, oo): sup there is expr(R), in the first part
         else:
             parts.append(("t", tail, sp.Integer(0), 1 / R))
-    else:
+    if hi != sp.oo:
         parts.append(("s", expr, lo, hi))
     fns = {}
     # the mean-value bound needs E' to enclose every slope: no jumps inside
@@ -876,10 +891,11 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
         key, _, kind, u, v, up = heap[0]
         if floor is not None and up is not None and -key < float(floor):
             top = max(h[-1] for h in heap)      # the exact largest bound (the heap orders by float)
-            if top < floor:
-                return SupEnclosure(lower, top, at_infinity=False, near=None, point=point)
+            if top < floor and (tail_bound is None or tail_bound < floor):
+                return SupEnclosure(lower, max(top, tail_bound or top), at_infinity=False, near=None, point=point)
         if up is not None and lower is not None and \
-                up - lower <= Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 9)):
+                up - lower <= Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 9)) and \
+                (tail_bound is None or tail_bound <= up):
             near = float((u + v) / 2) if kind == "s" else None
             # the heap orders by float(up): take the exact largest bound
             upper = max(h[-1] for h in heap)
@@ -892,6 +908,30 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
             pass
         push(kind, u, m)
         push(kind, m, v)
-    ups = [h[-1] for h in heap]
+    ups = [h[-1] for h in heap] + ([tail_bound] if tail_bound is not None else [])
     upper = None if (not ups or any(u is None for u in ups)) else max(ups)
     return SupEnclosure(lower, upper, at_infinity=False, near=None, point=point)
+
+
+def _bound_on_tail(expr, var, R, floor) -> Fraction | None:
+    """A c with expr <= c on [R, oo), by the kernel's exact rule for a
+    rational function over Q (`sign_by_sturm` on c - expr): c = `floor`, a
+    value the sup reaches elsewhere, else an upper bound of expr(R) (where
+    expr falls beyond R); None when neither is shown (then the tail form)."""
+    if not K._rational_over_q(expr, var):
+        return None
+    try:
+        at_R = value_at(expr, var, R, prec=128).upper_fraction()
+    except Undefined:
+        return None
+    for c, side in ((floor, -1), (at_R, 1)):      # short decimals: long ones make the polynomial arithmetic slow
+        if c is None or c == 0:
+            continue
+        c = (Fraction(c) * (1 + side * Fraction(1, 10 ** 6))).limit_denominator(10 ** 9)
+        try:
+            K.sign_by_sturm(expr=sp.Rational(c.numerator, c.denominator) - expr, var=var, lo=R, hi=sp.oo,
+                            lo_open=False, hi_open=True, want=1, strict=False)
+            return c
+        except K.KernelError:
+            continue
+    return None
