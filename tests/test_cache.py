@@ -58,6 +58,10 @@ def test_short_timeout_result_is_not_served_to_a_longer_timeout(tmp_path, monkey
     # loading is not what is timed here: load without a limit, so that the
     # short run always reaches the verifier
     monkeypatch.setattr(batch, "load_with_limit", lambda path, timeout, start: load_design(path))
+    # with warm caches design 1 is verified within 0.05 s: P1 is made to take 0.2 s
+    from uwmr_symbolic.properties import VERIFIERS
+    p1 = VERIFIERS["P1"]
+    monkeypatch.setitem(VERIFIERS, "P1", lambda a: (time.sleep(0.2), p1(a))[1])
     design = str(ROOT / "designs" / "design1_jiang.py")
     short = batch.check_file(design, 0.05, str(tmp_path))
     # exit 3: with kf only enclosed (its exact value not found in time) the circle's

@@ -313,6 +313,27 @@ def test_enclose_sup_stops_below_a_floor_and_only_there():
     assert early.upper - early.lower > full.upper - full.lower
 
 
+def test_enclose_sup_bounds_a_rational_tail_exactly():
+    """For a rational function over Q the search bounds the tail [R, oo) by the
+    kernel's exact sign rule instead of an s = 1/t form: c - E >= 0 there with
+    c the floor (rounded down) or E(R) (rounded up).  The enclosure stays an
+    enclosure.  2s/(1 + s^2) on (2, oo): sup 4/5 at s = 2 (R = 8, E(8) = 16/65);
+    with the floor 1 that the piece (0, 2) reaches (at s = 1) the search stops
+    early below 1, and the tail's bound never makes it run to its budget (it
+    did once: 10 s for the jump design r06)."""
+    from uwmr_symbolic.univariate import _bound_on_tail, enclose_sup, far_out_trend
+    E = 2 * S / (1 + S ** 2)
+    assert Fraction(16, 65) <= _bound_on_tail(E, S, sp.Integer(8), None) <= Fraction(16, 65) * (1 + Fraction(1, 10 ** 12))
+    assert _bound_on_tail(E, S, sp.Integer(8), Fraction(1)) == Fraction(999999999, 10 ** 9)    # just below
+    assert _bound_on_tail(sp.sqrt(S) / (1 + S), S, sp.Integer(8), Fraction(1)) is None     # not rational
+    assert _bound_on_tail(S ** 2 / (1 + S), S, sp.Integer(8), Fraction(1)) is None         # grows: no bound
+    full = enclose_sup(E, S, 2, sp.oo, rel_tol=1e-9)
+    assert full.lower <= Fraction(4, 5) <= full.upper and full.upper - full.lower <= Fraction(1, 10 ** 9)
+    early = enclose_sup(E, S, 2, sp.oo, rel_tol=1e-9, floor=Fraction(1))
+    assert Fraction(4, 5) <= early.upper < 1
+    assert (far_out_trend(E, S), far_out_trend(S ** 2 / (1 + S), S), far_out_trend(sp.Integer(3), S)) == (-1, 1, 0)
+
+
 def test_one_sided_values_by_continuity_and_by_limits():
     """one_sided_value substitutes where interval evaluation proves the formula
     continuous on a closed one-sided box, and falls back on the limit calculus:

@@ -22,8 +22,8 @@ from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
 from .certify import (WORK, piecewise_sup_theorems, sign_theorems, sup_abs_theorems, sup_lower_theorem, sup_theorems,
                       sup_upper_theorem)
-from .univariate import (certified_inside, enclose_sup, exact_sign, exact_value, far_out_trend, limit_at_infinity,
-                         prepare, prove_sign, small_rates, tail_start, value_at)
+from .univariate import (certified_inside, decimal_beyond, enclose_sup, exact_sign, exact_value, far_out_trend,
+                         limit_at_infinity, prepare, prove_sign, small_rates, tail_start, value_at)
 
 REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
 
@@ -395,17 +395,6 @@ def show(x, digits: int = 10) -> str:
     if x == 0 or 1e-300 < abs(v) < math.inf:
         return f"{v:.{digits}g}"
     return mpmath.nstr(mpmath.mpf(x.numerator) / x.denominator, digits)
-
-
-def decimal_beyond(x: Fraction, side: int, digits: int = 8) -> sp.Rational:
-    """A decimal of about `digits` significant digits >= x (side 1) or <= x
-    (side -1); the decimal exponent of x > 0 comes from its integers, so no
-    size of x overflows or underflows a float (x <= 0: `digits` - 1 places)."""
-    x = Fraction(x)
-    exp10 = math.floor(math.log10(x.numerator) - math.log10(x.denominator)) if x > 0 else 0
-    scale = Fraction(10) ** (digits - 1 - exp10)
-    n = math.ceil(x * scale) if side > 0 else math.floor(x * scale)
-    return sp.Rational(n) / sp.Rational(scale)
 
 
 def certify_kf(analysis) -> SupCertificate:

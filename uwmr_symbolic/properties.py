@@ -36,7 +36,7 @@ from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_valu
                       radial_profile,
                       same_value, split_profile, verify_radial)
 from .univariate import (T, X, enclose, exact_sign, exact_value, far_out_trend, limit_at_infinity, prepare, prove_sign,
-                         tail_form, tail_start)
+                         tail_form, tail_start, value_at)
 from .verdict import Verdict, proved, refuted, unknown
 
 PROPERTIES = ("P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8")
@@ -378,7 +378,7 @@ def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
     """F^(k) > 0 on every open piece and at every boundary point: the
     kernel's theorems when they cover it all, else the search."""
     prof = a.profile
-    found = _piece_theorems(a, k, what)
+    found = _piece_theorems(a, k, what) if _sampled_positive(a, k) else {"kernel": []}
     if len(found["kernel"]) == 1 and not found["unchecked"]:
         c = found["kernel"][0].claim        # (the proposer may return a weaker claim than it was asked for)
         if (c.want, c.strict, c.lo, c.hi, c.lo_open) == (1, True, "Integer(0)", "oo", True):
@@ -400,6 +400,20 @@ def _positive_on_pieces(a: Analysis, k: int, what: str) -> Verdict:
             return refuted(f"{what} fails at the boundary |e| = {b} (value {val})", _at(b))
     return proved(f"{what} on (0, oo) (interval arithmetic, s = 1/t on the tail, Taylor at zeros)",
                   **_piece_theorems(a, k, what))
+
+
+def _sampled_positive(a: Analysis, k: int, points: int = 8) -> bool:
+    """F^(k) > 0 at `points` inner points of every piece (Arb; an unbounded
+    piece sampled up to `tail_start`): only then is the kernel asked first."""
+    for p in a.profile.pieces:
+        e, hi = a.derivative(p.expr, k), p.hi if p.hi != sp.oo else tail_start(p.lo)
+        for j in range(1, points + 1):
+            try:
+                if not value_at(e, S, p.lo + (hi - p.lo) * sp.Rational(j, points + 1), prec=64).is_positive():
+                    return False
+            except Undefined:
+                return False
+    return True
 
 
 def _piece_theorems(a: Analysis, k: int, what: str) -> dict:

@@ -179,6 +179,17 @@ def tail_start(lo) -> sp.Integer:
     return sp.Integer(max(4, int(2 * float(lo) + 4)))
 
 
+def decimal_beyond(x: Fraction, side: int, digits: int = 8) -> sp.Rational:
+    """A decimal of about `digits` significant digits >= x (side 1) or <= x
+    (side -1); the decimal exponent of x > 0 comes from its integers, so no
+    size of x overflows or underflows a float (x <= 0: `digits` - 1 places)."""
+    x = Fraction(x)
+    exp10 = math.floor(math.log10(x.numerator) - math.log10(x.denominator)) if x > 0 else 0
+    scale = Fraction(10) ** (digits - 1 - exp10)
+    n = math.ceil(x * scale) if side > 0 else math.floor(x * scale)
+    return sp.Rational(n) / sp.Rational(scale)
+
+
 def far_out_trend(expr, var) -> int:
     """-1 if expr(10^6) < expr(10^3), +1 if expr(10^6) > expr(10^3), 0 if
     undecided (certified enclosures): a cheap look far out that orders the
@@ -894,11 +905,10 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
             if top < floor and (tail_bound is None or tail_bound < floor):
                 return SupEnclosure(lower, max(top, tail_bound or top), at_infinity=False, near=None, point=point)
         if up is not None and lower is not None and \
-                up - lower <= Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 9)) and \
-                (tail_bound is None or tail_bound <= up):
+                max(up, tail_bound or up) - lower <= Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 9)):
             near = float((u + v) / 2) if kind == "s" else None
             # the heap orders by float(up): take the exact largest bound
-            upper = max(h[-1] for h in heap)
+            upper = max(h[-1] for h in heap + [(tail_bound or up,)])
             return SupEnclosure(lower, upper, at_infinity=(kind == "t" and u == 0), near=near, point=point)
         heapq.heappop(heap)
         m = rational_between(u, v)
@@ -915,23 +925,24 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
 
 def _bound_on_tail(expr, var, R, floor) -> Fraction | None:
     """A c with expr <= c on [R, oo), by the kernel's exact rule for a
-    rational function over Q (`sign_by_sturm` on c - expr): c = `floor`, a
-    value the sup reaches elsewhere, else an upper bound of expr(R) (where
-    expr falls beyond R); None when neither is shown (then the tail form)."""
+    rational function over Q (`sign_by_sturm` on c - expr): c just below
+    `floor`, a value the sup reaches elsewhere, else just above expr(R)
+    (where expr falls beyond R); None when neither is shown (then the tail
+    form)."""
     if not K._rational_over_q(expr, var):
         return None
     try:
         at_R = value_at(expr, var, R, prec=128).upper_fraction()
     except Undefined:
         return None
-    for c, side in ((floor, -1), (at_R, 1)):      # short decimals: long ones make the polynomial arithmetic slow
-        if c is None or c == 0:
+    below = None if floor is None else floor - max(abs(floor), Fraction(1, 10 ** 30)) / 10 ** 9
+    for c, side, digits in ((below, -1, 10), (at_R, 1, 14)):    # short decimals: long ones slow the polynomials
+        if c is None:
             continue
-        c = (Fraction(c) * (1 + side * Fraction(1, 10 ** 6))).limit_denominator(10 ** 9)
+        c = decimal_beyond(c, side, digits)
         try:
-            K.sign_by_sturm(expr=sp.Rational(c.numerator, c.denominator) - expr, var=var, lo=R, hi=sp.oo,
-                            lo_open=False, hi_open=True, want=1, strict=False)
-            return c
+            K.sign_by_sturm(expr=c - expr, var=var, lo=R, hi=sp.oo, lo_open=False, hi_open=True, want=1, strict=False)
+            return Fraction(c.p, c.q)
         except K.KernelError:
             continue
     return None
