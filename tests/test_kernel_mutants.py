@@ -362,6 +362,16 @@ def test_sign_by_sturm_of_a_rational_function():
     assert why(sturm, dbl, x, 0, 2) == "factor x - 1 has a root in the interval"
     assert why(sturm, sp.sqrt(x) / (x + 1), x, 0, 1) == "not a rational function over Q: sqrt(x)/(x + 1)"
     assert why(sturm, 1 / (x ** 40 + 1) ** 60, x, 0, 1) == "degree too high"
+    # D = (x - 1)^2 >= 0 while the guard G = x - 1 < 0 on (0, 1): the sign is D's, not G's
+    assert sturm(x * (x - 1) ** -2, x, 0, 1, lo_open=True, hi_open=True).claim.want == 1
+    assert why(sturm, x * (x - 1) ** -2, x, 0, 1, True, True, want=-1) == "p(1/2) has the wrong sign"
+    # rational coefficients kept whole: N = x - 1/2 (not x - 1) is positive on (1/2, 1)
+    assert sturm((x - Q(1, 2)) / (x + 1), x, Q(1, 2), 1, lo_open=True).claim.lo == R(Q(1, 2))
+    assert why(sturm, (x - Q(1, 2)) / (x + 1), x, Q(1, 2), 1, lo_open=True, want=-1) == "p(3/4) has the wrong sign"
+    # N = 0 identically (SymPy keeps the fraction): both weak signs, no strict one
+    zero = (x ** 2 - 1) / (x + 1) - (x - 1)
+    assert sturm(zero, x, 0, 1, strict=False, want=-1).claim.strict is False
+    assert why(sturm, zero, x, 0, 1) == "the zero polynomial has no strict sign"
 
 
 def test_fraction_over_q():
