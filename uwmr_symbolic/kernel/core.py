@@ -250,10 +250,16 @@ def _const_sign(c) -> int:
 
 def _expr(e, var) -> sp.Expr:
     _need(isinstance(var, sp.Symbol), lambda: f"not a variable: {var!r}")
-    e = _sym(e)
+    return _exact_in(_sym(e), var)
+
+
+def _exact_in(e, var) -> sp.Expr:
     _need(not e.has(sp.Float), lambda: f"floats are not exact: {e}")
     _need(e.free_symbols <= {var}, lambda: f"{e} has symbols other than {var}")
     return e
+
+
+_exact_in = functools.lru_cache(maxsize=4096)(_exact_in)       # pure (a large claim's checks cost milliseconds)
 
 
 def _interval(var, lo, hi, lo_open, hi_open, at_zero=False):
@@ -412,12 +418,22 @@ def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
 def _rational_sign(e, var, lo, hi, lo_open, hi_open, want, strict):
     """`sign_by_sturm`'s check of a rational function e over Q, without a
     theorem (also `defined_for_positive`'s)."""
-    N, D, G = (sp.Poly([sp.Rational(int(c.p), int(c.q)) for c in reversed(q.coeffs())] or [0], var, domain=sp.QQ)
-               for q in _fraction_over_q(e, var))
+    N, D, G = _fraction_over_q(e, var)
     x0 = _inner_point(lo, hi, [])
-    _polynomial_sign(G, lo, hi, lo_open, hi_open, 1 if G.eval(x0) > 0 else -1, True)
-    _need(D.eval(x0) != 0, "D vanishes where G does not")
-    _polynomial_sign(N, lo, hi, lo_open, hi_open, want * (1 if D.eval(x0) > 0 else -1), strict)
+    at = fmpq(int(x0.p), int(x0.q))
+    _flint_sign(G, var, lo, hi, lo_open, hi_open, 1 if G(at) > 0 else -1, True, x0)
+    _need(D(at) != 0, "D vanishes where G does not")
+    _flint_sign(N, var, lo, hi, lo_open, hi_open, want * (1 if D(at) > 0 else -1), strict, x0)
+
+
+def _flint_sign(q, var, lo, hi, lo_open, hi_open, want, strict, x0):
+    """`_polynomial_sign` of an fmpq_poly q: where Descartes' rule (in FLINT)
+    shows no root in I, the sign at the inner point x0; else as a SymPy Poly."""
+    if not q.is_zero() and _rootless_by_descartes(q, lo, hi, lo_open, hi_open):
+        _need(q(fmpq(int(x0.p), int(x0.q))) * want > 0, lambda: f"p({x0}) has the wrong sign")
+        return
+    poly = sp.Poly([sp.Rational(int(c.p), int(c.q)) for c in reversed(q.coeffs())] or [0], var, domain=sp.QQ)
+    _polynomial_sign(poly, lo, hi, lo_open, hi_open, want, strict)
 
 
 MAX_DEGREE = 2000       # `_fraction_over_q` refuses beyond (exact arithmetic in such degrees takes minutes)
@@ -541,7 +557,7 @@ def _rootless_by_descartes(q, lo, hi, lo_open, hi_open) -> bool:
     a, b = (end if is_open and end.is_Rational or end == OO else
             end + side * sp.Rational(1, 2 ** 24) if end.is_Rational else _rational_beyond(end, side)
             for end, side, is_open in ((lo, -1, lo_open), (hi, 1, hi_open)))
-    f = fmpq_poly([fmpq(int(c.p), int(c.q)) for c in reversed(q.all_coeffs())])
+    f = q if isinstance(q, fmpq_poly) else fmpq_poly([fmpq(int(c.p), int(c.q)) for c in reversed(q.all_coeffs())])
     Q = lambda c: fmpq(int(c.p), int(c.q))     # noqa: E731
     if b == OO:
         g = f(fmpq_poly([Q(a), 1]))
