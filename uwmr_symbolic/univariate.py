@@ -903,12 +903,14 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
         if floor is not None and up is not None and -key < float(floor):
             top = max(h[-1] for h in heap)      # the exact largest bound (the heap orders by float)
             if top < floor and (tail_bound is None or tail_bound < floor):
-                return SupEnclosure(lower, max(top, tail_bound or top), at_infinity=False, near=None, point=point)
+                top = top if tail_bound is None else max(top, tail_bound)
+                return SupEnclosure(lower, top, at_infinity=False, near=None, point=point)
         if up is not None and lower is not None and \
-                max(up, tail_bound or up) - lower <= Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 9)):
+                (up if tail_bound is None else max(up, tail_bound)) - lower <= \
+                Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 9)):
             near = float((u + v) / 2) if kind == "s" else None
             # the heap orders by float(up): take the exact largest bound
-            upper = max(h[-1] for h in heap + [(tail_bound or up,)])
+            upper = max([h[-1] for h in heap] + ([] if tail_bound is None else [tail_bound]))
             return SupEnclosure(lower, upper, at_infinity=(kind == "t" and u == 0), near=near, point=point)
         heapq.heappop(heap)
         m = rational_between(u, v)
