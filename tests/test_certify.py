@@ -205,3 +205,17 @@ def test_growth_through_sinh_over_cosh_and_beside_a_vanishing_term():
     assert th.rule == "diverges_by_growth"
     assert parse(th.claim.expr) == 5 * h * sp.sinh(h ** 2) / sp.cosh(h ** 2) + sp.atan(h) / (1 + h ** 2)
     assert growth_theorems(sp.sqrt(h) + sp.exp(-h) * sp.sin(h), h) == []
+
+
+def test_a_sign_lemma_stuck_inside_sympy_is_stopped_by_the_clock(monkeypatch):
+    """The proposer's budget is counted between SymPy's calls; one call can
+    run for minutes (diff of log(1 + rho) + 10^-40 (1 - exp(-10^6 rho))'s
+    terms asked SymPy to isolate the real roots of a huge polynomial).  A
+    sign lemma ends after WALL_CAP times its nominal seconds on the clock:
+    here a lemma that would sleep 30 s is given up after about 0.1 s."""
+    import time
+    from uwmr_symbolic import certify
+    monkeypatch.setattr(certify, "_sign_theorems", lambda *a: (time.sleep(30), ([], ""))[1])
+    monkeypatch.setattr(certify, "WALL_CAP", 0.1 / (certify.UNIT_SECONDS * certify.WORK))
+    s = sp.Symbol("s", positive=True)
+    assert certify.sign_theorems(s + 7, s, 0, sp.oo) == certify.STOPPED     # (else ([], "") after 30 s)

@@ -31,6 +31,7 @@ from fractions import Fraction
 
 import sympy as sp
 
+from . import timeouts
 from .kernel import arb, core as K
 from .kernel.arb import Undefined, centered, evaluate
 from .profile import _relationals
@@ -66,6 +67,7 @@ WORK = 60_000           # for one lemma (about 0.5 s here); the verdict does not
 DESIGN_WORK = 300_000   # for all the lemmas of one design (see `design_budget`)
 LEMMA_SIZE = 50         # a lemma about an expression of n > LEMMA_SIZE ops gets n/LEMMA_SIZE times the work
 CPU_CAP = 8.0           # a budget also ends after CPU_CAP times its nominal CPU seconds (backstop)
+WALL_CAP = 4.0          # and a sign lemma after WALL_CAP times its nominal seconds on the clock, inside SymPy too
 UNIT_SECONDS = 8e-6
 _charged = 0
 
@@ -183,6 +185,7 @@ def _brief(x, limit=160) -> str:
 
 
 _CYCLE = NoProof("a claim that needs itself")
+STOPPED = (None, "the lemma's time backstop (WALL_CAP times its nominal seconds) ran out")
 _U, _U_REAL = sp.Symbol("u", nonnegative=True), sp.Symbol("u", real=True)     # `Prover._substituted`
 
 
@@ -951,7 +954,10 @@ def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), 
     if key not in _FOUND:
         if _FAILED.get(key, (-1, ""))[0] >= work:      # failed before with as much work: fails again
             return None, _FAILED[key][1]
-        theorems, why = _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work)
+        # the budget counts work between SymPy's calls; one call can run for minutes (an assumption
+        # query of diff that isolates the real roots of a huge polynomial): a wall-clock backstop too
+        theorems, why = timeouts.attempt(lambda: _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict,
+                                                                work), WALL_CAP * UNIT_SECONDS * work, STOPPED)
         if theorems is None:
             _remember(key, (work, why), _FAILED)
             return None, why

@@ -925,6 +925,9 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
     return SupEnclosure(lower, upper, at_infinity=False, near=None, point=point)
 
 
+TAIL_DEGREE = 400      # `_bound_on_tail` leaves larger rational functions to the tail form (root isolation slows)
+
+
 def _bound_on_tail(expr, var, R, floor) -> Fraction | None:
     """A c with expr <= c on [R, oo), by the kernel's exact rule for a
     rational function over Q (`sign_by_sturm` on c - expr): c just below
@@ -934,8 +937,10 @@ def _bound_on_tail(expr, var, R, floor) -> Fraction | None:
     if not K._rational_over_q(expr, var):
         return None
     try:
+        if max(q.degree() for q in K._fraction_over_q(expr, var)) > TAIL_DEGREE:
+            return None
         at_R = value_at(expr, var, R, prec=128).upper_fraction()
-    except Undefined:
+    except (K.KernelError, Undefined):
         return None
     below = None if floor is None else floor - max(abs(floor), Fraction(1, 10 ** 30)) / 10 ** 9
     for c, side, digits in ((below, -1, 10), (at_R, 1, 14)):    # short decimals: long ones slow the polynomials
