@@ -27,7 +27,6 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .design import Design
 from .interval import Interval, IntervalFunction, Undefined
-from .kernel.core import _rational_over_q
 from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
                       origin_value_theorems, piecewise_sign_theorem, radial_theorems, sign_theorems,
                       smoothness_theorems, sup_upper_theorem)
@@ -536,9 +535,8 @@ def verify_p6(a: Analysis) -> Verdict:
     if g0 in (sp.oo,):
         return refuted("F'(s)/s -> oo as s -> 0+, so no constant k bounds h = F'(s)/(k s) by 1",
                        {"e1": "h -> 0+", "e2": "0", "limit": "oo"})
-    exact = all(_rational_over_q(g, S) for g in G)       # the kernel's bound is then Sturm's, and cheap
     sup = certify_sup(a, G, "F'(s)/s", near_zero=a.derivative(a.profile.pieces[0].expr, 2),
-                      bound_by=(lambda c: bool(_p6_theorems(a, c))) if exact else None)
+                      bound_by=lambda c: bool(_p6_theorems(a, c)))
     if sup.unbounded_witness is not None:
         return refuted(f"no constant k bounds h = F'(s)/(k s) by 1: {sup.reason}", sup.unbounded_witness)
     if sup.upper is None:
