@@ -1761,3 +1761,23 @@ def test_rule_data_read_from_a_certificate_has_the_encoded_shape():
         assert str(err.value) == msg, bad
     with pytest.raises(KernelError, match="^value_sign: rule data must be"):
         K.value_sign.from_json(data=[("value", two)])       # not a dict at all
+
+
+def test_identity_with_roots_by_reducing_their_powers():
+    """`_zero_when_generalized` with roots r = b^(1/q): r^q is replaced by b
+    (times the denominator of b) until no power reaches q; the rest must be
+    the zero polynomial.  True identities of radicals are exact; a false one,
+    or one true only up to a missed reduction, is not."""
+    from uwmr_symbolic.kernel.core import _zero_when_generalized as zero
+    r2, r3 = sp.sqrt(2), sp.sqrt(3)
+    rr, rq = sp.sqrt(1 + sp.sqrt(t)), sp.sqrt(1 + 1 / (t + 2))      # a root inside a root's base; b with a denominator
+    for d in (sp.sqrt(t ** 2 + 4) / t - sp.sqrt(1 + 4 / t ** 2),         # t^(-1) split off
+              (1 + sp.sqrt(t)) ** 3 - (1 + 3 * t + (3 + t) * sp.sqrt(t)),  # r^3 = t r
+              (t ** 3 + t) ** Q(3, 4) - t ** Q(3, 4) * (t ** 2 + 1) ** Q(3, 4),  # t^(3/4) split off
+              (1 + rr) ** 4 - (8 + 8 * rr + 8 * sp.sqrt(t) + 4 * rr * sp.sqrt(t) + t),  # two passes
+              (1 + rq) ** 2 - 2 - 2 * rq - 1 / (t + 2),                     # r^2 = (t + 3)/(t + 2)
+              1 / (r2 + r3) - (r3 - r2)):
+        assert d != 0 and zero.__wrapped__(d, t), d
+    for d in (sp.sqrt(t) ** 3 - t, sp.sqrt(t ** 2 + 4) / t - sp.sqrt(1 + 5 / t ** 2),
+              (1 + sp.sqrt(t)) ** 2 - 1 - t, r2 * r3 - sp.sqrt(5), (1 + rq) ** 2 - 2 * rq - 1 - (t + 3)):
+        assert not zero.__wrapped__(d, t), d

@@ -119,7 +119,7 @@ class PropertyCheck:
 
 
 def _profile(f):
-    return sp.piecewise_fold(f.subs({E1: S, E2: 0}))
+    return sp.piecewise_fold(f.xreplace({E1: S, E2: sp.Integer(0)}))
 
 
 def _link_kf(dF, bounds, claims, k=1, cuts=None) -> list[str]:
@@ -240,7 +240,7 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
             raise CertificateError("P2: the kernel's conclusion is not f(0, 0) = 0")
         return []
     if name == "P4":
-        rhs = _profile(f).subs(S, sp.sqrt(E1 ** 2 + E2 ** 2))
+        rhs = _profile(f).xreplace({S: sp.sqrt(E1 ** 2 + E2 ** 2)})
         if not (len(claims) == 1 and claims[0].kind == "identity_plane" and claims[0].expr == _srepr(f)
                 and claims[0].other == _srepr(rhs) and claims[0].var == _srepr(sp.Tuple(E1, E2))):
             raise CertificateError("P4: the kernel's conclusion is not f(e1, e2) = F(sqrt(e1^2 + e2^2))")
@@ -269,7 +269,7 @@ def _reduction(f, F, claims):
     sqrt(r) |e2| <= s with equality on e1 = 0, sup |df/de2| = sqrt(r) sup |F'| (kf)."""
     if len(claims) >= 2 and claims[0].kind == "identity_plane" and claims[1].kind == "value_sign":
         r = parse(claims[1].expr)
-        rhs = F.subs(S, sp.sqrt(E1 ** 2 + r * E2 ** 2))
+        rhs = F.xreplace({S: sp.sqrt(E1 ** 2 + r * E2 ** 2)})
         if (claims[0].expr, claims[0].other, claims[0].var, claims[1].want) == (
                 _srepr(f), _srepr(rhs), _srepr(sp.Tuple(E1, E2)), 1):
             return claims[2:], sp.sqrt(r)
@@ -429,12 +429,12 @@ def axis_derivative(f, v, side):
     """df/dv at distance h > 0 from the origin along the v axis, on the side
     `side` (+1, -1), the other variable 0: an expression in H."""
     other = E2 if v == E1 else E1
-    return sp.diff(f, v).subs({other: 0}).subs(v, side * H)
+    return sp.diff(f, v).xreplace({other: sp.Integer(0), v: side * H})
 
 
 def along_ray(f, direction):
     """f(h dx, h dy) for h > 0: an expression in H."""
-    return f.subs({E1: direction[0] * H, E2: direction[1] * H}, simultaneous=True)
+    return f.xreplace({E1: direction[0] * H, E2: direction[1] * H})
 
 
 def growing(f, v, order=1, at="oo", divided=True):
@@ -444,7 +444,7 @@ def growing(f, v, order=1, at="oo", divided=True):
     replaced by 1/h."""
     e = axis_derivative(f if order == 1 else sp.diff(f, v), v, 1)
     e = e if v == E2 or not divided else e / H
-    return e if at == "oo" else e.subs(H, 1 / H)
+    return e if at == "oo" else e.xreplace({H: 1 / H})
 
 
 def _on_axis(v, b, side):
@@ -483,7 +483,7 @@ def _relation_claims(rel, at, truth):
     """The sign claims (expression in H, want, strict), any one of which shows
     the relation `truth` at the point `at` (Eq and Ne: only where r - l is
     strictly signed, so Eq false and Ne true)."""
-    d = rel.rhs.subs(at, simultaneous=True) - rel.lhs.subs(at, simultaneous=True)
+    d = rel.rhs.xreplace(at) - rel.lhs.xreplace(at)
     if isinstance(rel, (sp.Eq, sp.Ne)):
         if truth != isinstance(rel, sp.Ne):
             raise CertificateError(f"jump: {rel} cannot be shown {truth} by a sign")
@@ -495,8 +495,10 @@ def _relation_claims(rel, at, truth):
 def jump_parts(f, b, branches, w, v=E1, order=0):
     """The one-sided branch expressions (their order-th derivatives in v)
     at the points b - h and b + h of the v axis."""
-    return [sp.diff(f.args[i][0], v, order).subs(_on_axis(v, b, side), simultaneous=True)
-            for i, side in zip(branches, (-1, 1))]
+    parts = [f.args[i][0] for i in branches]
+    for _ in range(order):                      # one order at a time (SymPy's diff(e, v, 2) can be far slower)
+        parts = [sp.diff(e, v) for e in parts]
+    return [e.xreplace(_on_axis(v, b, side)) for e, side in zip(parts, (-1, 1))]
 
 
 def _tail_branch(f, v, witness, claims, at, order, bad):

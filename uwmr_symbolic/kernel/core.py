@@ -1393,19 +1393,23 @@ def _order_at_zero(poly, x) -> int:
 def _zero_when_generalized(d, *variables) -> bool:
     """d with its non-rational subterms generalised is 0 by polynomial
     arithmetic over Q (in the field of the variables and the fresh symbols,
-    `_zero_over_q`; with roots, `cancel` after reducing their powers), so d
-    is identically 0 where defined."""
+    `_zero_over_q`), so d is identically 0 where defined.  With roots
+    r = b^(1/q), b = bn/bd: the numerator N, each r^k (k = a q + j) replaced
+    by r^j bn^a bd^(A-a), is N bd^A modulo r^q bd - bn; if repeating this
+    leaves the zero polynomial, N = 0 at the roots' true values (bd != 0
+    where b is defined)."""
     g, fresh, roots = _generalized(d, variables)       # a rational function over Q by construction
-    if not fresh:
-        return False
     if not roots:
-        return _zero_over_q(g, *variables, *fresh.values())
-    num = sp.expand(sp.numer(sp.together(g)))
-    for _ in range(3):                          # r^k -> b^(k div q) r^(k mod q) for each root r = b^(1/q)
-        for r, (q, b) in roots.items():
-            num = sp.Add(*[c * b ** (k // q) * r ** (k % q) for (k,), c in sp.Poly(num, r).as_dict().items()])
-            num = sp.expand(sp.numer(sp.together(num)))
-    return sp.cancel(num) == 0
+        return bool(fresh) and _zero_over_q(g, *variables, *fresh.values())
+    field = FracField([*variables, *fresh.values()], sp.QQ)
+    num, ring = field.from_expr(g).numer, field.ring
+    relations = [(ring.gens.index(ring(r)), q, field.from_expr(b)) for r, (q, b) in roots.items()]
+    for _ in range(6):
+        for j, q, b in relations:
+            A = max((m[j] // q for m in num.monoms()), default=0)
+            num = num if not A else sum((ring({m[:j] + (m[j] % q,) + m[j + 1:]: c}) * b.numer ** (m[j] // q)
+                       * b.denom ** (A - m[j] // q) for m, c in num.terms()), ring.zero)
+    return not num
 
 
 _zero_when_generalized = functools.lru_cache(maxsize=1024)(_zero_when_generalized)   # pure: see core.rule
