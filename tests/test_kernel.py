@@ -529,9 +529,9 @@ def test_zero_at_a_radical_point_is_exact():
 def test_sup_rules():
     E = s / (s ** 2 + 1)
     cuts = [ZERO] + [Q(k, 16) for k in range(1, 65)]
-    up = K.sup_upper_by_cover(expr=E, var=s, cuts=cuts, bound=Q(3, 5))
+    up = K.sup_upper_by_sign(K.sign_by_cover(expr=Q(3, 5) - E, var=s, cuts=cuts, want=1), expr=E, bound=Q(3, 5))
     assert up.claim.kind == "sup_upper" and up.claim.other == "Rational(3, 5)"
-    rejects(K.sup_upper_by_cover, expr=E, var=s, cuts=cuts, bound=Q(49, 100))   # E(1) = 1/2
+    rejects(K.sign_by_cover, expr=Q(49, 100) - E, var=s, cuts=cuts, want=1)   # E(1) = 1/2
     low = K.sup_lower_by_point(expr=E, var=s, point=sp.Integer(1), bound=Q(1, 2), lo=ZERO, hi=sp.oo,
                                lo_open=True, hi_open=True)
     assert low.claim.kind == "sup_lower"
@@ -633,7 +633,7 @@ def test_demo_kf_design2_approached_at_infinity():
     assert [b.claim for b in back] == [upper.claim, lower.claim]
 
 
-def test_sup_lower_by_limit_and_scaling():
+def test_sup_lower_by_limit():
     E = s / sp.sqrt(s ** 2 + 1)
     Et = 1 / sp.sqrt(t ** 2 + 1)
     ident = K.identity(lhs=Et, rhs=E.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
@@ -644,11 +644,8 @@ def test_sup_lower_by_limit_and_scaling():
     ident2 = K.identity(lhs=1 / t, rhs=s.subs(s, 1 / t), var=t, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
     rejects(K.sup_lower_by_limit, ident2, expr=s, var=s, width=half, bound=sp.Integer(5), lo=ZERO, lo_open=True)
     low = K.sup_lower_by_limit(ident, expr=E, var=s, width=half, bound=sp.Integer(1), lo=ZERO, lo_open=True)
-    scaled = K.sup_scaled(low, factor=sp.sqrt(2))
-    assert parse(scaled.claim.other) == sp.sqrt(2) and parse(scaled.claim.expr) == sp.sqrt(2) * E
-    rejects(K.sup_scaled, low, factor=-sp.sqrt(2))
-    rejects(K.sup_scaled, ident, factor=sp.Integer(2))
-    up = K.sup_upper_by_cover(expr=E, var=s, cuts=[0, 1, 2], bound=sp.Integer(2))
+    assert parse(low.claim.other) == 1 and parse(low.claim.expr) == E
+    up = K.sup_upper_by_sign(K.sign_by_cover(expr=2 - E, var=s, cuts=[0, 1, 2], want=1), expr=E, bound=sp.Integer(2))
     rejects(K.sup_upper_of_abs, up, up)                                   # second premise must be about -E
 
 

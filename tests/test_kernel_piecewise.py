@@ -121,7 +121,8 @@ def test_select_branch_reads_eq_and_or_not():
 
 
 def test_select_branch_moves_sup_and_limit_claims():
-    up = K.sup_upper_by_cover(expr=x ** 2, var=x, cuts=[ZERO, Q(1, 2)], bound=Q(1, 4))
+    up = K.sup_upper_by_sign(K.sign_by_cover(expr=Q(1, 4) - x ** 2, var=x, cuts=[ZERO, Q(1, 2)], want=1, strict=False),
+                             expr=x ** 2, bound=Q(1, 4))
     th = K.select_branch(up, sturm(1 - x, x, 0, Q(1, 2)), expr=P)
     assert (th.claim.kind, th.claim.other) == ("sup_upper", "Rational(1, 4)")
     lim = K.continuous_at_end(expr=x ** 2, var=x, c=ZERO, width=Q(1, 2))

@@ -248,6 +248,15 @@ def _const_sign(c) -> int:
     raise KernelError(f"sign of {c} not decided")
 
 
+def _enclose(e, var, a, b, what, bits=128):
+    """Arb's enclosure of e on [a, b]; KernelError "what(): why" where the
+    evaluation does not show e defined there."""
+    try:
+        return evaluate(e, var, a, b, bits=bits)
+    except Undefined as exc:
+        raise KernelError(f"{what()}: {exc}") from None
+
+
 def _expr(e, var) -> sp.Expr:
     _need(isinstance(var, sp.Symbol), lambda: f"not a variable: {var!r}")
     return _exact_in(_sym(e), var)
@@ -288,6 +297,11 @@ _VAR_KINDS = ("real", "positive", "nonnegative")
 def _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict) -> Claim:
     return Claim("sign", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open),
                  int(want), bool(strict))
+
+
+def _sign_on(c: Claim, e, want, strict) -> Claim:
+    """A sign claim about e on the interval of the claim c."""
+    return Claim("sign", _s(e), c.var, c.lo, c.hi, c.lo_open, c.hi_open, int(want), bool(strict))
 
 
 def _is_sign(t: Theorem):
@@ -393,26 +407,21 @@ sign_by_taylor = rule("arb", "sympy-core", "sympy-diff")(sign_by_taylor)
 
 
 def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
-    """A polynomial p with rational coefficients, exact (or infinite) ends.
-    With p = a * prod q_i^(m_i) its square-free factorization: if no q_i
-    has a root in I (`_roots_in`; weak claim: no q_i of odd m_i has a root
-    in the interior of I), then the sign of p on I is that of p at one
-    rational inner point x0 where no q_i vanishes.  (Descartes' rule of
-    signs on p itself first: no sign change, no root in I at all.)
-
-    A rational function e over Q: `_fraction_over_q` gives N, D, G with e
+    """A rational function e over Q (a polynomial included), exact (or
+    infinite) ends.  `_fraction_over_q` gives polynomials N, D, G with e
     defined and equal to N/D wherever G != 0; G has no root in I, so D has
-    one sign d there, that at x0, and the claim is that of d*N."""
+    one sign d there, that at an inner point x0, and the claim is that of
+    d*N.  A polynomial p's sign: with p = a * prod q_i^(m_i) its square-free
+    factorization, if no q_i has a root in I (`_roots_in`; weak claim: no
+    q_i of odd m_i has a root in the interior of I), then the sign of p on
+    I is that of p at one rational inner point where no q_i vanishes.
+    (Descartes' rule of signs on p itself first: no sign change, no root
+    in I at all.)"""
     _need(want in (1, -1) and isinstance(strict, bool), "want is +1 or -1, strict a boolean")
     lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     e = _expr(expr, var)
-    claim = _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict)
-    if e.is_polynomial(var):
-        _polynomial_sign(_poly_over_q(e, var), lo, hi, lo_open, hi_open, want, strict)
-        return claim
-    _need(_rational_over_q(e, var), lambda: f"not a rational function over Q: {e}")
     _rational_sign(e, var, lo, hi, lo_open, hi_open, want, strict)
-    return claim
+    return _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict)
 
 
 def _rational_sign(e, var, lo, hi, lo_open, hi_open, want, strict):
@@ -470,6 +479,7 @@ def _fraction_over_q(e, var):
             elif u.is_Pow and u.exp.is_Integer:
                 N, D, G = walk(u.base)
                 k = int(u.exp)
+                _need(abs(k) * max(N.degree(), D.degree(), 1) <= MAX_DEGREE, "degree too high")
                 memo[u] = (N ** k, D ** k, G) if k > 0 else (D ** -k, N ** -k, lcm([G, N]))
             else:
                 raise KernelError(f"not a rational function over Q: {u}")
@@ -510,22 +520,6 @@ def _inner_point(lo, hi, factors):
         raise KernelError("no inner point found")
     _need(x0.is_Rational and _lt(lo, x0) and _lt(x0, hi), "inner point outside")
     return x0
-
-
-def _poly_over_q(e, var) -> sp.Poly:
-    """The polynomial e (already shown one in var) as a Poly over Q, built by
-    arithmetic in the ring Q[var] (far faster than expanding e with SymPy's
-    core); KernelError when a coefficient is not rational."""
-    try:
-        f = FracField([var], sp.QQ).from_expr(e)
-    except (ValueError, sp.PolynomialError):
-        raise KernelError("coefficients are not rational") from None
-    _need(f.denom.is_ground, lambda: f"not a polynomial: {e}")
-    num = f.numer.quo_ground(f.denom.LC)
-    return sp.Poly.from_dict(dict(num.terms()) or {(0,): 0}, var, domain=sp.QQ)
-
-
-_poly_over_q = functools.lru_cache(maxsize=4096)(_poly_over_q)
 
 
 def _roots_in(q, lo, hi, lo_open, hi_open) -> int:
@@ -626,9 +620,7 @@ def sign_of_product(*premises, expr):
             _need(p.claim.want > 0 and (p.claim.strict or n > 0), lambda: f"{f}: needs base > 0 (>= 0 if r > 0)")
             strict = strict and p.claim.strict
     _need(used == set(by_expr), "a premise matches no factor")
-    c = premises[0].claim
-    lo, hi = c.ends()
-    return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, sign, strict)
+    return _sign_on(premises[0].claim, e, sign, strict)
 sign_of_product = rule("arb", "sympy-core")(sign_of_product)
 
 
@@ -659,9 +651,7 @@ def sign_of_sum(*premises, expr, want):
     s = _const_sign(sp.Add(*rest) - taken)
     _need(s in (0, want), lambda: f"the constant terms {sp.Add(*rest) - taken} have the wrong sign")
     strict = s == want or any(p.claim.strict for p in premises)
-    c = premises[0].claim
-    lo, hi = c.ends()
-    return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, want, strict)
+    return _sign_on(premises[0].claim, e, want, strict)
 sign_of_sum = rule("arb", "sympy-core")(sign_of_sum)
 
 
@@ -680,13 +670,10 @@ def sign_through_increasing(*premises, expr):
     e = _expr(expr, var)
     _need(isinstance(e, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.log)) and len(e.args) == 1, lambda: f"not G(Y): {e}")
     y = e.args[0]
-    lo, hi = c.ends()
-    if isinstance(e, _ODD_INCREASING):
+    if not isinstance(e, sp.log):              # G odd increasing: Y's sign; exp, cosh: > 0
         _need(len(premises) == 1 and c.expr == _s(y), "premise must be about the argument")
-        return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, c.want, c.strict)
-    if isinstance(e, (sp.exp, sp.cosh)):
-        _need(len(premises) == 1 and c.expr == _s(y), "premise must be about the argument")
-        return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, 1, True)
+        odd = isinstance(e, _ODD_INCREASING)
+        return _sign_on(c, e, c.want if odd else 1, c.strict or not odd)
     _need(c.expr == _s(y - 1), "first premise must be about Y - 1")
     if c.want > 0:
         _need(len(premises) == 1, "one premise for log Y > 0")
@@ -694,7 +681,7 @@ def sign_through_increasing(*premises, expr):
         _need(len(premises) == 2, "log Y < 0 needs Y > 0 too")
         q = premises[1].claim
         _need(q.expr == _s(y) and q.want > 0 and q.strict, "second premise must be Y > 0")
-    return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, c.want, c.strict)
+    return _sign_on(c, e, c.want, c.strict)
 sign_through_increasing = rule("sympy-core")(sign_through_increasing)
 
 
@@ -721,8 +708,7 @@ def sign_below_sup(arg, *, expr, bounded):
     sign = _const_sign(m)
     margin = _const_sign(a - sign * m * top)
     _need(sign != 0 and margin >= 0, "needs m != 0 and a - |m| sup G >= 0")
-    lo, hi = c.ends()
-    return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, 1, type(g) in _SUP or margin > 0)
+    return _sign_on(c, e, 1, type(g) in _SUP or margin > 0)
 sign_below_sup = rule("arb", "sympy-core")(sign_below_sup)
 
 
@@ -754,8 +740,7 @@ def sign_by_log_bound(bound, coeff, positive, *, expr, term, p):
     _need(coeff.claim.expr == _s(m) and coeff.claim.want == -w * _const_sign(p),
           lambda: f"premise must be the sign {-w * _const_sign(p)} of {m}")
     _need(c.expr == _s(b), lambda: f"premise must be about {b}")
-    lo, hi = c.ends()
-    return _sign_claim(e, var, lo, hi, c.lo_open, c.hi_open, w, c.strict)
+    return _sign_on(c, e, w, c.strict)
 sign_by_log_bound = rule("sympy-core")(sign_by_log_bound)
 
 
@@ -784,8 +769,7 @@ def sign_of_increasing_difference(arg, *, expr, inner, c):
     sk = _const_sign(k)                     # not 0: SymPy makes 0 G(Y) the number 0
     _need(e == k * g - k * g.func(c) and p.expr == _s(g.args[0] - c),
           lambda: f"{e} is not k (G(Y) - G(c)) with the premise Y - c")
-    lo, hi = p.ends()
-    return _sign_claim(e, var, lo, hi, p.lo_open, p.hi_open, sk * p.want, p.strict)
+    return _sign_on(p, e, sk * p.want, p.strict)
 sign_of_increasing_difference = rule("arb", "sympy-core")(sign_of_increasing_difference)
 
 
@@ -808,8 +792,7 @@ def sign_below_product(bound_a, sign_b, bound_b, *, expr, a, b):
     _need(_const_sign(a) >= 0, "needs a >= 0")
     margin = _const_sign(c - a * b)
     _need(margin >= 0, "needs c - a b >= 0")
-    lo, hi = c0.ends()
-    return _sign_claim(e, var, lo, hi, c0.lo_open, c0.hi_open, 1, margin > 0)
+    return _sign_on(c0, e, 1, margin > 0)
 sign_below_product = rule("arb", "sympy-core")(sign_below_product)
 
 
@@ -838,10 +821,7 @@ def _join_at_point(left, right):
     if e.has(sp.Piecewise):
         e = _branch(_folded(e), lambda d, want, strict: _sign_ok(_const_sign(d.subs(var, m)), want, strict))
     v = e.subs(var, m)
-    try:
-        box = evaluate(e, var, m, m, bits=256)          # also: E defined at m
-    except Undefined as exc:
-        raise KernelError(f"E undefined at {m}: {exc}") from None
+    box = _enclose(e, var, m, m, lambda: f"E undefined at {m}", bits=256)        # also: E defined at m
     zero = box.hull().contains(0) and (v == 0 or _zero_when_generalized(v))    # (Arb first: exact 0 may cost)
     return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, False), v, zero, box
 
@@ -1001,10 +981,8 @@ def continuous_piecewise(*signs, expr, var, cuts):
         for g in (left, right):
             d = g.subs(var, b) - at.subs(var, b)
             _need(d == 0 or _zero_when_generalized(d), lambda: f"the branches differ at {b}")
-            try:
-                _need(evaluate(at - g, var, b, b, bits=256).hull().contains(0), "Arb disagrees with exact 0")
-            except Undefined as exc:
-                raise KernelError(f"P undefined at {b}: {exc}") from None
+            _need(_enclose(at - g, var, b, b, lambda: f"P undefined at {b}", bits=256).hull().contains(0),
+                  "Arb disagrees with exact 0")
     return Claim("continuous", _s(e), _s(var), _s(0), "oo", True, True)
 continuous_piecewise = rule("arb", "sympy-core", "sympy-polys")(continuous_piecewise)
 
@@ -1054,10 +1032,7 @@ def sign_by_rewrite(thm, ident, *, cuts=None):
         cuts = _cuts(var, cuts)
         _need(not (c.lo_open or c.hi_open) and cuts[0] == lo and cuts[-1] == hi, "cuts must tile the closed I")
         for u, v in zip(cuts, cuts[1:]):
-            try:
-                evaluate(lhs, var, u, v)
-            except Undefined as exc:
-                raise KernelError(f"L undefined on [{u}, {v}]: {exc}") from None
+            _enclose(lhs, var, u, v, lambda: f"L undefined on [{u}, {v}]")
     return dataclasses.replace(c, expr=ic.expr), extra
 sign_by_rewrite = rule("arb", "sympy-core")(sign_by_rewrite)
 
@@ -1157,10 +1132,7 @@ def _defined(e, var, lo=0, hi=OO, lo_open=True, hi_open=True) -> tuple:
     _need(how is not None, lambda: f"{e} not shown defined for all {var} > 0" if (lo, hi) == (0, OO)
           else f"{e} not shown defined on ({lo}, {hi})")
     for end in [v for v, is_open in ((lo, lo_open), (hi, hi_open)) if not is_open]:
-        try:
-            evaluate(e, var, end, end, bits=256)
-        except Undefined as exc:
-            raise KernelError(f"{e} undefined at {end}: {exc}") from None
+        _enclose(e, var, end, end, lambda: f"{e} undefined at {end}", bits=256)
     return how
 
 
@@ -1235,8 +1207,7 @@ def sign_by_substitution(outer, *bounds, inner):
         _need(p.claim.expr == _s(side * (u - u_end)) and p.claim.want == 1 and (p.claim.strict or not op),
               lambda: f"premise must show {'u - ' + str(u_end) if side > 0 else str(u_end) + ' - u'} "
                       f"{'>' if op else '>='} 0")
-    lo, hi = c.ends()
-    return _sign_claim(G.subs(U, u), var, lo, hi, c.lo_open, c.hi_open, g.want, g.strict)
+    return _sign_on(c, G.subs(U, u), g.want, g.strict)
 sign_by_substitution = rule("sympy-core")(sign_by_substitution)
 
 
@@ -1253,10 +1224,7 @@ def sign_by_monotone(deriv, *, expr, var, R):
     _need((d.expr, d.var, d.lo, d.lo_open, d.hi) == (_s(sp.diff(e, var)), _s(var), _s(R), False, "oo"),
           "premise must be a sign of E' on [R, oo)")
     extra = _defined(e, var, R)
-    try:
-        at_r = evaluate(e, var, R, R, bits=256)
-    except Undefined as exc:
-        raise KernelError(f"E undefined at {R}: {exc}") from None
+    at_r = _enclose(e, var, R, R, lambda: f"E undefined at {R}", bits=256)
     _need(at_r.positive() if d.want > 0 else at_r.negative(), "E(R) has not the sign of E'")
     _interval(var, R, OO, False, True)
     return _sign_claim(e, var, R, OO, False, True, d.want, True), extra
@@ -1525,10 +1493,7 @@ def continuous_at_end(*, expr, var, c, width):
     _need(c not in (OO, -OO) and w != OO and _lt(0, w), "finite c and w > 0")
     _interval(var, c, c + w, False, False, at_zero=True)
     e = _expr(expr, var)
-    try:
-        evaluate(e, var, c, c + w)
-    except Undefined as exc:
-        raise KernelError(f"{e} not defined on [{c}, {c + w}]: {exc}") from None
+    _enclose(e, var, c, c + w, lambda: f"{e} not defined on [{c}, {c + w}]")
     v = _number(e.subs(var, c))
     _need(evaluate(e - v, var, c, c, bits=256).hull().contains(0), "Arb disagrees with E(c)")
     return Claim("limit", _s(e), _s(var), _s(c), _s(c + w), other=_s(v))
@@ -1621,25 +1586,6 @@ def value_sign(*, value):
 value_sign = rule("arb", "sympy-core")(value_sign)
 
 
-def sup_upper_by_cover(*, expr, var, cuts, bound):
-    """E <= U on the closed [c0, cn]: on every closed box [ci, c(i+1)] of
-    increasing exact cut points, the Arb range enclosure of E lies below
-    the enclosure of the exact constant U."""
-    cuts = _cuts(var, cuts)
-    _interval(var, cuts[0], cuts[-1], False, False, at_zero=True)
-    e, u = _expr(expr, var), _number(bound)
-    _need(u not in (OO, -OO), "finite bound")
-    ub = evaluate(u, bits=256)
-    for a, b in zip(cuts, cuts[1:]):
-        try:
-            v = evaluate(e, var, a, b)
-        except Undefined as exc:
-            raise KernelError(f"{e} not evaluable on [{a}, {b}]: {exc}") from None
-        _need(bool(v.hi <= ub.lo), lambda: f"E <= {u} not shown on [{a}, {b}]")
-    return Claim("sup_upper", _s(e), _s(var), _s(cuts[0]), _s(cuts[-1]), False, False, other=_s(u))
-sup_upper_by_cover = rule("arb", "sympy-core")(sup_upper_by_cover)
-
-
 def sup_upper_by_sign(thm, *, expr, bound):
     """From U - E >= 0 (or > 0) on I: E <= U on I (E defined there because
     U - E is)."""
@@ -1658,10 +1604,7 @@ def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
     e, p, L = _expr(expr, var), _number(point), _number(bound)
     _need(_lt(lo, p) or (p == lo and not lo_open), "point before I")
     _need(_lt(p, hi) or (p == hi and not hi_open), "point after I")
-    try:
-        v = evaluate(e, var, p, p, bits=256)       # also: E defined at p
-    except Undefined as exc:
-        raise KernelError(f"E undefined at {p}: {exc}") from None
+    v = _enclose(e, var, p, p, lambda: f"E undefined at {p}", bits=256)       # also: E defined at p
     if not v.lo >= evaluate(L, bits=256).hi:      # else E(p) - L exactly 0 (Arb first: exact 0 may cost)
         d = sp.sympify(e.subs(var, p) - L)
         _need(d == 0 or _zero_when_generalized(d), lambda: f"E({p}) >= {L} not shown")
@@ -1779,14 +1722,3 @@ def sup_upper_of_abs(up, down):
     _need(b.expr == _s(-e), "second premise must be about -E")
     return dataclasses.replace(a, expr=_s(sp.Abs(e)))
 sup_upper_of_abs = rule()(sup_upper_of_abs)
-
-
-def sup_scaled(thm, *, factor):
-    """For an exact constant k > 0: E <= U gives k*E <= k*U; sup E >= L
-    gives sup k*E >= k*L (same interval)."""
-    c = thm.claim
-    _need(c.kind in ("sup_upper", "sup_lower"), "premise must be a sup theorem")
-    k = _number(factor)
-    _need(k not in (OO, -OO) and _const_sign(k) == 1, "factor must be a positive constant")
-    return dataclasses.replace(c, expr=_s(k * c.e()), other=_s(k * parse(c.other)))
-sup_scaled = rule("arb", "sympy-core")(sup_scaled)
