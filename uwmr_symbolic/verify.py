@@ -49,7 +49,9 @@ class Report:
     proof_replay: dict = field(default_factory=lambda: {"ok": False, "steps": {}})
     seconds: float = 0.0
     error: str | None = None      # unusable input
-    timed_out: bool = False       # some step hit --timeout (the result depends on the time given)
+    # some step ran out of time (--timeout, or a search step's own cap such as certify.WALL_CAP):
+    # the result depends on the time given
+    timed_out: bool = False
     certificate: dict | None = None   # the design certificate of the search's verdicts (`design_certificate`)
     kernel: dict | None = None        # what the kernel re-checked of it (`kernel_summary`)
 
