@@ -110,7 +110,7 @@ def test_the_budget_counts_work_not_time(monkeypatch):
     from uwmr_symbolic import certify
     from uwmr_symbolic.kernel import arb
     budget = certify.Budget(1000)
-    nominal = certify.CPU_CAP * certify.UNIT_SECONDS * 1000
+    nominal = certify.CPU_CAP * certify.UNIT_SECONDS * 1000 * certify.machine_factor()
     clock = time.process_time()
     monkeypatch.setattr(certify.time, "process_time", lambda: clock + 0.9 * nominal)  # a slow machine
     assert not budget.spent()
@@ -219,3 +219,30 @@ def test_a_sign_lemma_stuck_inside_sympy_is_stopped_by_the_clock(monkeypatch):
     monkeypatch.setattr(certify, "WALL_CAP", 0.1 / (certify.UNIT_SECONDS * certify.WORK))
     s = sp.Symbol("s", positive=True)
     assert certify.sign_theorems(s + 7, s, 0, sp.oo) == certify.STOPPED     # (else ([], "") after 30 s)
+
+
+def test_time_caps_scale_with_the_machine(monkeypatch):
+    """CPU_CAP and WALL_CAP are scaled by `machine_factor`, this machine's
+    slowdown against the one they were tuned on, between 1 and 8; measuring
+    it charges no work to any budget."""
+    import time
+    from uwmr_symbolic import certify
+    from uwmr_symbolic.kernel import arb
+    certify.machine_factor.cache_clear()
+    nodes = arb.nodes
+    factor = certify.machine_factor()
+    assert 1.0 <= factor <= 8.0 and arb.nodes == nodes
+    for slowdown in (2.5, 1.0):
+        monkeypatch.setattr(certify, "machine_factor", lambda: slowdown)
+        before = time.process_time()
+        budget = certify.Budget(1000)
+        cap = certify.CPU_CAP * certify.UNIT_SECONDS * 1000 * slowdown
+        assert before + cap <= budget.cpu <= time.process_time() + cap
+    # a lemma that would sleep 30 s: stopped after WALL_CAP * nominal * factor seconds (here 0.05 * 4 = 0.2 s)
+    monkeypatch.setattr(certify, "_sign_theorems", lambda *a: (time.sleep(30), ([], ""))[1])
+    monkeypatch.setattr(certify, "WALL_CAP", 0.05 / (certify.UNIT_SECONDS * certify.WORK))
+    monkeypatch.setattr(certify, "machine_factor", lambda: 4.0)
+    s = sp.Symbol("s", positive=True)
+    start = time.monotonic()
+    assert certify.sign_theorems(s + 11, s, 0, sp.oo) == certify.STOPPED
+    assert time.monotonic() - start >= 0.2

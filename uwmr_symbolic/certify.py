@@ -69,7 +69,28 @@ LEMMA_SIZE = 50         # a lemma about an expression of n > LEMMA_SIZE ops gets
 CPU_CAP = 8.0           # a budget also ends after CPU_CAP times its nominal CPU seconds (backstop)
 WALL_CAP = 4.0          # and a sign lemma after WALL_CAP times its nominal seconds on the clock, inside SymPy too
 UNIT_SECONDS = 8e-6
+REFERENCE_SECONDS = 1.7e-3  # `machine_factor`'s workload where the caps above were tuned
 _charged = 0
+
+
+@functools.cache
+def machine_factor() -> float:
+    """How many times slower than the machine CPU_CAP and WALL_CAP were tuned
+    on this one runs a fixed Arb workload (best of 3; at least 1, at most 8).
+    The caps are scaled by it: they are backstops against SymPy calls that
+    run away, and a slower machine should not stop a lemma that a faster one
+    proves.  The workload's Arb nodes are not charged to any budget."""
+    x, nodes = sp.Symbol("x", positive=True), arb.nodes
+    e = sp.log(1 + x ** 2) * sp.tanh(x) / (2 + sp.cos(x)) + sp.sqrt(1 + x ** 3)
+
+    def run():
+        start = time.process_time()
+        for k in range(30):
+            evaluate(e, x, sp.Rational(k, 8), sp.Rational(k + 1, 8))
+        return time.process_time() - start
+    best = min(run() for _ in range(3))
+    arb.nodes = nodes
+    return min(max(best / REFERENCE_SECONDS, 1.0), 8.0)
 
 
 def _work() -> int:
@@ -81,7 +102,7 @@ class Budget:
 
     def __init__(self, work, outer=None):
         self.limit = _work() + work
-        self.cpu = time.process_time() + CPU_CAP * UNIT_SECONDS * work
+        self.cpu = time.process_time() + CPU_CAP * UNIT_SECONDS * work * machine_factor()
         if outer is not None:
             self.limit, self.cpu = min(self.limit, outer.limit), min(self.cpu, outer.cpu)
 
@@ -957,7 +978,7 @@ def sign_theorems(e, var, lo, hi, want=1, lo_open=True, hi_open=True, zeros=(), 
         # the budget counts work between SymPy's calls; one call can run for minutes (an assumption
         # query of diff that isolates the real roots of a huge polynomial): a wall-clock backstop too
         theorems, why = timeouts.attempt(lambda: _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict,
-                                                                work), WALL_CAP * UNIT_SECONDS * work, STOPPED)
+                                                                work), WALL_CAP * UNIT_SECONDS * work * machine_factor(), STOPPED)
         if theorems is None:
             _remember(key, (work, why), _FAILED)
             return None, why
