@@ -34,6 +34,7 @@ import sympy as sp
 from . import timeouts
 from .kernel import arb, core as K
 from .kernel.arb import Undefined, centered, evaluate
+from .kernel.core import derivative
 from .profile import _relationals
 
 OO = sp.oo
@@ -262,7 +263,7 @@ def _cover_cuts(e, var, a, b, want, strict, boxes=BOX_BUDGET, mean_value=False):
                 leaves.append(u)
                 continue
             if mean_value and n > 1:
-                slope = sp.diff(e, var) if slope is None else slope
+                slope = derivative(e, var) if slope is None else slope
                 if _ok(centered(e, slope, var, u, v), want, strict):
                     leaves.append(u)
                     used = True
@@ -633,7 +634,7 @@ class Prover:
         except NoProof as exc:                  # the m-th derivative's sign on a finer cover of the box
             d = e
             for _ in range(m):                  # as the kernel differentiates: once at a time
-                d = sp.diff(d, var)
+                d = derivative(d, var)
             try:
                 sigma = evaluate(d, var, c, c, bits=128)
             except Undefined:
@@ -771,7 +772,7 @@ class Prover:
                     raise
         if tail is None and depth < 1:
             try:
-                d = sp.diff(e, var)
+                d = derivative(e, var)
                 dth = self.prove(d, var, (R, OO, False, True), want, False, depth + 1)
                 tail = self._weaken(_rule(K.sign_by_monotone, dth, expr=e, var=var, R=R), (R, OO, False, True), strict)
             except NoProof as exc:
@@ -950,7 +951,7 @@ def _derivative_order(e, var, c):
     for m in range(TAYLOR_ORDER + 1):
         if d.subs(var, c) != 0:
             return m, d
-        d = sp.diff(d, var)
+        d = derivative(d, var)
     raise NoProof("Taylor order too high")
 
 
@@ -1071,7 +1072,7 @@ def piecewise_sup_theorems(F, c, point, var, ends, lower=None, work=2 * WORK):
     `lower` < c: kf is only enclosed in [lower, c], and the last conclusion
     is sup F' >= lower, by F'(point) >= lower.  `work`: the budget of each
     piece's sign lemmas (`piecewise_sign_theorem`)."""
-    dF = sp.diff(F, var)
+    dF = derivative(F, var)
     try:
         try:
             whole, jumps = continuity_pair(F, var, ends), False     # first: cheap, and often what fails
@@ -1303,7 +1304,7 @@ _POWER_RATES = (sp.Rational(1, 2), sp.Rational(1, 4))     # F ~ s^p: F' s^(1-p) 
 
 
 def _diverges(F, var, starts) -> list:
-    d = sp.diff(F, var)
+    d = derivative(F, var)
     prover = Prover(_scaled(WORK, d))        # one budget for every attempt
     for R in starts:
         for rate, g in (("linear", d), ("log", var * d), *((p, var ** (1 - p) * d) for p in _POWER_RATES)):
@@ -1340,7 +1341,7 @@ def origin_theorems(F, var, ends=None) -> list:
     key = ("origin", F, tuple(ends or ()), var)
     if key in _FOUND:
         return _FOUND[key]
-    d = sp.diff(F, var)
+    d = derivative(F, var)
     for w in (sp.Rational(1, 2), sp.Rational(1, 16)):
         try:
             out = [_limit_at_zero(F, var, w), _limit_at_zero(d, var, w)]
@@ -1360,8 +1361,8 @@ def smoothness_theorems(F, var, order, ends=None) -> list:
     F'(s)/s = F''(xi) -> L too (mean value theorem), and F continuous at 0+.
     For a Piecewise F (boundaries `ends`) also F continuous on (0, oo), so
     that F' and F'' are derivatives across the boundaries.  [] if not shown."""
-    d1 = sp.diff(F, var)
-    d2 = sp.diff(d1, var)
+    d1 = derivative(F, var)
+    d2 = derivative(d1, var)
     try:
         out = [_continuous(d, var, ends) for d in (d1, d2)[:order]]
         whole = [_continuous(F, var, ends)] if isinstance(F, sp.Piecewise) else []
@@ -1385,7 +1386,7 @@ def smoothness_theorems(F, var, order, ends=None) -> list:
 def continuity_pair(F, var, ends) -> list:
     """F and F' continuous on (0, oo) (for a Piecewise F: the links' proof
     that F' is F's derivative across the boundaries too); NoProof if not shown."""
-    return [_continuous(F, var, ends), _continuous(sp.diff(F, var), var, ends)]
+    return [_continuous(F, var, ends), _continuous(derivative(F, var), var, ends)]
 
 
 def _continuous(e, var, ends, rule=K.continuous_piecewise):
@@ -1404,7 +1405,7 @@ def branches_pair(F, var, ends) -> list:
     """F and F' continuous on (0, oo) or on each open piece between the
     `ends` (`piecewise_branches`): for a Piecewise F that may jump, what the
     links of P8 and kf need in place of `continuity_pair`."""
-    return [_continuous(e, var, ends, K.piecewise_branches) for e in (F, sp.diff(F, var))]
+    return [_continuous(e, var, ends, K.piecewise_branches) for e in (F, derivative(F, var))]
 
 
 def _limit_at_zero(e, var, w):

@@ -37,7 +37,7 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .certify import REDUCTION
 from .kernel.certificate import CertificateError, check_certificate, to_certificate  # noqa: F401 (re-exported)
-from .kernel.core import _TRUE_WHEN, _srepr    # when a relation l < r (<=, >, >=) holds: the sign of r - l; srepr, cached
+from .kernel.core import _TRUE_WHEN, _srepr, derivative    # when a relation l < r (<=, >, >=) holds: the sign of r - l; srepr, cached
 from .kernel.parse import ParseError, parse
 from .profile import S
 
@@ -183,7 +183,7 @@ def _link_p1_p6(name, F, claims) -> list[str]:
     P6: F' >= 0 and F'(s)/s <= k with k > 0: h = F'/(k s) lies in [0, 1].
     (For a Piecewise F the continuity comes from a pair of claims instead:
     see `_link`.)"""
-    dF = sp.diff(F, S)
+    dF = derivative(F, S)
     on = (_srepr(S), "Integer(0)", "oo", True, True)
     got = [(c.kind, c.expr, (c.var, c.lo, c.hi, c.lo_open, c.hi_open)) for c in claims]
     if name == "P1":
@@ -218,9 +218,9 @@ def _link_smooth(name, F, claims) -> list[str]:
     e2 != 0, s lies in (|e1|, |e1| + d), inside one piece, where f = F(s)
     is differentiable and |df/de2| <= |F'(s)|, F' there being one expression
     continuous on the piece's closure in (0, oo), so bounded near |e1|."""
-    d1 = sp.diff(F, S)
+    d1 = derivative(F, S)
     order = 1 if name == "P8" else 2
-    ds = [d1, sp.diff(d1, S)][:order]
+    ds = [d1, derivative(d1, S)][:order]
     want = [("continuous", _srepr(d), "Integer(0)") for d in ds] + [
         ("limit", _srepr(d), "Integer(0)") for d in ([d1] if order == 1 else [*ds, F])] + [
         ("continuous", _srepr(F), "Integer(0)")] * F.has(sp.Piecewise)
@@ -235,7 +235,7 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
     claims = [t.claim for t in theorems]
     if name == "P2":
         ok = len(claims) == 1 and claims[0].kind == "value_sign" and claims[0].want == 0 \
-            and claims[0].expr == _srepr(f.subs({E1: 0, E2: 0}))
+            and claims[0].expr == _srepr(_at(f, (0, 0)))
         if not ok:
             raise CertificateError("P2: the kernel's conclusion is not f(0, 0) = 0")
         return []
@@ -250,7 +250,7 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
     F = _profile(f)
     claims, k = _reduction(f, F, claims)
     claims, F = _one_branch(F, claims, open_only=name in ("P3", "P8"))
-    dF = sp.diff(F, S)
+    dF = derivative(F, S)
     reduction = [] if k is not None else [REDUCTION]      # unless P4 is kernel-checked (see `check`)
     want = F if name == "P3" else dF
     piecewise = F.has(sp.Piecewise)
@@ -422,14 +422,14 @@ _UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo")
 
 
 def _at(f, p):
-    return f.subs({E1: p[0], E2: p[1]})
+    return f.xreplace({E1: sp.sympify(p[0], strict=True), E2: sp.sympify(p[1], strict=True)})
 
 
 def axis_derivative(f, v, side):
     """df/dv at distance h > 0 from the origin along the v axis, on the side
     `side` (+1, -1), the other variable 0: an expression in H."""
     other = E2 if v == E1 else E1
-    return sp.diff(f, v).xreplace({other: sp.Integer(0), v: side * H})
+    return derivative(f, v).xreplace({other: sp.Integer(0), v: side * H})
 
 
 def along_ray(f, direction):
@@ -442,7 +442,7 @@ def growing(f, v, order=1, at="oo", divided=True):
     at (0, h)), P6 (v = e1: df/de1 at (h, 0), divided by h unless not
     `divided`) or P7 (order 2: d2f/de2^2 at (0, h)); at "0", the same with h
     replaced by 1/h."""
-    e = axis_derivative(f if order == 1 else sp.diff(f, v), v, 1)
+    e = axis_derivative(f if order == 1 else derivative(f, v), v, 1)
     e = e if v == E2 or not divided else e / H
     return e if at == "oo" else e.xreplace({H: 1 / H})
 
@@ -497,7 +497,7 @@ def jump_parts(f, b, branches, w, v=E1, order=0):
     at the points b - h and b + h of the v axis."""
     parts = [f.args[i][0] for i in branches]
     for _ in range(order):                      # one order at a time (SymPy's diff(e, v, 2) can be far slower)
-        parts = [sp.diff(e, v) for e in parts]
+        parts = [derivative(e, v) for e in parts]
     return [e.xreplace(_on_axis(v, b, side)) for e, side in zip(parts, (-1, 1))]
 
 
@@ -573,7 +573,7 @@ def witness_values(kind, f, points) -> list:
     if kind in ("circle", "step"):
         return [_at(f, points[1]) - _at(f, points[0])]
     if kind == "slope":
-        return [sp.diff(f, E1).subs({E1: points[0][0], E2: points[0][1]})]
+        return [_at(derivative(f, E1), points[0])]
     raise CertificateError(f"unknown witness kind {kind!r}")
 
 

@@ -17,6 +17,7 @@ import sympy as sp
 
 from .interval import Interval, Undefined
 from .kernel import core as K
+from .kernel.core import derivative
 from .limits import NoLimit, rational_parts
 from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
@@ -84,7 +85,7 @@ def _candidates(expr, lo, hi, interior=True):
     and bound was not the one at infinity), one-sided values at the ends
     (point None at oo, asked only when not `interior`: its limit calculus is slow)."""
     out = []
-    d = sp.diff(expr, S)
+    d = derivative(expr, S)
     # SymPy solves E' = 0 in closed form only for algebraic or singly transcendental E'
     # (exp(-s^2)(1 - 2 s^2)); with functions of functions it searches until the time limit
     solvable = interior and _nesting(d) <= 1
@@ -315,14 +316,14 @@ def _with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
         return cert
     point = None
     if cert.attained:
-        point = next((p for piece in pieces for v, p in _candidates(sp.diff((side or 1) * piece.expr, S),
+        point = next((p for piece in pieces for v, p in _candidates(derivative((side or 1) * piece.expr, S),
                                                                     piece.lo, piece.hi)
                       if p is not None and exact_sign(v - cert.exact) == 0), None)
     if side is not None:
-        theorems, why = sup_abs_theorems(sp.diff(pieces[0].expr, S), cert.exact, point, S, side) \
+        theorems, why = sup_abs_theorems(derivative(pieces[0].expr, S), cert.exact, point, S, side) \
             if len(pieces) == 1 else (None, "F' of a Piecewise F changes sign")
     elif len(pieces) == 1:
-        dF = sp.diff(pieces[0].expr, S)
+        dF = derivative(pieces[0].expr, S)
         positive, why = sign_theorems(dF, S, 0, sp.oo)
         theorems, why = sup_theorems(dF, cert.exact, point, S, positive[0]) if positive else (None, why)
     else:
@@ -353,7 +354,7 @@ def _formula_enclosure(cert: SupCertificate, analysis, L, tiers):
     """(U, [F' >= 0, F' <= U, sup F' >= L], "") for an F of one formula, the
     first U of `tiers` (with its budget) that the kernel takes; or (None,
     None, why)."""
-    dF = sp.diff(analysis.kernel_F, S)
+    dF = derivative(analysis.kernel_F, S)
     positive = analysis.slope_sign
     upper = None
     for U, work in tiers:
@@ -400,7 +401,7 @@ def show(x, digits: int = 10) -> str:
 def certify_kf(analysis) -> SupCertificate:
     """kf = sup |F'| over [0, oo) (bound (10), property P1)."""
     pieces = analysis.profile.pieces
-    dF = [prepare(sp.diff(p.expr, S)) for p in pieces]
+    dF = [prepare(derivative(p.expr, S)) for p in pieces]
     pos = certify_sup(analysis, dF, "F'")
     if pos.upper is None:
         return pos

@@ -30,6 +30,7 @@ from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
                       origin_value_theorems, piecewise_sign_theorem, radial_theorems, sign_theorems,
                       smoothness_theorems, sup_upper_theorem)
+from .kernel.core import derivative
 from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, scale, show
 from .limits import NoLimit, limit_right
 from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
@@ -100,7 +101,7 @@ class Analysis:
         if not k:
             return expr
         if (expr, k) not in self._derivatives:
-            self._derivatives[expr, k] = prepare(sp.diff(self.derivative(expr, k - 1), S))
+            self._derivatives[expr, k] = prepare(derivative(self.derivative(expr, k - 1), S))
         return self._derivatives[expr, k]
 
     # ---- continuity facts (order k = 0, 1, 2) -----------------------------
@@ -213,7 +214,7 @@ class Analysis:
     def slope_sign(self):
         """F' > 0 on (0, oo) as a kernel theorem, else F' >= 0 (zeros on
         circles: enough for P1 and P6), else None; for an F of one formula."""
-        dF = sp.diff(self.kernel_F, S)
+        dF = derivative(self.kernel_F, S)
         return (sign_theorems(dF, S, 0, sp.oo)[0] or sign_theorems(dF, S, 0, sp.oo, strict=False)[0] or [None])[0]
 
     @cached_property
@@ -222,7 +223,7 @@ class Analysis:
         theorem, or None: when there is one, the search need not show F' >= 0."""
         if _single_formula(self) is not None:
             return self.slope_sign
-        return piecewise_sign_theorem(sp.diff(self.F, S), self.profile.ends, S)[0]
+        return piecewise_sign_theorem(derivative(self.F, S), self.profile.ends, S)[0]
 
     @cached_property
     def open_branch(self):
@@ -304,7 +305,7 @@ def _all(parts, what) -> Verdict:
 
 def verify_p2(a: Analysis) -> Verdict:
     """P2: f(0, 0) = 0, by exact evaluation."""
-    v = a.f.subs({E1: 0, E2: 0})
+    v = a.f.xreplace({E1: sp.Integer(0), E2: sp.Integer(0)})
     if v.has(sp.Piecewise) or v.free_symbols:
         return unknown("cannot evaluate f at the origin exactly")
     sgn = exact_sign(v)
@@ -370,7 +371,7 @@ def _p1_bound(a: Analysis, U):
     if F is None:
         return None
     positive = a.slope_sign
-    upper = sup_upper_theorem(sp.diff(F, S), U, S) if positive else None
+    upper = sup_upper_theorem(derivative(F, S), U, S) if positive else None
     return ([positive], upper) if upper else None
 
 
@@ -416,18 +417,25 @@ def _sampled_positive(a: Analysis, k: int, points: int = 8) -> bool:
     return True
 
 
+def _derivative(e, k: int):
+    """The k-th derivative in s, as the kernel takes it (one order at a time)."""
+    for _ in range(k):
+        e = derivative(e, S)
+    return e
+
+
 def _piece_theorems(a: Analysis, k: int, what: str) -> dict:
     """The kernel's part of `_positive_on_pieces`: one theorem about the
     Piecewise F^(k) on (0, oo) when the kernel takes it, else one per piece
     with the boundaries left to the search."""
     prof = a.profile
     if len(prof.pieces) > 1:
-        whole, _ = piecewise_sign_theorem(sp.diff(a.F, S, k), a.profile.ends, S)
+        whole, _ = piecewise_sign_theorem(_derivative(a.F, k), a.profile.ends, S)
         if whole is not None and whole.claim.strict:
             return {"kernel": [whole], "unchecked": []}
     kernel, unchecked = [], []
     for piece in prof.pieces:
-        theorems, gap = sign_theorems(sp.diff(piece.expr, S, k), S, piece.lo, piece.hi)
+        theorems, gap = sign_theorems(_derivative(piece.expr, k), S, piece.lo, piece.hi)
         kernel += theorems or []
         if theorems is None:
             unchecked.append(f"{what} on ({piece.lo}, {piece.hi}) (kernel: {gap})")
@@ -569,7 +577,7 @@ def _p6_theorems(a: Analysis, k) -> list:
     if F is None:
         return _piecewise_p6(a, k)
     positive = a.slope_sign         # h >= 0
-    return [positive, upper] if positive and (upper := sup_upper_theorem(sp.diff(F, S) / S, k, S)) else []
+    return [positive, upper] if positive and (upper := sup_upper_theorem(derivative(F, S) / S, k, S)) else []
 
 
 
@@ -577,7 +585,7 @@ def _p6_theorems(a: Analysis, k) -> list:
 def _piecewise_p6(a: Analysis, k) -> list:
     """`_p6_theorems` for a Piecewise F: F' > 0 and k - F'/s >= 0 through
     its branches, then F and F' continuous on (0, oo)."""
-    dF, ends = sp.diff(a.F, S), a.profile.ends
+    dF, ends = derivative(a.F, S), a.profile.ends
     positive, _ = piecewise_sign_theorem(dF, ends, S)
     gap, _ = piecewise_sign_theorem(k - dF / S, ends, S, strict=False) if positive else (None, "")
     upper = sup_upper_theorem(dF / S, k, S, gap) if gap else None

@@ -40,7 +40,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 from flint import arb, fmpq, fmpq_poly
-from sympy.polys.fields import FracField
+from sympy.polys.rings import PolyRing
 from sympy.printing.repr import ReprPrinter
 
 from .arb import Iv, Undefined, centered, evaluate
@@ -213,6 +213,33 @@ def _number(c) -> sp.Expr:
     return c
 
 
+def derivative(e, x):
+    """dE/dx by the sum, product, power and chain rules, each with SymPy's own
+    formula (`Add`/`Mul`/`Pow._eval_derivative`, a function's `fdiff`),
+    but with no assumption queries (SymPy asks `is_zero` of every derivative
+    it builds): the result is `sympy.diff(e, x)` except where SymPy drops a
+    term it proves zero.  |u|, sign, Piecewise, Max, Min and the like keep
+    `sympy.diff`.  The prover and the checker both call this, so claims
+    about a derivative match."""
+    e = _sym(e)
+    if x not in e.free_symbols or e == x:
+        return sp.Integer(e == x)
+    if e.is_Pow:
+        (b, p), dp = e.args, derivative(e.exp, x)
+        return e * ((dp * sp.log(b) if dp != 0 else 0) + derivative(b, x) * p / b)
+    if not (e.is_Add or e.is_Mul or isinstance(e, sp.Function) and type(e)._eval_derivative is sp.Function._eval_derivative):
+        return sp.diff(e, x)
+    ds = [derivative(a, x) for a in e.args]
+    if e.is_Add:
+        return sp.Add(*ds)
+    if e.is_Mul:
+        return sp.Add(*[sp.Mul(*e.args[:i], d, *e.args[i + 1:]) for i, d in enumerate(ds) if d != 0])
+    return sp.Add(*[e.fdiff(i) * d for i, d in enumerate(ds, 1) if d != 0])
+
+
+derivative = functools.lru_cache(maxsize=8192)(derivative)     # pure: see core.rule
+
+
 def _lt(a, b) -> bool:
     """a < b, certified (exactly for rationals and oo, else by Arb)."""
     a, b = _sym(a), _sym(b)
@@ -355,7 +382,7 @@ def sign_by_cover(*, expr, var, cuts, want, strict=True, mean_value=False):
     cuts = _cuts(var, cuts)
     _interval(var, cuts[0], cuts[-1], False, False, at_zero=True)
     e = _expr(expr, var)
-    d = sp.diff(e, var) if mean_value else None
+    d = derivative(e, var) if mean_value else None
     for a, b in zip(cuts, cuts[1:]):
         try:
             v = evaluate(e, var, a, b)
@@ -390,7 +417,7 @@ def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
     e = _expr(expr, var)
     d = e
     for k in range(order + 1):
-        d = sp.diff(d, var) if k else e
+        d = derivative(d, var) if k else e
         try:
             boxes = [evaluate(d, var, u, v) for u, v in zip(cuts, cuts[1:])] if k == order \
                 else [evaluate(d, var, a, b)]
@@ -1221,7 +1248,7 @@ def sign_by_monotone(deriv, *, expr, var, R):
     _need(R != OO and _lt(0, R), "R > 0")
     e = _expr(expr, var)
     d = deriv.claim
-    _need((d.expr, d.var, d.lo, d.lo_open, d.hi) == (_s(sp.diff(e, var)), _s(var), _s(R), False, "oo"),
+    _need((d.expr, d.var, d.lo, d.lo_open, d.hi) == (_s(derivative(e, var)), _s(var), _s(R), False, "oo"),
           "premise must be a sign of E' on [R, oo)")
     extra = _defined(e, var, R)
     at_r = _enclose(e, var, R, R, lambda: f"E undefined at {R}", bits=256)
@@ -1265,15 +1292,36 @@ def _vanishes_at(points):
     _need(ok >= 3, "fewer than 3 points to cross-check the identity")
 
 
-def _zero_over_q(d, *variables) -> bool:
-    """d, a rational function of the variables over Q, is identically 0: its
-    value in the field Q(variables) (SymPy's polynomial arithmetic, each
-    fraction kept in lowest terms) is 0.  (As `cancel(together(d)) == 0`,
-    and one to two orders of magnitude faster on large sums of fractions.)"""
+def _numerator(d, variables):
+    """(ring, N, D) with N, D polynomials over Q in the variables (SymPy's
+    sparse PolyRing) and d = N/D, built term by term without cancelling
+    (D is a product of d's denominators, nonzero wherever d is defined):
+    d is 0 wherever it is defined iff N is the zero polynomial.  None if
+    d is not a rational function of the variables over Q or a denominator
+    is the zero polynomial."""
+    ring = PolyRing(list(variables), sp.QQ)
+
+    def nd(u):
+        if u.is_Add or u.is_Mul:
+            N, D = nd(u.args[0])
+            for n, e in map(nd, u.args[1:]):
+                N, D = (N * n, D * e) if u.is_Mul else (N + n, D) if e == D else (N * e + n * D, D * e)
+            return N, D
+        if u.is_Pow and u.exp.is_Integer:
+            (n, e), k = nd(u.base), int(u.exp)
+            return (n ** k, e ** k) if k >= 0 else (e ** -k, n ** -k)
+        return ring(u), ring.one
     try:
-        return FracField(list(variables), sp.QQ).from_expr(d) == 0
-    except (ValueError, sp.PolynomialError, ZeroDivisionError):
-        return False
+        N, D = nd(d)
+    except ValueError:
+        return None
+    return (ring, N, D) if D else None
+
+
+def _zero_over_q(d, *variables) -> bool:
+    """d, a rational function of the variables over Q, is identically 0 (`_numerator`)."""
+    nd = _numerator(d, variables)
+    return nd is not None and not nd[1]
 
 
 _zero_over_q = functools.lru_cache(maxsize=1024)(_zero_over_q)
@@ -1342,14 +1390,24 @@ def _generalized_pass(d, variables, fresh, roots, asked, orders):
         if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
             return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
         if isinstance(e, _UNARY) and len(e.args) == 1:  # G(u): one symbol per canonical generalised u
-            u = sp.cancel(walk(e.args[0]))
-            v = sp.cancel(-u)
+            u = _cancel(walk(e.args[0]))
+            v = _cancel(-u)
             flip = isinstance(e, (sp.cosh, sp.cos, *_ODD_INCREASING, sp.sin)) and \
                 sp.default_sort_key(v) < sp.default_sort_key(u)     # G(-u) = -G(u), or = G(u) for cosh, cos
             sign = -1 if flip and not isinstance(e, (sp.cosh, sp.cos)) else 1
             return sign * fresh.setdefault(e.func(v if flip else u, evaluate=False), sp.Dummy(real=True))
         return fresh.setdefault(e, sp.Dummy(real=True))
     return walk(d)
+
+
+def _cancel(u):
+    """sympy.cancel(u), which is u itself when u is a sum of monomials with
+    rational coefficients (and then costs milliseconds to say so)."""
+    def monomial(t):
+        return t.is_Rational or t.is_Symbol or t.is_Pow and t.base.is_Symbol and t.exp.is_Integer and t.exp > 0
+    if all(monomial(t) or t.is_Mul and all(map(monomial, t.args)) for t in sp.Add.make_args(u)):
+        return u
+    return sp.cancel(u)
 
 
 def _order_at_zero(poly, x) -> int:
@@ -1369,14 +1427,16 @@ def _zero_when_generalized(d, *variables) -> bool:
     g, fresh, roots = _generalized(d, variables)       # a rational function over Q by construction
     if not roots:
         return bool(fresh) and _zero_over_q(g, *variables, *fresh.values())
-    field = FracField([*variables, *fresh.values()], sp.QQ)
-    num, ring = field.from_expr(g).numer, field.ring
-    relations = [(ring.gens.index(ring(r)), q, field.from_expr(b)) for r, (q, b) in roots.items()]
+    gens = [*variables, *fresh.values()]
+    nds = [_numerator(e, gens) for e in [g, *(b for _, b in roots.values())]]
+    if None in nds:
+        return False
+    (ring, num, _), bs = nds[0], [nd[1:] for nd in nds[1:]]
     for _ in range(6):
-        for j, q, b in relations:
+        for j, q, (bn, bd) in [(ring.gens.index(ring(r)), q, b) for (r, (q, _)), b in zip(roots.items(), bs)]:
             A = max((m[j] // q for m in num.monoms()), default=0)
-            num = num if not A else sum((ring({m[:j] + (m[j] % q,) + m[j + 1:]: c}) * b.numer ** (m[j] // q)
-                       * b.denom ** (A - m[j] // q) for m, c in num.terms()), ring.zero)
+            num = num if not A else sum((ring({m[:j] + (m[j] % q,) + m[j + 1:]: c}) * bn ** (m[j] // q)
+                       * bd ** (A - m[j] // q) for m, c in num.terms()), ring.zero)
     return not num
 
 
@@ -1526,7 +1586,7 @@ def diverges_by_growth(lower, *, expr, var, R, rate, k):
     _need(rate in ("linear", "log") or (power is not None and 0 < power < 1),
           "rate is 'linear', 'log' or a rational p with 0 < p < 1")
     e = _expr(expr, var)
-    d = sp.diff(e, var)
+    d = derivative(e, var)
     g = d if rate == "linear" else var * d if rate == "log" else var ** (1 - power) * d
     c = lower.claim
     _need((c.expr, c.var, c.lo, c.lo_open, c.hi, c.want) == (_s(g - k), _s(var), _s(R), False, "oo", 1),
