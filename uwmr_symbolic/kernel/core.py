@@ -127,7 +127,8 @@ class _SharedRepr(ReprPrinter):
         return self.memo[expr]
 
 
-_srepr = _SharedRepr().doprint
+_PRINTER = _SharedRepr()
+_srepr = _PRINTER.doprint
 
 
 def _encode(v):
@@ -151,7 +152,9 @@ def _encoded(v) -> bool:
 
 def decode(v):
     if isinstance(v, dict):
-        return parse(v["$"])
+        e = parse(v["$"])
+        _PRINTER.memo.setdefault(e, v["$"])     # printed as read: a text reads as one expression only
+        return e
     if isinstance(v, list):
         return [decode(u) for u in v]
     return v
@@ -204,6 +207,8 @@ def _sym(v) -> sp.Basic:
 def _number(c) -> sp.Expr:
     """An exact real constant (no Float, no symbol) or oo."""
     c = _sym(c)
+    if c.is_Rational:
+        return c
     _need(c in (OO, -OO) or (c.is_number and not c.has(sp.Float)), lambda: f"not an exact number: {c}")
     if c not in (OO, -OO):
         try:
@@ -823,15 +828,21 @@ def sign_below_product(bound_a, sign_b, bound_b, *, expr, a, b):
 sign_below_product = rule("arb", "sympy-core")(sign_below_product)
 
 
+def _adjacent(left, right):
+    """The claims of two sign theorems about one E, variable and sign on <a, m> and <m, b>."""
+    for t in (left, right):
+        _is_sign(t)
+    l, r = left.claim, right.claim
+    _need((l.expr, l.var, l.want) == (r.expr, r.var, r.want), "different claims")
+    _need(l.hi == r.lo, "not adjacent")
+    return l, r
+
+
 def join(left, right):
     """Same E, variable and sign on I1 = <a, m> and I2 = <m, b> (m the same
     exact point, closed in at least one): E has the sign on <a, b>; strict
     iff both are."""
-    _is_sign(left)
-    _is_sign(right)
-    l, r = left.claim, right.claim
-    _need((l.expr, l.var, l.want) == (r.expr, r.var, r.want), "different claims")
-    _need(l.hi == r.lo, "not adjacent")
+    l, r = _adjacent(left, right)
     _need(not (l.hi_open and r.lo_open), lambda: f"shared end point {l.hi} is covered by neither")
     return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, l.strict and r.strict)
 join = rule()(join)
@@ -839,11 +850,7 @@ join = rule()(join)
 
 def _join_at_point(left, right):
     """(claim on <a, b>, value E(m)) for `join_at_zero` and `join_at_point`."""
-    _is_sign(left)
-    _is_sign(right)
-    l, r = left.claim, right.claim
-    _need((l.expr, l.var, l.want) == (r.expr, r.var, r.want), "different claims")
-    _need(l.hi == r.lo, "not adjacent")
+    l, r = _adjacent(left, right)
     e, var, m = l.e(), l.x(), parse(l.hi)
     if e.has(sp.Piecewise):
         e = _branch(_folded(e), lambda d, want, strict: _sign_ok(_const_sign(d.subs(var, m)), want, strict))
@@ -1381,9 +1388,10 @@ def _generalized_pass(d, variables, fresh, roots, asked, orders):
         if e.is_Pow and e.exp.is_Rational and e.exp.q <= 12 and abs(e.exp.p) <= 48:
             b, p, q = e.base, e.exp.p, e.exp.q  # b^(p/q) = (b^(1/q))^p where b^(p/q) is real; small p, q only
             x = next((v for v in variables if v.is_positive and _rational_over_q(b, v)), None)
-            if x is not None:                   # b = x^k c, x > 0, so b^(p/q) = x^(kp/q) c^(p/q)
-                num, den = (b, 1) if b.is_polynomial(x) else sp.fraction(sp.cancel(sp.together(b)))
-                k = _order_at_zero(num, x) - _order_at_zero(den, x)
+            nd = _numerator(b, [x]) if x is not None else None
+            if nd is not None:                  # b = N/D = x^k c, x > 0, so b^(p/q) = x^(kp/q) c^(p/q)
+                low = [min((m[0] for m in P.monoms()), default=0) for P in nd[1:]]
+                k = low[0] - low[1]             # x^low divides N, D
                 if abs(k * p) <= 48:
                     return power(x, k * p, q) * power(sp.cancel(b / x ** k) if k else b, p, q)
             return power(b, p, q)
@@ -1403,17 +1411,10 @@ def _generalized_pass(d, variables, fresh, roots, asked, orders):
 def _cancel(u):
     """sympy.cancel(u), which is u itself when u is a sum of monomials with
     rational coefficients (and then costs milliseconds to say so)."""
-    def monomial(t):
-        return t.is_Rational or t.is_Symbol or t.is_Pow and t.base.is_Symbol and t.exp.is_Integer and t.exp > 0
-    if all(monomial(t) or t.is_Mul and all(map(monomial, t.args)) for t in sp.Add.make_args(u)):
-        return u
-    return sp.cancel(u)
-
-
-def _order_at_zero(poly, x) -> int:
-    """The largest k with x^k dividing the polynomial (0 for the zero polynomial)."""
-    terms = sp.Poly(poly, x).monoms()
-    return min(m[0] for m in terms) if terms else 0
+    factors = [f for t in sp.Add.make_args(u) for f in sp.Mul.make_args(t)]
+    plain = all(f.is_Rational or f.is_Symbol or f.is_Pow and f.base.is_Symbol and f.exp.is_Integer and f.exp > 0
+                for f in factors)
+    return u if plain else sp.cancel(u)
 
 
 def _zero_when_generalized(d, *variables) -> bool:
@@ -1443,6 +1444,16 @@ def _zero_when_generalized(d, *variables) -> bool:
 _zero_when_generalized = functools.lru_cache(maxsize=1024)(_zero_when_generalized)   # pure: see core.rule
 
 
+def _exact_zero(l, r, variables) -> bool:
+    """l - r is 0 wherever defined by polynomial arithmetic over Q: as a
+    rational function of the variables (else KernelError), after
+    generalising its other subterms, or branch by branch (`_same_branches`)."""
+    if _rational_over_q(l - r, *variables):
+        _need(_zero_over_q(l - r, *variables), "the rational functions differ")
+        return True
+    return _zero_when_generalized(l - r, *variables) or _same_branches(l, r, variables)
+
+
 def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
     """lhs = rhs wherever both are defined on I.  Exact when lhs - rhs is a
     rational function with rational coefficients, or becomes one when its
@@ -1454,10 +1465,7 @@ def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
     l, r = _expr(lhs, var), _expr(rhs, var)
     d = l - r
     claim = Claim("identity", _s(l), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(r))
-    if _rational_over_q(d, var):
-        _need(_zero_over_q(d, var), "the rational functions differ")
-        return claim, ("sympy-polys",)
-    if _zero_when_generalized(d, var) or _same_branches(l, r, (var,)):
+    if _exact_zero(l, r, (var,)):
         return claim, ("sympy-polys",)
     _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
     _cross_check(d, var, lo, hi)
@@ -1531,10 +1539,7 @@ def identity_plane(*, lhs, rhs, x, y):
     if l == r:
         return claim
     d = l - r
-    if _rational_over_q(d, x, y):
-        _need(_zero_over_q(d, x, y), "the rational functions differ")
-        return claim, ("sympy-polys",)
-    if _zero_when_generalized(d, x, y) or _same_branches(l, r, (x, y)):
+    if _exact_zero(l, r, (x, y)):
         return claim, ("sympy-polys",)
     _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
     _vanishes_at([(f"({p}, {q})", lambda p=p, q=q: evaluate(d.subs({x: p, y: q}), bits=CROSS_CHECK_BITS))
