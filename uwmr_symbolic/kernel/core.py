@@ -248,12 +248,10 @@ derivative = functools.lru_cache(maxsize=8192)(derivative)     # pure: see core.
 def _lt(a, b) -> bool:
     """a < b, certified (exactly for rationals and oo, else by Arb)."""
     a, b = _sym(a), _sym(b)
-    if a == b:
+    if a == b or a == OO or b == -OO:
         return False
     if a == -OO or b == OO:
         return True
-    if a == OO or b == -OO:
-        return False
     if a.is_Rational and b.is_Rational:
         return bool(a < b)
     try:
@@ -1426,8 +1424,6 @@ def _zero_when_generalized(d, *variables) -> bool:
     leaves the zero polynomial, N = 0 at the roots' true values (bd != 0
     where b is defined)."""
     g, fresh, roots = _generalized(d, variables)       # a rational function over Q by construction
-    if not roots:
-        return bool(fresh) and _zero_over_q(g, *variables, *fresh.values())
     gens = [*variables, *fresh.values()]
     nds = [_numerator(e, gens) for e in [g, *(b for _, b in roots.values())]]
     if None in nds:
@@ -1484,8 +1480,7 @@ def _same_branches(l, r, variables) -> bool:
         return False
     l, r = sp.piecewise_fold(l), sp.piecewise_fold(r)
     _need(isinstance(l, sp.Piecewise) and isinstance(r, sp.Piecewise) and len(l.args) == len(r.args)
-          and all(_condition(cl, variables) == _condition(cr, variables) and (el == er or (_zero_over_q(el - er, *variables) if _rational_over_q(el - er, *variables)
-                                             else _zero_when_generalized(el - er, *variables)))
+          and all(_condition(cl, variables) == _condition(cr, variables) and (el == er or _zero_when_generalized(el - er, *variables))
                   for (el, cl), (er, cr) in zip(l.args, r.args)),
           "the Piecewise sides differ in a condition or a branch")
     return True
