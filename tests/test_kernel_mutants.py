@@ -656,15 +656,35 @@ def test_defined_on_an_interval():
         K._defined(sp.log(4 - s), s, I1, 5 * I1)
 
 
-def test_zero_over_q():
-    """The field Q(x) decides exact identities; what it cannot read (a
-    radical, a float) is not an identity there."""
-    Z = K._zero_over_q
-    assert Z((x ** 2 - 1) / (x - 1) - x - 1, x) and Z(x / 3 - x / 3 + 0 * x, x)
-    assert not Z((x ** 2 - 1) / (x - 1) - x, x) and not Z(sp.sqrt(2) * x - x, x)
-    assert not Z(sp.sqrt(x) - sp.sqrt(x) + 1, x) and not Z(sp.pi * x, x)
+def test_numerator():
+    """A rational function over Q read as N/D term by term: an identity's N
+    is the zero polynomial; what the ring cannot read (a radical, pi) and a
+    denominator that is the zero polynomial give None."""
+    def zero(d, *v):
+        nd = K._numerator(d, v)
+        return nd is not None and not nd[1]
+    assert zero((x ** 2 - 1) / (x - 1) - x - 1, x) and zero(x / 3 - x / 3 + 0 * x, x)
+    assert not zero((x ** 2 - 1) / (x - 1) - x, x) and not zero(sp.sqrt(2) * x - x, x)
+    assert not zero(sp.sqrt(x) - sp.sqrt(x) + 1, x) and not zero(sp.pi * x, x)
     y = sp.Symbol("y", real=True)
-    assert Z(x * y / (x + y) - y + y ** 2 / (x + y), x, y) and not Z(x * y / (x + y) - y, x, y)
+    assert zero(x * y / (x + y) - y + y ** 2 / (x + y), x, y) and not zero(x * y / (x + y) - y, x, y)
+    ring, N, D = K._numerator(1 / x + 1 / (x + 1), [x])
+    assert (N, D) == (ring(2 * x + 1), ring(x ** 2 + x))        # over the product, not reduced
+    assert K._numerator(x / (x + 1) - 1 / (x + 1), [x])[1:] == (ring(x - 1), ring(x + 1))   # one denominator
+    assert K._numerator(1 / (x * (x + 1) - x ** 2 - x), [x]) is None and K._numerator(sp.sqrt(x), [x]) is None
+    assert K._numerator((x + 1) ** -2, [x])[1:] == (ring(1), ring((x + 1) ** 2))
+
+
+def test_identity_with_transcendental_constants_is_exact():
+    """lhs - rhs rational in t over Q(atan(255/64)): the constant becomes a
+    fresh symbol, so the identity is exact (no simplify), and a difference
+    of c/t^2 is refused as such."""
+    c = sp.atan(Q(255, 64))
+    lhs, rhs = c - 1 / t, (t ** 2 * c - t + c) / t ** 2 - c / t ** 2
+    thm = K.identity(lhs=lhs, rhs=rhs, var=t, lo=I0, hi=I1, lo_open=True, hi_open=False)
+    assert thm.assumptions == {"sympy-core", "sympy-polys"}
+    assert why(K.identity, lhs=lhs, rhs=rhs + c / t ** 2, var=t, lo=I0, hi=I1, lo_open=True,
+               hi_open=False) == "the rational functions differ"
 
 
 def tail(E, Et, Rv, ident_lo=0, ident_hi=oo, ident_hi_open=True):

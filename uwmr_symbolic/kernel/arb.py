@@ -27,8 +27,6 @@ rewritten t-form (see docs/kernel.md).
 """
 from __future__ import annotations
 
-from contextlib import contextmanager
-
 import flint
 import sympy as sp
 from flint import arb, fmpq
@@ -39,16 +37,7 @@ class Undefined(ArithmeticError):
     something this evaluator does not support."""
 
 
-def precision(bits: int):
-    old = flint.ctx.prec
-    flint.ctx.prec = bits
-    try:
-        yield
-    finally:
-        flint.ctx.prec = old
-
-
-precision = contextmanager(precision)       # not a decorator: see core.rule
+precision = flint.ctx.workprec       # `with precision(bits):` Arb's working precision, restored after
 
 
 class Iv:

@@ -335,7 +335,15 @@ def _sign_on(c: Claim, e, want, strict) -> Claim:
 
 
 def _is_sign(t: Theorem):
+    """The claim of the sign theorem t and its variable."""
     _need(t.claim.kind == "sign", lambda: f"premise is a {t.claim.kind} theorem, not a sign theorem")
+    return t.claim, t.claim.x()
+
+
+def _of_kind(t: Theorem, kind: str, msg: str):
+    """The claim of the premise t, of this kind (else KernelError msg), and its variable."""
+    _need(t.claim.kind == kind, msg)
+    return t.claim, t.claim.x()
 
 
 def _same_interval(a: Claim, b: Claim):
@@ -726,9 +734,7 @@ def sign_below_sup(arg, *, expr, bounded):
     a + m G(Y) >= a - |m|, so the claim is strict only when a - |m| > 0,
     else weak.  `bounded` is G(Y); the premise, any sign theorem about Y on
     I, shows Y defined there."""
-    c = arg.claim
-    _is_sign(arg)
-    var = c.x()
+    c, var = _is_sign(arg)
     e, g = _expr(expr, var), _expr(bounded, var)
     top = {**_SUP, **_MAX}.get(type(g))
     _need(top is not None and c.expr == _s(g.args[0]), "bounded must be G(Y) and the premise about Y")
@@ -791,9 +797,7 @@ def sign_of_increasing_difference(arg, *, expr, inner, c):
     (the sign of Y - c on I), for G strictly increasing on R (tanh, atan,
     asinh, sinh, erf, exp), an exact constant c and an exact constant k != 0
     (e/2 - e exp(-Y^2)/2 is k = -e/2, c = 0).  `inner` is k G(Y)."""
-    _is_sign(arg)
-    p = arg.claim
-    var = p.x()
+    p, var = _is_sign(arg)
     e, (k, g), c = _expr(expr, var), _expr(inner, var).as_independent(var, as_Add=False), _number(c)
     _need(type(g) in (*_ODD_INCREASING, sp.exp) and c not in (OO, -OO), "inner must be k G(Y), c finite")
     sk = _const_sign(k)                     # not 0: SymPy makes 0 G(Y) the number 0
@@ -1022,9 +1026,7 @@ continuous_piecewise = rule("arb", "sympy-core", "sympy-polys")(continuous_piece
 def weaken(thm, *, lo, hi, lo_open, hi_open, strict):
     """A sign on I gives the same sign on any J contained in I, and a
     strict sign gives the weak one."""
-    _is_sign(thm)
-    c = thm.claim
-    var = c.x()
+    c, var = _is_sign(thm)
     a, b = c.ends()
     lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     _need(_within(c, lo, hi, lo_open, hi_open), "J is not inside I")
@@ -1225,9 +1227,8 @@ def sign_by_substitution(outer, *bounds, inner):
     and b - u > 0 (>= 0 if closed at b) on I, one for each finite end of J
     (at least one, which also shows u defined on I).  Then G(u(x)) is
     defined and has G's sign on I; the claim's E is G.subs(U, u)."""
-    _is_sign(outer)
-    g = outer.claim
-    G, U = g.e(), g.x()
+    g, U = _is_sign(outer)
+    G = g.e()
     a, b = g.ends()
     needed = [(u_end, op, side) for u_end, op, side in ((a, g.lo_open, 1), (b, g.hi_open, -1))
               if u_end not in (OO, -OO)]
@@ -1323,19 +1324,12 @@ def _numerator(d, variables):
     return (ring, N, D) if D else None
 
 
-def _zero_over_q(d, *variables) -> bool:
-    """d, a rational function of the variables over Q, is identically 0 (`_numerator`)."""
-    nd = _numerator(d, variables)
-    return nd is not None and not nd[1]
-
-
-_zero_over_q = functools.lru_cache(maxsize=1024)(_zero_over_q)
-
-
 def _rational_over_q(d, *variables) -> bool:
-    """d is a rational function of the variables with rational coefficients
-    and integer powers of at most 64 (higher ones are left to other routes:
-    polynomial arithmetic in such degrees can run for hours)."""
+    """d is a rational function of the variables with integer powers of at
+    most 64 (higher ones are left to other routes: polynomial arithmetic in
+    such degrees can run for hours), its numbers rationals, no pi or E;
+    a constant such as atan(2) may remain in a coefficient (`_numerator`
+    refuses it, `_generalized` makes it a symbol)."""
     return d.is_rational_function(*variables) and all(a.is_Rational for a in d.atoms(sp.Number)) \
         and not d.atoms(sp.NumberSymbol) and all(p.exp.is_Integer and abs(p.exp) <= 64 for p in d.atoms(sp.Pow))
 
@@ -1418,7 +1412,7 @@ def _cancel(u):
 def _zero_when_generalized(d, *variables) -> bool:
     """d with its non-rational subterms generalised is 0 by polynomial
     arithmetic over Q (in the field of the variables and the fresh symbols,
-    `_zero_over_q`), so d is identically 0 where defined.  With roots
+    `_numerator`), so d is identically 0 where defined.  With roots
     r = b^(1/q), b = bn/bd: the numerator N, each r^k (k = a q + j) replaced
     by r^j bn^a bd^(A-a), is N bd^A modulo r^q bd - bn; if repeating this
     leaves the zero polynomial, N = 0 at the roots' true values (bd != 0
@@ -1441,11 +1435,12 @@ _zero_when_generalized = functools.lru_cache(maxsize=1024)(_zero_when_generalize
 
 
 def _exact_zero(l, r, variables) -> bool:
-    """l - r is 0 wherever defined by polynomial arithmetic over Q: as a
-    rational function of the variables (else KernelError), after
-    generalising its other subterms, or branch by branch (`_same_branches`)."""
+    """l - r is 0 wherever defined by polynomial arithmetic over Q
+    (`_zero_when_generalized`): as a rational function of the variables
+    (else KernelError), after generalising its other subterms, or branch
+    by branch (`_same_branches`)."""
     if _rational_over_q(l - r, *variables):
-        _need(_zero_over_q(l - r, *variables), "the rational functions differ")
+        _need(_zero_when_generalized(l - r, *variables), "the rational functions differ")
         return True
     return _zero_when_generalized(l - r, *variables) or _same_branches(l, r, variables)
 
@@ -1601,9 +1596,7 @@ def diverges_through_increasing(div, *, expr):
     power Y^p with rational p > 0 (increasing and unbounded on the values Y
     takes for large x); E = a + m G(Y) defined for every x >= R (`_defined`).
     Claim on the premise's [R, oo)."""
-    c = div.claim
-    _need(c.kind == "diverges", "premise must be a diverges theorem")
-    var = c.x()
+    c, var = _of_kind(div, "diverges", "premise must be a diverges theorem")
     e = _expr(expr, var)
     a, mg = e.as_independent(var, as_Add=True)
     m, g = mg.as_independent(var)
@@ -1624,10 +1617,8 @@ def diverges_by_comparison(lower, div, *, expr):
     """E(x) -> +oo as x -> oo from E - G >= 0 on <R, oo) (premise `lower`)
     and G -> +oo (premise `div`, a `diverges` theorem); E defined for every
     x >= max(R, R') (`_defined`).  Claim on [max(R, R'), oo)."""
-    _is_sign(lower)
-    c, d = lower.claim, div.claim
+    (c, var), d = _is_sign(lower), div.claim
     _need(d.kind == "diverges", "second premise must be a diverges theorem")
-    var = c.x()
     e = _expr(expr, var)
     _need((c.var, c.hi, c.want) == (d.var, "oo", 1) and c.expr == _s(e - d.e()),
           "first premise must be E - G >= 0 on <R, oo), G the diverging expression")
@@ -1649,9 +1640,8 @@ value_sign = rule("arb", "sympy-core")(value_sign)
 def sup_upper_by_sign(thm, *, expr, bound):
     """From U - E >= 0 (or > 0) on I: E <= U on I (E defined there because
     U - E is)."""
-    _is_sign(thm)
-    c = thm.claim
-    e, u = _expr(expr, c.x()), _number(bound)
+    c, var = _is_sign(thm)
+    e, u = _expr(expr, var), _number(bound)
     _need(c.want == 1 and c.expr == _s(u - e), "premise must be U - E >= 0")
     return Claim("sup_upper", _s(e), c.var, c.lo, c.hi, c.lo_open, c.hi_open, other=_s(u))
 sup_upper_by_sign = rule()(sup_upper_by_sign)
@@ -1677,9 +1667,7 @@ def _tail_limit(ident, expr, var, width):
     a t-interval containing (0, w]; E_t defined (hence continuous) on the
     closed [0, w] (Arb range evaluation); c = E_t(0) exactly (SymPy's value,
     Arb agrees); E defined for all s > 1/w (and the extra assumptions of that)."""
-    _need(ident.claim.kind == "identity", "premise must be an identity")
-    ic = ident.claim
-    t = ic.x()
+    ic, t = _of_kind(ident, "identity", "premise must be an identity")
     _need(t != var, "the tail variable must differ from the variable")
     e, w = _expr(expr, var), _number(width)
     _need(_lt(0, w) and w != OO, "finite w > 0")
@@ -1722,9 +1710,7 @@ limit_at_infinity = rule("arb", "sympy-core")(limit_at_infinity)
 def limit_of_bounded(div, *, expr):
     """G(Y) -> sup G as x -> oo when Y -> +oo (a `diverges` theorem), for
     G = tanh, erf (sup 1) or atan (sup pi/2), which tend to sup G at +oo."""
-    c = div.claim
-    _need(c.kind == "diverges", "premise must be a diverges theorem")
-    var = c.x()
+    c, var = _of_kind(div, "diverges", "premise must be a diverges theorem")
     e = _expr(expr, var)
     _need(type(e) in _SUP and c.expr == _s(e.args[0]), lambda: f"{e} is not G(Y) with the premise about Y")
     return Claim("limit_oo", _s(e), _s(var), hi="oo", other=_s(_SUP[type(e)]))
@@ -1750,9 +1736,7 @@ limit_of_product = rule("sympy-core")(limit_of_product)
 def sup_lower_from_limit(lim, *, lo, lo_open):
     """E -> c as x -> oo gives sup over <lo, oo) of E >= c (lo finite): E is
     defined and within any eps of c on some [X, oo), which meets <lo, oo)."""
-    c = lim.claim
-    _need(c.kind == "limit_oo", "premise must be a limit at oo")
-    var, lo = c.x(), _number(lo)
+    (c, var), lo = _of_kind(lim, "limit_oo", "premise must be a limit at oo"), _number(lo)
     _need(lo not in (OO, -OO), "finite lo")
     _interval(var, lo, OO, lo_open, True)
     return Claim("sup_lower", c.expr, c.var, _s(lo), "oo", bool(lo_open), True, other=c.other)
@@ -1761,9 +1745,7 @@ sup_lower_from_limit = rule()(sup_lower_from_limit)
 
 def widen(thm, *, lo, hi, lo_open, hi_open):
     """sup over I of E >= L gives sup over any J containing I of E >= L."""
-    c = thm.claim
-    _need(c.kind == "sup_lower", "premise must be a sup_lower theorem")
-    var = c.x()
+    c, var = _of_kind(thm, "sup_lower", "premise must be a sup_lower theorem")
     lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     a, b = c.ends()
     _need(_within(Claim("", "", c.var, _s(lo), _s(hi), lo_open, hi_open), a, b, c.lo_open, c.hi_open),
