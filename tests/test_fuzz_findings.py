@@ -104,6 +104,12 @@ def test_elliptic_design_with_irrational_sup_does_not_crash(verify):
         assert kf_encloses(r, mpmath.sqrt(2))
 
 
+def test_nested_exp_design_ends_within_its_time_limit(verify):
+    r = verify("nested_exp_hang.py", timeout=10.0)
+    assert "hang" not in r and "crash" not in r, r
+    assert status(r, "P1") == "refuted" and status(r, "P2") == "proved"
+
+
 def test_every_finding_file_is_a_loadable_design_with_a_docstring():
     from uwmr_symbolic.design import load_design
     files = sorted(HERE.glob("*.py"))
@@ -112,4 +118,4 @@ def test_every_finding_file_is_a_loadable_design_with_a_docstring():
         d = load_design(path)
         assert isinstance(d.f, sp.Expr)
         doc = path.read_text().split('"""')[1]
-        assert any(w in doc for w in ("FALSE PROOF", "WRONG", "CRASH", "BAD WITNESS")), path.name
+        assert any(w in doc for w in ("FALSE PROOF", "WRONG", "CRASH", "BAD WITNESS", "HANG")), path.name
