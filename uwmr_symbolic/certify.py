@@ -35,6 +35,7 @@ from . import timeouts
 from .kernel import arb, core as K
 from .kernel.arb import Undefined, centered, evaluate
 from .kernel.core import derivative
+from .univariate import replaced
 from .profile import _relationals
 
 OO = sp.oo
@@ -697,7 +698,7 @@ class Prover:
         lo, hi, lo_open, hi_open = I
         inner = {a for g in e.atoms(sp.Function) for a in g.args if a.has(var) and a != var}
         for u in sorted(inner, key=sp.count_ops, reverse=True):
-            G = _replaced(e, u, _U)
+            G = replaced(e, u, _U)
             if G.has(var) or G.count(_U) < 2 or G.subs(_U, u) != e:
                 continue
             a, b = (u.subs(var, x) if x != OO else OO for x in (lo, hi))
@@ -1789,22 +1790,3 @@ def _encode_record(record):
         out["direction"] = [K._s(c) for c in record["direction"]]
     return out
 
-
-def _replaced(e, u, U):
-    """e with u replaced by U, as a subterm and, for a sum u, among the terms
-    of a larger sum (u - sin(u) with u = sqrt(1 + s^2) - 1).  Structural:
-    SymPy's `subs` of a subterm may run `powdenest`, whose assumption
-    queries can factor huge polynomials in C, where no time limit reaches."""
-    if e == u:
-        return U
-    if not e.args:
-        return e
-    e = e.func(*[_replaced(a, u, U) for a in e.args])
-    if e.is_Add and u.is_Add:
-        rest = list(e.args)
-        for t in u.args:
-            if t not in rest:
-                return e
-            rest.remove(t)
-        return sp.Add(U, *rest)
-    return e

@@ -430,6 +430,26 @@ _SIGN_PRESERVING = (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf)
 U = sp.Symbol("u", real=True)     # an inner expression, for the composition rule
 
 
+def replaced(e, u, U):
+    """e with u replaced by U, as a subterm and, for a sum u, among the terms
+    of a larger sum (u - sin(u) with u = sqrt(1 + s^2) - 1).  Structural:
+    SymPy's `subs` of a subterm may run `powdenest`, whose assumption
+    queries can factor huge polynomials in C, where no time limit reaches."""
+    if e == u:
+        return U
+    if not e.args:
+        return e
+    e = e.func(*[replaced(a, u, U) for a in e.args])
+    if e.is_Add and u.is_Add:
+        rest = list(e.args)
+        for t in u.args:
+            if t not in rest:
+                return e
+            rest.remove(t)
+        return sp.Add(U, *rest)
+    return e
+
+
 def _composed_sign_near(expr, var, lo, hi, c, side, want) -> bool:
     """expr = G(u(var)) for an inner u with u(c) = 0 and a sign beside c:
     then expr has the sign of G on the u-interval (0, max u] (or [min u, 0)),
@@ -440,7 +460,7 @@ def _composed_sign_near(expr, var, lo, hi, c, side, want) -> bool:
         at_c = exact_value(u, var, c)          # first: a substitution in a large expr costs more
         if at_c is None or exact_sign(at_c) != 0:
             continue
-        G = expr.subs(u, U)
+        G = replaced(expr, u, U)
         if G.has(var) or not G.has(U):
             continue
         for u_side in (1, -1):
