@@ -126,6 +126,20 @@ def test_the_budget_counts_work_not_time(monkeypatch):
     assert idle.spent()
 
 
+def test_replaced_is_structural_and_finds_a_sum_among_the_terms_of_a_sum():
+    """`replaced` (the substitution steps' u -> U): a subterm, or a sum u among
+    the terms of a larger sum; nothing else (SymPy's subs would also rewrite
+    2u or u^2 algebraically, through powdenest)."""
+    from uwmr_symbolic.univariate import replaced
+    U = sp.Symbol("U", real=True)
+    u = sp.sqrt(1 + S ** 2) - 1
+    assert replaced(u - sp.sin(u), u, U) == U - sp.sin(U)
+    assert replaced(u + S - sp.log(1 + u ** 2), u, U) == U + S - sp.log(1 + U ** 2)
+    assert replaced(u + 3, u, U) == u + 3          # u + 3 = sqrt(...) + 2: u's -1 is not a term
+    assert replaced(2 * u + sp.sin(u), u, U) == 2 * u + sp.sin(U)      # 2u = 2 sqrt(...) - 2: not u's terms
+    assert replaced(sp.exp(S) + S, sp.exp(S), U) == U + S and replaced(S, u, U) == S
+
+
 def test_substitution_is_the_kernel_step_for_u_minus_sin_u():
     """The theorem for u - sin(u), u = sqrt(1 + s^2) - 1, is `sign_by_substitution`
     over G(u) = u - sin(u) > 0 on (0, oo) and u > 0 on (0, oo)."""
