@@ -1423,8 +1423,9 @@ def _zero_when_generalized(d, *variables) -> bool:
     if None in nds:
         return False
     (ring, num, _), bs = nds[0], [nd[1:] for nd in nds[1:]]
+    relations = [(ring.gens.index(ring(r)), q, b) for (r, (q, _)), b in zip(roots.items(), bs)]
     for _ in range(6):
-        for j, q, (bn, bd) in [(ring.gens.index(ring(r)), q, b) for (r, (q, _)), b in zip(roots.items(), bs)]:
+        for j, q, (bn, bd) in relations:
             A = max((m[j] // q for m in num.monoms()), default=0)
             num = num if not A else sum((ring({m[:j] + (m[j] % q,) + m[j + 1:]: c}) * bn ** (m[j] // q)
                        * bd ** (A - m[j] // q) for m, c in num.terms()), ring.zero)
@@ -1439,10 +1440,11 @@ def _exact_zero(l, r, variables) -> bool:
     (`_zero_when_generalized`): as a rational function of the variables
     (else KernelError), after generalising its other subterms, or branch
     by branch (`_same_branches`)."""
-    if _rational_over_q(l - r, *variables):
-        _need(_zero_when_generalized(l - r, *variables), "the rational functions differ")
+    d = l - r
+    if _rational_over_q(d, *variables):
+        _need(_zero_when_generalized(d, *variables), "the rational functions differ")
         return True
-    return _zero_when_generalized(l - r, *variables) or _same_branches(l, r, variables)
+    return _zero_when_generalized(d, *variables) or _same_branches(l, r, variables)
 
 
 def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
