@@ -214,6 +214,9 @@ def test_growth_through_sinh_over_cosh_and_beside_a_vanishing_term():
     from uwmr_symbolic.kernel.parse import parse
     h = S
     assert _tanh_form(sp.sinh(h ** 2) / sp.cosh(h ** 2) + h) == sp.tanh(h ** 2) + h
+    assert _tanh_form(sp.sinh(h) ** 3 / sp.cosh(h) ** 2 + h) == sp.sinh(h) * sp.tanh(h) ** 2 + h   # by powers
+    assert _tanh_form(sp.sinh(h) / sp.cosh(h) ** 3 + h) == sp.tanh(h) / sp.cosh(h) ** 2 + h
+    assert _tanh_form(sp.sinh(h) / sp.sqrt(sp.cosh(h)) + h) == sp.sinh(h) / sp.sqrt(sp.cosh(h)) + h   # not tanh^(1/2)
     assert [t.rule for t in growth_theorems(5 * h * sp.sinh(h ** 2) / sp.cosh(h ** 2), h)] == ["diverges_by_growth"]
     (th,) = growth_theorems(5 * h * sp.sinh(h ** 2) / sp.cosh(h ** 2) + sp.atan(h) / (1 + h ** 2), h)
     assert th.rule == "diverges_by_growth"

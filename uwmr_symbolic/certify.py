@@ -800,13 +800,26 @@ class Prover:
 _INCREASING = (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf, sp.exp)
 
 
+def _tanh_pairs(m):
+    """The product m with sinh(a)^k cosh(a)^-j written tanh(a)^n sinh(a)^(k-n)
+    cosh(a)^(n-j), n = min(k, j): structurally, not by `subs` (see `replaced`)."""
+    exps = dict(a.as_base_exp() for a in m.args)
+    if len(exps) != len(m.args):        # two factors on one base (2 sqrt(2)): left alone
+        return m
+    for b in [b for b in exps if isinstance(b, sp.sinh)]:
+        c, t = sp.cosh(b.args[0]), sp.tanh(b.args[0])
+        k, j = exps[b], -sp.sympify(exps.get(c, 0))
+        if k.is_Integer and j.is_Integer and k > 0 and j > 0:
+            n = min(k, j)
+            exps[b], exps[c], exps[t] = k - n, n - j, exps.get(t, 0) + n
+    return sp.Mul(*[b ** x for b, x in exps.items()])
+
+
 def _tanh_form(e):
     """e with sinh(a)/cosh(a) written tanh(a) (SymPy's derivative of
     log(cosh(a))) and its terms grouped by powers of its variable, so that
     the bounded-function rules see it; else e."""
-    out = e
-    for c in e.atoms(sp.cosh):
-        out = out.subs(sp.sinh(c.args[0]) / c, sp.tanh(c.args[0]))
+    out = e.replace(lambda m: m.is_Mul and m.has(sp.sinh), _tanh_pairs)
     if out == e:
         return e
     var = next(iter(e.free_symbols), None)          # its terms grouped by powers of var: h^2 (1 - tanh^2)

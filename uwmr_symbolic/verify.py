@@ -185,6 +185,16 @@ def _gains(design: Design, kf: SupCertificate | None) -> dict[str, GainCheck]:
     return check_gains(design.gains, kf_for_gains, kf_known, kf_lower)
 
 
+AFTER_DEADLINE = 8.0    # seconds past --timeout that kf, the replay and the kernel's re-check share (< batch.HARD_GRACE)
+
+
+def stage_seconds(deadline: float, least: float, now: float) -> float:
+    """Time limit of a stage after the properties: what is left of --timeout,
+    at least `least` s, but never past deadline + AFTER_DEADLINE, so that the
+    stages together stay inside the parent's kill limit (`batch.hard_limit`)."""
+    return max(min(max(deadline - now, least), deadline + AFTER_DEADLINE - now), 0.001)
+
+
 def _verify(design: Design, timeout: float, start: float, kernel_only: bool = True) -> Report:
     path = design.path
     deadline = start + timeout
@@ -209,19 +219,19 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Tr
     kf = None
     if analysis.reduced and analysis.profile is not None:
         try:
-            with time_limit(max(deadline - time.monotonic(), 1.0)):
+            with time_limit(stage_seconds(deadline, 1.0, time.monotonic())):
                 kf = analysis.kf    # sup |F'| over the pieces, also when P1 fails
         except TimeLimit:
             kf = None
             timed_out = True
     try:
-        with time_limit(max(deadline - time.monotonic(), 5.0)):
+        with time_limit(stage_seconds(deadline, 5.0, time.monotonic())):
             proof = replay(design.f, analysis.p4.proved)
     except TimeLimit:
         proof = {"ok": False, "steps": {"replay": {"ok": False, "detail": "timed out"}}}
         timed_out = True
     try:
-        with time_limit(max(deadline - time.monotonic(), 5.0)), design_budget(design.f):   # the witnesses' own budget
+        with time_limit(stage_seconds(deadline, 5.0, time.monotonic())), design_budget(design.f):   # the witnesses' own budget
             certificate, kernel = _kernel_check(Report(path, design, props, kf))
     except TimeLimit:
         certificate, kernel = None, {"checked": [], "search": [p for p, v in props.items() if v.proved or v.refuted],
