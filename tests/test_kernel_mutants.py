@@ -675,6 +675,15 @@ def test_numerator():
     assert K._numerator((x + 1) ** -2, [x])[1:] == (ring(1), ring((x + 1) ** 2))
 
 
+def test_a_generalized_denominator_that_vanishes_is_refused():
+    """tanh y = sinh y / cosh y makes 1/(tanh x - sinh x / cosh x) a zero
+    polynomial's reciprocal: nowhere defined, so an identity refuses it
+    (`_numerator` gives None) rather than taking it as 0, also under a root."""
+    assert not K._zero_when_generalized(1 / (sp.tanh(x) - sp.sinh(x) / sp.cosh(x)), x)
+    assert not K._zero_when_generalized(sp.sqrt(1 / (sp.tanh(x) - sp.sinh(x) / sp.cosh(x))) + 1, x)
+    assert K._zero_when_generalized(sp.tanh(x) * sp.cosh(x) - sp.sinh(x), x)     # and reads what it can
+
+
 def test_identity_with_transcendental_constants_is_exact():
     """lhs - rhs rational in t over Q(atan(255/64)): the constant becomes a
     fresh symbol, so the identity is exact (no simplify), and a difference
@@ -1768,3 +1777,26 @@ def test_identity_with_roots_by_reducing_their_powers():
     for d in (sp.sqrt(t) ** 3 - t, sp.sqrt(t ** 2 + 4) / t - sp.sqrt(1 + 5 / t ** 2),
               (1 + sp.sqrt(t)) ** 2 - 1 - t, r2 * r3 - sp.sqrt(5), (1 + rq) ** 2 - 2 * rq - 1 - (t + 3)):
         assert not zero.__wrapped__(d, t), d
+
+
+def test_derivative_keeps_the_log_term_of_a_variable_exponent_and_sympys_rules_elsewhere():
+    """`derivative` of b^p with the variable in p: d(b^p) = b^p (p' log b + b' p/b).
+    Written out by hand: d(2^s) = 2^s log 2, d(s^s) = s^s (log s + 1),
+    d((1 + s)^(s/2)) = (1 + s)^(s/2) (log(1 + s)/2 + s/(2 (1 + s))), each also
+    checked as a value against a 30-digit central difference; |u|, Piecewise
+    and Max keep SymPy's own rules (sign(x - 1), the branch derivatives)."""
+    import mpmath
+    by_hand = {2 ** s: 2 ** s * sp.log(2), s ** s: s ** s * (sp.log(s) + 1),
+               (1 + s) ** (s / 2): (1 + s) ** (s / 2) * (sp.log(1 + s) / 2 + s / (2 * (1 + s))),
+               sp.exp(s) * s ** 3: sp.exp(s) * s ** 3 + 3 * s ** 2 * sp.exp(s)}
+    mpmath.mp.dps = 30
+    for e, d in by_hand.items():
+        got = K.derivative(e, s)
+        assert sp.expand(got - d) == 0, (e, got)
+        h, p = mpmath.mpf(10) ** -10, mpmath.mpf("1.7")
+        value = lambda u, at: sp.N(u.subs(s, at), 30)      # noqa: E731
+        quotient = (value(e, sp.Float(p + h, 30)) - value(e, sp.Float(p - h, 30))) / (2 * sp.Float(h, 30))
+        assert abs(quotient - value(got, sp.Float(p, 30))) < 1e-12
+    assert K.derivative(sp.Abs(x - 1), x) == sp.sign(x - 1)
+    assert K.derivative(sp.Piecewise((x, x < 1), (x ** 2, True)), x) == sp.Piecewise((1, x < 1), (2 * x, True))
+    assert K.derivative(sp.Max(x, 1 - x) + x, x) == sp.diff(sp.Max(x, 1 - x), x) + 1
