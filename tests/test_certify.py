@@ -140,6 +140,20 @@ def test_replaced_is_structural_and_finds_a_sum_among_the_terms_of_a_sum():
     assert replaced(sp.exp(S) + S, sp.exp(S), U) == U + S and replaced(S, u, U) == S
 
 
+def test_solveset_is_not_asked_a_mixed_equation_it_cannot_invert():
+    """`solveset_hopeless`: a sum with s inside a function of a radical and
+    outside it (design 3's F'/s) gets no solveset call, which would return
+    a ConditionSet; 1 - cos(u) = 0 alone, a product of such factors, or a
+    mixed sum without a radical (s e^s - 1) are still asked."""
+    from uwmr_symbolic.univariate import solveset_hopeless
+    u = sp.sqrt(4 * S ** 2 + 1) - 1
+    mixed = 16 * S * (1 - sp.tanh(u) ** 2) / (4 * S ** 2 + 1) - 16 * S * sp.tanh(u) / (4 * S ** 2 + 1) ** Q(3, 2)
+    assert solveset_hopeless(mixed, S) and solveset_hopeless(S * mixed, S)
+    assert isinstance(sp.solveset(mixed, S, sp.Interval.open(0, sp.oo)), sp.ConditionSet)
+    assert not solveset_hopeless(S * (1 - sp.cos(u)) / sp.sqrt(S ** 2 + 1), S)
+    assert not solveset_hopeless(S * sp.exp(S) - 1, S) and not solveset_hopeless(sp.tanh(u) - Q(1, 2), S)
+
+
 def test_substitution_is_the_kernel_step_for_u_minus_sin_u():
     """The theorem for u - sin(u), u = sqrt(1 + s^2) - 1, is `sign_by_substitution`
     over G(u) = u - sin(u) > 0 on (0, oo) and u > 0 on (0, oo)."""

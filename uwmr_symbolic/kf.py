@@ -24,7 +24,7 @@ from .timeouts import attempt
 from .certify import (WORK, piecewise_sup_theorems, sign_theorems, sup_abs_theorems, sup_lower_theorem, sup_theorems,
                       sup_upper_theorem)
 from .univariate import (certified_inside, decimal_beyond, enclose_sup, exact_sign, exact_value, far_out_trend,
-                         limit_at_infinity, prepare, prove_sign, small_rates, tail_start, value_at)
+                         limit_at_infinity, prepare, prove_sign, small_rates, solveset_hopeless, tail_start, value_at)
 
 REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
 
@@ -93,7 +93,8 @@ def _candidates(expr, lo, hi, interior=True):
     if solvable:
         crit = _rational_critical(d, lo, hi)
         if crit is False:
-            crit = attempt(lambda: sp.solveset(d, S, sp.Interval.open(lo, hi)), 3.0) if small_rates(d) else None
+            crit = attempt(lambda: sp.solveset(d, S, sp.Interval.open(lo, hi)), 3.0) \
+                if small_rates(d) and not solveset_hopeless(d, S) else None
     if isinstance(crit, sp.FiniteSet) and any(c.has(sp.CRootOf, sp.RootOf) for c in crit):
         crit = None     # algebraic numbers without radicals: no closed form to offer
     if isinstance(crit, sp.FiniteSet):

@@ -567,12 +567,27 @@ def small_rates(expr) -> bool:
     return all(not (r.is_Number and abs(r) > SOLVESET_MAX_RATE) for r in rates)
 
 
+def solveset_hopeless(expr, var) -> bool:
+    """A factor of expr is a sum that holds var both inside a function of a
+    radical of var and outside every function: 16 s (1 - tanh(u)^2)/(4 s^2 + 1)
+    - 16 s tanh(u)/(4 s^2 + 1)^(3/2), u = sqrt(4 s^2 + 1) - 1.  SymPy's
+    solveset has no inverse for such a mixed equation and returns a
+    ConditionSet, after half a second on design 3's F'/s (1 - cos(u) = 0
+    alone it solves: u = 2 pi n)."""
+    for f in sp.Mul.make_args(expr):
+        apps = [g for g in f.atoms(sp.Function) if g.has(var)]
+        radical = any(p.exp.is_Rational and not p.exp.is_Integer and p.has(var) for g in apps for p in g.atoms(sp.Pow))
+        if radical and f.xreplace({g: sp.Dummy() for g in apps}).has(var):
+            return True
+    return False
+
+
 def exact_zeros_in(expr, var, lo, hi) -> list:
     """The zeros of expr in (lo, hi) that SymPy proposes and exact
     substitution confirms (SymPy may miss some: a proposal, not a census;
-    none for an expression of more than ZERO_SEARCH_OPS operations or
-    without `small_rates`)."""
-    if sp.count_ops(expr) > ZERO_SEARCH_OPS or not small_rates(expr):
+    none for an expression of more than ZERO_SEARCH_OPS operations, without
+    `small_rates` or `solveset_hopeless`)."""
+    if sp.count_ops(expr) > ZERO_SEARCH_OPS or not small_rates(expr) or solveset_hopeless(expr, var):
         return []
     try:
         sols = sp.solveset(sp.Eq(expr, 0), var, sp.Interval.open(lo, hi))
