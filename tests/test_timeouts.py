@@ -96,7 +96,7 @@ def test_stages_after_the_deadline_share_one_grace_inside_the_kill_limit():
     assert stage_seconds(100.0, 5.0, 90.0) == 10.0          # before the deadline: what --timeout leaves
     assert stage_seconds(100.0, 5.0, 99.0) == 5.0           # at least the stage's own share
     assert stage_seconds(100.0, 5.0, 100.0 + AFTER_DEADLINE - 2) == 2.0   # cut at the shared grace
-    now = 100.5                      # kf, replay and kernel re-check all use their whole slice, past the deadline
+    now = 100.5                      # kf, the kernel re-check and the replay all use their whole slice, past the deadline
     for least in (1.0, 5.0, 5.0):
         now += stage_seconds(100.0, least, now)
     assert now == 100.0 + AFTER_DEADLINE < 100.0 + HARD_GRACE   # the old max(left, 5 s) slices ended at 111.5

@@ -225,17 +225,17 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Tr
             kf = None
             timed_out = True
     try:
-        with time_limit(stage_seconds(deadline, 5.0, time.monotonic())):
-            proof = replay(design.f, analysis.p4.proved)
-    except TimeLimit:
-        proof = {"ok": False, "steps": {"replay": {"ok": False, "detail": "timed out"}}}
-        timed_out = True
-    try:
         with time_limit(stage_seconds(deadline, 5.0, time.monotonic())), design_budget(design.f):   # the witnesses' own budget
             certificate, kernel = _kernel_check(Report(path, design, props, kf))
     except TimeLimit:
         certificate, kernel = None, {"checked": [], "search": [p for p, v in props.items() if v.proved or v.refuted],
                                      "stopped": "the kernel's re-check did not finish within --timeout"}
+        timed_out = True
+    try:        # after the kernel's re-check, which the verdicts need: the grace goes to it first
+        with time_limit(stage_seconds(deadline, 5.0, time.monotonic())):
+            proof = replay(design.f, analysis.p4.proved)
+    except TimeLimit:
+        proof = {"ok": False, "steps": {"replay": {"ok": False, "detail": "timed out"}}}
         timed_out = True
     if kernel_only:
         props = {p: kernel_verdict(p, v, kernel) for p, v in props.items()}
