@@ -185,7 +185,7 @@ def _gains(design: Design, kf: SupCertificate | None) -> dict[str, GainCheck]:
     return check_gains(design.gains, kf_for_gains, kf_known, kf_lower)
 
 
-AFTER_DEADLINE = 8.0    # seconds past --timeout that kf, the replay and the kernel's re-check share (< batch.HARD_GRACE)
+AFTER_DEADLINE = 8.0    # seconds past --timeout that kf, the kernel's re-check and the replay share (< batch.HARD_GRACE)
 
 
 def stage_seconds(deadline: float, least: float, now: float) -> float:
