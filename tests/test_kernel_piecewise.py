@@ -438,3 +438,57 @@ def test_piecewise_identity_reads_equivalent_conditions():
     assert same(sp.Eq(0, -sp.sqrt(rho)), sp.Eq(rho, 0)) and same(sp.Eq(-sp.sqrt(rho), 0), sp.Eq(rho, 0))
     assert same(sp.Eq(rho + 1, 2), sp.Eq(rho, 1)) and same(sp.Eq(X, Y), sp.Eq(Y, X))
     assert not same(sp.Eq(X, Y), sp.Eq(X, -Y)) and not same(sp.Eq(sp.sqrt(rho), 1), sp.Eq(rho, 1))
+
+
+# ------------------------------------------------------------ a branch taken at points only
+
+def test_select_branch_passes_over_a_point_value_equal_to_the_branch_around_it():
+    """Piecewise((V, Eq(x, c)), (G, True)) is G on all of I when V = G(c):
+    log(10) at s = 3 beside log(1 + s^2) (log 10 there too) is log(1 + s^2) on
+    (0, oo), with no sign fact about 3 - s.  Decided by hand: V - G(c) is
+    2 - log 10 != 0, or 10^-30 off, or G(3) = sin(0)/0 undefined -> refused;
+    Eq(s^2, 9) has the roots 3 and -3, only 3 > 0 counts for a positive s,
+    while for a real x the value at -3 must agree too."""
+    G = sp.log(1 + s ** 2)
+    ident = K.identity(lhs=G, rhs=G, var=s, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    for cond in (sp.Eq(s, 3), sp.Eq(s ** 2, 9), sp.Eq(2 * s - 6, 0)):
+        F = sp.Piecewise((sp.log(10), cond), (G, True))
+        th = K.select_branch(ident, expr=F)
+        assert (th.claim.expr, th.claim.other) == (sp.srepr(F), sp.srepr(G))
+        assert th.assumptions == {"arb", "sympy-core", "sympy-polys"}
+    root2 = sp.Piecewise((sp.log(3), sp.Eq(s, sp.sqrt(2))), (G, True))          # a linear p with c = sqrt(2)
+    assert K.select_branch(ident, expr=root2).claim.other == sp.srepr(G)
+    cube = sp.Piecewise((sp.log(1 + 2 ** Q(2, 3)), sp.Eq(s ** 3, 2)), (G, True))  # the real root 2^(1/3)
+    assert K.select_branch(ident, expr=cube).claim.other == sp.srepr(G)
+    for V in (sp.Integer(2), sp.log(10) + Q(1, 10 ** 30)):       # V - G(3) = 2 - log 10, 10^-30: not 0
+        assert why(K.select_branch, ident, expr=sp.Piecewise((V, sp.Eq(s, 3)), (G, True))) == \
+            "the rational functions differ"
+    assert why(K.select_branch, ident, expr=sp.Piecewise((sp.pi, sp.Eq(s, 3)), (G, True))) == \
+        f"the value where Eq(s, 3) is not {G}'s"                  # pi - log 10: generalised, not 0
+    H = sp.sin(s - 3) / (s - 3)
+    hole = K.identity(lhs=H, rhs=H, var=s, lo=ZERO, hi=Q(1), lo_open=True, hi_open=True)
+    assert why(K.select_branch, hole, expr=sp.Piecewise((1, sp.Eq(s, 3)), (H, True))).startswith(f"{H} at s = 3")
+    for cond in (sp.Eq(sp.sin(s), 0), sp.Eq(sp.sqrt(s), 2), sp.Eq(s ** 2, sp.pi)):   # no polynomial over Q
+        assert why(K.select_branch, ident, expr=sp.Piecewise((G.subs(s, 2), cond), (G, True))) == \
+            f"condition {cond} not decided"
+    # a real variable: both roots of x^2 = 9 count; log(1 + x^2) + x is log 10 + 3 at 3, log 10 - 3 at -3
+    Gx = sp.log(1 + x ** 2) + x
+    idx = K.identity(lhs=Gx, rhs=Gx, var=x, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    assert why(K.select_branch, idx, expr=sp.Piecewise((sp.log(10) + 3, sp.Eq(x ** 2, 9)), (Gx, True))) == \
+        "the rational functions differ"                               # 6 at x = -3
+    Gs = sp.log(1 + s ** 2) + s
+    ids = K.identity(lhs=Gs, rhs=Gs, var=s, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
+    assert K.select_branch(ids, expr=sp.Piecewise((sp.log(10) + 3, sp.Eq(s ** 2, 9)), (Gs, True))).claim.kind == \
+        "identity"
+
+
+def test_a_point_value_is_checked_in_a_certificate_and_on_each_piece():
+    """The same rule inside `continuous_piecewise` (no cut at the point) and
+    through a certificate; D = 5 at s = 1 beside s is refused there."""
+    G = sp.log(1 + s ** 2)
+    F = sp.Piecewise((sp.log(10), sp.Eq(s, 3)), (G, True))
+    th = K.continuous_piecewise(expr=F, var=s, cuts=[])
+    assert th.claim == K.Claim("continuous", sp.srepr(F), sp.srepr(s), "Integer(0)", "oo", True, True)
+    assert check_certificate(to_certificate([th]))[0].claim == th.claim
+    D = sp.Piecewise((5, sp.Eq(s, 1)), (s, True))
+    assert why(K.continuous_piecewise, expr=D, var=s, cuts=[]) == "the rational functions differ"     # 5 - 1

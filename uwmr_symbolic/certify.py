@@ -1063,9 +1063,18 @@ def on_branch(P, var, I, prover, about):
 
 def _relation_signs(P, var, I):
     """Strict sign theorems on I of every relation r - l of P's conditions
-    (the sign at an inner point)."""
-    return [_relation_sign(d, var, I) for d in dict.fromkeys(r.rhs - r.lhs for _, c in K._folded(P).args
-                                                              for r in _relationals(c)) if d.has(var)]
+    (the sign at an inner point); an equation's is left out where it has
+    none (it may hold at one point of I: the kernel's `_branch` then asks
+    that its branch agree there with the branch that applies around it)."""
+    signs = []
+    for d, eq in dict.fromkeys((r.rhs - r.lhs, isinstance(r, sp.Eq)) for _, c in K._folded(P).args
+                               for r in _relationals(c)):
+        try:
+            signs += [_relation_sign(d, var, I)] if d.has(var) else []
+        except NoProof:
+            if not eq:
+                raise
+    return signs
 
 
 @functools.lru_cache(maxsize=4096)

@@ -232,7 +232,7 @@ def split_profile(F: sp.Expr) -> tuple[Profile | None, Verdict]:
             return None, unknown("nested Piecewise that could not be folded")
         return Profile([Piece(sp.Integer(0), sp.oo, F)], {sp.Integer(0): F}), proved("no boundaries")
     rels = list(dict.fromkeys(r for _, c in F.args for r in _relationals(c)))
-    points = set()
+    points, switches = set(), set()         # switches: where a relation other than an Eq changes truth
     for rel in rels:
         g = rel.lhs - rel.rhs
         # SymPy only proposes the switching points: a missed one makes the
@@ -248,6 +248,7 @@ def split_profile(F: sp.Expr) -> tuple[Profile | None, Verdict]:
             if b.has(sp.Float):
                 return None, unknown(f"boundary candidate {b} of {rel} is not exact")
             points.add(b)
+            switches |= set() if isinstance(rel, sp.Eq) else {b}
     bounds = [sp.Integer(0), *sorted(points, key=lambda b: float(b)), sp.oo]
     pieces, at_point = [], {}
     for i in range(len(bounds) - 1):
@@ -278,7 +279,15 @@ def split_profile(F: sp.Expr) -> tuple[Profile | None, Verdict]:
         if branch is None:
             return None, unknown(f"no branch of F applies at s = {b}")
         at_point[b] = branch
-    return Profile(pieces, at_point), proved(f"boundaries at s = {', '.join(map(str, bounds[1:-1]))}")
+    for i in range(len(pieces) - 1, 0, -1):     # a point value (Eq) equal to the formula around it: no boundary
+        left, right = pieces[i - 1], pieces[i]
+        gap = exact_value(at_point[right.lo] - right.expr, S, right.lo)
+        if left.expr == right.expr and right.lo not in switches and gap is not None and exact_sign(gap) == 0:
+            pieces[i - 1:i + 1] = [Piece(left.lo, right.hi, left.expr)]
+            del at_point[right.lo]
+    bounds = [p.lo for p in pieces[1:]]
+    found = f"boundaries at s = {', '.join(map(str, bounds))}" if bounds else "no boundaries"
+    return Profile(pieces, at_point), proved(found)
 
 
 # --------------------------------------------------------------------------

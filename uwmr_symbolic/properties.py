@@ -554,7 +554,7 @@ def verify_p6(a: Analysis) -> Verdict:
     k = sup.exact if sup.exact is not None else decimal_beyond(sup.upper, 1, 7)
     if not k > 0:       # F' >= 0 and F'(s)/s <= 0: F' = 0, and h = 0 serves with any k > 0
         k = sp.Integer(1)
-    h = a.derivative(a.F, 1) / (k * S)
+    h = a.derivative(a.kernel_F, 1) / (k * S)    # F = G on [0, oo) (`one_branch`): G' is F' also at a point value
     # for the report only: simplify takes seconds on a large h (and expand multiplies it out)
     h = (sp.simplify(h) if sp.count_ops(h) <= 40 else h).subs(S, a.radius)
     shown = str(h) if len(str(h)) <= 400 else f"F'(s)/(k s), s = |e| ({sp.count_ops(h)} operations; in the JSON report)"

@@ -325,8 +325,7 @@ _VAR_KINDS = ("real", "positive", "nonnegative")
 
 
 def _sign_claim(e, var, lo, hi, lo_open, hi_open, want, strict) -> Claim:
-    return Claim("sign", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open),
-                 int(want), bool(strict))
+    return Claim("sign", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), int(want), bool(strict))
 
 
 def _sign_on(c: Claim, e, want, strict) -> Claim:
@@ -361,9 +360,7 @@ def _signs_on_one_interval(premises) -> Claim:
 
 
 def _box_ok(v: Iv, want, strict) -> bool:
-    if strict:
-        return v.positive() if want > 0 else v.negative()
-    return v.nonnegative() if want > 0 else v.nonpositive()
+    return (v.positive() if want > 0 else v.negative()) if strict else (v.nonnegative() if want > 0 else v.nonpositive())
 
 
 def _cuts(var, cuts):
@@ -426,7 +423,6 @@ def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
     cuts = _cuts(var, cuts if cuts is not None else [a, b])
     _need(cuts[0] == a and cuts[-1] == b, "the cuts must run from one end of the box to the other")
     e = _expr(expr, var)
-    d = e
     for k in range(order + 1):
         d = derivative(d, var) if k else e
         try:
@@ -533,14 +529,10 @@ def _polynomial_sign(poly, lo, hi, lo_open, hi_open, want, strict):
         _need(not strict, "the zero polynomial has no strict sign")
         return
     factors = [] if _rootless_by_descartes(poly, lo, hi, lo_open, hi_open) else poly.sqf_list()[1]
-    for q, m in factors:
-        if strict:
-            n = _roots_in(q, lo, hi, lo_open, hi_open)
-        elif m % 2 == 0:
-            continue
-        else:
-            n = _roots_in(q, lo, hi, True, True)
-        _need(n == 0, lambda: f"factor {q.as_expr()} has a root in the interval")
+    for q, m in factors:                        # weak: roots of even multiplicity, and at the ends, do no harm
+        if strict or m % 2:
+            _need(_roots_in(q, lo, hi, lo_open or not strict, hi_open or not strict) == 0,
+                  lambda: f"factor {q.as_expr()} has a root in the interval")
     x0 = _inner_point(lo, hi, factors)
     _need(sp.sign(poly.eval(x0)) == want, lambda: f"p({x0}) has the wrong sign")
 
@@ -704,8 +696,7 @@ def sign_through_increasing(*premises, expr):
     log(Y): from Y - 1 > 0 (>= 0) on I, log Y > 0 (>= 0); from Y - 1 < 0
     (<= 0) and a second premise Y > 0, log Y < 0 (<= 0)."""
     c = _signs_on_one_interval(premises)
-    var = c.x()
-    e = _expr(expr, var)
+    e = _expr(expr, c.x())
     _need(isinstance(e, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.log)) and len(e.args) == 1, lambda: f"not G(Y): {e}")
     y = e.args[0]
     if not isinstance(e, sp.log):              # G odd increasing: Y's sign; exp, cosh: > 0
@@ -931,13 +922,27 @@ def _folded(e):
 _folded = functools.lru_cache(maxsize=1024)(_folded)      # pure: see core.rule
 
 
-def _branch(pw, sign_ok):
+def _branch(pw, sign_ok, at=0):
     """The branch of the Piecewise pw that applies wherever the facts
-    `sign_ok` hold: its condition holds there and every earlier one fails."""
-    for value, cond in pw.args:
+    `sign_ok` hold: its condition holds there and every earlier one fails,
+    or is an undecided equation p(x) = 0, p a nonconstant polynomial (linear,
+    or with rational coefficients), with the value V there and a later
+    branch G that applies (the rest of pw), G(c) defined (Arb) and V(c) -
+    G(c) exactly 0 at each real root c of p (SymPy's `real_roots`; c > 0
+    only, for a positive x): then pw = G where that condition holds too."""
+    for i, (value, cond) in enumerate(pw.args[at:], at):
         if _holds(cond, True, sign_ok):
             return value
-        _need(_holds(cond, False, sign_ok), lambda: f"condition {cond} not decided")
+        if not _holds(cond, False, sign_ok):
+            d = cond.rhs - cond.lhs if isinstance(cond, sp.Eq) else sp.Integer(0)
+            p = sp.Poly(d, *d.free_symbols) if len(d.free_symbols) == 1 and d.is_polynomial() else sp.Poly(0, sp.Dummy())
+            _need(p.degree() == 1 or p.degree() > 1 and p.domain in (sp.ZZ, sp.QQ), lambda: f"condition {cond} not decided")
+            G, x = _branch(pw, sign_ok, i + 1), p.gen
+            for c in [-p.nth(0) / p.nth(1)] if p.degree() == 1 else p.real_roots():
+                if not x.is_positive or _const_sign(c) > 0:
+                    _enclose(G, x, c, c, lambda: f"{G} at {x} = {c}")
+                    _need(_exact_zero(value.subs(x, c), G.subs(x, c), ()), lambda: f"the value where {cond} is not {G}'s")
+            return G
     raise KernelError("no branch applies")
 
 
@@ -956,7 +961,7 @@ def select_branch(thm, *signs, expr):
     _need(_branch(_folded(e), _decided_by(signs, var, lo, hi, c.lo_open, c.hi_open)) == c.e(),
           "the premise is not about the branch that applies on I")
     return dataclasses.replace(c, expr=_s(e))
-select_branch = rule("sympy-core")(select_branch)
+select_branch = rule("arb", "sympy-core", "sympy-polys")(select_branch)
 
 
 def _decided_by(signs, var, lo, hi, lo_open, hi_open):
@@ -1001,7 +1006,7 @@ def piecewise_branches(*signs, expr, var, cuts):
     (0, oo), other = the cuts."""
     _, e, ends, _, extra = _pieces(signs, expr, var, cuts)
     return Claim("pieces", _s(e), _s(var), _s(0), "oo", True, True, other=_s(sp.Tuple(*ends[1:-1]))), extra
-piecewise_branches = rule("arb", "sympy-core")(piecewise_branches)
+piecewise_branches = rule("arb", "sympy-core", "sympy-polys")(piecewise_branches)
 
 
 def continuous_piecewise(*signs, expr, var, cuts):
