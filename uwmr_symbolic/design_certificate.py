@@ -28,6 +28,7 @@ says what it rests on.
 """
 from __future__ import annotations
 
+import functools
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -118,7 +119,9 @@ class PropertyCheck:
         return head + "; still rests on the search for: " + "; ".join(self.unchecked)
 
 
+@functools.lru_cache(maxsize=256)
 def _profile(f):
+    """F(s) = f(s, 0), folded (each property's link asks for it again)."""
     return sp.piecewise_fold(f.xreplace({E1: S, E2: sp.Integer(0)}))
 
 
