@@ -460,11 +460,11 @@ def test_select_branch_passes_over_a_point_value_equal_to_the_branch_around_it()
     assert K.select_branch(ident, expr=root2).claim.other == sp.srepr(G)
     cube = sp.Piecewise((sp.log(1 + 2 ** Q(2, 3)), sp.Eq(s ** 3, 2)), (G, True))  # the real root 2^(1/3)
     assert K.select_branch(ident, expr=cube).claim.other == sp.srepr(G)
-    for V in (sp.Integer(2), sp.log(10) + Q(1, 10 ** 30)):       # V - G(3) = 2 - log 10, 10^-30: not 0
-        assert why(K.select_branch, ident, expr=sp.Piecewise((V, sp.Eq(s, 3)), (G, True))) == \
-            "the rational functions differ"
-    assert why(K.select_branch, ident, expr=sp.Piecewise((sp.pi, sp.Eq(s, 3)), (G, True))) == \
-        f"the value where Eq(s, 3) is not {G}'s"                  # pi - log 10: generalised, not 0
+    for V, msg in ((sp.Integer(2), "Arb disagrees"), (sp.pi, "Arb disagrees"),      # V - G(3) far from 0
+                   (sp.log(10) + Q(1, 10 ** 30), "Arb disagrees"),                  # 10^-30: Arb sees it
+                   (sp.log(10) + Q(1, 10 ** 60), "the rational functions differ"),  # Arb does not, exactly not 0
+                   (sp.log(10) + sp.pi / 10 ** 60, f"the value where Eq(s, 3) is not {G}'s")):   # with pi
+        assert why(K.select_branch, ident, expr=sp.Piecewise((V, sp.Eq(s, 3)), (G, True))) == msg
     H = sp.sin(s - 3) / (s - 3)
     hole = K.identity(lhs=H, rhs=H, var=s, lo=ZERO, hi=Q(1), lo_open=True, hi_open=True)
     assert why(K.select_branch, hole, expr=sp.Piecewise((1, sp.Eq(s, 3)), (H, True))).startswith(f"{H} at s = 3")
@@ -475,7 +475,17 @@ def test_select_branch_passes_over_a_point_value_equal_to_the_branch_around_it()
     Gx = sp.log(1 + x ** 2) + x
     idx = K.identity(lhs=Gx, rhs=Gx, var=x, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
     assert why(K.select_branch, idx, expr=sp.Piecewise((sp.log(10) + 3, sp.Eq(x ** 2, 9)), (Gx, True))) == \
-        "the rational functions differ"                               # 6 at x = -3
+        "Arb disagrees"                                               # 6 at x = -3
+    # a nonnegative n meets 0: the root 0 of n^2 + n = 0 counts (-1 does not), and -5 there is not
+    # n's value 0 (else "P >= 0 on [0, 1]" with P(0) = -5)
+    n = sp.Symbol("n", nonnegative=True)
+    weak = K.sign_by_cover(expr=n, var=n, cuts=[0, 1], want=1, strict=False)
+    assert why(K.select_branch, weak, expr=sp.Piecewise((-5, sp.Eq(n ** 2 + n, 0)), (n, True))) == "Arb disagrees"
+    assert K.select_branch(weak, expr=sp.Piecewise((0, sp.Eq(n ** 2 + n, 0)), (n, True))).claim.want == 1
+    # a positive s at the closed end 0 of a limit claim (s -> 0 as s -> 0+, "s continuous on [0, 1]"):
+    # s^2 - s = 0 holds at 0 and 1, where P = 1; the root 0 must count (P(0) = 1, not 0)
+    lim = K.continuous_at_end(expr=s, var=s, c=0, width=1)
+    assert why(K.select_branch, lim, expr=sp.Piecewise((1, sp.Eq(s ** 2 - s, 0)), (s, True))) == "Arb disagrees"
     Gs = sp.log(1 + s ** 2) + s
     ids = K.identity(lhs=Gs, rhs=Gs, var=s, lo=ZERO, hi=sp.oo, lo_open=True, hi_open=True)
     assert K.select_branch(ids, expr=sp.Piecewise((sp.log(10) + 3, sp.Eq(s ** 2, 9)), (Gs, True))).claim.kind == \
@@ -491,4 +501,4 @@ def test_a_point_value_is_checked_in_a_certificate_and_on_each_piece():
     assert th.claim == K.Claim("continuous", sp.srepr(F), sp.srepr(s), "Integer(0)", "oo", True, True)
     assert check_certificate(to_certificate([th]))[0].claim == th.claim
     D = sp.Piecewise((5, sp.Eq(s, 1)), (s, True))
-    assert why(K.continuous_piecewise, expr=D, var=s, cuts=[]) == "the rational functions differ"     # 5 - 1
+    assert why(K.continuous_piecewise, expr=D, var=s, cuts=[]) == "Arb disagrees"     # 5 - 1

@@ -928,8 +928,9 @@ def _branch(pw, sign_ok, at=0):
     or is an undecided equation p(x) = 0, p a nonconstant polynomial (linear,
     or with rational coefficients), with the value V there and a later
     branch G that applies (the rest of pw), G(c) defined (Arb) and V(c) -
-    G(c) exactly 0 at each real root c of p (SymPy's `real_roots`; c > 0
-    only, for a positive x): then pw = G where that condition holds too."""
+    G(c) exactly 0 (and in Arb) at each real root c of p (SymPy's
+    `real_roots`; c >= 0 only, for a nonnegative or positive x, whose
+    intervals hold no c < 0): then pw = G where that condition holds too."""
     for i, (value, cond) in enumerate(pw.args[at:], at):
         if _holds(cond, True, sign_ok):
             return value
@@ -939,8 +940,8 @@ def _branch(pw, sign_ok, at=0):
             _need(p.degree() == 1 or p.degree() > 1 and p.domain in (sp.ZZ, sp.QQ), lambda: f"condition {cond} not decided")
             G, x = _branch(pw, sign_ok, i + 1), p.gen
             for c in [-p.nth(0) / p.nth(1)] if p.degree() == 1 else p.real_roots():
-                if not x.is_positive or _const_sign(c) > 0:
-                    _enclose(G, x, c, c, lambda: f"{G} at {x} = {c}")
+                if not x.is_nonnegative or _const_sign(c) >= 0:      # (no root c < 0 lies in I then)
+                    _need(_enclose(G - value, x, c, c, lambda: f"{G} at {x} = {c}").hull().contains(0), "Arb disagrees")
                     _need(_exact_zero(value.subs(x, c), G.subs(x, c), ()), lambda: f"the value where {cond} is not {G}'s")
             return G
     raise KernelError("no branch applies")
