@@ -7,7 +7,7 @@ exactly the claim asked for, and that false claims give None."""
 import pytest
 import sympy as sp
 
-from uwmr_symbolic.certify import sign_theorems
+from uwmr_symbolic.certify import NoProof, Prover, sign_theorems
 from uwmr_symbolic.profile import S
 
 Q = sp.Rational
@@ -277,3 +277,17 @@ def test_time_caps_scale_with_the_machine(monkeypatch):
     start = time.monotonic()
     assert certify.sign_theorems(s + 11, s, 0, sp.oo) == certify.STOPPED
     assert time.monotonic() - start >= 0.2
+
+
+def test_a_constant_whose_sign_the_kernel_cannot_decide_is_no_proof_not_a_crash():
+    """3 (erf(18687/64) - 1)/250 is about -10^-37000 < 0: Arb cannot sign it
+    at 256 bits.  Found by the fuzzer (f = Piecewise((0, Eq(rho^2, 0)),
+    (1 + rho^4 erf(rho^2)/1000, True))): the proposer's sum rule asked the
+    kernel for the constant's sign, and its KernelError ended the run.
+    The claim it met, 3 u e^(-u^2)/(125 sqrt(pi)) + that constant > 0 on
+    [292, oo), is false (it tends to the constant): no proof, not an exception."""
+    u = sp.Symbol("u", positive=True)
+    c = 3 * sp.erf(sp.Rational(18687, 64)) / 250 - sp.Rational(3, 250)
+    e = 3 * u * sp.exp(-u ** 2) / (125 * sp.sqrt(sp.pi)) + c
+    with pytest.raises(NoProof, match="not decided"):
+        Prover().prove(e, u, (sp.Integer(292), sp.oo, False, True), 1)

@@ -309,6 +309,8 @@ class Prover:
                 self.memo[key] = self._prove(e, var, I, want, strict, depth, near)
             except NoProof as exc:
                 self.memo[key] = exc
+            except (K.KernelError, Undefined) as exc:     # a sign the kernel cannot decide (a constant's): no proof
+                self.memo[key] = NoProof("{}", exc)
         out = self.memo[key]
         if isinstance(out, NoProof):
             raise out
