@@ -119,3 +119,17 @@ def test_every_finding_file_is_a_loadable_design_with_a_docstring():
         assert isinstance(d.f, sp.Expr)
         doc = path.read_text().split('"""')[1]
         assert any(w in doc for w in ("FALSE PROOF", "WRONG", "CRASH", "BAD WITNESS", "HANG")), path.name
+
+
+def test_a_constant_arb_cannot_sign_is_no_crash(verify):
+    r = verify("erf_constant_crash.py", timeout=40.0)
+    assert "crash" not in r and "hang" not in r, r
+    assert [p for p in ("P1", "P5", "P6", "P7") if status(r, p) != "refuted"] == []
+    assert status(r, "P2") == status(r, "P4") == "proved"
+
+
+def test_a_point_value_equal_to_the_formula_is_proved_by_the_kernel(verify):
+    r = verify("point_value_on_a_circle.py", timeout=40.0)
+    assert [p for p in r["properties"] if status(r, p) != "proved"] == []
+    assert sorted(r["kernel_checked"]) == ["P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8", "kf"]
+    assert r["kf"]["exact"] == "1"
