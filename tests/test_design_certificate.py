@@ -511,7 +511,8 @@ def test_one_branch_prefix_links_only_what_it_says():
     read G = log(1 + s^2).  Refused: an origin value other than G(0) (the
     proposer gives only F = G on (0, oo), which P3 and P8 accept and no other
     property does, and a value_sign of 1 is not 0), an identity
-    about another F, and one on [0, oo) (the branch there is not G at 0)."""
+    about another F, and one on [0, oo) (the links ask for F = G on (0, oo)
+    and F(0) = G(0) apart, though the kernel now shows F = G on [0, oo) too)."""
     from uwmr_symbolic.certify import one_branch_theorems
     from uwmr_symbolic.kernel import rules as K
     G = sp.log(1 + S ** 2)
@@ -529,8 +530,11 @@ def test_one_branch_prefix_links_only_what_it_says():
     assert DC._one_branch(other, claims) == (claims, other)
     closed = [dataclasses.replace(claims[0], lo_open=False), claims[1]]
     assert DC._one_branch(F, closed) == (closed, F)
-    with pytest.raises(Exception, match="condition"):              # and the kernel refuses that claim
-        K.select_branch(K.identity(lhs=G, rhs=G, var=S, lo=0, hi=sp.oo, lo_open=False, hi_open=True), expr=F)
+    # the kernel itself: F = G on [0, oo) holds (F(0) = 0 = G(0), the one root of s^2 = 0), the jump's does not
+    closed_G = K.identity(lhs=G, rhs=G, var=S, lo=0, hi=sp.oo, lo_open=False, hi_open=True)
+    assert K.select_branch(closed_G, expr=F).claim.other == sp.srepr(G)
+    with pytest.raises(Exception, match="Arb disagrees"):
+        K.select_branch(closed_G, expr=jump)
 
 
 @pytest.mark.parametrize("stem, checked", [
