@@ -472,3 +472,12 @@ def test_kernel_verdict_and_kf_checked():
     assert _kf_checked(unbounded, kernel) and not _kf_checked(unbounded, {"checked": [], "search": ["P1"]})
     assert not _kf_checked({"properties": {"P1": {"witness": {"kind": "jump"}}}}, kernel)
     assert _kf_checked(None, {"checked": ["kf"], "search": []}) and not _kf_checked(None, kernel)
+
+
+def test_a_long_exact_kf_shows_its_digits_in_the_summary():
+    from uwmr_symbolic.report import _kf_summary
+    long = "2999999999999989999999999999991*sqrt(5)*sqrt(sqrt(9000000000000014000000000000009) + 3)/16"
+    base = {"lower": 0.6495, "upper": 0.6496, "unbounded": False}
+    assert _kf_summary({**base, "exact": "3*sqrt(3)/8", "exact_digits": "0.64951905283832898507"}) == "3*sqrt(3)/8"
+    assert _kf_summary({**base, "exact": long, "exact_digits": "0.64951905283832876857"}) == "0.649519052838..."
+    assert _kf_summary({**base, "exact": None, "exact_digits": None}) == "~0.6496"

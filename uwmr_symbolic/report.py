@@ -194,7 +194,11 @@ def status_text(d: dict) -> str:
 def _kf_summary(kf: dict) -> str:
     if kf["upper"] is None:
         return "infinite" if kf.get("unbounded") else "undecided"
-    return kf["exact"] if kf["exact"] is not None else f"~{kf['upper']:.9g}"
+    if kf["exact"] is not None and len(kf["exact"]) <= 20:
+        return kf["exact"]
+    if kf["exact"] is not None:     # exact, too long for the column: its leading digits
+        return f"{float(kf['exact_digits']):.12g}..."
+    return f"~{kf['upper']:.9g}"
 
 
 def _gain_word(g: dict) -> str:
