@@ -92,7 +92,10 @@ def test_verify_from_another_thread_respects_its_timeout():
     report = out["report"]
     assert report.timed_out
     reasons = [v.reason for v in report.properties.values() if not v.proved]
-    assert reasons and all("did not finish within" in r for r in reasons), reasons
+    # each property either ran out of time, or (a fast host) the search finished but the kernel's re-check did not
+    assert reasons and all("did not finish within" in r or r.startswith("not re-checked by the kernel")
+                                     for r in reasons), reasons
+    assert sum("did not finish within" in r for r in reasons) >= 4, reasons
     assert not any(v.refuted for v in report.properties.values())
     # the property loop stops at 0.3 s; kf and the replay get at least 1 s and 5 s of their own
     assert out["seconds"] < 15, out["seconds"]
