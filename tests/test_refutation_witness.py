@@ -444,3 +444,49 @@ def test_jump_where_a_condition_is_an_or_or_an_and_of_relations():
     g = sp.Piecewise((rho, (rho < sp.Rational(1, 2)) & (rho < 1)), (rho + 1, True))
     theorems, _, why = refutation_theorems("P1", refuted("", {"e1": "1", "e2": "0"}), g)
     assert theorems is None
+
+
+# Not radial, by hand: W = log(1 + e1^2 + e1 e2 + e2^2) (a positive definite quadratic form inside).
+# df/de1 = (2 e1 + e2)/(1 + Q), df/de2 = (e1 + 2 e2)/(1 + Q).
+# df/de1(0, 1) = 1/2 != 0, where P6's k e1 h is 0; df/de2(1, h) -> 1/2 as h -> 0+ (P8 wants 0).
+W = sp.log(1 + e1 ** 2 + e1 * e2 + e2 ** 2)
+
+
+def test_slope_on_the_e2_axis_refutes_p6_only():
+    data = proposed("P6", W, {"e1": "0", "e2": "1"})
+    assert data["properties"]["P6"]["witness"] == {"kind": "slope", "points": [["Integer(0)", "Integer(1)"]]}
+    assert checked(data).witness == "df/de1(0, 1) has sign 1"
+    # P5 asks nothing on e1 = 0 (df/de1 tanh(0) = 0 whatever df/de1 is): the same claim refutes nothing
+    p5 = copy.deepcopy(data)
+    p5["properties"]["P5"] = p5["properties"].pop("P6")
+    with pytest.raises(DC.CertificateError, match=r"P5: the kernel's claim \(df/de1\(0, 1\) has sign 1\) does not"):
+        DC.check(p5)
+    # a zero slope on e1 = 0 is what P6 needs: F's df/de1(0, 1) = 0
+    zero = cert(F, "P6", [K.value_sign(value=sp.Integer(0))], {"kind": "slope", "points": [["Integer(0)", "Integer(1)"]]})
+    with pytest.raises(DC.CertificateError, match="does not refute P6"):
+        DC.check(zero)
+
+
+def test_e2_limit_witness_of_p8():
+    data = proposed("P8", W, {"e1": "1", "e2": "0", "approach": "e2", "limit": "1/2"})
+    assert data["properties"]["P8"]["witness"] == {"kind": "e2_limit", "points": [["Integer(1)", "Integer(0)"]]}
+    pc = checked(data)
+    assert pc.refutation_checked and pc.theorems == 2 and pc.witness == "df/de2(1, h) -> 1/2 != 0 as h -> 0+"
+    # another e1: the kernel's limit is about df/de2(1, h), not df/de2(2, h)
+    moved = copy.deepcopy(data)
+    moved["properties"]["P8"]["witness"]["points"][0][0] = "Integer(2)"
+    with pytest.raises(DC.CertificateError, match="P8: the kernel's conclusions are not the witness 'e2_limit'"):
+        DC.check(moved)
+    # only P8: the same limit says nothing about P1
+    p1 = copy.deepcopy(data)
+    p1["properties"]["P1"] = p1["properties"].pop("P8")
+    with pytest.raises(DC.CertificateError, match="P1: a witness of kind 'e2_limit' does not refute P1"):
+        DC.check(p1)
+    # F's df/de2(1, h) = 2 h -> 0: the kernel's limit is 0, and a zero limit refutes nothing
+    lim = K.continuous_at_end(expr=2 * DC.H, var=DC.H, c=0, width=sp.Rational(1, 2))
+    bad = cert(F, "P8", [lim, K.value_sign(value=sp.Integer(0))], {"kind": "e2_limit", "points": [["Integer(1)", "Integer(0)"]]})
+    with pytest.raises(DC.CertificateError, match="the kernel's conclusions are not the witness 'e2_limit'"):
+        DC.check(bad)
+    # the witness is not looked for without the search's e2 approach
+    theorems, record, why = refutation_theorems("P8", refuted("", {"e1": "1", "e2": "0"}), W)
+    assert theorems is None

@@ -439,3 +439,23 @@ def test_f_identically_zero(tmp_path):
     assert v == {"P1": "proved", "P2": "proved", "P3": "refuted", "P4": "proved", "P5": "refuted",
                  "P6": "proved", "P7": "proved", "P8": "proved"}
     assert report.properties["P6"].reason.startswith("k = 1 (sup F'(s)/s = 0)") and report.kf.exact == 0
+
+
+def test_non_radial_refutations_along_lines_and_axes(tmp_path):
+    # 2 - cos e1 - cos e2 (by hand): f(2 pi, 0) = 0 (P3 fails); df/de1 = sin e1, and sin(7/2) < 0 with
+    # e1 = 7/2 > 0 (P5, P6 fail: the first failure on the half-line e2 = 0 the search meets); P1 (|sin| <= 1),
+    # P7, P8 (df/de2 = sin e2 -> 0) hold.
+    report, v = verify(tmp_path, "f = 2 - sp.cos(e1) - sp.cos(e2)\n")
+    assert (v["P3"], v["P4"], v["P5"], v["P6"]) == ("refuted",) * 4
+    assert report.properties["P3"].witness["e1"] == "2*pi" and report.properties["P3"].witness["e2"] == "0"
+    assert "refuted" not in (v["P1"], v["P2"], v["P7"], v["P8"])
+    # log(1 + e1^2 + e1 e2 + e2^2): df/de1(0, 1) = 1/2 != 0 (P6 fails; P5 asks nothing on e1 = 0),
+    # df/de2(1, e2) -> 1/2 as e2 -> 0 (P8 fails); P1, P3, P7 hold; df/de1(-1, 3) = 1/12 > 0 with e1 < 0 (P5 fails).
+    report, v = verify(tmp_path, "f = log(1 + e1**2 + e1*e2 + e2**2)\n")
+    assert (v["P4"], v["P5"], v["P6"], v["P8"]) == ("refuted",) * 4
+    assert report.properties["P6"].witness == {"e1": "0", "e2": "1"}
+    assert report.properties["P8"].witness["limit"] == "1/2"
+    assert "refuted" not in (v["P1"], v["P2"], v["P3"], v["P7"])
+    # separable log(1 + e1^2) + log(1 + e2^2): only P4 fails; nothing else may be refuted
+    report, v = verify(tmp_path, "f = log(1 + e1**2) + log(1 + e2**2)\n")
+    assert v["P4"] == "refuted" and [p for p, s in v.items() if s == "refuted"] == ["P4"]

@@ -1646,6 +1646,8 @@ def _witness_candidates(name, witness):
     if name == "P7" and p is not None and p[1] == 0:                  # f(0, t) or a derivative jumps at t = e1?
         for order in (0, 1, 2):
             yield {"kind": "jump", "points": [(sp.Integer(0), p[0])], "var": "e2", "order": order}
+    if name == "P8" and p is not None and w.get("approach") == "e2":       # df/de2(x, h) -> L != 0 as h -> 0+
+        yield {"kind": "e2_limit", "points": [p]}
     if str(w.get("e1")) == "0":          # at the origin (P8: e2 -> 0+ along e1 = 0)
         for v in {"P1": ("e2", "e1"), "P7": ("e2",), "P8": ("e2",), "P5": ("e1",), "P6": ("e1",)}.get(name, ()):
             yield {"kind": "origin_jump", "var": v}
@@ -1671,6 +1673,16 @@ def _witness_theorems(f, record):
         return out
     if record["kind"] == "jump":
         return _jump_theorems(f, record)
+    if record["kind"] == "e2_limit":
+        from .design_certificate import e2_limit_expr
+        e = e2_limit_expr(f, record["points"][0][0])
+        for w in _JUMP_WIDTHS:
+            try:
+                lim = _rule(K.continuous_at_end, expr=e, var=H, c=0, width=w)
+            except NoProof:
+                continue
+            return [lim, _rule(K.value_sign, value=K.parse(lim.claim.other))]
+        raise NoProof("df/de2(x, h) is not continuous up to h = 0")
     if record["kind"] != "origin_jump":
         return [_rule(K.value_sign, value=v) for v in witness_values(record["kind"], f, record["points"])]
     v = sp.Symbol(record["var"], real=True)

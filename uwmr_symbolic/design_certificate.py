@@ -352,10 +352,12 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
 # circle f(q) - f(p) != 0 for rational p, q with |p| = |q|.  P4: if f were
 #        differentiable on the circle with e1 df/de2 - e2 df/de1 = 0 (the
 #        derivative of f along the circle), f would be constant on it.
-# slope  df/de1 (sympy.diff) at one exact point p = (x, y), x != 0, f without
-#        Piecewise, Max, Min or sign.  P5 needs df/de1 tanh(e1) > 0, i.e. the sign
-#        of df/de1 at p is sign(x): refuted by a sign 0 or -sign(x); P6
-#        (df/de1 = k e1 h, k > 0, 0 <= h <= 1) by the sign -sign(x).  Where
+# slope  df/de1 (sympy.diff) at one exact point p = (x, y), f without
+#        Piecewise, Max, Min or sign.  P5 needs df/de1 tanh(e1) > 0 for x != 0,
+#        i.e. the sign of df/de1 at p is sign(x): refuted by a sign 0 or
+#        -sign(x) (on x = 0, tanh(0) = 0 and P5 asks nothing more); P6
+#        (df/de1 = k e1 h, k > 0, 0 <= h <= 1) by the sign -sign(x), and on
+#        x = 0, where k e1 h = 0, by any sign other than 0.  Where
 #        df/de1 does not exist at p both properties fail anyway; where it
 #        exists, the derivative of the accepted constructs (the kernel's
 #        evaluator takes no other) is the value of SymPy's formula wherever that
@@ -376,6 +378,11 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
 #        exists, so df/de2 does) and P8 (lim df/de2 = 0 as e2 -> 0 at e1 = 0);
 #        v = e1 refutes P1, P5 and P6 (both need df/de1 to exist everywhere).
 #        Like slope, refused for f with Piecewise, Max, Min or sign.
+# e2_limit  E(h) = df/de2 (sympy.diff) at (x, h), continuous on [0, w] with
+#        value L at 0 (`continuous_at_end`), and L != 0: df/de2(x, e2) has the
+#        one-sided limit L != 0 as e2 -> 0+, so not the limit 0 that P8 asks
+#        for at e1 = x (where df/de2 does not exist near (x, 0), P8 fails
+#        anyway).  Like slope, refused for f with Piecewise, Max, Min or sign.
 # bounded  f(h dx, h dy) <= M for all h > 0 (`sup_upper`, M finite), (dx, dy)
 #        != (0, 0): f does not tend to oo along that ray, so P3 fails.
 # unbounded  E(h) -> +oo as h -> oo (at "oo": `diverges_by_growth` of E) or
@@ -414,7 +421,7 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
 #        P6 (each needs df/de1 everywhere).
 
 _SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
-_REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
+_REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"), "e2_limit": ("P8",),
             "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P5", "P6", "P7", "P8"),
             "jump": ("P1", "P5", "P6", "P7")}
 _JUMPS = {("e1", 0): ("P1", "P5", "P6"), ("e1", 1): ("P1", "P5", "P6"), ("e2", 0): ("P1", "P7"), ("e2", 1): ("P1", "P7"),
@@ -433,6 +440,11 @@ def axis_derivative(f, v, side):
     `side` (+1, -1), the other variable 0: an expression in H."""
     other = E2 if v == E1 else E1
     return derivative(f, v).xreplace({other: sp.Integer(0), v: side * H})
+
+
+def e2_limit_expr(f, x):
+    """df/de2 at (x, h), h > 0: an expression in H (witness e2_limit)."""
+    return derivative(f, E2).xreplace({E1: x, E2: H})
 
 
 def along_ray(f, direction):
@@ -600,7 +612,7 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
     claims = [t.claim for t in theorems]
     bad = CertificateError(f"{name}: the kernel's conclusions are not the witness {kind!r} about this f")
     tail = kind == "unbounded" and "branch" in witness          # f = branch i of a Piecewise beyond R
-    if kind in ("slope", "origin_jump", "unbounded") and f.has(*_SMOOTH_ONLY) and not tail:
+    if kind in ("slope", "origin_jump", "unbounded", "e2_limit") and f.has(*_SMOOTH_ONLY) and not tail:
         raise CertificateError(f"{name}: a {kind} witness needs an f without Piecewise, Max, Min or sign")
     if kind == "origin_jump":
         v = {"e1": E1, "e2": E2}.get(witness.get("var"))
@@ -615,6 +627,16 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
             raise bad
         return (f"df/d{v} -> {parse(claims[0].other)} and {parse(claims[1].other)} "
                 f"along the {v} axis on either side of the origin"), True
+    if kind == "e2_limit":
+        points = witness.get("points") or [()]
+        p = tuple(parse(c, design=True) for c in points[0])
+        if len(points) != 1 or len(p) != 2 or _sign(p[1]) != 0:
+            raise bad
+        if not (len(claims) == 2 and (claims[0].kind, claims[0].expr, claims[0].var, claims[0].lo)
+                == ("limit", _srepr(e2_limit_expr(f, p[0])), _srepr(H), "Integer(0)")
+                and claims[1].kind == "value_sign" and claims[1].expr == claims[0].other and claims[1].want != 0):
+            raise bad
+        return f"df/de2({p[0]}, h) -> {parse(claims[0].other)} != 0 as h -> 0+", True
     on_h = (_srepr(H), "Integer(0)", "oo", True)
     if kind == "bounded":
         d = tuple(parse(c, design=True) for c in witness.get("direction", ()))
@@ -661,8 +683,8 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
               and want != 0)
         what = f"f{q} != f{p} on the circle of radius {sp.sqrt(p[0] ** 2 + p[1] ** 2)}"
     elif kind == "slope":
-        side = _sign(p[0])
-        ok = side != 0 and (want * side <= 0 if name == "P5" else want * side < 0)
+        side = _sign(p[0])      # P5 holds trivially on e1 = 0 (tanh 0 = 0); P6's k e1 h vanishes there
+        ok = (side != 0 and want * side <= 0) if name == "P5" else (want * side < 0 if side else want != 0)
         what = f"df/de1{p} has sign {want}"
     else:
         q = points[1]

@@ -36,7 +36,7 @@ from .limits import NoLimit, limit_right
 from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
                       radial_profile,
                       same_value, split_profile, verify_radial)
-from .univariate import (T, X, enclose, exact_sign, exact_value, far_out_trend, limit_at_infinity, prepare, prove_sign,
+from .univariate import (MAX_BOXES, T, X, enclose, exact_sign, exact_value, far_out_trend, limit_at_infinity, prepare, prove_sign,
                          tail_form, tail_start, value_at)
 from .verdict import Verdict, proved, refuted, unknown
 
@@ -662,6 +662,14 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
             if lim in (sp.oo, -sp.oo):
                 return refuted(f"|df/de2| -> oo along the ray through ({dx}, {dy}): kf is infinite",
                                {"direction": [dx, dy], "limit": str(lim)})
+    if name in ("P3", "P5", "P6"):
+        found = _fails_along_a_line(f, name)
+        if found is not None:
+            return found
+    if name == "P8":
+        found = _e2_limit_not_zero(f)
+        if found is not None:
+            return found
     checks = {"P3": f, "P5": sp.diff(f, E1) * sp.tanh(E1), "P6": None}
     expr = checks.get(name)
     if expr is not None:
@@ -679,6 +687,58 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
                                    {"e1": str(x), "e2": str(y)})
     return unknown("f is not radial; this verifier proves properties of radial f only "
                    "(P4 " + a.p4.status + ")")
+
+
+_LINES = [(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, 1), (1, -1), (-1, -1)]
+
+
+def _fails_along_a_line(f, name: str) -> Verdict | None:
+    """A point where P3 (f > 0), P5 (sign df/de1 = sign e1) or P6 (e1 df/de1
+    >= 0, and df/de1 = k e1 h = 0 on e1 = 0) fails, found by the univariate
+    sign search on the half-lines from the origin through the axes and the
+    diagonals (f(s d) for s > 0), or on the e2 axis (P6: df/de1(0, y) != 0).
+    The witness is a point of the plane; the kernel re-checks it (`value`,
+    `slope`)."""
+    if name == "P6":
+        g = derivative(f, E1)
+        for y in (1, -1, 2, -2, sp.Rational(1, 2), -sp.Rational(1, 2)):
+            try:
+                box = value_at(g.xreplace({E1: sp.Integer(0), E2: sp.Integer(y)}), S, 0, prec=128)
+            except (Undefined, TypeError, ValueError):
+                continue
+            if box.is_positive() or box.is_negative():
+                return refuted(f"df/de1(0, {y}) != 0, but df/de1 = k e1 h vanishes on e1 = 0",
+                               {"e1": "0", "e2": str(y)})
+    for dx, dy in _LINES:
+        if name != "P3" and dx == 0:
+            continue
+        e = f if name == "P3" else derivative(f, E1) * dx
+        v = prove_sign(e.xreplace({E1: dx * S, E2: dy * S}), S, 0, sp.oo, want=1, strict=name != "P6",
+                       budget=MAX_BOXES // 4)
+        if v.refuted and v.witness is not None and exact_sign(v.witness) == 1:
+            x, y = sp.expand(dx * v.witness), sp.expand(dy * v.witness)
+            what = {"P3": "f <= 0", "P5": "df/de1 tanh(e1) <= 0", "P6": "e1 df/de1 < 0"}[name]
+            return refuted(f"{what} at (e1, e2) = ({x}, {y}) (on the half-line through ({dx}, {dy}))",
+                           {"e1": str(x), "e2": str(y)})
+    return None
+
+
+def _e2_limit_not_zero(f) -> Verdict | None:
+    """P8 fails at e1 = x when df/de2(x, h) is defined on [0, w] (so
+    continuous there, and tends to its value at h = 0) and that interval
+    enclosure excludes 0; the kernel re-checks it (`e2_limit`)."""
+    g = derivative(f, E2)
+    for x in (1, -1, 2, -2, sp.Rational(1, 2), -sp.Rational(1, 2)):
+        at = g.xreplace({E1: sp.Integer(x) if isinstance(x, int) else x, E2: S})
+        try:
+            box = enclose(at, S, 0, sp.Rational(1, 64))
+        except (Undefined, TypeError, ValueError):
+            continue
+        if box.is_positive() or box.is_negative():
+            limit = at.xreplace({S: sp.Integer(0)})
+            return refuted(f"df/de2({x}, e2) -> {limit} != 0 as e2 -> 0+",
+                           {"e1": str(x), "e2": "0", "approach": "e2", "limit": str(limit)})
+    return None
 
 
 def _through_reduction(verify, open_only=False):
