@@ -118,7 +118,7 @@ def test_every_finding_file_is_a_loadable_design_with_a_docstring():
         d = load_design(path)
         assert isinstance(d.f, sp.Expr)
         doc = path.read_text().split('"""')[1]
-        assert any(w in doc for w in ("FALSE PROOF", "WRONG", "CRASH", "BAD WITNESS", "HANG")), path.name
+        assert any(w in doc for w in ("FALSE PROOF", "WRONG", "CRASH", "BAD WITNESS", "HANG", "UNKNOWN")), path.name
 
 
 def test_a_constant_arb_cannot_sign_is_no_crash(verify):

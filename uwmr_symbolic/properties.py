@@ -13,9 +13,9 @@ For a radial f = F(|e|) (P4 proved first) every property reduces to F on
   P8  F'(0+) = 0 and F' bounded near every point of (0, oo)
 
 When f is not radial the verifier still refutes what it can with certified
-witnesses (P2 exactly; values along rays via the limit calculus) and says
-"unknown" for the rest.
-"""
+witnesses (P2 exactly; P3, P5, P6 at points of half-lines through the axes
+and diagonals, P6 on e1 = 0, P8 by a limit of df/de2; limits along rays via
+the limit calculus) and says "unknown" for the rest."""
 from __future__ import annotations
 
 from dataclasses import replace
