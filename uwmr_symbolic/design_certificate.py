@@ -420,7 +420,7 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
 #        L- likewise, so df/de1 does not exist somewhere near (b, 0): P1, P5,
 #        P6 (each needs df/de1 everywhere).
 
-_SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
+SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
 _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"), "e2_limit": ("P8",),
             "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P5", "P6", "P7", "P8"),
             "jump": ("P1", "P5", "P6", "P7")}
@@ -526,7 +526,7 @@ def _tail_branch(f, v, witness, claims, at, order, bad):
     Piecewise, Max, Min, sign."""
     i, R = witness.get("branch"), parse(witness.get("from", "nan"))
     if not (isinstance(f, sp.Piecewise) and type(i) is int and 0 <= i < len(f.args) and at == "oo" and order == 1
-            and R.is_Rational and R >= 0) or f.args[i][0].has(*_SMOOTH_ONLY):
+            and R.is_Rational and R >= 0) or f.args[i][0].has(*SMOOTH_ONLY):
         raise bad
     on = (_srepr(H), "Integer(0)", "oo", True, True)
     conds = branch_conditions(f, R, 1, i, sp.oo, v)
@@ -552,7 +552,7 @@ def _link_jump(name, f, claims, witness, bad) -> str:
     branches, w = witness.get("branches"), parse(witness.get("width"))
     if other != 0 or not (isinstance(branches, list) and len(branches) == 2 and all(type(i) is int for i in branches)):
         raise bad
-    if order and any(f.args[i][0].has(*_SMOOTH_ONLY) for i in branches):
+    if order and any(f.args[i][0].has(*SMOOTH_ONLY) for i in branches):
         raise CertificateError(f"{name}: a jump of a derivative needs branches without Piecewise, Max, Min or sign")
     on = (_srepr(H), "Integer(0)", _srepr(w), True, False)
     k = 0
@@ -612,7 +612,7 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
     claims = [t.claim for t in theorems]
     bad = CertificateError(f"{name}: the kernel's conclusions are not the witness {kind!r} about this f")
     tail = kind == "unbounded" and "branch" in witness          # f = branch i of a Piecewise beyond R
-    if kind in ("slope", "origin_jump", "unbounded", "e2_limit") and f.has(*_SMOOTH_ONLY) and not tail:
+    if kind in ("slope", "origin_jump", "unbounded", "e2_limit") and f.has(*SMOOTH_ONLY) and not tail:
         raise CertificateError(f"{name}: a {kind} witness needs an f without Piecewise, Max, Min or sign")
     if kind == "origin_jump":
         v = {"e1": E1, "e2": E2}.get(witness.get("var"))

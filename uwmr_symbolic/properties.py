@@ -26,6 +26,7 @@ import sympy as sp
 
 from . import e1 as E1, e2 as E2
 from .design import Design
+from .design_certificate import SMOOTH_ONLY
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
                       origin_value_theorems, piecewise_sign_theorem, radial_theorems, sign_theorems,
@@ -666,11 +667,11 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
         found = _fails_along_a_line(f, name)
         if found is not None:
             return found
-    if name == "P8":
+    if name == "P8" and not f.has(*SMOOTH_ONLY):   # else df/de2's formula may be a branch's taken on a line only
         found = _e2_limit_not_zero(f)
         if found is not None:
             return found
-    checks = {"P3": f, "P5": sp.diff(f, E1) * sp.tanh(E1), "P6": None}
+    checks = {"P3": f, "P5": sp.diff(f, E1) * sp.tanh(E1)}
     expr = checks.get(name)
     if expr is not None:
         fn = IntervalFunction(expr, [E1, E2], mode="range", prec=200)
@@ -696,10 +697,11 @@ def _fails_along_a_line(f, name: str) -> Verdict | None:
     """A point where P3 (f > 0), P5 (sign df/de1 = sign e1) or P6 (e1 df/de1
     >= 0, and df/de1 = k e1 h = 0 on e1 = 0) fails, found by the univariate
     sign search on the half-lines from the origin through the axes and the
-    diagonals (f(s d) for s > 0), or on the e2 axis (P6: df/de1(0, y) != 0).
+    diagonals (f(s d) for s > 0), or on the e2 axis (P6: df/de1(0, y) != 0,
+    for f without Piecewise, Max, Min, sign).
     The witness is a point of the plane; the kernel re-checks it (`value`,
-    `slope`)."""
-    if name == "P6":
+    `slope`, `step`)."""
+    if name == "P6" and not f.has(*SMOOTH_ONLY):     # (the kernel checks a slope of such an f only)
         g = derivative(f, E1)
         for y in (1, -1, 2, -2, sp.Rational(1, 2), -sp.Rational(1, 2)):
             try:
