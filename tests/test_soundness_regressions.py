@@ -459,3 +459,13 @@ def test_non_radial_refutations_along_lines_and_axes(tmp_path):
     # separable log(1 + e1^2) + log(1 + e2^2): only P4 fails; nothing else may be refuted
     report, v = verify(tmp_path, "f = log(1 + e1**2) + log(1 + e2**2)\n")
     assert v["P4"] == "refuted" and [p for p, s in v.items() if s == "refuted"] == ["P4"]
+
+
+def test_a_branch_on_a_line_gives_no_slope_even_to_the_search(tmp_path):
+    # f = log(1 + e1^4 + e2^2) everywhere (the branch on e1 = 1 has the same value there), not radial:
+    # df/de1 = 4 e1^3/(1 + e1^4 + e2^2) has the sign of e1 (P5) and = k e1 h with k = 2 (max of
+    # 4 e1^2/(1 + e1^4) is 2), h in [0, 1] (P6).  The branch's own formula has slope 4/(2 + e2^2) - 10 < 0
+    # at (1, e2): no refutation of P5 or P6 may rest on it, with --trust-search either.
+    report, v = verify(tmp_path, "g = log(1 + e1**4 + e2**2)\nf = Piecewise((g - 10*(e1 - 1), Eq(e1, 1)), (g, True))\n",
+                       kernel_only=False)
+    assert v["P4"] == "refuted" and v["P5"] != "refuted" and v["P6"] != "refuted"

@@ -29,7 +29,8 @@ from .design import Design
 from .design_certificate import SMOOTH_ONLY
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
-                      origin_value_theorems, piecewise_sign_theorem, radial_theorems, sign_theorems,
+                      origin_value_theorems, piecewise_sign_theorem, radial_theorems, refutation_theorems,
+                      sign_theorems,
                       smoothness_theorems, sup_upper_theorem)
 from .kernel.core import derivative
 from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, scale, show
@@ -665,7 +666,7 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
                                {"direction": [dx, dy], "limit": str(lim)})
     if name in ("P3", "P5", "P6"):
         found = _fails_along_a_line(f, name)
-        if found is not None:
+        if found is not None and _stands(name, found, f):
             return found
     if name == "P8" and not f.has(*SMOOTH_ONLY):   # else df/de2's formula may be a branch's taken on a line only
         found = _e2_limit_not_zero(f)
@@ -683,11 +684,20 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
                 except Undefined:
                     continue
                 if val.is_nonpositive() and (x, y) != (0, 0):
-                    return refuted(f"fails at (e1, e2) = ({x}, {y}): value in "
-                                   f"[{val.lower_float():.6g}, {val.upper_float():.6g}]",
-                                   {"e1": str(x), "e2": str(y)})
+                    v = refuted(f"fails at (e1, e2) = ({x}, {y}): value in "
+                                f"[{val.lower_float():.6g}, {val.upper_float():.6g}]", {"e1": str(x), "e2": str(y)})
+                    if _stands(name, v, f):
+                        return v
     return unknown("f is not radial; this verifier proves properties of radial f only "
                    "(P4 " + a.p4.status + ")")
+
+
+def _stands(name: str, v: Verdict, f) -> bool:
+    """A refutation of P5 or P6 found through the formula of df/de1 stands
+    for an f with Piecewise, Max, Min or sign only where the kernel checks a
+    witness of it (a `step` of f itself): there the formula may be that of a
+    branch taken on a line only (Eq(e1, 1)), unrelated to f's derivative."""
+    return name not in ("P5", "P6") or not f.has(*SMOOTH_ONLY) or refutation_theorems(name, v, f)[0] is not None
 
 
 _LINES = [(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, 1), (1, -1), (-1, -1)]
