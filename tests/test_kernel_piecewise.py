@@ -502,3 +502,21 @@ def test_a_point_value_is_checked_in_a_certificate_and_on_each_piece():
     assert check_certificate(to_certificate([th]))[0].claim == th.claim
     D = sp.Piecewise((5, sp.Eq(s, 1)), (s, True))
     assert why(K.continuous_piecewise, expr=D, var=s, cuts=[]) == "Arb disagrees"     # 5 - 1
+
+
+def test_a_point_value_before_a_branch_decided_by_the_facts():
+    """Piecewise((V, Eq(s, 3)), (G1, s < 5), (G2, True)) on (0, 5): the branch
+    after the point value is G1 (s < 5 holds there by the premise 5 - s > 0),
+    not the last one; V = log 10 = G1(3), while G2(3) = 9.  Two point values
+    in a row (log 10 at 3, log 17 at 4) are passed over one after the other."""
+    G1, G2 = sp.log(1 + s ** 2), s ** 2
+    on = dict(var=s, lo=ZERO, hi=Q(5), lo_open=True, hi_open=True)
+    ident, below = K.identity(lhs=G1, rhs=G1, **on), sturm(5 - s, s, 0, 5, lo_open=True, hi_open=True)
+    F = sp.Piecewise((sp.log(10), sp.Eq(s, 3)), (G1, s < 5), (G2, True))
+    assert K.select_branch(ident, below, expr=F).claim.other == sp.srepr(G1)
+    wrong = sp.Piecewise((G2.subs(s, 3), sp.Eq(s, 3)), (G1, s < 5), (G2, True))     # V = G2(3), not G1(3)
+    assert why(K.select_branch, ident, below, expr=wrong) == "Arb disagrees"
+    two = sp.Piecewise((sp.log(10), sp.Eq(s, 3)), (sp.log(17), sp.Eq(s, 4)), (G1, True))
+    assert K.select_branch(ident, expr=two).claim.other == sp.srepr(G1)
+    assert why(K.select_branch, ident, expr=sp.Piecewise((sp.log(10), sp.Eq(s, 3)), (sp.log(16), sp.Eq(s, 4)),
+                                                          (G1, True))) == "Arb disagrees"
