@@ -421,9 +421,9 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
 #        P6 (each needs df/de1 everywhere).
 
 SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
-_REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"), "e2_limit": ("P8",),
-            "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",), "unbounded": ("P1", "P5", "P6", "P7", "P8"),
-            "jump": ("P1", "P5", "P6", "P7")}
+_REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
+            "e2_limit": ("P8",), "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",),
+            "unbounded": ("P1", "P5", "P6", "P7", "P8"), "jump": ("P1", "P5", "P6", "P7")}
 _JUMPS = {("e1", 0): ("P1", "P5", "P6"), ("e1", 1): ("P1", "P5", "P6"), ("e2", 0): ("P1", "P7"), ("e2", 1): ("P1", "P7"),
           ("e2", 2): ("P7",)}
 _UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo"), ("P6", "e1", 1, "0"),

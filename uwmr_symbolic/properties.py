@@ -38,8 +38,8 @@ from .limits import NoLimit, limit_right
 from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
                       radial_profile,
                       same_value, split_profile, verify_radial)
-from .univariate import (MAX_BOXES, T, X, enclose, exact_sign, exact_value, far_out_trend, limit_at_infinity, prepare, prove_sign,
-                         tail_form, tail_start, value_at)
+from .univariate import (MAX_BOXES, T, X, enclose, exact_sign, exact_value, far_out_trend, limit_at_infinity, prepare,
+                         prove_sign, tail_form, tail_start, value_at)
 from .verdict import Verdict, proved, refuted, unknown
 
 PROPERTIES = ("P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8")
@@ -713,9 +713,9 @@ def _fails_along_a_line(f, name: str) -> Verdict | None:
     `slope`, `step`)."""
     if name == "P6" and not f.has(*SMOOTH_ONLY):     # (the kernel checks a slope of such an f only)
         g = derivative(f, E1)
-        for y in (1, -1, 2, -2, sp.Rational(1, 2), -sp.Rational(1, 2)):
+        for y in map(sp.Rational, (1, -1, 2, -2, "1/2", "-1/2")):
             try:
-                box = value_at(g.xreplace({E1: sp.Integer(0), E2: sp.Integer(y)}), S, 0, prec=128)
+                box = value_at(g.xreplace({E1: sp.Integer(0), E2: y}), S, 0, prec=128)
             except (Undefined, TypeError, ValueError):
                 continue
             if box.is_positive() or box.is_negative():
@@ -740,8 +740,8 @@ def _e2_limit_not_zero(f) -> Verdict | None:
     continuous there, and tends to its value at h = 0) and that interval
     enclosure excludes 0; the kernel re-checks it (`e2_limit`)."""
     g = derivative(f, E2)
-    for x in (1, -1, 2, -2, sp.Rational(1, 2), -sp.Rational(1, 2)):
-        at = g.xreplace({E1: sp.Integer(x) if isinstance(x, int) else x, E2: S})
+    for x in map(sp.Rational, (1, -1, 2, -2, "1/2", "-1/2")):
+        at = g.xreplace({E1: x, E2: S})
         try:
             box = enclose(at, S, 0, sp.Rational(1, 64))
         except (Undefined, TypeError, ValueError):
