@@ -456,6 +456,10 @@ def test_non_radial_refutations_along_lines_and_axes(tmp_path):
     assert report.properties["P6"].witness == {"e1": "0", "e2": "1"}
     assert report.properties["P8"].witness["limit"] == "1/2"
     assert "refuted" not in (v["P1"], v["P2"], v["P3"], v["P7"])
+    # e1^4 + log(1 + e2^2): df/de1 / e1 = 4 e1^2 is unbounded, so no k bounds it (P6 fails); P5 holds
+    report, v = verify(tmp_path, "f = e1**4 + log(1 + e2**2)\n")
+    assert (v["P4"], v["P6"]) == ("refuted", "refuted") and v["P5"] != "refuted"
+    assert report.properties["P6"].witness == {"e1": "oo", "e2": "0", "limit": "oo"}
     # separable log(1 + e1^2) + log(1 + e2^2): only P4 fails; nothing else may be refuted
     report, v = verify(tmp_path, "f = log(1 + e1**2) + log(1 + e2**2)\n")
     assert v["P4"] == "refuted" and [p for p, s in v.items() if s == "refuted"] == ["P4"]

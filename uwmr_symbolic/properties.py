@@ -14,8 +14,9 @@ For a radial f = F(|e|) (P4 proved first) every property reduces to F on
 
 When f is not radial the verifier still refutes what it can with certified
 witnesses (P2 exactly; P3, P5, P6 at points of half-lines through the axes
-and diagonals, P6 on e1 = 0, P8 by a limit of df/de2; limits along rays via
-the limit calculus) and says "unknown" for the rest."""
+and diagonals, P6 on e1 = 0 and where df/de1 / e1 is unbounded, P8 by a
+limit of df/de2; limits along rays via the limit calculus) and says
+"unknown" for the rest."""
 from __future__ import annotations
 
 from dataclasses import replace
@@ -664,6 +665,16 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
             if lim in (sp.oo, -sp.oo):
                 return refuted(f"|df/de2| -> oo along the ray through ({dx}, {dy}): kf is infinite",
                                {"direction": [dx, dy], "limit": str(lim)})
+    if name == "P6" and not f.has(*SMOOTH_ONLY):    # df/de1(h, 0)/h unbounded: no k with df/de1 = k e1 h, h <= 1
+        g = derivative(f, E1)
+        for where, h in (("oo", 1 / X), ("0+", X)):
+            try:
+                lim = limit_right(prepare(sp.expand_mul(g.xreplace({E1: h, E2: sp.Integer(0)}) / h)), X).value
+            except (NoLimit, ZeroDivisionError, TypeError, ValueError):
+                continue
+            if lim == sp.oo:
+                return refuted(f"df/de1(h, 0)/h -> oo as h -> {where}: no constant k bounds df/de1 / e1",
+                               {"e1": where, "e2": "0", "limit": "oo"})
     if name in ("P3", "P5", "P6"):
         found = _fails_along_a_line(f, name)
         if found is not None and _stands(name, found, f):
