@@ -291,3 +291,15 @@ def test_a_constant_whose_sign_the_kernel_cannot_decide_is_no_proof_not_a_crash(
     e = 3 * u * sp.exp(-u ** 2) / (125 * sp.sqrt(sp.pi)) + c
     with pytest.raises(NoProof, match="not decided"):
         Prover().prove(e, u, (sp.Integer(292), sp.oo, False, True), 1)
+
+
+def test_taylor_order_of_a_term_that_sympy_cannot_evaluate_at_the_point_is_no_proof():
+    """c t^-4 / cosh(erf(t^-2))^2 at t = 0 (c = -8 exp(-1327105/64)/sqrt(pi)):
+    SymPy's subs asks whether cosh(erf(zoo))^-2 is zero, cosh whether it is
+    nonnegative, and that compares nan and raises TypeError.  The proposer's Taylor step must treat it as no proof, not crash
+    (found by make fuzz, seed 3189202835: a tail form of |e|^(5/2)/2 + ...)."""
+    from uwmr_symbolic.certify import NoProof, _derivative_order
+    t = sp.Symbol("t", positive=True)
+    with pytest.raises(NoProof, match="not evaluated"):
+        _derivative_order(-8 * sp.exp(sp.Rational(-1327105, 64)) / (sp.sqrt(sp.pi) * t ** 4
+                                                                    * sp.cosh(sp.erf(t ** -2)) ** 2), t, 0)

@@ -133,3 +133,10 @@ def test_a_point_value_equal_to_the_formula_is_proved_by_the_kernel(verify):
     assert [p for p in r["properties"] if status(r, p) != "proved"] == []
     assert sorted(r["kernel_checked"]) == ["P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8", "kf"]
     assert r["kf"]["exact"] == "1"
+
+
+def test_a_comparison_with_nan_inside_sympy_is_no_crash(verify):
+    r = verify("tanh_erf_tail_crash.py", timeout=10.0)
+    assert "crash" not in r and "hang" not in r, r
+    assert status(r, "P6") == "refuted" and status(r, "P1") != "proved"
+    assert [p for p in ("P2", "P3", "P4", "P5", "P7", "P8") if status(r, p) == "refuted"] == []
