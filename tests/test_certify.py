@@ -303,3 +303,19 @@ def test_taylor_order_of_a_term_that_sympy_cannot_evaluate_at_the_point_is_no_pr
     with pytest.raises(NoProof, match="not evaluated"):
         _derivative_order(-8 * sp.exp(sp.Rational(-1327105, 64)) / (sp.sqrt(sp.pi) * t ** 4
                                                                     * sp.cosh(sp.erf(t ** -2)) ** 2), t, 0)
+
+
+def test_a_sympy_error_inside_a_step_is_no_proof(monkeypatch):
+    """Whatever SymPy raises while the proposer evaluates a step (TypeError for
+    a comparison with nan, ValueError, ZeroDivisionError) ends that claim's
+    proof attempt as NoProof: the proposer cannot make a verdict, so it must
+    not end the run either."""
+    s = sp.Symbol("s", positive=True)
+    for error in (TypeError("Invalid NaN comparison"), ValueError("x"), ZeroDivisionError("y")):
+        prover = Prover()
+
+        def broken(*args, **kw):
+            raise error
+        monkeypatch.setattr(prover, "_prove", broken)
+        with pytest.raises(NoProof, match="SymPy: "):
+            prover.prove(s, s, (0, 1, True, True), 1)

@@ -311,6 +311,8 @@ class Prover:
                 self.memo[key] = exc
             except (K.KernelError, Undefined) as exc:     # a sign the kernel cannot decide (a constant's): no proof
                 self.memo[key] = NoProof("{}", exc)
+            except (TypeError, ValueError, ZeroDivisionError) as exc:   # SymPy could not evaluate a step
+                self.memo[key] = NoProof("SymPy: {}", exc)             # (say, a comparison with nan): no proof
         out = self.memo[key]
         if isinstance(out, NoProof):
             raise out
