@@ -484,5 +484,10 @@ def test_a_long_exact_kf_shows_its_digits_in_the_summary():
     long = "2999999999999989999999999999991*sqrt(5)*sqrt(sqrt(9000000000000014000000000000009) + 3)/16"
     base = {"lower": 0.6495, "upper": 0.6496, "unbounded": False}
     assert _kf_summary({**base, "exact": "3*sqrt(3)/8", "exact_digits": "0.64951905283832898507"}) == "3*sqrt(3)/8"
-    assert _kf_summary({**base, "exact": long, "exact_digits": "0.64951905283832876857"}) == "0.649519052838..."
+    assert _kf_summary({**base, "exact": long, "exact_digits": "0.64951905283832876857"}) == "0.64951905283832877..."
+    # 2 sqrt(1 + 2e-16): the digits show that it is not 2 (a double would round it to 2.0000000000000004)
+    assert _kf_summary({**base, "exact": "sqrt(10000000000000002)/50000000",
+                        "exact_digits": "2.0000000000000002000"}) == "2.0000000000000002..."
+    assert _kf_summary({**base, "exact": long, "exact_digits": "1.4285714285714285966e-31"}) == \
+        "1.4285714285714286e-31..."
     assert _kf_summary({**base, "exact": None, "exact_digits": None}) == "~0.6496"

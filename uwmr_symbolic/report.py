@@ -10,6 +10,7 @@ import ast
 import json
 import math
 import re
+from decimal import Decimal
 from pathlib import Path
 from xml.etree import ElementTree as ET
 
@@ -196,8 +197,8 @@ def _kf_summary(kf: dict) -> str:
         return "infinite" if kf.get("unbounded") else "undecided"
     if kf["exact"] is not None and len(kf["exact"]) <= 20:
         return kf["exact"]
-    if kf["exact"] is not None:     # exact, too long for the column: its leading digits
-        return f"{float(kf['exact_digits']):.12g}..."
+    if kf["exact"] is not None:     # exact, too long for the column: its leading 17 digits, as decimals
+        return f"{Decimal(kf['exact_digits']):.17g}..."
     return f"~{kf['upper']:.9g}"
 
 
