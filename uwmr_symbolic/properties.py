@@ -712,6 +712,7 @@ def _stands(name: str, v: Verdict, f) -> bool:
 
 
 _LINES = [(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, 1), (1, -1), (-1, -1)]
+_PROBES = tuple(map(sp.Rational, (1, -1, 2, -2, "1/2", "-1/2")))     # e1 = 0 (P6) and e2 -> 0 (P8) probes
 
 
 def _fails_along_a_line(f, name: str) -> Verdict | None:
@@ -724,7 +725,7 @@ def _fails_along_a_line(f, name: str) -> Verdict | None:
     `slope`, `step`)."""
     if name == "P6" and not f.has(*SMOOTH_ONLY):     # (the kernel checks a slope of such an f only)
         g = derivative(f, E1)
-        for y in map(sp.Rational, (1, -1, 2, -2, "1/2", "-1/2")):
+        for y in _PROBES:
             try:
                 box = value_at(g.xreplace({E1: sp.Integer(0), E2: y}), S, 0, prec=128)
             except (Undefined, TypeError, ValueError):
@@ -751,7 +752,7 @@ def _e2_limit_not_zero(f) -> Verdict | None:
     continuous there, and tends to its value at h = 0) and that interval
     enclosure excludes 0; the kernel re-checks it (`e2_limit`)."""
     g = derivative(f, E2)
-    for x in map(sp.Rational, (1, -1, 2, -2, "1/2", "-1/2")):
+    for x in _PROBES:
         at = g.xreplace({E1: x, E2: S})
         try:
             box = enclose(at, S, 0, sp.Rational(1, 64))
