@@ -293,23 +293,15 @@ def test_a_constant_whose_sign_the_kernel_cannot_decide_is_no_proof_not_a_crash(
         Prover().prove(e, u, (sp.Integer(292), sp.oo, False, True), 1)
 
 
-def test_taylor_order_of_a_term_that_sympy_cannot_evaluate_at_the_point_is_no_proof():
-    """c t^-4 / cosh(erf(t^-2))^2 at t = 0 (c = -8 exp(-1327105/64)/sqrt(pi)):
-    SymPy's subs asks whether cosh(erf(zoo))^-2 is zero, cosh whether it is
-    nonnegative, and that compares nan and raises TypeError.  The proposer's Taylor step must treat it as no proof, not crash
-    (found by make fuzz, seed 3189202835: a tail form of |e|^(5/2)/2 + ...)."""
-    from uwmr_symbolic.certify import NoProof, _derivative_order
-    t = sp.Symbol("t", positive=True)
-    with pytest.raises(NoProof, match="not evaluated"):
-        _derivative_order(-8 * sp.exp(sp.Rational(-1327105, 64)) / (sp.sqrt(sp.pi) * t ** 4
-                                                                    * sp.cosh(sp.erf(t ** -2)) ** 2), t, 0)
-
-
 def test_a_sympy_error_inside_a_step_is_no_proof(monkeypatch):
     """Whatever SymPy raises while the proposer evaluates a step (TypeError for
     a comparison with nan, ValueError, ZeroDivisionError) ends that claim's
     proof attempt as NoProof: the proposer cannot make a verdict, so it must
-    not end the run either."""
+    not end the run either.  (make fuzz found one: the Taylor step's subs at a
+    tail's t = 0 of -8 exp(-1327105/64)/(sqrt(pi) t^4 cosh(erf(t^-2))^2) asked
+    cosh's assumptions to compare nan; whether SymPy asks depends on its caches,
+    so that expression makes no dependable test: reproducer
+    tanh_erf_tail_crash.py end to end.)"""
     s = sp.Symbol("s", positive=True)
     for error in (TypeError("Invalid NaN comparison"), ValueError("x"), ZeroDivisionError("y")):
         prover = Prover()
