@@ -1390,8 +1390,9 @@ def _generalized_pass(d, variables, fresh, roots, asked, orders):
             if nd is not None:                  # b = N/D = x^k c, x > 0, so b^(p/q) = x^(kp/q) c^(p/q)
                 low = [min((m[0] for m in P.monoms()), default=0) for P in nd[1:]]
                 k = low[0] - low[1]             # x^low divides N, D
-                if abs(k * p) <= 48:
-                    return power(x, k * p, q) * power(sp.cancel(b / x ** k) if k else b, p, q)
+                if abs(k * p) <= 48:            # b / x^k = (N / x^low0) / (D / x^low1), divided exactly
+                    N, D = (P.quo_term(((m,), 1)).as_expr() for P, m in zip(nd[1:], low))
+                    return power(x, k * p, q) * power(N / D if k else b, p, q)
             return power(b, p, q)
         if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
             return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
@@ -1409,9 +1410,8 @@ def _generalized_pass(d, variables, fresh, roots, asked, orders):
 def _cancel(u):
     """sympy.cancel(u), which is u itself when u is a sum of monomials with
     rational coefficients (and then costs milliseconds to say so)."""
-    factors = [f for t in sp.Add.make_args(u) for f in sp.Mul.make_args(t)]
     plain = all(f.is_Rational or f.is_Symbol or f.is_Pow and f.base.is_Symbol and f.exp.is_Integer and f.exp > 0
-                for f in factors)
+                for t in sp.Add.make_args(u) for f in sp.Mul.make_args(t))
     return u if plain else sp.cancel(u)
 
 
