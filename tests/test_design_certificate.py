@@ -177,6 +177,24 @@ def test_cli_writes_and_rechecks_a_certificate(tmp_path):
     assert [ln for ln in both.stdout.splitlines() if not ln.startswith(" ")] == [f"{out}: certificate re-checked"] * 2
 
 
+def test_a_certificate_rechecks_in_a_fresh_process_whatever_form_the_prover_held(tmp_path):
+    """f = (e1 cos 1 + e2 sin 1)^2 + (e1 sin 1 - e2 cos 1)^2 is rho (cos^2 1 +
+    sin^2 1 = 1): P1 false (kf infinite: df/de2 = 2 e2), P2-P8 true.  The
+    prover built 2 (s cos^2 1 + s sin^2 1 - 2) undistributed; a checker in a
+    fresh process reads it back distributed and once printed the claim so,
+    rejecting the certificate (and re-verifying the design on every cache hit)."""
+    design = tmp_path / "rotated.py"
+    design.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\n"
+                      "f = (e1*sp.cos(1) + e2*sp.sin(1))**2 + (e1*sp.sin(1) - e2*sp.cos(1))**2\n")
+    out = tmp_path / "rotated.cert.json"
+    r = run_cli([str(design), "--certificate", str(out), "--no-cache", "-q"])
+    assert r.returncode == 1, r.describe()                  # P1 refuted
+    ok = run_cli(["--check-certificate", str(out)])
+    assert ok.returncode == 0, ok.describe()
+    statuses = {name: entry["status"] for name, entry in json.loads(out.read_text())["properties"].items()}
+    assert statuses == {"P1": "refuted", **{p: "proved" for p in PROPS[1:]}}      # no finite kf to certify
+
+
 def test_cache_hit_is_used_only_when_its_certificate_rechecks(tmp_path):
     first = check_file(str(DESIGN1), 60, str(tmp_path))
     assert first["cached"] is False and first["exit_status"] == 0

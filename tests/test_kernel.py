@@ -902,3 +902,15 @@ def test_continuous_on_positive():
         assert (t.claim.kind, t.claim.lo, t.claim.hi, t.claim.lo_open) == ("continuous", sp.srepr(ZERO), "oo", True)
     for e in (1 / (s - 1), sp.log(s - 1)):
         rejects(K.continuous_on_positive, expr=e, var=s)
+
+
+def test_a_claim_prints_what_a_checker_reads_back_not_the_form_it_was_built_in():
+    """2 (s - 7/3) built without distributing reads back (srepr, then parse) as
+    2 s - 14/3; the claim must name that, however the prover's objects looked,
+    or a checker in a fresh process prints another text and rejects the step
+    (found on f = (e1 cos 1 + e2 sin 1)^2 + (e1 sin 1 - e2 cos 1)^2)."""
+    built = sp.Mul(2, s - sp.Rational(7, 3), evaluate=False)
+    t = K.sign_by_cover(expr=built, var=s, cuts=[3, 4], want=1)
+    assert t.claim.expr == sp.srepr(2 * s - sp.Rational(14, 3)) != sp.srepr(built)
+    again = check_certificate(json.loads(json.dumps(to_certificate([t]))))
+    assert again[0].claim == t.claim

@@ -152,9 +152,7 @@ def _encoded(v) -> bool:
 
 def decode(v):
     if isinstance(v, dict):
-        e = parse(v["$"])
-        _PRINTER.memo.setdefault(e, v["$"])     # printed as read: a text reads as one expression only
-        return e
+        return parse(v["$"])
     if isinstance(v, list):
         return [decode(u) for u in v]
     return v
