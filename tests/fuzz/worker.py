@@ -32,6 +32,23 @@ def _frac(x):
     return __import__("sympy").srepr(x)
 
 
+def _fresh_recheck(report) -> str | None:
+    """Re-check the report's certificate as a fresh process does: with the
+    kernel's parse cache, step memo and printer memo emptied first.  (A claim
+    printed from what the prover had read once differed from the checker's.)"""
+    from uwmr_symbolic import design_certificate as DC
+    from uwmr_symbolic.kernel import certificate, core, parse
+    text = json.dumps(DC.build(report))
+    parse.parse.cache_clear()
+    certificate._CHECKED.clear()
+    core._PRINTER.memo.clear()
+    try:
+        DC.check(text)
+    except DC.CertificateError as exc:
+        return f"in a fresh process: {exc}"
+    return None
+
+
 def _answer(path: str, timeout: float) -> dict:
     from uwmr_symbolic.report import _jsonable
     from uwmr_symbolic.verify import verify_design
@@ -44,7 +61,8 @@ def _answer(path: str, timeout: float) -> dict:
         return {"error": r.error}
     kf = r.kf
     kernel = r.kernel or {"checked": [], "search": []}
-    cert = kernel.get("error")      # every certificate the prover emits must re-check (oracle: "certificate")
+    # every certificate the prover emits must re-check (oracle: "certificate"), in this process and in a fresh one
+    cert = kernel.get("error") or _fresh_recheck(r)
     checked = [p for p in kernel["checked"] if p == "kf" or r.properties[p].proved]
     refutations = [p for p in kernel["checked"] if p != "kf" and r.properties[p].refuted]
     return {
