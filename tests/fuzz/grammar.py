@@ -616,6 +616,23 @@ def extreme_designs(draw):
                 note=f"log(1 + rho) + c (1 - exp(-K rho)), c = {c}, K = {K}")
 
 
+@st.composite
+def rotated_designs(draw):
+    """c G((e1 cos t + e2 sin t)^2 + (e1 sin t - e2 cos t)^2) = c G(rho)
+    (cos^2 t + sin^2 t = 1): radial, though SymPy's automatic evaluation
+    neither expands the squares nor sees the identity; its proofs build
+    expressions SymPy reads back in another form (a fresh checker once
+    rejected such certificates)."""
+    name = draw(st.sampled_from(SAFE_BLOCKS))
+    G, grow, ksup = BLOCKS[name]
+    t = draw(st.sampled_from([sp.Integer(1), R(1, 2), sp.pi / 7, R(3)]))
+    c, c_ex = draw(coefficients())
+    f = c * G((e1 * sp.cos(t) + e2 * sp.sin(t)) ** 2 + (e1 * sp.sin(t) - e2 * sp.cos(t)) ** 2)
+    g = grow(RHO_GROWTH)
+    kf = sp.oo if not kf_finite(g) else (None if ksup is None else c_ex * ksup)
+    return Case("rotated", f, radial_truth(g), kf, note=f"{name}, t = {t}")
+
+
 FAMILIES = {
     "radial": radial_designs, "float-offset": float_offset_designs, "power": power_designs,
     "elliptic": elliptic_designs, "separable": separable_designs, "cross": cross_term_designs,
@@ -623,7 +640,7 @@ FAMILIES = {
     "point-value": point_value_designs, "origin": origin_designs, "dip": dip_designs,
     "classic": classic_designs, "mixed": mixed_sign_designs, "far-dip": far_dip_designs,
     "almost-radial": almost_radial_designs, "chain": chain_designs, "maxmin": maxmin_designs,
-    "float-power": float_power_designs, "extreme": extreme_designs,
+    "float-power": float_power_designs, "extreme": extreme_designs, "rotated": rotated_designs,
 }
 
 
