@@ -446,7 +446,7 @@ def test_sign_of_sum_claims_and_messages():
     assert why(S, sq, expr=x ** 2 + sp.tanh(1) - 1, want=1) == "the constant terms -1 + tanh(1) have the wrong sign"
     assert why(S, sq, expr=-x ** 2 - 1, want=-1) == "a premise has the other sign"
     assert why(S, sq, expr=x ** 2, want=1) == "not a sum: x**2"
-    assert why(S, sq, expr=x ** 2 + x, want=1) == "no premise for term x"
+    assert why(S, sq, expr=x ** 2 + x, want=1) == "no premise for the terms [x]"
     assert why(S, sq, sturm(x ** 4, x, -1, 1, strict=False), expr=x ** 2 + 1, want=1) == \
         "a premise matches no term"
     op = sturm(x, x, 0, 1, lo_open=True, hi_open=True)
@@ -949,10 +949,10 @@ def test_identity_plane_claims_and_messages():
     assert why(P, lhs=x, rhs=x, x=x, y=x) == "two distinct variables"
     assert why(P, lhs=x, rhs=x, x=x, y=I2) == "two distinct variables"
     assert why(P, lhs=x, rhs=x, x=I2, y=y) == "two distinct variables"
-    assert why(P, lhs=x, rhs=x, x=x, y=s) == "s must be declared real only"
-    assert why(P, lhs=x, rhs=x, x=n, y=y) == "n must be declared real only"
-    assert why(P, lhs=x + s, rhs=x + s, x=x, y=y) == "s + x has symbols other than x, y"
-    assert why(P, lhs=x, rhs=x + s - s + t, x=x, y=y) == "t + x has symbols other than x, y"
+    assert why(P, lhs=x, rhs=x, x=x, y=s) == "x, s must be declared real only"
+    assert why(P, lhs=x, rhs=x, x=n, y=y) == "n, y must be declared real only"
+    assert why(P, lhs=x + s, rhs=x + s, x=x, y=y) == "s + x: a float, or symbols other than x, y"
+    assert why(P, lhs=x, rhs=x + s - s + t, x=x, y=y) == "t + x: a float, or symbols other than x, y"
     # the cross-check at the 10 fixed points: sqrt(x - 2) is defined at (2, -1/5), (7/3, 11/4), (5, 1/6)
     one = sp.sin(y) ** 2 + sp.cos(y) ** 2
     ok = P(lhs=sp.sqrt(x - 2) * one, rhs=sp.sqrt(x - 2), x=x, y=y)

@@ -1199,6 +1199,16 @@ def radial_theorems(f, F, x, y, var, ratio=1) -> list:
         return []
 
 
+def plane_theorems(f, x, y, exprs) -> list:
+    """f and each expression of `exprs` (formulas of its derivatives) defined,
+    hence continuous, at every point of the plane, as kernel theorems
+    (`continuous_on_plane`), or [] when the kernel does not show one."""
+    try:
+        return [K.continuous_on_plane(expr=e, x=x, y=y) for e in (f, *exprs)]
+    except (K.KernelError, Undefined):
+        return []
+
+
 def growth_theorems(F, var, last=None) -> list:
     """P3's "F(s) -> oo": `diverges_by_growth` from F' >= k or s F' >= k > 0
     on [R, oo) (the proposer picks R, the rate and k), or [].  For a

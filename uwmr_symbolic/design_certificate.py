@@ -250,6 +250,8 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
         return []
     if name not in ("P1", "P3", "P5", "P6", "P7", "P8", "kf"):
         return []
+    if name in ("P7", "P8") and claims and (claims[0].kind, claims[0].var) == ("continuous", _srepr(sp.Tuple(E1, E2))):
+        return _link_plane(name, f, claims)
     F = _profile(f)
     claims, k = _reduction(f, F, claims)
     claims, F = _one_branch(F, claims, open_only=name in ("P3", "P8"))
@@ -260,6 +262,25 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
     if piecewise and name not in ("P7", "P8") and not (claims and claims[0].expr == _srepr(want)):
         return reduction + ["the kernel's claims are about the pieces of F (the split of F is the search's)"]
     return reduction + _link_reduced(name, F, dF, claims, k or 1, bounds)
+
+
+def _link_plane(name, f, claims) -> list[str]:
+    """P7 and P8 of any f (radial or not) from `continuous_on_plane`.  An f
+    without Abs, Piecewise, Max, Min or sign whose formula is defined at every
+    point of the plane is analytic there: each construct the kernel accepts
+    but Abs is analytic on an open set holding its argument's values.  So every
+    partial derivative of f exists and is continuous (P7), and equals its
+    SymPy formula wherever that is defined.  P8: also df/de2's formula g
+    defined on the plane, and g(e1, 0) evaluates to exactly 0: df/de2 =
+    g -> g(e1, 0) = 0 as e2 -> 0, at every e1."""
+    g = derivative(f, E2)
+    plane = _srepr(sp.Tuple(E1, E2))
+    want = [("continuous", _srepr(e), plane) for e in ([f, g] if name == "P8" else [f])]
+    if f.has(*SMOOTH_ONLY, sp.Abs) or [(c.kind, c.expr, c.var) for c in claims] != want or (
+            name == "P8" and g.xreplace({E2: sp.Integer(0)}) != 0):
+        raise CertificateError(f"{name}: the kernel's conclusions are not f (and for P8 df/de2, with "
+                               "df/de2(e1, 0) = 0) defined on the plane, f without Abs, Piecewise, Max, Min, sign")
+    return []
 
 
 def _reduction(f, F, claims):

@@ -30,6 +30,7 @@ from .design import Design
 from .design_certificate import SMOOTH_ONLY
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
+                      plane_theorems,
                       origin_value_theorems, piecewise_sign_theorem, radial_theorems, refutation_theorems,
                       sign_theorems,
                       smoothness_theorems, sup_upper_theorem)
@@ -700,7 +701,7 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
                     if _stands(name, v, f):
                         return v
     return unknown("f is not radial; this verifier proves properties of radial f only "
-                   "(P4 " + a.p4.status + ")")
+                   "(P4 " + a.p4.status + "), and P7 and P8 of an f analytic on the plane")
 
 
 def _stands(name: str, v: Verdict, f) -> bool:
@@ -765,6 +766,37 @@ def _e2_limit_not_zero(f) -> Verdict | None:
     return None
 
 
+def _smooth_on_plane(f, name: str) -> Verdict | None:
+    """P7 or P8 of an f, radial or not, without Abs, Piecewise, Max, Min or
+    sign, whose formula the kernel shows defined at every point of the plane
+    (`continuous_on_plane`): f is then analytic there, so C^2 (P7); P8 when
+    also df/de2 is shown defined there and df/de2(e1, 0) is exactly 0."""
+    if name not in ("P7", "P8") or f.has(*SMOOTH_ONLY, sp.Abs):
+        return None
+    g = derivative(f, E2)
+    if name == "P8" and g.xreplace({E2: sp.Integer(0)}) != 0:
+        return None
+    theorems = plane_theorems(f, E1, E2, [g] if name == "P8" else [])
+    if not theorems:
+        return None
+    return proved("f is analytic on the plane (its formula is defined at every point and built from functions "
+                  "analytic on their domains), so C^2" if name == "P7" else
+                  "df/de2 is continuous on the plane (f analytic there) and df/de2(e1, 0) = 0 exactly, so "
+                  "df/de2 -> 0 as e2 -> 0", kernel=theorems, unchecked=[])
+
+
+def _or_on_plane(verify, name: str):
+    """`verify`, or where it leaves the property undecided or without kernel
+    theorems, `_smooth_on_plane`."""
+    def run(a: Analysis) -> Verdict:
+        v = verify(a)
+        if v.refuted or (v.proved and v.details.get("kernel")):
+            return v
+        return _smooth_on_plane(a.f, name) or v
+    run.__doc__ = verify.__doc__
+    return run
+
+
 def _through_reduction(verify, open_only=False):
     """Say so when a verdict rests on an elliptic reduction f = F(s),
     s = sqrt(e1^2 + r e2^2), r != 1 (then df/de1 = F'(s) e1/s and
@@ -789,4 +821,5 @@ def _through_reduction(verify, open_only=False):
 
 VERIFIERS = {"P1": _through_reduction(verify_p1), "P2": verify_p2, "P3": _through_reduction(verify_p3, True),
              "P4": verify_p4, "P5": _through_reduction(lambda a: a.p5), "P6": _through_reduction(verify_p6),
-             "P7": _through_reduction(verify_p7), "P8": _through_reduction(verify_p8, True)}
+             "P7": _or_on_plane(_through_reduction(verify_p7), "P7"),
+             "P8": _or_on_plane(_through_reduction(verify_p8, True), "P8")}

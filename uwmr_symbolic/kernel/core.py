@@ -18,7 +18,8 @@ Claim semantics (I: an interval of the real line, ends exact):
               (for every eps > 0 some x in I has E(x) > bound - eps);
 * identity_plane: lhs(x, y) = rhs(x, y) where both are defined (var: (x, y));
 * limit:      E is continuous on [lo, hi] and E(lo) = other, so E -> other as x -> lo+;
-* continuous: E is defined and continuous at every point of (lo, hi);
+* continuous: E is defined and continuous at every point of (lo, hi), or
+              of the plane when var is (x, y);
 * pieces:     on each open interval between lo, the cut points listed in
               other and hi, E equals an expression defined and continuous
               on the interval's closure in (0, oo);
@@ -333,8 +334,7 @@ def _sign_on(c: Claim, e, want, strict) -> Claim:
 
 def _is_sign(t: Theorem):
     """The claim of the sign theorem t and its variable."""
-    _need(t.claim.kind == "sign", lambda: f"premise is a {t.claim.kind} theorem, not a sign theorem")
-    return t.claim, t.claim.x()
+    return _of_kind(t, "sign", f"premise is a {t.claim.kind} theorem, not a sign theorem")
 
 
 def _of_kind(t: Theorem, kind: str, msg: str):
@@ -674,8 +674,7 @@ def sign_of_sum(*premises, expr, want):
             grouped.add(t)
     _need(set(grouped) <= set(e.args), "a premise matches no term")
     rest = [t for t in e.args if t not in grouped]
-    for t in rest:
-        _need(not t.has(var), lambda: f"no premise for term {t}")
+    _need(not any(t.has(var) for t in rest), lambda: f"no premise for the terms {[t for t in rest if t.has(var)]}")
     s = _const_sign(sp.Add(*rest) - taken)
     _need(s in (0, want), lambda: f"the constant terms {sp.Add(*rest) - taken} have the wrong sign")
     strict = s == want or any(p.claim.strict for p in premises)
@@ -748,10 +747,7 @@ def sign_by_log_bound(bound, coeff, positive, *, expr, term, p):
     A log tail such as s log(1 + s^2)/(1 + s^2), whose form in t = 1/s is not
     defined at t = 0, becomes algebraic.  M asinh(X) is M log(Y) with
     Y = X + sqrt(X^2 + 1) (asinh's definition, for every real X)."""
-    for t in (bound, coeff, positive):
-        _is_sign(t)
-        _same_interval(t.claim, bound.claim)
-    c = bound.claim
+    c = _signs_on_one_interval([bound, coeff, positive])
     var = c.x()
     e, t, p = _expr(expr, var), _expr(term, var), _number(p)
     _need(p.is_Rational and p != 0 and -1 <= p <= 1, "p is rational, 0 < |p| <= 1")
@@ -821,9 +817,7 @@ sign_below_product = rule("arb", "sympy-core")(sign_below_product)
 
 def _adjacent(left, right):
     """The claims of two sign theorems about one E, variable and sign on <a, m> and <m, b>."""
-    for t in (left, right):
-        _is_sign(t)
-    l, r = left.claim, right.claim
+    (l, _), (r, _) = _is_sign(left), _is_sign(right)
     _need((l.expr, l.var, l.want) == (r.expr, r.var, r.want), "different claims")
     _need(l.hi == r.lo, "not adjacent")
     return l, r
@@ -1086,7 +1080,9 @@ def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
     (`_rational_sign`; lo' <= lo and hi' >= hi rational, lo' >= 0).  Returns
     the extra assumptions the check rests on (the polynomial ones when a
     rational function was signed, else ()), or None when definedness is not
-    shown."""
+    shown.  x = Tuple(x1, x2): e defined at every point of the plane, the
+    real variables x1, x2 being of either sign (no rational functions signed)."""
+    free = x.free_symbols
     lo, hi = _number(lo), _number(hi)
     _need((lo == 0 or _lt(0, lo)) and _lt(lo, hi), "definedness is checked on some (lo, hi) with 0 <= lo < hi")
     ends = (_rational_beyond(lo, -1), _rational_beyond(hi, 1))
@@ -1095,13 +1091,15 @@ def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
     def pos(u):
         if u == x:
             return True
-        if not u.has(x):
+        if not u.has(*free):
             try:
                 return _const_sign(u) > 0
             except KernelError:
                 return False
-        if u.is_Add:
-            ok = all(pos(a) or nonneg(a) for a in u.args) and any(pos(a) for a in u.args)
+        if u.is_Add:                            # its constant terms taken together (e - 1 + x > 0)
+            c = u.as_independent(*free, as_Add=True)[0]
+            terms = [a for a in u.args if a.has(*free)] + ([c] if c != 0 else [])
+            ok = all(pos(a) or nonneg(a) for a in terms) and any(pos(a) for a in terms)
         elif u.is_Mul:
             ok = all(pos(a) for a in u.args)
         elif u.is_Pow:
@@ -1115,7 +1113,7 @@ def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
         return ok or positive_rational(u)
 
     def positive_rational(u):                   # u = N/D over Q > 0 on (lo', hi') (`_rational_sign`)
-        if not _rational_over_q(u, x):
+        if len(free) > 1 or not _rational_over_q(u, x):
             return False
         try:
             _rational_sign(u, x, ends[0], ends[1], True, True, 1, True)
@@ -1138,8 +1136,8 @@ def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
         return (u.is_Add or u.is_Mul) and all(nonneg(a) for a in u.args)
 
     def defined(u):
-        if u == x or not u.has(x):
-            return u == x or _number_ok(u)
+        if u in free or not u.has(*free):
+            return u in free or _number_ok(u)
         if u.is_Add or u.is_Mul:
             return all(defined(a) for a in u.args)
         if u.is_Pow:
@@ -1282,8 +1280,7 @@ def _cross_check(d, var, lo, hi):
         pts = [hi - sp.Rational(k, 3) for k in range(1, 10)]
     else:
         pts = [lo + (hi - lo) * sp.Rational(k, 10) for k in range(1, 10)]
-    for p in pts:
-        _need(p.is_Rational, "cross-check needs rational ends")
+    _need(all(p.is_Rational for p in pts), "cross-check needs rational ends")
     _vanishes_at([(f"{var} = {p}", lambda p=p: evaluate(d, var, p, p, bits=CROSS_CHECK_BITS)) for p in pts])
 
 
@@ -1514,6 +1511,16 @@ _PLANE_POINTS = [(sp.Rational(p), sp.Rational(q)) for p, q in
                   ("1/10", "-9/8"), ("5", "1/6"), ("-2/9", "4"), ("3/5", "0"), ("0", "-7/3"))]
 
 
+def _in_plane(e, x, y) -> sp.Expr:
+    """e, exact, in the distinct variables x, y, each declared real only (no sign)."""
+    _need(isinstance(x, sp.Symbol) and isinstance(y, sp.Symbol) and x != y, "two distinct variables")
+    _need(x.assumptions0 == y.assumptions0 == sp.Symbol("_", real=True).assumptions0,
+          lambda: f"{x}, {y} must be declared real only")
+    e = _sym(e)
+    _need(not e.has(sp.Float) and e.free_symbols <= {x, y}, lambda: f"{e}: a float, or symbols other than {x}, {y}")
+    return e
+
+
 def identity_plane(*, lhs, rhs, x, y):
     """lhs(x, y) = rhs(x, y) at every point of the plane where both are
     defined (x, y real variables).  Exact when both are the same expression,
@@ -1524,13 +1531,7 @@ def identity_plane(*, lhs, rhs, x, y):
     Arb; the theorem then rests on "sympy-simplify".  (With lhs = f and
     rhs = F(sqrt(x^2 + y^2)) this is the radial reduction of P4: then
     x df/dy - y df/dx = F'(r)(x y - y x)/r = 0 wherever F' exists.)"""
-    _need(isinstance(x, sp.Symbol) and isinstance(y, sp.Symbol) and x != y, "two distinct variables")
-    for v in (x, y):
-        _need(v.assumptions0 == sp.Symbol("_", real=True).assumptions0, lambda: f"{v} must be declared real only")
-    l, r = _sym(lhs), _sym(rhs)
-    for e in (l, r):
-        _need(not e.has(sp.Float), lambda: f"floats are not exact: {e}")
-        _need(e.free_symbols <= {x, y}, lambda: f"{e} has symbols other than {x}, {y}")
+    l, r = _in_plane(lhs, x, y), _in_plane(rhs, x, y)
     claim = Claim("identity_plane", _s(l), _s(sp.Tuple(x, y)), other=_s(r))
     if l == r:
         return claim
@@ -1542,6 +1543,19 @@ def identity_plane(*, lhs, rhs, x, y):
                   for p, q in _PLANE_POINTS])
     return claim, ("sympy-simplify", "arb")
 identity_plane = rule("sympy-core")(identity_plane)
+
+
+def continuous_on_plane(*, expr, x, y):
+    """E is defined, hence continuous, at every point (x, y) of the plane:
+    `defined_for_positive` with two real variables of either sign (defined,
+    neither positive nor nonnegative).  Every construct it accepts but Abs is
+    analytic on an open set holding its argument's values (a power's base
+    and a log's argument shown > 0), so an E without Abs is analytic (C^oo)
+    on the plane.  Claim kind "continuous", var (x, y), on (-oo, oo)."""
+    e = _in_plane(expr, x, y)
+    _need(defined_for_positive(e, sp.Tuple(x, y)) is not None, lambda: f"{e} not shown defined on the plane")
+    return Claim("continuous", _s(e), _s(sp.Tuple(x, y)), "-oo", "oo", True, True)
+continuous_on_plane = rule("sympy-core")(continuous_on_plane)
 
 
 def continuous_at_end(*, expr, var, c, width):
