@@ -159,3 +159,33 @@ def test_piecewise_branch_chosen_from_the_exact_rho(tmp_path):
         ref = reference.table(law, rows)
         v, w, st = lib.run(rows, f32=f32)
         check(path.stem, "C float" if f32 else "C double", rows, ref, v, w, st, "float" if f32 else "double")
+
+
+def test_bound_10_where_g_reaches_kf(tmp_path):
+    """g = df/de2 on e1 = 0 reaches kf = KF = 21 at e2 = 10.5 (c9's docstring);
+    near there g's accuracy is not certified (a division by an interval
+    holding 0), and the unclamped term came out 14.5 ulps above lam |vr| KF
+    (w = 21.000000000000068 at e2 = 10.499999999998082; float 9.9 ulps).  The
+    term is now clamped to lam |vr| KF: with lam = vr = 1 and wr = k2 = 0,
+    w = g^ must stay <= KF (and >= KF (1 - 1e-12) at the maximum)."""
+    path = ROOT / "designs_codegen" / "c9_atan_join_kf_attained.py"
+    lib, mod = _generated(path, tmp_path)
+    assert mod.KF == 21.0
+    e2 = np.array([10.499999999998082, 10.5] + [10.5 + k * 3 * np.spacing(10.5) for k in range(-400, 401)])
+    rows = _law_rows([(0.0, x) for x in e2])
+    for who, (v, w, st) in (("C double", lib.run(rows)), ("Python", mod.control_status(*rows.T))):
+        assert (st == 0).all() and w.max() <= 21.0 and w.max() >= 21.0 * (1 - 1e-12), (who, w.max())
+    xf = np.array([np.float32(10.498237609863281), np.float32(10.5)]
+                  + [np.float32(10.5) * np.float32(1 + k * 2.0 ** -16) for k in range(-3000, 3001)], dtype=np.float64)
+    v, w, st = lib.run(_law_rows([(0.0, x) for x in xf]), f32=True)
+    assert (st == 0).all() and w.max() <= 21.0 and w.max() >= 21.0 * (1 - 1e-5), w.max()
+
+
+def test_a_tiny_scale_generates_and_validates(tmp_path):
+    """log(1 + 1e-30 rho): its code is generated (and validated by `generate`)
+    instead of an OverflowError; v, w checked at a few moderate rows.
+    kf = sqrt(c) = 1e-15 (F'(s) = 2 c s/(1 + c s^2), largest at s = 1/sqrt(c))."""
+    path = ROOT / "designs_codegen" / "c10_log_tiny_scale.py"
+    rows = _law_rows([(0.0, 1e15), (3.0, -4.0), (1e20, 1e10), (0.0, 1e-3)])
+    _, mod, _ = _check_all(path, tmp_path, rows, rows)
+    assert abs(mod.KF - 1e-15) <= 1e-15 * 1e-9

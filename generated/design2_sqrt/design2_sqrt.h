@@ -55,10 +55,14 @@ extern "C" {
  *
  * Bound (10).  Law (9) gives, whatever the errors,
  *   |v| <= |vr| + k1,     |w| <= |wr| + lam |vr| KF + k2
- * with KF = UWMR_DESIGN2_SQRT_KF = 1 (certified upper bound); this
- * code was checked against it within 4 ulps (see below).  Choose the gains
- * so that |vr|max + k1 <= Vmax and |wr|max + lam |vr|max KF + k2 <= Wmax:
- * the commands then stay within the limits (6).
+ * with KF = UWMR_DESIGN2_SQRT_KF = 1 (certified upper bound).
+ * This code clamps the computed term lam vr g sin(e3)/e3 to lam |vr| KF,
+ * which holds its exact value, so at every input with status 0 it keeps
+ * the bound within 4 ulps (where lam vr is below the smallest normal
+ * number, within 4 ulps plus that term, at most 2.3e-308 KF in double,
+ * 1.2e-38 KF in float); it was also checked against it (see below).
+ * Choose the gains so that |vr|max + k1 <= Vmax and |wr|max + lam |vr|max
+ * KF + k2 <= Wmax: the commands then stay within the limits (6).
  *
  * Return value: UWMR_OK (0) on success, otherwise one of the codes below.
  * On every nonzero return the outputs are set to 0 (a safe stop: v = w = 0,
@@ -66,7 +70,9 @@ extern "C" {
  *   UWMR_ERR_NULL       a pointer argument is NULL
  *   UWMR_ERR_NONFINITE  an input (or a gain) is NaN or +-inf
  *   UWMR_ERR_GAIN       a gain is negative (the law needs k1, k2, lam >= 0)
- *   UWMR_ERR_RANGE      a result would overflow the floating-point type; the
+ *   UWMR_ERR_RANGE      a result would overflow the floating-point type, or
+ *                       the term lam vr g sin(e3)/e3 would, even computed
+ *                       with lam/2 (gains near the largest number); the
  *                       tracker also returns it for a heading beyond
  *                       UWMR_HEADING_MAX or a turn count beyond
  *                       UWMR_TURNS_MAX (see the tracker below)
@@ -102,14 +108,16 @@ extern "C" {
  * log1p 4, pow 4, sin 4, sinh 4, tanh 10.  g = df/de2(e1, e2) as computed,
  * term = lam vr g sin(e3)/e3.
  *   double: |g^ - g| <= 3.3e-15 |g| and |term^ - term| <= 4.8e-15 |term|
- *     where the term is a normal number; |v^ - v| <= 2.4e-15 (|vr| + k1),
- *     |w^ - w| <= 5e-15 (|wr| + lam |vr| KF + k2) + 8.9e-308.
+ *     where the term is a normal number; |v^ - v| <= 2.4e-15 (|vr| + k1) +
+ *     8.9e-308, |w^ - w| <= 5e-15 (|wr| + lam |vr| KF + k2) + 8.9e-308
+ *     (the absolute terms: underflow).
  *       0 < m < 1e-100: g within 2.4e-15.
  *       1e-100 <= m <= 1e+04: g within 5e-16.
  *       m > 1e+04: g within 3.3e-15.
  *   float (_f32): |g^ - g| <= 7.2e-07 |g| and |term^ - term| <= 1.4e-06
  *     |term| where the term is a normal number; |v^ - v| <= 1.3e-06 (|vr|
- *     + k1), |w^ - w| <= 1.5e-06 (|wr| + lam |vr| KF + k2) + 4.7e-38.
+ *     + k1) + 4.7e-38, |w^ - w| <= 1.5e-06 (|wr| + lam |vr| KF + k2) +
+ *     4.7e-38 (the absolute terms: underflow).
  *       0 < m < 1e-12: g within 7.2e-07.
  *       1e-12 <= m <= 1e+04: g within 2.7e-07.
  *       m > 1e+04: g within 6.3e-07.

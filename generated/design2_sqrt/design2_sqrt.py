@@ -41,8 +41,9 @@ atanh 4, cos 4, cosh 4, erf 4, erfc 10, exp 4, expm1 4, gamma 10, log 4,
 log1p 4, pow 4, sin 4, sinh 4, tanh 10.  g = df/de2(e1, e2) as computed,
 term = lam vr g sin(e3)/e3.
   double: |g^ - g| <= 3.3e-15 |g| and |term^ - term| <= 4.8e-15 |term|
-    where the term is a normal number; |v^ - v| <= 2.4e-15 (|vr| + k1),
-    |w^ - w| <= 5e-15 (|wr| + lam |vr| KF + k2) + 8.9e-308.
+    where the term is a normal number; |v^ - v| <= 2.4e-15 (|vr| + k1) +
+    8.9e-308, |w^ - w| <= 5e-15 (|wr| + lam |vr| KF + k2) + 8.9e-308
+    (the absolute terms: underflow).
       0 < m < 1e-100: g within 2.4e-15.
       1e-100 <= m <= 1e+04: g within 5e-16.
       m > 1e+04: g within 3.3e-15.
@@ -192,6 +193,7 @@ def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
         if not _normal(q):
             return None
         q *= e2
+        q = _bounded(q, lam, vr)
         v = numpy.cos(e3, out=a)
         v *= vr
         t = numpy.tanh(e1, out=rho)
@@ -207,6 +209,15 @@ def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
     return v, w
 
 
+def _bounded(p, lam, vr):
+    """p = lam vr g sinc clamped to lam |vr| KF, which holds the exact term
+    (|g| <= kf <= KF, |sinc| <= 1): the clamp only moves a rounded value
+    towards it, and bound (10) then holds within the rounding of the sums.
+    Not where lam vr is not a normal number (its rounding is too coarse)."""
+    lv = numpy.abs(lam * vr)
+    return numpy.where(lv >= _DMIN, numpy.clip(p, -lv * KF, lv * KF), p)
+
+
 def _careful(e1, e2, e3, vr, wr, k1, k2, lam):
     shape = numpy.broadcast_shapes(*(numpy.shape(x) for x in (e1, e2, e3, vr, wr, k1, k2, lam)))
     x = [numpy.broadcast_to(numpy.asarray(a, dtype=float), shape).ravel() for a in (e1, e2, e3, vr, wr, k1, k2, lam)]
@@ -220,7 +231,7 @@ def _careful(e1, e2, e3, vr, wr, k1, k2, lam):
     e1, e2, e3, vr, wr, k1, k2, lam = (numpy.where(good, a, 0.0) for a in x)
     with numpy.errstate(all="ignore"):
         sinc = _sinc(e3)
-        p = _gterm_careful(e1, e2, lam, vr, sinc)
+        p = _bounded(_gterm_careful(e1, e2, lam, vr, sinc), lam, vr)
         c3, t1, t3 = numpy.cos(e3), numpy.tanh(e1), numpy.tanh(e3)
         v = vr * c3 + k1 * t1
         w = wr + p + k2 * t3
@@ -230,7 +241,8 @@ def _careful(e1, e2, e3, vr, wr, k1, k2, lam):
             v[again] = 2.0 * (0.5 * vr[again] * c3[again] + 0.5 * k1[again] * t1[again])
         again = ~numpy.isfinite(w)
         if again.any():
-            ph = _gterm_careful(e1[again], e2[again], 0.5 * lam[again], vr[again], sinc[again])
+            ph = _bounded(_gterm_careful(e1[again], e2[again], 0.5 * lam[again], vr[again], sinc[again]),
+                          0.5 * lam[again], vr[again])
             w[again] = 2.0 * (0.5 * wr[again] + ph + 0.5 * k2[again] * t3[again])
     status[good & ~(numpy.isfinite(v) & numpy.isfinite(w))] = ERR_RANGE
     bad = status != OK

@@ -39,7 +39,7 @@ static double prod_slow(const double *x, int n)
 }
 
 /* lam vr df/de2(e1, e2) sinc(e3) for finite inputs */
-static double gterm(double e1, double e2, double lam, double vr, double sinc)
+static double gterm_law(double e1, double e2, double lam, double vr, double sinc)
 {
     const double a1 = fabs(e1), a2 = fabs(e2);
     const double m = a1 > a2 ? a1 : a2;
@@ -111,6 +111,17 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc)
             }
         }
     }
+}
+
+/* The term clamped to lam |vr| KF, which holds the exact term (|g| <= kf <=
+ * KF, |sinc| <= 1): the clamp only moves a rounded value towards it, and
+ * bound (10) then holds within the rounding of the final sums.  Where lam vr
+ * is not a normal number its rounding is too coarse for a cap: no clamp. */
+static double gterm(double e1, double e2, double lam, double vr, double sinc)
+{
+    const double x = gterm_law(e1, e2, lam, vr, sinc);
+    const double lv = fabs(lam * vr);
+    return lv >= DBL_MIN ? fmin(fmax(x, -lv * UWMR_DESIGN3_LOGCOSH_KF), lv * UWMR_DESIGN3_LOGCOSH_KF) : x;
 }
 
 /* tanh(x) for the fast path: -t/(t + 2) with t = expm1(-2|x|), and the sign
@@ -195,8 +206,9 @@ int uwmr_design3_logcosh_control(double e1, double e2, double e3, double vr, dou
             {
                 const double q = lv * H;   /* 2e-200 <= |H| <= 5.03 here: q_lo <= |q| <= q_hi */
                 const double sinc = sin(e3) / e3;
+                const double cap = fabs(lv) * UWMR_DESIGN3_LOGCOSH_KF;
                 *v = vr * cos(e3) + k1 * tanh_fast(e1);
-                *w = wr + (q * sinc) * e2 + k2 * tanh_fast(e3);
+                *w = wr + fmin(fmax((q * sinc) * e2, -cap), cap) + k2 * tanh_fast(e3);
                 return UWMR_OK;
             }
         }
@@ -363,7 +375,7 @@ static float prod_slow_f32(const float *x, int n)
 }
 
 /* lam vr df/de2(e1, e2) sinc(e3) for finite inputs */
-static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
+static float gterm_law_f32(float e1, float e2, float lam, float vr, float sinc)
 {
     const float a1 = fabsf(e1), a2 = fabsf(e2);
     const float m = a1 > a2 ? a1 : a2;
@@ -435,6 +447,17 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
             }
         }
     }
+}
+
+/* The term clamped to lam |vr| KF, which holds the exact term (|g| <= kf <=
+ * KF, |sinc| <= 1): the clamp only moves a rounded value towards it, and
+ * bound (10) then holds within the rounding of the final sums.  Where lam vr
+ * is not a normal number its rounding is too coarse for a cap: no clamp. */
+static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
+{
+    const float x = gterm_law_f32(e1, e2, lam, vr, sinc);
+    const float lv = fabsf(lam * vr);
+    return lv >= FLT_MIN ? fminf(fmaxf(x, -lv * UWMR_DESIGN3_LOGCOSH_KF_F32), lv * UWMR_DESIGN3_LOGCOSH_KF_F32) : x;
 }
 
 /* tanh(x) for the fast path: -t/(t + 2) with t = expm1(-2|x|), and the sign
@@ -520,8 +543,9 @@ int uwmr_design3_logcosh_control_f32(float e1, float e2, float e3, float vr, flo
                 const float q = lv * H;
                 if ((fabsf(q) >= 1.2924697e-26F) & (fabsf(q) <= 7.7371252e+25F)) {
                     const float sinc = sinf(e3) / e3;
+                    const float cap = fabsf(lv) * UWMR_DESIGN3_LOGCOSH_KF_F32;
                     *v = vr * cosf(e3) + k1 * tanh_fast_f32(e1);
-                    *w = wr + (q * sinc) * e2 + k2 * tanh_fast_f32(e3);
+                    *w = wr + fminf(fmaxf((q * sinc) * e2, -cap), cap) + k2 * tanh_fast_f32(e3);
                     return UWMR_OK;
                 }
             }

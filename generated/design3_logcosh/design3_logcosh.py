@@ -42,8 +42,9 @@ log1p 4, pow 4, sin 4, sinh 4, tanh 10.  g = df/de2(e1, e2) as computed,
 term = lam vr g sin(e3)/e3.
   double outside the ranges marked NOT CERTIFIED: |g^ - g| <= 4.2e-14
     |g| and |term^ - term| <= 4.3e-14 |term| where the term is a normal
-    number; |v^ - v| <= 2.4e-15 (|vr| + k1), |w^ - w| <= 4.4e-14 (|wr| +
-    lam |vr| KF + k2) + 8.9e-308.
+    number; |v^ - v| <= 2.4e-15 (|vr| + k1) + 8.9e-308, |w^ - w| <=
+    4.4e-14 (|wr| + lam |vr| KF + k2) + 8.9e-308 (the absolute terms:
+    underflow).
       0 < m < 1e-100: g within 4.6e-15.
       1e-100 <= m <= 1e+04: g within 4.2e-14.
       m > 1e+04 (except as listed): g within 5.8e-15.
@@ -200,6 +201,7 @@ def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
         if not _normal(q):
             return None
         q *= e2
+        q = _bounded(q, lam, vr)
         v = numpy.cos(e3, out=a)
         v *= vr
         t = numpy.tanh(e1, out=rho)
@@ -215,6 +217,15 @@ def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
     return v, w
 
 
+def _bounded(p, lam, vr):
+    """p = lam vr g sinc clamped to lam |vr| KF, which holds the exact term
+    (|g| <= kf <= KF, |sinc| <= 1): the clamp only moves a rounded value
+    towards it, and bound (10) then holds within the rounding of the sums.
+    Not where lam vr is not a normal number (its rounding is too coarse)."""
+    lv = numpy.abs(lam * vr)
+    return numpy.where(lv >= _DMIN, numpy.clip(p, -lv * KF, lv * KF), p)
+
+
 def _careful(e1, e2, e3, vr, wr, k1, k2, lam):
     shape = numpy.broadcast_shapes(*(numpy.shape(x) for x in (e1, e2, e3, vr, wr, k1, k2, lam)))
     x = [numpy.broadcast_to(numpy.asarray(a, dtype=float), shape).ravel() for a in (e1, e2, e3, vr, wr, k1, k2, lam)]
@@ -228,7 +239,7 @@ def _careful(e1, e2, e3, vr, wr, k1, k2, lam):
     e1, e2, e3, vr, wr, k1, k2, lam = (numpy.where(good, a, 0.0) for a in x)
     with numpy.errstate(all="ignore"):
         sinc = _sinc(e3)
-        p = _gterm_careful(e1, e2, lam, vr, sinc)
+        p = _bounded(_gterm_careful(e1, e2, lam, vr, sinc), lam, vr)
         c3, t1, t3 = numpy.cos(e3), numpy.tanh(e1), numpy.tanh(e3)
         v = vr * c3 + k1 * t1
         w = wr + p + k2 * t3
@@ -238,7 +249,8 @@ def _careful(e1, e2, e3, vr, wr, k1, k2, lam):
             v[again] = 2.0 * (0.5 * vr[again] * c3[again] + 0.5 * k1[again] * t1[again])
         again = ~numpy.isfinite(w)
         if again.any():
-            ph = _gterm_careful(e1[again], e2[again], 0.5 * lam[again], vr[again], sinc[again])
+            ph = _bounded(_gterm_careful(e1[again], e2[again], 0.5 * lam[again], vr[again], sinc[again]),
+                          0.5 * lam[again], vr[again])
             w[again] = 2.0 * (0.5 * wr[again] + ph + 0.5 * k2[again] * t3[again])
     status[good & ~(numpy.isfinite(v) & numpy.isfinite(w))] = ERR_RANGE
     bad = status != OK

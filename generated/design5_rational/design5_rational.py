@@ -178,6 +178,7 @@ def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
         if not _normal(q):
             return None
         q *= e2
+        q = _bounded(q, lam, vr)
         v = numpy.cos(e3, out=a)
         v *= vr
         t = numpy.tanh(e1, out=rho)
@@ -193,6 +194,11 @@ def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
     return v, w
 
 
+def _bounded(p, lam, vr):
+    """p itself: KF is not a certified bound of a verified design (no clamp)."""
+    return p
+
+
 def _careful(e1, e2, e3, vr, wr, k1, k2, lam):
     shape = numpy.broadcast_shapes(*(numpy.shape(x) for x in (e1, e2, e3, vr, wr, k1, k2, lam)))
     x = [numpy.broadcast_to(numpy.asarray(a, dtype=float), shape).ravel() for a in (e1, e2, e3, vr, wr, k1, k2, lam)]
@@ -206,7 +212,7 @@ def _careful(e1, e2, e3, vr, wr, k1, k2, lam):
     e1, e2, e3, vr, wr, k1, k2, lam = (numpy.where(good, a, 0.0) for a in x)
     with numpy.errstate(all="ignore"):
         sinc = _sinc(e3)
-        p = _gterm_careful(e1, e2, lam, vr, sinc)
+        p = _bounded(_gterm_careful(e1, e2, lam, vr, sinc), lam, vr)
         c3, t1, t3 = numpy.cos(e3), numpy.tanh(e1), numpy.tanh(e3)
         v = vr * c3 + k1 * t1
         w = wr + p + k2 * t3
@@ -216,7 +222,8 @@ def _careful(e1, e2, e3, vr, wr, k1, k2, lam):
             v[again] = 2.0 * (0.5 * vr[again] * c3[again] + 0.5 * k1[again] * t1[again])
         again = ~numpy.isfinite(w)
         if again.any():
-            ph = _gterm_careful(e1[again], e2[again], 0.5 * lam[again], vr[again], sinc[again])
+            ph = _bounded(_gterm_careful(e1[again], e2[again], 0.5 * lam[again], vr[again], sinc[again]),
+                          0.5 * lam[again], vr[again])
             w[again] = 2.0 * (0.5 * wr[again] + ph + 0.5 * k2[again] * t3[again])
     status[good & ~(numpy.isfinite(v) & numpy.isfinite(w))] = ERR_RANGE
     bad = status != OK

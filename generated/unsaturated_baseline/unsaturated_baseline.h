@@ -70,7 +70,9 @@ extern "C" {
  *   UWMR_ERR_NULL       a pointer argument is NULL
  *   UWMR_ERR_NONFINITE  an input (or a gain) is NaN or +-inf
  *   UWMR_ERR_GAIN       a gain is negative (the law needs k1, k2, lam >= 0)
- *   UWMR_ERR_RANGE      a result would overflow the floating-point type; the
+ *   UWMR_ERR_RANGE      a result would overflow the floating-point type, or
+ *                       the term lam vr g sin(e3)/e3 would, even computed
+ *                       with lam/2 (gains near the largest number); the
  *                       tracker also returns it for a heading beyond
  *                       UWMR_HEADING_MAX or a turn count beyond
  *                       UWMR_TURNS_MAX (see the tracker below)

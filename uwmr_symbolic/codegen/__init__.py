@@ -82,7 +82,8 @@ def _kf_upper_double(frac: Fraction | None) -> float:
 
 
 def _kf_upper_float(x: float) -> np.float32:
-    y = np.float32(x)
+    with np.errstate(over="ignore"):            # beyond the float range: inf, refused by the validation
+        y = np.float32(x)
     if math.isfinite(x) and float(y) < x:
         y = np.nextafter(y, np.float32(np.inf))
     return y
@@ -139,7 +140,7 @@ def _context(design, model: LawModel) -> dict:
         example = {k: double_literal(gains[scenario][k]) for k in ("k1", "k2", "lam", "Vmax", "Wmax")}
         example["source"] = f"scenario {scenario!r} of {source}"
     return dict(name=model.name, source=source, f_text=_ascii_safe(f_text), params=params,
-                kf_text=model.kf_text, verified=model.verified,
+                kf_text=model.kf_text, verified=model.verified, clamp=model.verified and model.kf_upper is not None,
                 kf_status="certified upper bound" if model.kf_upper is not None else "no finite bound certified",
                 kf_double="INFINITY" if math.isinf(kf) else repr(kf),
                 kf_float="INFINITY" if math.isinf(kf) else _float_text(kf32),

@@ -117,7 +117,8 @@ def _representable(c: sp.Expr, precision: str) -> bool:
     q = sp.Rational(c)
     if precision == "float":
         import numpy as np
-        v = np.float32(float(q))
+        with np.errstate(over="ignore"):        # beyond the float range: inf, refused below
+            v = np.float32(float(q))
         return bool(np.isfinite(v)) and sp.Rational(float(v)) == q
     return math.isfinite(float(q)) and sp.Rational(float(q)) == q
 
@@ -464,8 +465,8 @@ class Accuracy:
         where = " outside the ranges marked NOT CERTIFIED" if self.uncertified else ""
         out = [f"{name}{where}: |g^ - g| <= {self.g:.2g} |g| and |term^ - term| <= "
                f"{max(r.term for r in self.certified):.2g} |term| where the term is a normal number; "
-               f"|v^ - v| <= {self.v:.2g} (|vr| + k1), |w^ - w| <= {self.w:.2g} "
-               f"(|wr| + lam |vr| KF + k2) + {self.absolute:.2g}."]
+               f"|v^ - v| <= {self.v:.2g} (|vr| + k1) + {self.absolute:.2g}, |w^ - w| <= {self.w:.2g} "
+               f"(|wr| + lam |vr| KF + k2) + {self.absolute:.2g} (the absolute terms: underflow)."]
         for r in self.certified:
             out.append(f"  {r.where}: g within {r.g:.2g}.")
         for r in self.uncertified:

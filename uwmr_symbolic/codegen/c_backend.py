@@ -149,6 +149,15 @@ def _product(cfg, factors, name):
     return lines
 
 
+def kf_cap(model: LawModel, cfg: CConfig) -> str | None:
+    """The header's macro of KF when it is a certified upper bound of kf for a
+    verified design: the generated code clamps lam vr g sinc to lam |vr| KF
+    (bound (10)); None otherwise (no clamp)."""
+    if not model.verified or model.kf_upper is None:
+        return None
+    return f"UWMR_{c_identifier(model.stem).upper()}_KF" + ("_F32" if cfg.precision == "float" else "")
+
+
 def gterm_lines(model: LawModel, cfg: CConfig, names) -> list[str]:
     """Body of the static function returning lam*vr*g*sinc."""
     pr = cfg.printer(names)
@@ -238,10 +247,11 @@ def fast_lines(model: LawModel, cfg: CConfig, names) -> list[str] | None:
     lv_test = f"(fabs{fn}(lv) >= {cfg.limit}_MIN)"
     bounds = mid_h_bounds(model, cfg.tiny ** 2 / 2, 2 * cfg.far ** 2)
     a_priori, big, gains_sum = False, f.big, "k1 + k2"
-    if bounds is not None:
-        h_lo, h_hi = bounds[0] / 2, bounds[1] * 2
-        lv_lo = 2.0 ** math.ceil(math.log2(max(tiny_normal, f.q_lo / h_lo)))
-        lv_hi = 2.0 ** math.floor(math.log2(f.q_hi / h_hi))
+    h_lo, h_hi = (bounds[0] / 2, bounds[1] * 2) if bounds is not None else (0.0, 0.0)
+    ratios = (max(tiny_normal, f.q_lo / h_lo), f.q_hi / h_hi) if h_lo > 0 else (0.0, 0.0)
+    if all(0 < r < 2.0 ** 1000 for r in ratios):    # (H's range far from 1: no a priori test of lam vr)
+        lv_lo = 2.0 ** math.ceil(math.log2(ratios[0]))
+        lv_hi = 2.0 ** math.floor(math.log2(ratios[1]))
         if lv_lo <= f.lv_lo_max:
             a_priori = True
             lv_test = f"(fabs{fn}(lv) >= {lit(lv_lo)})"
@@ -267,9 +277,13 @@ def fast_lines(model: LawModel, cfg: CConfig, names) -> list[str] | None:
         return [tanh_call.sub(f"tanh_fast{cfg.suffix}(", ln) for ln in [*lines, f"H = {h};"]]
 
     body += _chain(model.mid, "rho", cfg, h_body)
+    cap = kf_cap(model, cfg)
+    term = "(q * sinc) * e2" if cap is None else \
+        f"fmin{fn}(fmax{fn}((q * sinc) * e2, -cap), cap)"    # bound (10): see gterm in the template
     law = [f"const {t} sinc = sin{fn}(e3) / e3;",
+           *([] if cap is None else [f"const {t} cap = fabs{fn}(lv) * {cap};"]),
            f"*v = vr * cos{fn}(e3) + k1 * tanh_fast{cfg.suffix}(e1);",
-           f"*w = wr + (q * sinc) * e2 + k2 * tanh_fast{cfg.suffix}(e3);",
+           f"*w = wr + {term} + k2 * tanh_fast{cfg.suffix}(e3);",
            "return UWMR_OK;"]
     if a_priori:
         h_text = f"{h_lo:.3g} <= |H| <= {h_hi:.3g}"
@@ -296,6 +310,7 @@ def render(env, model: LawModel, context: dict) -> dict[str, str]:
         cfg = dataclasses.replace(base, tiny=model.thresholds[base.precision][0],
                                   far=model.thresholds[base.precision][1])
         variants.append(dict(cfg=cfg, body=gterm_lines(model, cfg, names), fast=fast_lines(model, cfg, names),
+                             cap=kf_cap(model, cfg),
                              rho_cmp=model.radial and len(model.mid) > 1,
                              tiny=cfg.lit(cfg.tiny), far=cfg.lit(cfg.far), cut=cfg.lit(cfg.sinc_cut),
                              zero=cfg.lit(0), one=cfg.lit(1), two=cfg.lit(2), half=cfg.lit(sp.Rational(1, 2)), huge="HUGE_VALF" if cfg.precision == "float" else "HUGE_VAL", c6=cfg.lit(sp.Rational(1, 6)),

@@ -43,9 +43,10 @@ def double_literal(value) -> str:
 
 
 def float_literal(value) -> str:
-    x = np.float32(_value(value))
+    with np.errstate(over="ignore"):            # beyond the float range: inf, refused below
+        x = np.float32(_value(value))
     if not np.isfinite(x):
-        raise Unsupported(f"the constant {sp.sstr(value)} is beyond the float range")
+        raise Unsupported(f"the constant {_value(value):.6g} is beyond the float range (about 3.4e38)")
     text = str(x)      # shortest round-trip form
     if "e" not in text and "." not in text:
         text += ".0"
