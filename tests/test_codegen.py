@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import importlib.util
 import math
+from fractions import Fraction
 import subprocess
 import sys
 from pathlib import Path
@@ -144,3 +145,18 @@ def test_casadi_function_matches_python(stem):
     scale = np.abs(x[:, 3]) + x[:, 5] + np.abs(x[:, 4]) + x[:, 7] * np.abs(x[:, 3]) * 2 + x[:, 6]
     assert np.max(np.abs(cv - v) / scale) < 1e-13
     assert np.max(np.abs(cw - w) / scale) < 1e-13
+
+
+def test_kf_resting_on_the_search_is_no_certified_bound():
+    """By default a kf the kernel did not re-check does not count (as for the
+    gain checks): the generated code then states no KF (INFINITY), clamps
+    nothing and promises no bound (10); with --trust-search it counts."""
+    from types import SimpleNamespace
+    from uwmr_symbolic.codegen.law import _kf_fraction
+    from uwmr_symbolic.kf import KfCertificate
+    kf = KfCertificate(lower=Fraction(7, 4), upper=Fraction(9, 5), exact=None, attained=None, reason="enclosed")
+    search_only = SimpleNamespace(kf=kf, kernel={"checked": ["P1"], "search": ["kf"]}, kernel_only=True)
+    assert _kf_fraction(search_only)[0] is None and "did not re-check" in _kf_fraction(search_only)[1]
+    assert _kf_fraction(SimpleNamespace(kf=kf, kernel=search_only.kernel, kernel_only=False))[0] == Fraction(9, 5)
+    checked = SimpleNamespace(kf=kf, kernel={"checked": ["P1", "kf"], "search": []}, kernel_only=True)
+    assert _kf_fraction(checked)[0] == Fraction(9, 5)

@@ -54,6 +54,7 @@ class Report:
     timed_out: bool = False
     certificate: dict | None = None   # the design certificate of the search's verdicts (`design_certificate`)
     kernel: dict | None = None        # what the kernel re-checked of it (`kernel_summary`)
+    kernel_only: bool = False         # made as by default: what rests on the search alone does not count
 
     @property
     def exit_status(self) -> int:
@@ -250,4 +251,4 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Tr
     gains = _gains(design, checked_kf)
     timed_out = timed_out or timeouts.expired != expired_before
     return Report(path, design, props, kf, gains, proof, seconds=time.monotonic() - start,
-                  timed_out=timed_out, certificate=certificate, kernel=kernel)
+                  timed_out=timed_out, certificate=certificate, kernel=kernel, kernel_only=kernel_only)

@@ -187,7 +187,7 @@ def validate_build(design_path, model, files, report=None):
     from ..design import load_design
     from .validate import ValidationFailed, validate
     design = report.design if report is not None and report.design is not None else load_design(design_path)
-    kf = _kf_upper_double(model.kf_upper) if model.verified else None
+    kf = _kf_upper_double(model.kf_upper) if model.verified and model.kf_upper is not None else None
     try:
         return validate(design, model, files, kf)
     except ValidationFailed as exc:
@@ -255,7 +255,7 @@ def casadi_function(design_path, report=None, force=False):
     model, report = _model(design_path, force, report)
     design = report.design
     fn = _cf(model)
-    kf = _kf_upper_double(model.kf_upper) if model.verified else None
+    kf = _kf_upper_double(model.kf_upper) if model.verified and model.kf_upper is not None else None
     try:
         validate_casadi(design, model, fn, kf)
     except ValidationFailed as exc:

@@ -273,6 +273,8 @@ def _kf_fraction(report) -> tuple[Fraction | None, str]:
     kf = getattr(report, "kf", None) if report is not None else None
     if kf is None or kf.upper is None:
         return None, kf.show() if kf is not None else "not certified"
+    if getattr(report, "kernel_only", False) and "kf" in (report.kernel or {}).get("search", []):
+        return None, f"{kf.show()}, the search's: the kernel did not re-check it"     # as the gain checks
     upper = kf.upper
     if isinstance(upper, Fraction):
         return upper, kf.show()
