@@ -69,3 +69,16 @@ def test_design_imports_a_helper_module_beside_it(tmp_path):
     (tmp_path / "uwmr_test_helper_shapes.py").write_text(
         "import sympy as sp\ndef jiang(a, b):\n    return sp.sqrt(1 + a**2 + b**2) - 1\n")
     assert load_design(design).f == sp.sqrt(1 + e1**2 + e2**2) - 1
+
+
+def test_a_constant_written_as_a_python_number_is_read(tmp_path):
+    """f = 0 (a plain int) is the design f = 0: f(0, 0) = 0 (P2), f > 0 fails
+    everywhere (P3), df/de1 = 0 so P5 fails; 0.5 keeps its binary value."""
+    path = tmp_path / "zero.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nf = 0\n")
+    assert load_design(path).f == 0
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nf = 0.5\n")
+    assert load_design(path).f == sp.Rational(1, 2)
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nf = True\n")
+    with pytest.raises(DesignError, match="is a bool"):
+        load_design(path)

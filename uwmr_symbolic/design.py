@@ -281,6 +281,8 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
     if "f" not in ns:
         raise DesignError("defines no `f`; add e.g. `f = sympy.log(1 + e1**2 + e2**2) / 2`")
     f_source = ns["f"]
+    if isinstance(f_source, (int, float)) and not isinstance(f_source, bool):
+        f_source = sp.sympify(f_source)          # a constant written plainly (a float keeps its 53 bits)
     if isinstance(f_source, bool) or not isinstance(f_source, sp.Expr):
         raise DesignError(f"`f` is a {type(f_source).__name__}, not a SymPy expression in e1, e2")
     f = _canonical_symbols(f_source)
