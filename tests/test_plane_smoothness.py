@@ -1,4 +1,4 @@
-"""P7 and P8 of an f that is analytic on the whole plane (issue 9: "unknown
+"""P5-P8 of an f that is analytic on the whole plane (issue 9: "unknown
 where a sound answer is easy"), radial or not: the kernel's
 `continuous_on_plane` shows f's formula (and, for P8, that of df/de2) defined
 at every point, and the link adds that f holds no Abs, Piecewise, Max, Min
@@ -14,6 +14,13 @@ Truths by hand (rho = e1^2 + e2^2):
 * log(log(e + rho)): log(e + rho) >= 1 > 0, analytic: P7 holds; df/de2 = 2 e2/((e + rho)
   log(e + rho)) -> 0: P8 holds (the radial route leaves both to the search).
 * |e1|^3 + e2^2 is C^2 too, but |.| is not analytic: the link must not take the plane route.
+P5, P6 where df/de1 = phi(e1) does not depend on e2 (f = g(e1) + h(e2)):
+* e1^2 + log(1 + e2^2): phi = 2 e1, phi tanh(e1) > 0 (P5); phi/e1 = 2: k = 2, h = 1 (P6).
+* log(1 + e1^2) + log(1 + e2^2): phi = 2 e1/(1 + e1^2), same sign as e1 (P5); phi/e1 =
+  2/(1 + e1^2) in (0, 2]: k = 2 (P6).
+* e1 atan(e1) - log(1 + e1^2)/2 + e2^2: phi = atan(e1) (P5); atan(e1)/e1 in (0, 1] (P6).
+* e1^4 + e2^2: phi = 4 e1^3 (P5 holds); phi/e1 = 4 e1^2 is unbounded, so P6 fails.
+* e1^4 - e1^2 + e2^2: phi = 4 e1^3 - 2 e1 < 0 on (0, 1/sqrt 2): P5 and P6 fail.
 """
 import pytest
 import sympy as sp
@@ -22,6 +29,7 @@ from uwmr_symbolic import design_certificate as DC
 from uwmr_symbolic.kernel import KernelError, check_certificate, rules as K, to_certificate
 from uwmr_symbolic.kernel.certificate import CertificateError
 from uwmr_symbolic.kernel.core import derivative
+from uwmr_symbolic.profile import S
 
 from test_soundness_regressions import verify
 
@@ -99,3 +107,46 @@ def test_p7_p8_verdicts_by_the_kernel(tmp_path, body, p7, p8):
         checks = {c.name: c for c in DC.check(DC.build(report))}
         assert checks["P8"].kernel_checked and checks["P8"].theorems == 2
         assert checks["P7"].kernel_checked
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("body, p5, p6", [
+    ("f = e1**2 + log(1 + e2**2)\n", "proved", "proved"),
+    ("f = log(1 + e1**2) + log(1 + e2**2)\n", "proved", "proved"),
+    ("f = e1*atan(e1) - log(1 + e1**2)/2 + e2**2\n", "proved", "proved"),
+    ("f = e1**4 + e2**2\n", "proved", "refuted"),
+    ("f = e1**4 - e1**2 + e2**2\n", "refuted", "refuted"),
+])
+def test_p5_p6_where_df_de1_depends_on_e1_only(tmp_path, body, p5, p6):
+    report, v = verify(tmp_path, body)
+    assert (v["P5"], v["P6"]) == (p5, p6), report.properties
+    checks = {c.name: c for c in DC.check(DC.build(report))}
+    for name, status in (("P5", p5), ("P6", p6)):
+        assert checks[name].kernel_checked if status == "proved" else checks[name].refutation_checked, name
+
+
+def _sides(f):
+    phi = derivative(f, x)
+    return phi.xreplace({x: S}), -phi.xreplace({x: -S})
+
+
+def test_p5_p6_links_need_both_sides_of_this_f_and_one_k():
+    f = sp.log(1 + x ** 2) + sp.log(1 + y ** 2)
+    a, b = _sides(f)
+    signs = [K.sign_by_sturm(expr=e, var=S, lo=0, hi=sp.oo, lo_open=True, hi_open=True, want=1) for e in (a, b)]
+    assert DC._link("P5", f, _plane(f) + signs) == []
+    with pytest.raises(CertificateError):               # one side only
+        DC._link("P5", f, _plane(f) + signs[:1])
+    with pytest.raises(CertificateError):               # the sides of another f
+        g = sp.log(1 + 2 * x ** 2) + sp.log(1 + y ** 2)
+        DC._link("P5", g, _plane(g) + signs)
+    def upper(e, k):
+        gap = K.sign_by_sturm(expr=k - e / S, var=S, lo=0, hi=sp.oo, lo_open=True, hi_open=True, want=1,
+                              strict=False)
+        return K.sup_upper_by_sign(gap, expr=e / S, bound=k)
+    assert DC._link("P6", f, _plane(f) + signs + [upper(a, 2), upper(b, 2)]) == []
+    with pytest.raises(CertificateError):               # two different k
+        DC._link("P6", f, _plane(f) + signs + [upper(a, 2), upper(b, 3)])
+    cross = f + x * y / 10                              # df/de1 depends on e2: no claim about phi(e1) fits
+    with pytest.raises(CertificateError):
+        DC._link("P5", cross, _plane(cross) + signs)

@@ -23,6 +23,7 @@ from dataclasses import replace
 from fractions import Fraction
 from functools import cached_property
 
+import mpmath
 import sympy as sp
 
 from . import e1 as E1, e2 as E2
@@ -700,8 +701,11 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
                                 f"[{val.lower_float():.6g}, {val.upper_float():.6g}]", {"e1": str(x), "e2": str(y)})
                     if _stands(name, v, f):
                         return v
+    found = _p5_along_e1(f) if name == "P5" else _p6_along_e1(f) if name == "P6" else None
+    if found is not None:
+        return found
     return unknown("f is not radial; this verifier proves properties of radial f only "
-                   "(P4 " + a.p4.status + "), and P7 and P8 of an f analytic on the plane")
+                   "(P4 " + a.p4.status + "), and P5-P8 of some f analytic on the plane")
 
 
 def _stands(name: str, v: Verdict, f) -> bool:
@@ -783,6 +787,53 @@ def _smooth_on_plane(f, name: str) -> Verdict | None:
                   "analytic on their domains), so C^2" if name == "P7" else
                   "df/de2 is continuous on the plane (f analytic there) and df/de2(e1, 0) = 0 exactly, so "
                   "df/de2 -> 0 as e2 -> 0", kernel=theorems, unchecked=[])
+
+
+def _p5_along_e1(f) -> Verdict | None:
+    """P5 of an f analytic on the plane (`continuous_on_plane`) whose df/de1
+    = phi(e1) does not depend on e2 (f = g(e1) + h(e2), for instance):
+    phi(s) > 0 and -phi(-s) > 0 for s > 0, kernel sign theorems."""
+    phi = derivative(f, E1)
+    if f.has(*SMOOTH_ONLY, sp.Abs) or phi.has(E2) or not phi.has(E1):
+        return None
+    plane = plane_theorems(f, E1, E2, [])
+    sides = [sign_theorems(e, S, 0, sp.oo)[0] for e in (phi.xreplace({E1: S}), -phi.xreplace({E1: -S}))]
+    if not plane or not all(t is not None and len(t) == 1 for t in sides):
+        return None
+    return proved("df/de1 = phi(e1) does not depend on e2 (f analytic on the plane), and phi(s) > 0, -phi(-s) > 0 "
+                  "for s > 0 (the kernel's sign rules): df/de1 tanh(e1) > 0 for e1 != 0",
+                  kernel=plane + sides[0] + sides[1], unchecked=[])
+
+
+def _p6_along_e1(f) -> Verdict | None:
+    """P6 of an f as in `_p5_along_e1`: phi(s), -phi(-s) >= 0 and phi(s)/s,
+    -phi(-s)/s <= k on (0, oo), kernel theorems, for a k proposed about 1/8
+    above the largest of those ratios at sample points (the kernel decides);
+    then h = phi(e1)/(k e1) lies in [0, 1], and phi(0) = 0 (|phi(s)| <= k s)."""
+    phi = derivative(f, E1)
+    if f.has(*SMOOTH_ONLY, sp.Abs) or phi.has(E2) or not phi.has(E1):
+        return None
+    sides = [phi.xreplace({E1: S}), -phi.xreplace({E1: -S})]
+    try:
+        ratio = sp.lambdify(S, sp.Max(*[e / S for e in sides]), "mpmath")
+        top = max((v for j in range(-60, 61) for v in [ratio(mpmath.mpf(2) ** (j / 2))] if mpmath.isfinite(v)),
+                  default=None)
+    except (TypeError, ValueError, ZeroDivisionError, NameError):
+        return None
+    if top is None or not top > 0:
+        return None
+    k = decimal_beyond(Fraction(str(mpmath.nstr(top, 12))) * Fraction(9, 8), 1, 2)
+    plane = plane_theorems(f, E1, E2, [])
+    signs = [sign_theorems(e, S, 0, sp.oo, strict=False)[0] for e in sides]
+    if not plane or not all(t is not None and len(t) == 1 for t in signs):
+        return None
+    uppers = [sup_upper_theorem(e / S, k, S) for e in sides]
+    if None in uppers:
+        return None
+    h = phi / (k * E1)
+    return proved(f"df/de1 = phi(e1) does not depend on e2 (f analytic on the plane), phi(e1) e1 >= 0 and "
+                  f"phi(e1)/e1 <= k = {k} (the kernel's sign rules): h = phi(e1)/(k e1) in [0, 1]",
+                  kernel=plane + signs[0] + signs[1] + uppers, unchecked=[], k=str(k), k_float=float_of(k), h=str(h))
 
 
 def _or_on_plane(verify, name: str):
