@@ -33,6 +33,7 @@ outward rounding), "sympy-core" (automatic evaluation, substitution, srepr),
 """
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import functools
 import json
@@ -133,8 +134,11 @@ _srepr = _PRINTER.doprint
 
 
 def _encode(v):
-    if isinstance(v, sp.Basic):
-        return {"$": _srepr(v)}
+    if isinstance(v, sp.Basic):     # the text of what SymPy reads back (2 (a + b) built undistributed reads 2 a + 2 b)
+        text = _srepr(v)
+        with contextlib.suppress(ParseError):   # (a text the parser refuses is refused when applied)
+            text = _srepr(parse(text))
+        return {"$": text}
     if isinstance(v, (list, tuple)):
         return [_encode(u) for u in v]
     if v is None or isinstance(v, (bool, int, str)):
@@ -153,7 +157,9 @@ def _encoded(v) -> bool:
 
 def decode(v):
     if isinstance(v, dict):
-        return parse(v["$"])
+        e = parse(v["$"])
+        _PRINTER.memo.setdefault(e, v["$"])     # printed as read (as `_encode` wrote it: SymPy's own srepr)
+        return e
     if isinstance(v, list):
         return [decode(u) for u in v]
     return v
@@ -1200,13 +1206,11 @@ def sign_on_tail(tail, ident, *, expr, var, R):
     s >= R (`_defined`, also for E(1/t) at every t in (0, 1/R)).  For s
     >= R, t = 1/s lies in (0, 1/R], both sides are defined there, so E(s) =
     E_t(t) has the sign: claim on [R, oo)."""
-    _is_sign(tail)
-    _need(ident.claim.kind == "identity", "second premise must be an identity")
+    (tc, t), ic = _is_sign(tail), ident.claim
+    _need(ic.kind == "identity", "second premise must be an identity")
     R = _number(R)
     _need(_lt(0, R) and R != OO, "R > 0")
     e = _expr(expr, var)
-    tc, ic = tail.claim, ident.claim
-    t = tc.x()
     _need(t != var and isinstance(t, sp.Symbol), "the tail variable must differ from the variable")
     _need((tc.lo, tc.lo_open, tc.hi, tc.hi_open) == (_s(0), True, _s(1 / R), False),
           "the tail theorem must be about (0, 1/R]")
@@ -1216,8 +1220,7 @@ def sign_on_tail(tail, ident, *, expr, var, R):
     _need((ia == 0 or _lt(ia, 0)) and (_lt(1 / R, ib) or (ib == 1 / R and not ic.hi_open)),
           "the identity must hold on (0, 1/R]")
     extra = _defined(e, var, R, lo_open=False)
-    at_t = defined_for_positive(e.subs(var, 1 / t), t, 0, 1 / R)
-    _need(at_t is not None, "E(1/t) not shown defined for t in (0, 1/R)")
+    at_t = _defined(e.subs(var, 1 / t), t, 0, 1 / R)       # E(1/t) defined for t in (0, 1/R)
     _interval(var, R, OO, False, True)
     return _sign_claim(e, var, R, OO, False, True, tc.want, tc.strict), {*extra, *at_t}
 sign_on_tail = rule("sympy-core")(sign_on_tail)
@@ -1251,11 +1254,10 @@ def sign_by_monotone(deriv, *, expr, var, R):
     point R) and want*E' >= 0 on [R, oo) (premise about sympy.diff(E)), E
     defined for every x > R (`defined_for_positive`) => for x >= R,
     want*E(x) = want*E(R) + want*E'(xi)(x - R) > 0."""
-    _is_sign(deriv)
+    d, _ = _is_sign(deriv)
     R = _number(R)
     _need(R != OO and _lt(0, R), "R > 0")
     e = _expr(expr, var)
-    d = deriv.claim
     _need((d.expr, d.var, d.lo, d.lo_open, d.hi) == (_s(derivative(e, var)), _s(var), _s(R), False, "oo"),
           "premise must be a sign of E' on [R, oo)")
     extra = _defined(e, var, R)
@@ -1405,9 +1407,8 @@ def _generalized_pass(d, variables, fresh, roots, asked, orders):
 def _cancel(u):
     """sympy.cancel(u), which is u itself when u is a sum of monomials with
     rational coefficients (and then costs milliseconds to say so)."""
-    plain = all(f.is_Rational or f.is_Symbol or f.is_Pow and f.base.is_Symbol and f.exp.is_Integer and f.exp > 0
-                for t in sp.Add.make_args(u) for f in sp.Mul.make_args(t))
-    return u if plain else sp.cancel(u)
+    return u if all(f.is_Rational or f.is_Symbol or f.is_Pow and f.base.is_Symbol and f.exp.is_Integer and f.exp > 0
+                    for t in sp.Add.make_args(u) for f in sp.Mul.make_args(t)) else sp.cancel(u)
 
 
 def _zero_when_generalized(d, *variables) -> bool:
