@@ -266,35 +266,38 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
 
 
 def _link_plane(name, f, claims) -> list[str]:
-    """P5, P7 and P8 of any f (radial or not) from `continuous_on_plane`.  An
-    f without Abs, Piecewise, Max, Min or sign whose formula is defined at
+    """P5-P8 of any f (radial or not) from `continuous_on_plane`.  An f
+    without Abs, Piecewise, Max, Min or sign whose formula is defined at
     every point of the plane is analytic there: each construct the kernel
     accepts but Abs is analytic on an open set holding its argument's values.
     So every partial derivative of f exists and is continuous (P7), and
     equals its SymPy formula wherever that is defined.  P8: also df/de2's
     formula g defined on the plane, and g(e1, 0) evaluates to exactly 0:
-    df/de2 = g -> g(e1, 0) = 0 as e2 -> 0, at every e1.  P5: df/de1's
-    formula is phi(e1), free of e2 (f = g(e1) + h(e2), for instance), and
-    phi(s) > 0, -phi(-s) > 0 on (0, oo): phi(e1) tanh(e1) > 0 for e1 != 0
-    (tanh(e1) has the sign of e1), and = 0 at e1 = 0."""
+    df/de2 = g -> g(e1, 0) = 0 as e2 -> 0, at every e1.  P5 and P6: df/de1's
+    formula is phi(e1), free of e2 (f = g(e1) + h(e2), for instance).  P5:
+    phi(s) > 0 and -phi(-s) > 0 on (0, oo), so phi(e1) tanh(e1) > 0 for
+    e1 != 0 (tanh(e1) has the sign of e1), and = 0 at e1 = 0.  P6: phi(s),
+    -phi(-s) >= 0 and phi(s)/s, -phi(-s)/s <= k on (0, oo), one k > 0: h =
+    phi(e1)/(k e1) lies in [0, 1] for e1 != 0, and phi(0) = 0 (|phi(s)| <= k s,
+    phi continuous), so h = 0 serves at e1 = 0."""
     g, phi = derivative(f, E2), derivative(f, E1)
-    plane = ("continuous", _srepr(sp.Tuple(E1, E2)), "-oo", "oo", True, True, 0, False)
-    want = [("continuous", _srepr(f), *plane[1:])]
+    plane = (_srepr(sp.Tuple(E1, E2)), "-oo", "oo", True, True, 0, False)
+    on = (_srepr(S), "Integer(0)", "oo", True, True)
+    sides = (phi.xreplace({E1: S}), -phi.xreplace({E1: -S}))
+    want = [("continuous", _srepr(e), *plane) for e in ([f, g] if name == "P8" else [f])]
+    ok = not f.has(*SMOOTH_ONLY, sp.Abs) and (name not in ("P5", "P6") or not phi.has(E2))
     if name == "P8":
-        want.append(("continuous", _srepr(g), *plane[1:]))
-    sides, on = (phi.xreplace({E1: S}), -phi.xreplace({E1: -S})), (_srepr(S), "Integer(0)", "oo", True, True)
-    got = [(c.kind, c.expr, c.var, c.lo, c.hi, c.lo_open, c.hi_open, c.want, c.strict) for c in claims]
+        ok = ok and g.xreplace({E2: sp.Integer(0)}) == 0
     if name == "P5":
         want += [("sign", _srepr(e), *on, 1, True) for e in sides]
-    if name == "P6" and len(claims) == 5:           # h >= 0, and phi(s)/s <= k on both sides: h <= 1
-        k = claims[3].other
+    if name == "P6":            # h >= 0 (weak or strict), and phi(s)/s <= k on both sides: h <= 1
         want += [("sign", _srepr(e), *on, 1, c.strict) for e, c in zip(sides, claims[1:3])]
         want += [("sup_upper", _srepr(e / S), *on, 0, False) for e in sides]
-        ok_k = claims[4].other == k and parse(k).is_positive
-    if f.has(*SMOOTH_ONLY, sp.Abs) or got != want or (name == "P8" and g.xreplace({E2: sp.Integer(0)}) != 0) or (
-            name in ("P5", "P6") and phi.has(E2)) or (name == "P6" and not (len(claims) == 5 and ok_k)):
-        raise CertificateError(f"{name}: the kernel's conclusions are not f analytic on the plane (and for P8 "
-                               "df/de2 defined there, 0 at e2 = 0; for P5 df/de1 = phi(e1) with the sign of e1)")
+        ok = ok and len(claims) == 5 and claims[3].other == claims[4].other and parse(claims[3].other).is_positive
+    got = [(c.kind, c.expr, c.var, c.lo, c.hi, c.lo_open, c.hi_open, c.want, c.strict) for c in claims]
+    if not ok or got != want:
+        raise CertificateError(f"{name}: the kernel's conclusions are not those of f analytic on the plane "
+                               "(P8: df/de2 = 0 at e2 = 0; P5, P6: df/de1 = phi(e1) signed, and bounded by k e1)")
     return []
 
 

@@ -31,10 +31,8 @@ from .design import Design
 from .design_certificate import SMOOTH_ONLY
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
-                      plane_theorems,
-                      origin_value_theorems, piecewise_sign_theorem, radial_theorems, refutation_theorems,
-                      sign_theorems,
-                      smoothness_theorems, sup_upper_theorem)
+                      origin_value_theorems, piecewise_sign_theorem, plane_theorems, radial_theorems,
+                      refutation_theorems, sign_theorems, smoothness_theorems, sup_upper_theorem)
 from .kernel.core import derivative
 from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, scale, show
 from .limits import NoLimit, limit_right
@@ -789,12 +787,19 @@ def _smooth_on_plane(f, name: str) -> Verdict | None:
                   "df/de2 -> 0 as e2 -> 0", kernel=theorems, unchecked=[])
 
 
+def _phi_of_e1(f):
+    """df/de1 when it is phi(e1), free of e2, and f has no Abs, Piecewise,
+    Max, Min or sign (the plane route's f); else None."""
+    phi = derivative(f, E1)
+    return None if f.has(*SMOOTH_ONLY, sp.Abs) or phi.has(E2) or not phi.has(E1) else phi
+
+
 def _p5_along_e1(f) -> Verdict | None:
     """P5 of an f analytic on the plane (`continuous_on_plane`) whose df/de1
     = phi(e1) does not depend on e2 (f = g(e1) + h(e2), for instance):
     phi(s) > 0 and -phi(-s) > 0 for s > 0, kernel sign theorems."""
-    phi = derivative(f, E1)
-    if f.has(*SMOOTH_ONLY, sp.Abs) or phi.has(E2) or not phi.has(E1):
+    phi = _phi_of_e1(f)
+    if phi is None:
         return None
     plane = plane_theorems(f, E1, E2, [])
     sides = [sign_theorems(e, S, 0, sp.oo)[0] for e in (phi.xreplace({E1: S}), -phi.xreplace({E1: -S}))]
@@ -810,15 +815,15 @@ def _p6_along_e1(f) -> Verdict | None:
     -phi(-s)/s <= k on (0, oo), kernel theorems, for a k proposed about 1/8
     above the largest of those ratios at sample points (the kernel decides);
     then h = phi(e1)/(k e1) lies in [0, 1], and phi(0) = 0 (|phi(s)| <= k s)."""
-    phi = derivative(f, E1)
-    if f.has(*SMOOTH_ONLY, sp.Abs) or phi.has(E2) or not phi.has(E1):
+    phi = _phi_of_e1(f)
+    if phi is None:
         return None
     sides = [phi.xreplace({E1: S}), -phi.xreplace({E1: -S})]
-    try:
+    try:                        # a proposal only: sampled, the kernel decides
         ratio = sp.lambdify(S, sp.Max(*[e / S for e in sides]), "mpmath")
         top = max((v for j in range(-60, 61) for v in [ratio(mpmath.mpf(2) ** (j / 2))] if mpmath.isfinite(v)),
                   default=None)
-    except (TypeError, ValueError, ZeroDivisionError, NameError):
+    except (ArithmeticError, TypeError, ValueError, NameError, mpmath.libmp.NoConvergence):
         return None
     if top is None or not top > 0:
         return None
