@@ -914,3 +914,50 @@ def test_a_claim_prints_what_a_checker_reads_back_not_the_form_it_was_built_in()
     assert t.claim.expr == sp.srepr(2 * s - sp.Rational(14, 3)) != sp.srepr(built)
     again = check_certificate(json.loads(json.dumps(to_certificate([t]))))
     assert again[0].claim == t.claim
+
+
+# continuous_on_plane: E defined at every point of the plane (P5-P8 of f analytic there;
+# the links are in tests/test_plane_smoothness.py)
+px, py = sp.symbols("e1 e2", real=True)
+prho = px ** 2 + py ** 2
+
+
+@pytest.mark.parametrize("expr", [px ** 2 + sp.log(1 + py ** 2), sp.log(1 + prho + px ** 2 * py ** 2),
+                                  sp.atan(px * py) + sp.exp(-px ** 2), px / (1 + px ** 2), sp.log(sp.E - 1 + prho),
+                                  sp.sqrt(2 + px ** 2) * sp.cosh(py)])
+def test_defined_on_the_plane(expr):
+    t = K.continuous_on_plane(expr=expr, x=px, y=py)
+    assert (t.claim.kind, t.claim.var, t.claim.lo, t.claim.hi) == ("continuous", sp.srepr(sp.Tuple(px, py)), "-oo", "oo")
+    assert t.claim.expr == sp.srepr(expr) and t.assumptions == {"sympy-core"}
+
+
+@pytest.mark.parametrize("expr", [sp.log(prho), 1 / px, sp.sqrt(1 + px), sp.log(px ** 2 - sp.Rational(1, 2)),
+                                  sp.sqrt(prho), prho ** sp.Rational(3, 2), sp.log(1 + sp.sin(px)),
+                                  sp.log(sp.E - 3 + prho), 1 / (sp.E - 3 + prho ** 2)])
+def test_not_defined_everywhere_is_refused(expr):
+    # log rho, 1/e1 at the origin; sqrt(1 + e1) for e1 < -1; log(e1^2 - 1/2) near 0;
+    # sqrt(rho) and rho^(3/2) are defined but their base is not > 0 (not shown analytic);
+    # log(1 + sin e1) at e1 = -pi/2; e - 3 + rho (its constant terms taken together) is < 0 near 0
+    with pytest.raises(KernelError):
+        K.continuous_on_plane(expr=expr, x=px, y=py)
+
+
+def test_variables_must_be_real_of_either_sign():
+    p = sp.Symbol("p", positive=True)
+    with pytest.raises(KernelError, match="must be declared real only"):
+        K.continuous_on_plane(expr=p ** 2 + py ** 2, x=p, y=py)
+    with pytest.raises(KernelError, match="must be declared real only"):
+        K.continuous_on_plane(expr=p ** 2 + px ** 2, x=px, y=p)
+    with pytest.raises(KernelError, match="two distinct variables"):
+        K.continuous_on_plane(expr=px ** 2, x=px, y=px)
+    with pytest.raises(KernelError, match="symbols other than"):
+        K.continuous_on_plane(expr=p + py ** 2, x=px, y=py)
+
+
+def test_tampered_plane_claim_is_rejected():
+    cert = to_certificate([K.continuous_on_plane(expr=sp.log(1 + prho), x=px, y=py)])
+    assert check_certificate(cert)[0].claim.var == sp.srepr(sp.Tuple(px, py))
+    cert["theorems"][0]["data"]["expr"] = {"$": sp.srepr(sp.log(prho))}
+    cert["theorems"][0]["claim"]["expr"] = sp.srepr(sp.log(prho))
+    with pytest.raises(CertificateError, match="not shown defined on the plane"):
+        check_certificate(cert)
