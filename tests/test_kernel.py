@@ -927,7 +927,8 @@ prho = px ** 2 + py ** 2
                                   sp.sqrt(2 + px ** 2) * sp.cosh(py)])
 def test_defined_on_the_plane(expr):
     t = K.continuous_on_plane(expr=expr, x=px, y=py)
-    assert (t.claim.kind, t.claim.var, t.claim.lo, t.claim.hi) == ("continuous", sp.srepr(sp.Tuple(px, py)), "-oo", "oo")
+    assert (t.claim.kind, t.claim.var, t.claim.lo, t.claim.hi, t.claim.lo_open, t.claim.hi_open) == (
+        "continuous", sp.srepr(sp.Tuple(px, py)), "-oo", "oo", True, True)
     assert t.claim.expr == sp.srepr(expr) and t.assumptions == {"sympy-core"}
 
 
@@ -950,6 +951,8 @@ def test_variables_must_be_real_of_either_sign():
         K.continuous_on_plane(expr=p ** 2 + px ** 2, x=px, y=p)
     with pytest.raises(KernelError, match="two distinct variables"):
         K.continuous_on_plane(expr=px ** 2, x=px, y=px)
+    with pytest.raises(KernelError, match="not allowed: Float"):      # the parser reads no Float
+        K.continuous_on_plane(expr=px ** 2 + sp.Float(0.5), x=px, y=py)
     with pytest.raises(KernelError, match="symbols other than"):
         K.continuous_on_plane(expr=p + py ** 2, x=px, y=py)
 
