@@ -140,7 +140,7 @@ def _context(design, model: LawModel) -> dict:
         example = {k: double_literal(gains[scenario][k]) for k in ("k1", "k2", "lam", "Vmax", "Wmax")}
         example["source"] = f"scenario {scenario!r} of {source}"
     return dict(name=model.name, source=source, f_text=_ascii_safe(f_text), params=params,
-                kf_text=model.kf_text, verified=model.verified, clamp=model.verified and model.kf_upper is not None,
+                kf_text=model.kf_text, verified=model.verified, clamp=model.bound_kf is not None,
                 kf_status="certified upper bound" if model.kf_upper is not None else "no finite bound certified",
                 kf_double="INFINITY" if math.isinf(kf) else repr(kf),
                 kf_float="INFINITY" if math.isinf(kf) else _float_text(kf32),
@@ -187,7 +187,7 @@ def validate_build(design_path, model, files, report=None):
     from ..design import load_design
     from .validate import ValidationFailed, validate
     design = report.design if report is not None and report.design is not None else load_design(design_path)
-    kf = _kf_upper_double(model.kf_upper) if model.verified and model.kf_upper is not None else None
+    kf = None if model.bound_kf is None else _kf_upper_double(model.bound_kf)
     try:
         return validate(design, model, files, kf)
     except ValidationFailed as exc:
@@ -255,7 +255,7 @@ def casadi_function(design_path, report=None, force=False):
     model, report = _model(design_path, force, report)
     design = report.design
     fn = _cf(model)
-    kf = _kf_upper_double(model.kf_upper) if model.verified and model.kf_upper is not None else None
+    kf = None if model.bound_kf is None else _kf_upper_double(model.bound_kf)
     try:
         validate_casadi(design, model, fn, kf)
     except ValidationFailed as exc:

@@ -153,7 +153,7 @@ def kf_cap(model: LawModel, cfg: CConfig) -> str | None:
     """The header's macro of KF when it is a certified upper bound of kf for a
     verified design: the generated code clamps lam vr g sinc to lam |vr| KF
     (bound (10)); None otherwise (no clamp)."""
-    if not model.verified or model.kf_upper is None:
+    if model.bound_kf is None:
         return None
     return f"UWMR_{c_identifier(model.stem).upper()}_KF" + ("_F32" if cfg.precision == "float" else "")
 

@@ -96,6 +96,13 @@ class LawModel:
     def verified(self) -> bool:
         return not self.reasons
 
+    @property
+    def bound_kf(self) -> Fraction | None:
+        """kf_upper when bound (10) rests on it: a verified design and a
+        certified bound (the generated code clamps to it, the validation
+        checks it); None otherwise."""
+        return self.kf_upper if self.verified else None
+
 
 # --------------------------------------------------------------------------
 # rewriting
