@@ -21,11 +21,19 @@ P5, P6 where df/de1 = phi(e1) does not depend on e2 (f = g(e1) + h(e2)):
 * e1 atan(e1) - log(1 + e1^2)/2 + e2^2: phi = atan(e1) (P5); atan(e1)/e1 in (0, 1] (P6).
 * e1^4 + e2^2: phi = 4 e1^3 (P5 holds); phi/e1 = 4 e1^2 is unbounded, so P6 fails.
 * e1^4 - e1^2 + e2^2: phi = 4 e1^3 - 2 e1 < 0 on (0, 1/sqrt 2): P5 and P6 fail.
+P3 where f(e1, e2) = f(e1, 0) + f(0, e2) (separable, f(0, 0) = 0), f defined on the plane:
+* log(1 + e1^2) + log(1 + e2^2): log(1 + s^2) > 0 for s != 0 and -> oo: P3 holds.
+* e1^2 + sqrt(1 + e2^2) - 1: s^2 and sqrt(1 + s^2) - 1 > 0 for s != 0, both -> oo: P3 holds.
+* cosh(e1) - 1 + e2^4: cosh s - 1 > 0 for s != 0 and -> oo: P3 holds.
+* log(1 + e1^2) + atan(e2^2): f(0, s) = atan(s^2) < pi/2: not radially unbounded, P3 fails.
+* e1^2 - e2^2/(1 + e2^2): f(0, 1) = -1/2 < 0: P3 fails.
+* e1^2 + e1 + e2^2: f(-1/2, 0) = -1/4 < 0: P3 fails.
 """
 import pytest
 import sympy as sp
 
 from uwmr_symbolic import design_certificate as DC
+from uwmr_symbolic.certify import growth_theorems, sign_theorems
 from uwmr_symbolic.kernel import rules as K
 from uwmr_symbolic.kernel.certificate import CertificateError
 from uwmr_symbolic.kernel.core import derivative
@@ -114,3 +122,45 @@ def test_p5_p6_links_need_both_sides_of_this_f_and_one_k():
     cross = f + x * y / 10                              # df/de1 depends on e2: no claim about phi(e1) fits
     with pytest.raises(CertificateError):
         DC._link("P5", cross, _plane(cross) + signs)
+
+
+def _separable_claims(f, split=None):
+    """The theorems the P3 link of a separable f expects, in order."""
+    halves = DC.half_axes(f)
+    return (_plane(f) + [K.identity_plane(lhs=f, rhs=DC.axis_split(f) if split is None else split, x=x, y=y)]
+            + [sign_theorems(u, S, 0, sp.oo)[0][0] for u in halves] + [growth_theorems(u, S)[0] for u in halves])
+
+
+def test_p3_link_needs_the_split_and_all_four_half_axes_of_this_f():
+    f = x ** 2 + x ** 3 + x ** 4 + sp.log(1 + y ** 2)     # s^2 (1 + s + s^2) > 0 and s^2 (1 - s + s^2) > 0
+    good = _separable_claims(f)
+    assert DC._link("P3", f, good) == []
+    with pytest.raises(CertificateError):               # one divergence missing
+        DC._link("P3", f, good[:-1])
+    with pytest.raises(CertificateError):               # the positivity of a half-axis twice, another left out
+        DC._link("P3", f, good[:2] + [good[2], good[2], good[4], good[5]] + good[6:])
+    other = x ** 2 * (1 + x + x ** 2) + sp.log(1 + y ** 2)
+    with pytest.raises(CertificateError):               # f = other: true, but not the split
+        DC._link("P3", f, good[:1] + _separable_claims(f, split=other)[1:2] + good[2:])
+    g = f + x ** 2 * y ** 2                             # P3 holds, but g is not the sum of its axes
+    with pytest.raises(CertificateError):
+        DC._link("P3", g, _plane(g) + good[1:])
+    with pytest.raises(K.KernelError):                  # and the kernel refuses the split of g
+        K.identity_plane(lhs=g, rhs=DC.axis_split(g), x=x, y=y)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("body, p3", [
+    ("f = log(1 + e1**2) + log(1 + e2**2)\n", "proved"),
+    ("f = e1**2 + sqrt(1 + e2**2) - 1\n", "proved"),
+    ("f = sp.cosh(e1) - 1 + e2**4\n", "proved"),
+    ("f = log(1 + e1**2) + atan(e2**2)\n", "refuted"),
+    ("f = e1**2 - e2**2/(1 + e2**2)\n", "refuted"),
+    ("f = e1**2 + e1 + e2**2\n", "refuted"),
+])
+def test_p3_of_a_separable_f(tmp_path, body, p3):
+    report, v = verify(tmp_path, body)
+    assert v["P3"] == p3, report.properties["P3"]
+    check = {c.name: c for c in DC.check(DC.build(report))}["P3"]
+    if p3 == "proved":
+        assert check.kernel_checked and check.theorems == 10

@@ -1209,6 +1209,15 @@ def plane_theorems(f, x, y, exprs) -> list:
         return []
 
 
+def separable_theorems(f, x, y, split) -> list:
+    """f defined, hence continuous, on the plane and f = split there (the
+    sum f(x, 0) + f(0, y)), as kernel theorems, or []."""
+    try:
+        return [K.continuous_on_plane(expr=f, x=x, y=y), K.identity_plane(lhs=f, rhs=split, x=x, y=y)]
+    except (K.KernelError, Undefined):
+        return []
+
+
 def growth_theorems(F, var, last=None) -> list:
     """P3's "F(s) -> oo": `diverges_by_growth` from F' >= k or s F' >= k > 0
     on [R, oo) (the proposer picks R, the rate and k), or [].  For a

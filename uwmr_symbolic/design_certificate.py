@@ -250,8 +250,8 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
         return []
     if name not in ("P1", "P3", "P5", "P6", "P7", "P8", "kf"):
         return []
-    if name in ("P5", "P6", "P7", "P8") and claims and (claims[0].kind, claims[0].var) == ("continuous",
-                                                                                      _srepr(sp.Tuple(E1, E2))):
+    if name in ("P3", "P5", "P6", "P7", "P8") and claims and (claims[0].kind, claims[0].var) == (
+            "continuous", _srepr(sp.Tuple(E1, E2))):
         return _link_plane(name, f, claims)
     F = _profile(f)
     claims, k = _reduction(f, F, claims)
@@ -279,13 +279,26 @@ def _link_plane(name, f, claims) -> list[str]:
     e1 != 0 (tanh(e1) has the sign of e1), and = 0 at e1 = 0.  P6: phi(s),
     -phi(-s) >= 0 and phi(s)/s, -phi(-s)/s <= k on (0, oo), one k > 0: h =
     phi(e1)/(k e1) lies in [0, 1] for e1 != 0, and phi(0) = 0 (|phi(s)| <= k s,
-    phi continuous), so h = 0 serves at e1 = 0."""
+    phi continuous), so h = 0 serves at e1 = 0.
+
+    P3 needs f defined on the plane only (Abs allowed), and f(e1, e2) =
+    f(e1, 0) + f(0, e2) (`identity_plane`; at the origin it gives f(0, 0) =
+    2 f(0, 0) = 0); then the four half-axis functions u(s) = f(s, 0),
+    f(-s, 0), f(0, s), f(0, -s) > 0 for s > 0 make f > 0 off the origin (one
+    term > 0, the other > 0 or f(0, 0) = 0), and u(s) -> oo for each makes f
+    radially unbounded: f >= each term, and max(|e1|, |e2|) >= |e|/sqrt(2)."""
     g, phi = derivative(f, E2), derivative(f, E1)
     plane = (_srepr(sp.Tuple(E1, E2)), "-oo", "oo", True, True, 0, False)
     on = (_srepr(S), "Integer(0)", "oo", True, True)
     sides = (phi.xreplace({E1: S}), -phi.xreplace({E1: -S}))
     want = [("continuous", _srepr(e), *plane) for e in ([f, g] if name == "P8" else [f])]
-    ok = not f.has(*SMOOTH_ONLY, sp.Abs) and (name not in ("P5", "P6") or not phi.has(E2))
+    ok = not f.has(*SMOOTH_ONLY, *([] if name == "P3" else [sp.Abs])) and (name not in ("P5", "P6") or not phi.has(E2))
+    if name == "P3":
+        want += [("identity_plane", _srepr(f), plane[0], "", "", False, False, 0, False)]
+        want += [("sign", _srepr(u), *on, 1, True) for u in half_axes(f)]
+        want += [("diverges", _srepr(u), _srepr(S), c.lo, "oo", False, True, 0, False)
+                 for u, c in zip(half_axes(f), claims[6:])]
+        ok = ok and len(claims) == 10 and claims[1].other == _srepr(axis_split(f))
     if name == "P8":
         ok = ok and g.xreplace({E2: sp.Integer(0)}) == 0
     if name == "P5":
@@ -297,8 +310,19 @@ def _link_plane(name, f, claims) -> list[str]:
     got = [(c.kind, c.expr, c.var, c.lo, c.hi, c.lo_open, c.hi_open, c.want, c.strict) for c in claims]
     if not ok or got != want:
         raise CertificateError(f"{name}: the kernel's conclusions are not those of f analytic on the plane "
-                               "(P8: df/de2 = 0 at e2 = 0; P5, P6: df/de1 = phi(e1) signed, and bounded by k e1)")
+                               "(P8: df/de2 = 0 at e2 = 0; P5, P6: df/de1 = phi(e1) signed, and bounded by k e1; "
+                               "P3: f = f(e1, 0) + f(0, e2), each half-axis function > 0 and -> oo)")
     return []
+
+
+def axis_split(f):
+    """f(e1, 0) + f(0, e2): f itself when f is separable and f(0, 0) = 0."""
+    return _at(f, (E1, 0)) + _at(f, (0, E2))
+
+
+def half_axes(f) -> list:
+    """f(s, 0), f(-s, 0), f(0, s), f(0, -s): f on the four half-axes, s > 0."""
+    return [_at(f, p) for p in ((S, 0), (-S, 0), (0, S), (0, -S))]
 
 
 def _reduction(f, F, claims):

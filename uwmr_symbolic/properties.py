@@ -28,11 +28,12 @@ import sympy as sp
 
 from . import e1 as E1, e2 as E2
 from .design import Design
-from .design_certificate import SMOOTH_ONLY
+from .design_certificate import SMOOTH_ONLY, axis_split, half_axes
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
                       origin_value_theorems, piecewise_sign_theorem, plane_theorems, radial_theorems,
-                      refutation_theorems, sign_theorems, smoothness_theorems, sup_upper_theorem)
+                      refutation_theorems, separable_theorems, sign_theorems, smoothness_theorems,
+                      sup_upper_theorem)
 from .kernel.core import derivative
 from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, scale, show
 from .limits import NoLimit, limit_right
@@ -699,11 +700,12 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
                                 f"[{val.lower_float():.6g}, {val.upper_float():.6g}]", {"e1": str(x), "e2": str(y)})
                     if _stands(name, v, f):
                         return v
-    found = _p5_along_e1(f) if name == "P5" else _p6_along_e1(f) if name == "P6" else None
+    found = {"P3": _p3_separable, "P5": _p5_along_e1, "P6": _p6_along_e1}.get(name, lambda f: None)(f)
     if found is not None:
         return found
     return unknown("f is not radial; this verifier proves properties of radial f only "
-                   "(P4 " + a.p4.status + "), and P5-P8 of some f analytic on the plane")
+                   "(P4 " + a.p4.status + "), P3 of some f = f(e1, 0) + f(0, e2) and P5-P8 of some f "
+                   "analytic on the plane")
 
 
 def _stands(name: str, v: Verdict, f) -> bool:
@@ -839,6 +841,27 @@ def _p6_along_e1(f) -> Verdict | None:
     return proved(f"df/de1 = phi(e1) does not depend on e2 (f analytic on the plane), phi(e1) e1 >= 0 and "
                   f"phi(e1)/e1 <= k = {k} (the kernel's sign rules): h = phi(e1)/(k e1) in [0, 1]",
                   kernel=plane + signs[0] + signs[1] + uppers, unchecked=[], k=str(k), k_float=float_of(k), h=str(h))
+
+
+def _p3_separable(f) -> Verdict | None:
+    """P3 of an f defined on the plane with f(e1, e2) = f(e1, 0) + f(0, e2)
+    (a separable g(e1) + h(e2), g(0) + h(0) = 0): f on each half-axis is
+    > 0 for s > 0 and -> oo as s -> oo, kernel theorems (the argument is
+    `design_certificate._link_plane`'s)."""
+    if f.has(*SMOOTH_ONLY):
+        return None
+    split = separable_theorems(f, E1, E2, axis_split(f))
+    if not split:
+        return None
+    signs = [sign_theorems(u, S, 0, sp.oo)[0] for u in half_axes(f)]
+    if not all(t is not None and len(t) == 1 for t in signs):
+        return None
+    growth = [growth_theorems(u, S) for u in half_axes(f)]
+    if not all(len(t) == 1 for t in growth):
+        return None
+    return proved("f(e1, e2) = f(e1, 0) + f(0, e2) on the plane, and on each half-axis f > 0 and f -> oo "
+                  "(the kernel's sign and divergence rules): f > 0 off the origin, and f >= each term",
+                  kernel=split + [t for ts in signs + growth for t in ts], unchecked=[])
 
 
 def _or_on_plane(verify, name: str):
