@@ -28,12 +28,18 @@ P3 where f(e1, e2) = f(e1, 0) + f(0, e2) (separable, f(0, 0) = 0), f defined on 
 * log(1 + e1^2) + atan(e2^2): f(0, s) = atan(s^2) < pi/2: not radially unbounded, P3 fails.
 * e1^2 - e2^2/(1 + e2^2): f(0, 1) = -1/2 < 0: P3 fails.
 * e1^2 + e1 + e2^2: f(-1/2, 0) = -1/4 < 0: P3 fails.
+P1 where df/de2 = psi(e2) does not depend on e1, f analytic on the plane:
+* log(1 + e1^2) + log(1 + e2^2): psi = 2 e2/(1 + e2^2), |psi| <= 1: P1 holds.
+* e1^2 + sqrt(1 + e2^2) - 1: psi = e2/sqrt(1 + e2^2), |psi| < 1: P1 holds.
+* e1^2 + log(cosh(e2)): psi = tanh(e2), |psi| < 1: P1 holds.
+* exp(e1) - 1 - e1 + log(1 + e2^2): psi = 2 e2/(1 + e2^2): P1 holds (df/de1 = exp(e1) - 1 is continuous).
+* cosh(e1) - 1 + e2^4: psi = 4 e2^3 is unbounded: P1 fails.
 """
 import pytest
 import sympy as sp
 
 from uwmr_symbolic import design_certificate as DC
-from uwmr_symbolic.certify import growth_theorems, sign_theorems
+from uwmr_symbolic.certify import growth_theorems, sign_theorems, sup_upper_theorem
 from uwmr_symbolic.kernel import rules as K
 from uwmr_symbolic.kernel.certificate import CertificateError
 from uwmr_symbolic.kernel.core import derivative
@@ -71,6 +77,9 @@ def test_link_needs_f_analytic_and_df_de2_zero_on_the_axis():
     ("f = log(1 + rho + e1**2*e2**2)\n", "proved", "proved"),
     ("f = log(1 + rho) + e1*e2/10\n", "proved", "refuted"),
     ("f = log(log(sp.E + rho))\n", "proved", "proved"),
+    # df/de1(s, 0)/s = (e^s - 1)/s: P6's proposal sampled e^(2^30)/2^30 and read it as a Fraction,
+    # which ran past --timeout and left P7 and P8 unknown
+    ("f = sp.exp(e1) - 1 - e1 + log(1 + e2**2)\n", "proved", "proved"),
 ])
 def test_p7_p8_verdicts_by_the_kernel(tmp_path, body, p7, p8):
     report, v = verify(tmp_path, body)
@@ -122,6 +131,37 @@ def test_p5_p6_links_need_both_sides_of_this_f_and_one_k():
     cross = f + x * y / 10                              # df/de1 depends on e2: no claim about phi(e1) fits
     with pytest.raises(CertificateError):
         DC._link("P5", cross, _plane(cross) + signs)
+
+
+def test_p1_link_needs_one_bound_on_both_signs_of_df_de2_on_both_half_axes():
+    f = x ** 2 + sp.sqrt(1 + y ** 2) - 1
+    bounds = [sup_upper_theorem(e, 1, S) for e in DC.e2_sides(f)]
+    assert DC._link("P1", f, _plane(f) + bounds) == []
+    with pytest.raises(CertificateError):               # three of the four sides
+        DC._link("P1", f, _plane(f) + bounds[:3])
+    with pytest.raises(CertificateError):               # two different bounds
+        DC._link("P1", f, _plane(f) + bounds[:3] + [sup_upper_theorem(DC.e2_sides(f)[3], 2, S)])
+    cross = f + x * y / 10                              # df/de2 depends on e1 (and is unbounded)
+    with pytest.raises(CertificateError):
+        DC._link("P1", cross, _plane(cross) + bounds)
+    kink = sp.Abs(x) ** 3 + sp.sqrt(1 + y ** 2) - 1     # bounded df/de2, but Abs: not the analytic route
+    with pytest.raises(CertificateError):
+        DC._link("P1", kink, _plane(kink) + bounds)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("body, p1", [
+    ("f = log(1 + e1**2) + log(1 + e2**2)\n", "proved"),
+    ("f = e1**2 + sqrt(1 + e2**2) - 1\n", "proved"),
+    ("f = e1**2 + log(sp.cosh(e2))\n", "proved"),
+    ("f = sp.exp(e1) - 1 - e1 + log(1 + e2**2)\n", "proved"),
+    ("f = sp.cosh(e1) - 1 + e2**4\n", "refuted"),
+])
+def test_p1_where_df_de2_depends_on_e2_only(tmp_path, body, p1):
+    report, v = verify(tmp_path, body)
+    assert v["P1"] == p1, report.properties["P1"]
+    check = {c.name: c for c in DC.check(DC.build(report))}["P1"]
+    assert check.kernel_checked if p1 == "proved" else check.refutation_checked
 
 
 def _separable_claims(f, split=None):

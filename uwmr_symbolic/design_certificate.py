@@ -250,7 +250,7 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
         return []
     if name not in ("P1", "P3", "P5", "P6", "P7", "P8", "kf"):
         return []
-    if name in ("P3", "P5", "P6", "P7", "P8") and claims and (claims[0].kind, claims[0].var) == (
+    if name in ("P1", "P3", "P5", "P6", "P7", "P8") and claims and (claims[0].kind, claims[0].var) == (
             "continuous", _srepr(sp.Tuple(E1, E2))):
         return _link_plane(name, f, claims)
     F = _profile(f)
@@ -286,13 +286,19 @@ def _link_plane(name, f, claims) -> list[str]:
     2 f(0, 0) = 0); then the four half-axis functions u(s) = f(s, 0),
     f(-s, 0), f(0, s), f(0, -s) > 0 for s > 0 make f > 0 off the origin (one
     term > 0, the other > 0 or f(0, 0) = 0), and u(s) -> oo for each makes f
-    radially unbounded: f >= each term, and max(|e1|, |e2|) >= |e|/sqrt(2)."""
+    radially unbounded: f >= each term, and max(|e1|, |e2|) >= |e|/sqrt(2).
+    P1: f analytic, so C^1; df/de2's formula is psi(e2), free of e1, and
+    +-psi(s), +-psi(-s) <= U on (0, oo), one U: |df/de2| <= U off e2 = 0,
+    and at e2 = 0 by continuity, so kf <= U is finite."""
     g, phi = derivative(f, E2), derivative(f, E1)
     plane = (_srepr(sp.Tuple(E1, E2)), "-oo", "oo", True, True, 0, False)
     on = (_srepr(S), "Integer(0)", "oo", True, True)
     sides = (phi.xreplace({E1: S}), -phi.xreplace({E1: -S}))
     want = [("continuous", _srepr(e), *plane) for e in ([f, g] if name == "P8" else [f])]
     ok = not f.has(*SMOOTH_ONLY, *([] if name == "P3" else [sp.Abs])) and (name not in ("P5", "P6") or not phi.has(E2))
+    if name == "P1":
+        want += [("sup_upper", _srepr(e), *on, 0, False) for e in e2_sides(f)]
+        ok = ok and not g.has(E1) and len(claims) == 5 and len({c.other for c in claims[1:]}) == 1
     if name == "P3":
         want += [("identity_plane", _srepr(f), plane[0], "", "", False, False, 0, False)]
         want += [("sign", _srepr(u), *on, 1, True) for u in half_axes(f)]
@@ -311,8 +317,14 @@ def _link_plane(name, f, claims) -> list[str]:
     if not ok or got != want:
         raise CertificateError(f"{name}: the kernel's conclusions are not those of f analytic on the plane "
                                "(P8: df/de2 = 0 at e2 = 0; P5, P6: df/de1 = phi(e1) signed, and bounded by k e1; "
-                               "P3: f = f(e1, 0) + f(0, e2), each half-axis function > 0 and -> oo)")
+                               "P3: f = f(e1, 0) + f(0, e2), each half-axis function > 0 and -> oo; "
+                               "P1: df/de2 = psi(e2) bounded by one U)")
     return []
+
+
+def e2_sides(f) -> list:
+    """psi(s), -psi(s), psi(-s), -psi(-s) for psi = df/de2 (P1 when psi is free of e1)."""
+    return [sign * derivative(f, E2).xreplace({E2: side * S}) for side in (1, -1) for sign in (1, -1)]
 
 
 def axis_split(f):

@@ -28,7 +28,7 @@ import sympy as sp
 
 from . import e1 as E1, e2 as E2
 from .design import Design
-from .design_certificate import SMOOTH_ONLY, axis_split, half_axes
+from .design_certificate import SMOOTH_ONLY, axis_split, e2_sides, half_axes
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
                       origin_value_theorems, piecewise_sign_theorem, plane_theorems, radial_theorems,
@@ -700,12 +700,13 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
                                 f"[{val.lower_float():.6g}, {val.upper_float():.6g}]", {"e1": str(x), "e2": str(y)})
                     if _stands(name, v, f):
                         return v
-    found = {"P3": _p3_separable, "P5": _p5_along_e1, "P6": _p6_along_e1}.get(name, lambda f: None)(f)
+    found = {"P1": _p1_along_e2, "P3": _p3_separable, "P5": _p5_along_e1, "P6": _p6_along_e1}.get(
+        name, lambda f: None)(f)
     if found is not None:
         return found
     return unknown("f is not radial; this verifier proves properties of radial f only "
-                   "(P4 " + a.p4.status + "), P3 of some f = f(e1, 0) + f(0, e2) and P5-P8 of some f "
-                   "analytic on the plane")
+                   "(P4 " + a.p4.status + "), P3 of some f = f(e1, 0) + f(0, e2), and P1 and P5-P8 of "
+                   "some f analytic on the plane")
 
 
 def _stands(name: str, v: Verdict, f) -> bool:
@@ -821,15 +822,9 @@ def _p6_along_e1(f) -> Verdict | None:
     if phi is None:
         return None
     sides = [phi.xreplace({E1: S}), -phi.xreplace({E1: -S})]
-    try:                        # a proposal only: sampled, the kernel decides
-        ratio = sp.lambdify(S, sp.Max(*[e / S for e in sides]), "mpmath")
-        top = max((v for j in range(-60, 61) for v in [ratio(mpmath.mpf(2) ** (j / 2))] if mpmath.isfinite(v)),
-                  default=None)
-    except (ArithmeticError, TypeError, ValueError, NameError, mpmath.libmp.NoConvergence):
+    k = _proposed_bound([e / S for e in sides])
+    if k is None:
         return None
-    if top is None or not top > 0:
-        return None
-    k = decimal_beyond(Fraction(str(mpmath.nstr(top, 12))) * Fraction(9, 8), 1, 2)
     plane = plane_theorems(f, E1, E2, [])
     signs = [sign_theorems(e, S, 0, sp.oo, strict=False)[0] for e in sides]
     if not plane or not all(t is not None and len(t) == 1 for t in signs):
@@ -841,6 +836,40 @@ def _p6_along_e1(f) -> Verdict | None:
     return proved(f"df/de1 = phi(e1) does not depend on e2 (f analytic on the plane), phi(e1) e1 >= 0 and "
                   f"phi(e1)/e1 <= k = {k} (the kernel's sign rules): h = phi(e1)/(k e1) in [0, 1]",
                   kernel=plane + signs[0] + signs[1] + uppers, unchecked=[], k=str(k), k_float=float_of(k), h=str(h))
+
+
+def _proposed_bound(exprs):
+    """A rational about 1/8 above the largest value of the exprs (in s) at
+    s = 2^(j/2), |j| <= 60, or None (also when that value is 10^12 or more:
+    exp(2^30) as a Fraction would take hours): a proposal only, the kernel
+    decides."""
+    try:
+        top = sp.lambdify(S, sp.Max(*exprs), "mpmath")
+        top = max((v for j in range(-60, 61) for v in [top(mpmath.mpf(2) ** (j / 2))] if mpmath.isfinite(v)),
+                  default=None)
+    except (ArithmeticError, TypeError, ValueError, NameError, mpmath.libmp.NoConvergence):
+        return None
+    if top is None or not 0 < top < 10 ** 12:
+        return None
+    return decimal_beyond(Fraction(str(mpmath.nstr(top, 12))) * Fraction(9, 8), 1, 2)
+
+
+def _p1_along_e2(f) -> Verdict | None:
+    """P1 of an f analytic on the plane (`continuous_on_plane`, no Abs)
+    whose df/de2 = psi(e2) does not depend on e1 (f = g(e1) + h(e2), for
+    instance): +-psi(s), +-psi(-s) <= U on (0, oo), kernel theorems, for a
+    U proposed about 1/8 above sampled values.  kf itself stays the search's."""
+    sides = e2_sides(f)
+    if f.has(*SMOOTH_ONLY, sp.Abs) or any(e.has(E1) for e in sides) or not sides[0].has(S):
+        return None
+    U = _proposed_bound(sides)
+    plane = plane_theorems(f, E1, E2, []) if U is not None else []
+    uppers = [sup_upper_theorem(e, U, S) for e in sides] if plane else [None]
+    if None in uppers:
+        return None
+    return proved(f"f is analytic on the plane, so C^1; df/de2 = psi(e2) does not depend on e1, and "
+                  f"|psi| <= {U} (the kernel's bounds on both half-axes): kf <= {U} is finite",
+                  kernel=plane + uppers, unchecked=[])
 
 
 def _p3_separable(f) -> Verdict | None:
