@@ -659,9 +659,9 @@ def settle_origin(case: Case) -> Case:
     return case
 
 
-def designs():
-    """Any design of the grammar."""
-    return st.one_of(*(s().map(settle_origin) for s in FAMILIES.values()))
+def designs(family: str | None = None):
+    """Any design of the grammar, or of one family."""
+    return st.one_of(*(s().map(settle_origin) for name, s in FAMILIES.items() if family in (None, name)))
 
 
 def design_source(case: Case) -> str:

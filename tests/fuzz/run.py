@@ -19,7 +19,7 @@ from pathlib import Path
 
 from hypothesis import HealthCheck, Phase, given, seed as hseed, settings
 
-from .grammar import PROPS, designs, design_source
+from .grammar import FAMILIES, PROPS, designs, design_source
 from .oracle import check
 from .worker import Verifier
 
@@ -88,7 +88,7 @@ def write_finding(path: Path, case, contradictions):
 
 
 def run_profile(examples: int, seed: int | None = 0, timeout: float = 10.0, keep: Path | None = None,
-                progress=None) -> Stats:
+                progress=None, family: str | None = None) -> Stats:
     keep = Path(keep or tempfile.mkdtemp(prefix="uwmr-fuzz-"))
     keep.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix="uwmr-fuzz-work-"))
@@ -97,7 +97,7 @@ def run_profile(examples: int, seed: int | None = 0, timeout: float = 10.0, keep
     with Verifier() as verifier:
         @settings(max_examples=examples, deadline=None, database=None, derandomize=seed is None,
                   phases=[Phase.generate], suppress_health_check=list(HealthCheck))
-        @given(designs())
+        @given(designs(family))
         def one(case):
             n = stats.tried
             path = work / f"d{n:05d}.py"
@@ -158,6 +158,7 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=None, help="default: a fresh random seed")
     ap.add_argument("--timeout", type=float, default=10.0)
     ap.add_argument("--keep", type=Path, default=None)
+    ap.add_argument("--family", choices=sorted(FAMILIES), default=None, help="draw from this family only")
     a = ap.parse_args(argv)
     import random
     seed = a.seed if a.seed is not None else random.randrange(2 ** 32)
@@ -167,7 +168,7 @@ def main(argv=None):
         tags = " ".join(f"{p}:{(result.get('properties') or {}).get(p, {}).get('status', '-')[0]}" for p in PROPS)
         print(f"[{n}] {case.family:16} {tags} {result.get('seconds', 0) or 0:5.1f}s "
               + ("; ".join(c.line()[:160] for c in found)), flush=True)
-    stats = run_profile(a.examples, seed, a.timeout, a.keep, progress)
+    stats = run_profile(a.examples, seed, a.timeout, a.keep, progress, a.family)
     print(stats.table())
     return 1 if stats.unexplained() else 0
 
