@@ -26,6 +26,8 @@ P3 where f(e1, e2) = f(e1, 0) + f(0, e2) (separable, f(0, 0) = 0), f defined on 
 * e1^2 + sqrt(1 + e2^2) - 1: s^2 and sqrt(1 + s^2) - 1 > 0 for s != 0, both -> oo: P3 holds.
 * cosh(e1) - 1 + e2^4: cosh s - 1 > 0 for s != 0 and -> oo: P3 holds.
 * log(1 + e1^2) + atan(e2^2): f(0, s) = atan(s^2) < pi/2: not radially unbounded, P3 fails.
+* e1^2 + e2^2/(1 + e2^2): f(0, s) -> 1: P3 fails (the limit along the e2 axis is 0 * oo as written:
+  1/(x^2 (1 + x^-2)) with e2 = 1/x, which the limit calculus now cancels first).
 * e1^2 - e2^2/(1 + e2^2): f(0, 1) = -1/2 < 0: P3 fails.
 * e1^2 + e1 + e2^2: f(-1/2, 0) = -1/4 < 0: P3 fails.
 P1 where df/de2 = psi(e2) does not depend on e1, f analytic on the plane:
@@ -195,6 +197,7 @@ def test_p3_link_needs_the_split_and_all_four_half_axes_of_this_f():
     ("f = e1**2 + sqrt(1 + e2**2) - 1\n", "proved"),
     ("f = sp.cosh(e1) - 1 + e2**4\n", "proved"),
     ("f = log(1 + e1**2) + atan(e2**2)\n", "refuted"),
+    ("f = e1**2 + e2**2/(1 + e2**2)\n", "refuted"),
     ("f = e1**2 - e2**2/(1 + e2**2)\n", "refuted"),
     ("f = e1**2 + e1 + e2**2\n", "refuted"),
 ])

@@ -216,6 +216,13 @@ def test_limit_of_a_polynomial_keeps_its_side():
     assert limit_right((1 - (1 - x) ** 2) ** sp.Rational(1, 3), x).value == 0
 
 
+def test_limit_of_a_rational_product_that_is_zero_times_infinity_as_written():
+    from uwmr_symbolic.limits import limit_right
+    x = sp.Symbol("x", positive=True)
+    assert limit_right(1 / (x ** 2 * (1 + x ** -2)), x).value == 1       # 0 * oo as written: 1/(x^2 + 1)
+    assert limit_right(x ** -3 * (x + x ** 2), x).value == sp.oo          # (1 + x)/x^2
+
+
 def test_a_condition_on_one_axis_is_not_taken_for_the_origin(tmp_path):
     # f = 0 on the whole line e1 = 0, log(1 + rho) elsewhere: not radial (f(0, 1) = 0 < f(1, 0))
     report, v = verify(tmp_path, "f = Piecewise((0, Eq(e1, 0)), (log(1 + rho), True))\n")

@@ -105,7 +105,13 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
         if bounded:
             return _with_bounded(limits, isinstance(expr, sp.Add))
         if isinstance(expr, sp.Mul):
-            return _mul(limits)
+            try:
+                return _mul(limits)
+            except NoLimit:     # 0 * oo in a rational function: 1/(x^2 (1 + x^-2)) is 1/(x^2 + 1)
+                cancelled = sp.cancel(expr) if expr.is_rational_function(x) else expr
+                if cancelled == expr:
+                    raise
+                return _limit(cancelled, x)
         lim = _add(limits)
         if lim.side is None and not lim.infinite and sign_of(lim.value) == 0:
             lim = Lim(lim.value, _polynomial_side(expr, x))
