@@ -327,6 +327,34 @@ def test_jump_of_a_piecewise_f_along_the_axis():
             DC.check(bad)
 
 
+HALF = sp.Piecewise((sp.log(1 + RHO), e1 > 0), (2 * sp.log(1 + RHO), True))   # switches across the line e1 = 0
+
+
+def test_jump_across_a_line_off_the_axes():
+    """HALF on the line e2 = 1: f(t, 1) = 2 log(2 + t^2) for t <= 0, log(2 + t^2) for t > 0, so the
+    limits at t = 0 are 2 log 2 (left, also the value) and log 2 (right): df/de1 does not exist at
+    (0, 1), and P1, P5, P6 fail.  On the axis itself f(t, 0) is continuous at 0 (both sides -> 0)."""
+    for name in ("P1", "P5", "P6"):
+        data = proposed(name, HALF, {"e1": "0", "e2": "1", "jump": "e1"})
+        w = data["properties"][name]["witness"]
+        assert (w["kind"], w["points"], w["compare"]) == ("jump", [["Integer(0)", "Integer(1)"]], "sides")
+        assert checked(data).witness == "f(t, 1) jumps at t = 0: left limit 2*log(2), right limit log(2), value 2*log(2)"
+    with pytest.raises(DC.CertificateError, match="P7: a jump of the order-0 derivative in e1 does not refute P7"):
+        DC.check(as_property(data, "P6", "P7"))
+    for point in (["Integer(0)", "Integer(0)"], ["Integer(0)", "Integer(2)"],
+                  ["Integer(0)", "Pow(Integer(2), Rational(1, 2))"]):       # the axis, another line, not rational
+        bad = copy.deepcopy(data)
+        bad["properties"]["P6"]["witness"]["points"] = [point]
+        with pytest.raises(DC.CertificateError, match="P6: the kernel's conclusions are not the witness 'jump'"):
+            DC.check(bad)
+    # switching across e2 = 0: f(1, t) jumps at t = 0, so df/de2 does not exist at (1, 0): P1, P7
+    flip = HALF.xreplace({e1 > 0: e2 > 0})
+    data = proposed("P7", flip, {"e1": "1", "e2": "0", "jump": "e2"})
+    assert checked(data).witness == "f(1, t) jumps at t = 0: left limit 2*log(2), right limit log(2), value 2*log(2)"
+    theorems, record, why = refutation_theorems("P5", refuted("", {"e1": "1", "e2": "0", "jump": "e2"}), flip)
+    assert theorems is None                 # no jump of f in e1 there: P5 holds for flip
+
+
 def test_tampered_jump_witness_is_rejected():
     data = proposed("P6", JUMP, {"e1": "1", "e2": "0"})
     for key, value in (("branches", [1, 1]), ("branches", [0, 0]), ("compare", "left"), ("width", "Rational(1, 2)"),

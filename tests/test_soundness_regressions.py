@@ -480,3 +480,19 @@ def test_a_branch_on_a_line_gives_no_slope_even_to_the_search(tmp_path):
     report, v = verify(tmp_path, "g = log(1 + e1**4 + e2**2)\nf = Piecewise((g - 10*(e1 - 1), Eq(e1, 1)), (g, True))\n",
                        kernel_only=False)
     assert v["P4"] == "refuted" and v["P5"] != "refuted" and v["P6"] != "refuted"
+
+
+@pytest.mark.parametrize("body, refuted_, holds", [
+    # f jumps across e1 = 0 away from the origin: df/de1 does not exist at (0, 1): P1, P5, P6 fail;
+    # f > 0 off the origin and -> oo: P3 holds
+    ("f = Piecewise((log(1 + rho), e1 > 0), (2*log(1 + rho), True))\n", {"P1", "P5", "P6"}, {"P3"}),
+    # across e2 = 0: df/de2 does not exist at (1, 0): P1, P7 fail; df/de1 exists everywhere and is
+    # 2 e1/(1 + rho) or 4 e1/(1 + rho): P5 and P6 (k = 4, h = 1/(1 + rho) or 1/(2 (1 + rho))) hold
+    ("f = Piecewise((log(1 + rho), e2 > 0), (2*log(1 + rho), True))\n", {"P1", "P7"}, {"P3", "P5", "P6"}),
+    # the l1 norm: df/de1 = sign(e1) jumps across e1 = 0, df/de2 across e2 = 0: P1, P5, P6, P7 fail
+    ("f = abs(e1) + abs(e2)\n", {"P1", "P5", "P6", "P7"}, {"P3"}),
+])
+def test_a_switch_across_a_line_is_refuted_with_a_kernel_checked_jump(tmp_path, body, refuted_, holds):
+    report, v = verify(tmp_path, body)
+    assert {p for p in refuted_ if v[p] == "refuted"} == refuted_, report.properties
+    assert all(v[p] != "refuted" for p in holds), v

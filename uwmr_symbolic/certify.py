@@ -1661,12 +1661,15 @@ def _witness_candidates(name, witness):
             yield {"kind": "unbounded", "var": "e1" if name == "P6" else "e2", "order": 1, "at": "0"}
         if name == "P5":
             yield {"kind": "unbounded", "var": "e1", "order": 1, "at": "0", "divided": False}
-    if name in ("P1", "P5", "P6") and p is not None and p[1] == 0:    # f(t, 0) or df/de1 jumps at t = e1?
+    if name in ("P1", "P5", "P6") and p is not None and (p[1] == 0 or w.get("jump") == "e1"):   # f(t, e2) or df/de1 jumps at t = e1?
         yield {"kind": "jump", "points": [p]}
         yield {"kind": "jump", "points": [p], "var": "e1", "order": 1}
     if name == "P7" and p is not None and p[1] == 0:                  # f(0, t) or a derivative jumps at t = e1?
         for order in (0, 1, 2):
             yield {"kind": "jump", "points": [(sp.Integer(0), p[0])], "var": "e2", "order": order}
+    if name in ("P1", "P7") and p is not None and w.get("jump") == "e2":      # f(e1, t) jumps at t = e2?
+        for order in (0, 1) if name == "P1" else (0, 1, 2):
+            yield {"kind": "jump", "points": [p], "var": "e2", "order": order}
     if name == "P8" and p is not None and w.get("approach") == "e2":       # df/de2(x, h) -> L != 0 as h -> 0+
         yield {"kind": "e2_limit", "points": [p]}
     if str(w.get("e1")) == "0":          # at the origin (P8: e2 -> 0+ along e1 = 0)
@@ -1753,13 +1756,13 @@ def _jump_theorems(f, record):
         raise NoProof("f is not a Piecewise")
     v = sp.Symbol(record.get("var", "e1"), real=True)
     order = record.get("order", 0)
-    b = record["points"][0][0 if v.name == "e1" else 1]
+    b, other = record["points"][0] if v.name == "e1" else record["points"][0][::-1]
     for w in (sp.Rational(1, 4), sp.Rational(1, 64), sp.Rational(1, 1024)):
         found = []
         for side in (-1, 1):
             for i in range(len(f.args)):
                 try:
-                    conds = [_claim_one(options, w) for options in branch_conditions(f, b, side, i, w, v)]
+                    conds = [_claim_one(options, w) for options in branch_conditions(f, b, side, i, w, v, other)]
                 except (NoProof, CertificateError):
                     continue
                 found.append((i, conds))
@@ -1769,11 +1772,11 @@ def _jump_theorems(f, record):
         branches = [found[0][0], found[1][0]]
         try:
             lims = [_rule(K.continuous_at_end, expr=e, var=H, c=0, width=w)
-                    for e in jump_parts(f, b, branches, w, v, order)]
+                    for e in jump_parts(f, b, branches, w, v, order, other)]
         except NoProof:
             continue
         left, right = (K.parse(t.claim.other) for t in lims)
-        value = f.subs({v: b, sp.Symbol("e2" if v.name == "e1" else "e1", real=True): 0})
+        value = f.subs({v: b, sp.Symbol("e2" if v.name == "e1" else "e1", real=True): other})
         gaps = (("sides", right - left), ("left", value - left), ("right", value - right))
         for compare, gap in gaps[:1 if order else 3]:
             try:

@@ -493,7 +493,10 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
 #        with order 1, g(t) = f(t, 0): were df/de1 to exist near (b, 0), g'(b)
 #        = lim (g(b + h) - g(b))/h = g'(xi_h) -> L+ (mean value theorem), and
 #        L- likewise, so df/de1 does not exist somewhere near (b, 0): P1, P5,
-#        P6 (each needs df/de1 everywhere).
+#        P6 (each needs df/de1 everywhere).  The point may be (b, c) with c
+#        rational (var e1; (c, b) for var e2): the same on the line e2 = c
+#        (e1 = c) instead of the axis, so a switch across a line away from the
+#        origin is seen too.
 
 SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
 _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
@@ -537,19 +540,20 @@ def growing(f, v, order=1, at="oo", divided=True):
     return e if at == "oo" else e.xreplace({H: 1 / H})
 
 
-def _on_axis(v, b, side):
-    """The point b + side*h of the v axis, the other variable 0."""
-    return {v: b + side * H, (E2 if v == E1 else E1): sp.Integer(0)}
+def _on_axis(v, b, side, other=0):
+    """The point b + side*h of the line parallel to the v axis on which the
+    other variable is `other` (the v axis itself by default)."""
+    return {v: b + side * H, (E2 if v == E1 else E1): sp.sympify(other, strict=True)}
 
 
-def branch_conditions(f, b, side, i, w, v=E1):
+def branch_conditions(f, b, side, i, w, v=E1, other=0):
     """For the jump witness: what the kernel must show so that branch i of
-    the Piecewise f applies at the point b + side*h of the v axis for every
+    the Piecewise f applies at the point b + side*h of the v line (`_on_axis`) for every
     h in (0, w]: one entry per condition up to i (none for a final True),
     each a list of the acceptable (expression in H, want, strict) sign claims."""
     if not isinstance(f, sp.Piecewise) or not 0 <= i < len(f.args):
         raise CertificateError("jump: f is not a Piecewise with that branch")
-    at = _on_axis(v, b, side)
+    at = _on_axis(v, b, side, other)
     out = []
     for j, (_, cond) in enumerate(f.args[:i + 1]):
         truth = j == i
@@ -582,13 +586,13 @@ def _relation_claims(rel, at, truth):
     return [(d, want, strict)] if truth else [(d, -want, not strict)]
 
 
-def jump_parts(f, b, branches, w, v=E1, order=0):
+def jump_parts(f, b, branches, w, v=E1, order=0, other=0):
     """The one-sided branch expressions (their order-th derivatives in v)
-    at the points b - h and b + h of the v axis."""
+    at the points b - h and b + h of the v line (`_on_axis`)."""
     parts = [f.args[i][0] for i in branches]
     for _ in range(order):                      # one order at a time (SymPy's diff(e, v, 2) can be far slower)
         parts = [derivative(e, v) for e in parts]
-    return [e.xreplace(_on_axis(v, b, side)) for e, side in zip(parts, (-1, 1))]
+    return [e.xreplace(_on_axis(v, b, side, other)) for e, side in zip(parts, (-1, 1))]
 
 
 def _tail_branch(f, v, witness, claims, at, order, bad):
@@ -625,15 +629,16 @@ def _link_jump(name, f, claims, witness, bad) -> str:
     (x, y), = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
     b, other = (x, y) if v == E1 else (y, x)
     branches, w = witness.get("branches"), parse(witness.get("width"))
-    if other != 0 or not (isinstance(branches, list) and len(branches) == 2 and all(type(i) is int for i in branches)):
+    if not other.is_Rational or not (isinstance(branches, list) and len(branches) == 2
+                                     and all(type(i) is int for i in branches)):
         raise bad
     if order and any(f.args[i][0].has(*SMOOTH_ONLY) for i in branches):
         raise CertificateError(f"{name}: a jump of a derivative needs branches without Piecewise, Max, Min or sign")
     on = (_srepr(H), "Integer(0)", _srepr(w), True, False)
     k = 0
     limits = []
-    for side, i, part in zip((-1, 1), branches, jump_parts(f, b, branches, w, v, order)):
-        for options in branch_conditions(f, b, side, i, w, v):
+    for side, i, part in zip((-1, 1), branches, jump_parts(f, b, branches, w, v, order, other)):
+        for options in branch_conditions(f, b, side, i, w, v, other):
             if not _one_of(claims[k] if k < len(claims) else None, options, on):
                 raise bad
             k += 1
@@ -650,7 +655,7 @@ def _link_jump(name, f, claims, witness, bad) -> str:
             or claims[k].want == 0:
         raise bad
     what = {0: "f", 1: f"df/d{v}", 2: f"d2f/d{v}^2"}[order]
-    along = "t, 0" if v == E1 else "0, t"
+    along = f"t, {other}" if v == E1 else f"{other}, t"
     return (f"{what}({along}) jumps at t = {b}: left limit {limits[0]}, right limit {limits[1]}"
             + (f", value {value}" if order == 0 else ""))
 

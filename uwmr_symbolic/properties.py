@@ -700,13 +700,36 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
                                 f"[{val.lower_float():.6g}, {val.upper_float():.6g}]", {"e1": str(x), "e2": str(y)})
                     if _stands(name, v, f):
                         return v
-    found = {"P1": _p1_along_e2, "P3": _p3_separable, "P5": _p5_along_e1, "P6": _p6_along_e1}.get(
-        name, lambda f: None)(f)
+    found = _jump_across_a_line(f, name) or {"P1": _p1_along_e2, "P3": _p3_separable, "P5": _p5_along_e1,
+                                             "P6": _p6_along_e1}.get(name, lambda f: None)(f)
     if found is not None:
         return found
     return unknown("f is not radial; this verifier proves properties of radial f only "
                    "(P4 " + a.p4.status + "), P3 of some f = f(e1, 0) + f(0, e2), and P1 and P5-P8 of "
                    "some f analytic on the plane")
+
+
+def _jump_across_a_line(f, name: str) -> Verdict | None:
+    """P1, P5, P6 (f jumps in the e1 direction) or P1, P7 (in e2) of a
+    Piecewise f with a condition that switches across a line e1 = c or
+    e2 = c, c rational: the kernel's jump witness at a point of that line
+    (`design_certificate`, kind "jump"), tried at two points off the axes."""
+    if name not in ("P1", "P5", "P6", "P7") or not isinstance(f, sp.Piecewise):
+        return None
+    for rel in f.atoms(sp.Rel):
+        d = rel.rhs - rel.lhs
+        for v, var in ((E1, "e1"), (E2, "e2")):
+            line = d.as_poly(v) if d.free_symbols == {v} else None
+            c = -line.nth(0) / line.nth(1) if line is not None and line.degree() == 1 else None
+            if c is None or not c.is_Rational or (var == "e1") != (name != "P7") and name != "P1":
+                continue
+            for other in (sp.Integer(1), sp.Integer(-1)):
+                x, y = (c, other) if v == E1 else (other, c)
+                v_ = refuted(f"f or a derivative jumps across the line {var} = {c} at ({x}, {y})",
+                             {"e1": str(x), "e2": str(y), "jump": var})
+                if refutation_theorems(name, v_, f)[0] is not None:
+                    return v_
+    return None
 
 
 def _stands(name: str, v: Verdict, f) -> bool:
