@@ -435,7 +435,7 @@ def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
         except Undefined as exc:
             raise KernelError(f"derivative {k} not defined on [{a}, {b}]: {exc}") from None
         if k < order:
-            at_c = d.subs(var, c)
+            at_c = d.xreplace({var: c})
             _need(at_c == 0, lambda: f"derivative {k} at {c} is {at_c}, not exactly 0")
             _need(evaluate(d, var, c, c, bits=256).hull().contains(0), "Arb disagrees with exact 0")
     sigma = 1 if all(v.positive() for v in boxes) else -1 if all(v.negative() for v in boxes) else 0
@@ -844,8 +844,8 @@ def _join_at_point(left, right):
     l, r = _adjacent(left, right)
     e, var, m = l.e(), l.x(), parse(l.hi)
     if e.has(sp.Piecewise):
-        e = _branch(_folded(e), lambda d, want, strict: _sign_ok(_const_sign(d.subs(var, m)), want, strict))
-    v = e.subs(var, m)
+        e = _branch(_folded(e), lambda d, want, strict: _sign_ok(_const_sign(d.xreplace({var: m})), want, strict))
+    v = e.xreplace({var: m})
     box = _enclose(e, var, m, m, lambda: f"E undefined at {m}", bits=256)        # also: E defined at m
     zero = box.hull().contains(0) and (v == 0 or _zero_when_generalized(v))    # (Arb first: exact 0 may cost)
     return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, False), v, zero, box
@@ -1017,9 +1017,9 @@ def continuous_piecewise(*signs, expr, var, cuts):
     Claim kind "continuous" on (0, oo)."""
     pw, e, ends, branches, _ = _pieces(signs, expr, var, cuts)
     for b, left, right in zip(ends[1:-1], branches, branches[1:]):
-        at = _branch(pw, lambda d, want, strict: _sign_ok(_const_sign(d.subs(var, b)), want, strict))
+        at = _branch(pw, lambda d, want, strict: _sign_ok(_const_sign(d.xreplace({var: b})), want, strict))
         for g in (left, right):
-            d = g.subs(var, b) - at.subs(var, b)
+            d = g.xreplace({var: b}) - at.xreplace({var: b})
             _need(d == 0 or _zero_when_generalized(d), lambda: f"the branches differ at {b}")
             _need(_enclose(at - g, var, b, b, lambda: f"P undefined at {b}", bits=256).hull().contains(0),
                   "Arb disagrees with exact 0")
@@ -1570,7 +1570,7 @@ def continuous_at_end(*, expr, var, c, width):
     _interval(var, c, c + w, False, False, at_zero=True)
     e = _expr(expr, var)
     _enclose(e, var, c, c + w, lambda: f"{e} not defined on [{c}, {c + w}]")
-    v = _number(e.subs(var, c))
+    v = _number(e.xreplace({var: c}))
     _need(evaluate(e - v, var, c, c, bits=256).hull().contains(0), "Arb disagrees with E(c)")
     return Claim("limit", _s(e), _s(var), _s(c), _s(c + w), other=_s(v))
 continuous_at_end = rule("arb", "sympy-core")(continuous_at_end)
@@ -1677,7 +1677,7 @@ def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
     _need(_lt(p, hi) or (p == hi and not hi_open), "point after I")
     v = _enclose(e, var, p, p, lambda: f"E undefined at {p}", bits=256)       # also: E defined at p
     if not v.lo >= evaluate(L, bits=256).hi:      # else E(p) - L exactly 0 (Arb first: exact 0 may cost)
-        d = sp.sympify(e.subs(var, p) - L)
+        d = sp.sympify(e.xreplace({var: p}) - L)
         _need(d == 0 or _zero_when_generalized(d), lambda: f"E({p}) >= {L} not shown")
     return Claim("sup_lower", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(L))
 sup_lower_by_point = rule("arb", "sympy-core")(sup_lower_by_point)
@@ -1699,7 +1699,7 @@ def _tail_limit(ident, expr, var, width):
     et = ic.e()
     try:
         evaluate(et, t, 0, w)
-        c = _number(et.subs(t, 0))             # finite: E_t is defined on [0, w]
+        c = _number(et.xreplace({t: sp.Integer(0)}))             # finite: E_t is defined on [0, w]
         at0 = evaluate(et - c, t, 0, 0, bits=256)
     except Undefined as exc:
         raise KernelError(f"E_t not defined on [0, {w}]: {exc}") from None
