@@ -764,7 +764,7 @@ class Prover:
                 self.charge(_tail_units(sp.count_ops(e)))
                 et = _tail_form(e, var)
                 th = self.prove(et, T, (sp.Integer(0), 1 / R, True, False), want, strict, depth)
-                ident = self._identity(lhs=et, rhs=e.subs(var, 1 / T), var=T, lo=0, hi=1 / R,
+                ident = self._identity(lhs=et, rhs=e.xreplace({var: 1 / T}), var=T, lo=0, hi=1 / R,
                                        lo_open=True, hi_open=False)       # only now: simplify may be slow
                 tail = _rule(K.sign_on_tail, th, ident, expr=e, var=var, R=R)
         except NoProof as exc:
@@ -1521,7 +1521,7 @@ def _sup_pair(E, c, point, var):
     else:
         w = sp.Rational(1, 4)
         try:
-            ident = _rule(K.identity, lhs=_tail_form(E, var), rhs=E.subs(var, 1 / T), var=T, lo=0, hi=w,
+            ident = _rule(K.identity, lhs=_tail_form(E, var), rhs=E.xreplace({var: 1 / T}), var=T, lo=0, hi=w,
                           lo_open=True, hi_open=False)
             lower = _rule(K.sup_lower_by_limit, ident, expr=E, var=var, width=w, bound=c, lo=0, lo_open=True)
         except NoProof:
@@ -1540,7 +1540,7 @@ def limit_at_infinity(e, var, w=sp.Rational(1, 4)):
     form = _with_tanh(e)
     bounded = [a for a in sp.Mul.make_args(form) if type(a) in K._SUP]
     if not bounded:
-        ident = _rule(K.identity, lhs=_tail_form(e, var), rhs=e.subs(var, 1 / T), var=T, lo=0, hi=w,
+        ident = _rule(K.identity, lhs=_tail_form(e, var), rhs=e.xreplace({var: 1 / T}), var=T, lo=0, hi=w,
                       lo_open=True, hi_open=False)
         lim = _rule(K.limit_at_infinity, ident, expr=e, var=var, width=w)
     else:

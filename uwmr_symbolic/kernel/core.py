@@ -605,7 +605,7 @@ def _side_of_root(q, a, b, end) -> int:
             return -1
         if _lt(end, a):
             return 1
-        if (a == b or (_lt(a, end) and _lt(end, b))) and sp.expand(q.as_expr().subs(q.gen, end)) == 0:
+        if (a == b or (_lt(a, end) and _lt(end, b))) and sp.expand(q.as_expr().xreplace({q.gen: end})) == 0:
             return 0
         _need(a != b, lambda: f"cannot place the root {a} against {end}")
         a, b = (sp.Rational(v) for v in q.refine_root(a, b, eps=(b - a) / 16))
@@ -940,7 +940,7 @@ def _branch(pw, sign_ok, at=0):
             for c in [-p.nth(0) / p.nth(1)] if p.degree() == 1 else p.real_roots():
                 if not x.is_nonnegative or _const_sign(c) >= 0:      # (no root c < 0 lies in I then)
                     _need(_enclose(G - value, x, c, c, lambda: f"{G} at {x} = {c}").hull().contains(0), "Arb disagrees")
-                    _need(_exact_zero(value.subs(x, c), G.subs(x, c), ()), lambda: f"the value where {cond} is not {G}'s")
+                    _need(_exact_zero(value.xreplace({x: c}), G.xreplace({x: c}), ()), lambda: f"the value where {cond} is not {G}'s")
             return G
     raise KernelError("no branch applies")
 
@@ -1202,7 +1202,7 @@ def sign_on_tail(tail, ident, *, expr, var, R):
     """s = 1/t on [R, oo), R > 0.  Premises: (1) a sign theorem about E_t on
     (0, 1/R] in a variable t; (2) an identity theorem E_t(t) = E(1/t) on
     a t-interval containing (0, 1/R], where the right side is literally
-    E.subs(s, 1/t); and the kernel's own check that E is defined for every
+    E.xreplace({s: 1/t}); and the kernel's own check that E is defined for every
     s >= R (`_defined`, also for E(1/t) at every t in (0, 1/R)).  For s
     >= R, t = 1/s lies in (0, 1/R], both sides are defined there, so E(s) =
     E_t(t) has the sign: claim on [R, oo)."""
@@ -1214,13 +1214,13 @@ def sign_on_tail(tail, ident, *, expr, var, R):
     _need(t != var and isinstance(t, sp.Symbol), "the tail variable must differ from the variable")
     _need((tc.lo, tc.lo_open, tc.hi, tc.hi_open) == (_s(0), True, _s(1 / R), False),
           "the tail theorem must be about (0, 1/R]")
-    _need(ic.var == tc.var and ic.expr == tc.expr and ic.other == _s(e.subs(var, 1 / t)),
-          "the identity must read E_t(t) = E(1/t)")
+    et = e.xreplace({var: 1 / t})
+    _need(ic.var == tc.var and ic.expr == tc.expr and ic.other == _s(et), "the identity must read E_t(t) = E(1/t)")
     ia, ib = ic.ends()
     _need((ia == 0 or _lt(ia, 0)) and (_lt(1 / R, ib) or (ib == 1 / R and not ic.hi_open)),
           "the identity must hold on (0, 1/R]")
     extra = _defined(e, var, R, lo_open=False)
-    at_t = _defined(e.subs(var, 1 / t), t, 0, 1 / R)       # E(1/t) defined for t in (0, 1/R)
+    at_t = _defined(et, t, 0, 1 / R)       # E(1/t) defined for t in (0, 1/R)
     _interval(var, R, OO, False, True)
     return _sign_claim(e, var, R, OO, False, True, tc.want, tc.strict), {*extra, *at_t}
 sign_on_tail = rule("sympy-core")(sign_on_tail)
@@ -1540,7 +1540,7 @@ def identity_plane(*, lhs, rhs, x, y):
     if _exact_zero(l, r, (x, y)):
         return claim, ("sympy-polys",)
     _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
-    _vanishes_at([(f"({p}, {q})", lambda p=p, q=q: evaluate(d.subs({x: p, y: q}), bits=CROSS_CHECK_BITS))
+    _vanishes_at([(f"({p}, {q})", lambda p=p, q=q: evaluate(d.xreplace({x: p, y: q}), bits=CROSS_CHECK_BITS))
                   for p, q in _PLANE_POINTS])
     return claim, ("sympy-simplify", "arb")
 identity_plane = rule("sympy-core")(identity_plane)
@@ -1692,7 +1692,7 @@ def _tail_limit(ident, expr, var, width):
     _need(t != var, "the tail variable must differ from the variable")
     e, w = _expr(expr, var), _number(width)
     _need(_lt(0, w) and w != OO, "finite w > 0")
-    _need(ic.other == _s(e.subs(var, 1 / t)), "the identity must read E_t(t) = E(1/t)")
+    _need(ic.other == _s(e.xreplace({var: 1 / t})), "the identity must read E_t(t) = E(1/t)")
     ia, ib = ic.ends()
     _need((ia == 0 or _lt(ia, 0)) and (_lt(w, ib) or (ib == w and not ic.hi_open)),
           "the identity must hold on (0, w]")
