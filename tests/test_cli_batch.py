@@ -312,10 +312,6 @@ def test_changed_verifier_source_is_a_different_key(monkeypatch):
     assert cache.digest(cache.design_key(d)) != cache.digest(key)
 
 
-# The 0.2 s limit may expire inside a garbage-collector callback (hypothesis installs one),
-# where Python prints and drops the exception: timeouts.REFIRE raises it again, which is
-# what this test relies on; the dropped first one is only reported, as a warning.
-@pytest.mark.filterwarnings("ignore::pytest.PytestUnraisableExceptionWarning")
 def test_a_result_with_an_expired_time_limit_answers_no_longer_run(tmp_path):
     """design 3 needs about a second: with --timeout 0.2 it ends inconclusive,
     a result that depends on the time given: it is stored with its timeout
