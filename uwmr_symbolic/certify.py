@@ -1661,7 +1661,8 @@ def _witness_candidates(name, witness):
             yield {"kind": "unbounded", "var": "e1" if name == "P6" else "e2", "order": 1, "at": "0"}
         if name == "P5":
             yield {"kind": "unbounded", "var": "e1", "order": 1, "at": "0", "divided": False}
-    if name in ("P1", "P5", "P6") and p is not None and (p[1] == 0 or w.get("jump") == "e1"):   # f(t, e2) or df/de1 jumps at t = e1?
+    # f(t, 0) or df/de1 jumps at t = e1?  (or on the line through p when the search says so)
+    if name in ("P1", "P5", "P6") and p is not None and (p[1] == 0 or w.get("jump") == "e1"):
         yield {"kind": "jump", "points": [p]}
         yield {"kind": "jump", "points": [p], "var": "e1", "order": 1}
     if name == "P7" and p is not None and p[1] == 0:                  # f(0, t) or a derivative jumps at t = e1?

@@ -295,7 +295,8 @@ def _link_plane(name, f, claims) -> list[str]:
     on = (_srepr(S), "Integer(0)", "oo", True, True)
     sides = (phi.xreplace({E1: S}), -phi.xreplace({E1: -S}))
     want = [("continuous", _srepr(e), *plane) for e in ([f, g] if name == "P8" else [f])]
-    ok = not f.has(*SMOOTH_ONLY, *([] if name == "P3" else [sp.Abs])) and (name not in ("P5", "P6") or not phi.has(E2))
+    ok = not f.has(*SMOOTH_ONLY, *([] if name == "P3" else [sp.Abs])) and (name not in ("P5", "P6")
+                                                                          or not phi.has(E2))
     if name == "P1":
         want += [("sup_upper", _srepr(e), *on, 0, False) for e in e2_sides(f)]
         ok = ok and not g.has(E1) and len(claims) == 5 and len({c.other for c in claims[1:]}) == 1
