@@ -29,6 +29,7 @@ CASES = {
     "math_sqrt.py": "math.sqrt of a SymPy expression",
     "caret_power.py": "^ written for a power",
     "undefined_function.py": "f = g(rho) with g = sympy.Function('g')",
+    "huge_constant.py": "a constant of 5,001 digits",
 }
 
 #: file -> the words of the one line that name the fix
@@ -38,6 +39,7 @@ FIXES = {
     "math_sqrt.py": ["at line 7", "math.sqrt", "use sympy.sqrt"],
     "caret_power.py": ["at line 5", "write powers with **"],
     "undefined_function.py": ["the undefined function 'g'", "write f with SymPy's functions"],
+    "huge_constant.py": ["more than 4,200 digits", "scale f"],
 }
 HANGS = "sleep_forever.py"
 

@@ -175,6 +175,12 @@ def test_cli_writes_and_rechecks_a_certificate(tmp_path):
     both = run_cli(["--check-certificate", str(out), str(bad), str(out), "--jobs", "2"])
     assert both.returncode == 1 and both.stderr.startswith(f"{bad}: the certificate does not check"), both.describe()
     assert [ln for ln in both.stdout.splitlines() if not ln.startswith(" ")] == [f"{out}: certificate re-checked"] * 2
+    # --timeout bounds a check too: a file whose check outlives it does not check (one line, exit 1)
+    slow = run_cli(["--check-certificate", str(out), "--timeout", "0.001"])
+    assert slow.returncode == 1 and slow.stderr == (f"{out}: the certificate does not check: not finished within "
+                                                    "--timeout 0.001 s (a step ran that long; a larger --timeout "
+                                                    "gives it more time)\n"), slow.describe()
+    assert slow.stdout == ""
 
 
 def test_a_certificate_rechecks_in_a_fresh_process_whatever_form_the_prover_held(tmp_path):

@@ -964,3 +964,17 @@ def test_tampered_plane_claim_is_rejected():
     cert["theorems"][0]["claim"]["expr"] = sp.srepr(sp.log(prho))
     with pytest.raises(CertificateError, match="not shown defined on the plane"):
         check_certificate(cert)
+
+
+def test_what_is_no_identity_is_refused_by_the_cross_check_before_simplify_runs():
+    """f = prod_k (1 + sin(e1 + k e2)^2) - 1 + e1^2 against f(e1, 0) + f(0, e2): no identity, and
+    SymPy's simplify ran for minutes on the difference (a tampered P3 certificate hung the checker,
+    found by an adversarial campaign); Arb shows the difference nonzero at the first point at once."""
+    f = sp.Mul(*[1 + sp.sin(px + k * py) ** 2 for k in range(1, 7)]) - 1 + px ** 2
+    split = f.xreplace({py: 0}) + f.xreplace({px: 0})
+    with pytest.raises(KernelError, match=r"^the identity fails at \(1/3, 2/7\): lhs - rhs = "):
+        K.identity_plane(lhs=f, rhs=split, x=px, y=py)
+    t = sp.Symbol("t", positive=True)
+    g = sp.Mul(*[1 + sp.sin(t + k) ** 2 for k in range(1, 7)])
+    with pytest.raises(KernelError, match=r"^the identity fails at t = 1/10: lhs - rhs = "):
+        K.identity(lhs=g, rhs=g.xreplace({t: 2 * t}), var=t, lo=0, hi=1, lo_open=True, hi_open=False)

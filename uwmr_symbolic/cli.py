@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import os
 import sys
@@ -116,7 +117,8 @@ def build_parser() -> argparse.ArgumentParser:
                         "rests on the search) to PATH; with several files PATH is a directory of STEM.cert.json")
     p.add_argument("--check-certificate", nargs="+", metavar="CERT",
                    help="re-check certificate file(s) in the kernel without any search (in parallel, --jobs) and "
-                        "say what each property rests on (exit 0 all check, 1 one does not, 2 unreadable)")
+                        "say what each property rests on (exit 0 all check, 1 one does not or its check outlives "
+                        "--timeout, 2 unreadable)")
     p.add_argument("--trust-search", dest="kernel_only", action="store_false",
                    help="also count verdicts the search proved or refuted but the trusted kernel could not "
                         "re-check (by default they are 'unknown' and a gain check needs a kernel-checked kf); "
@@ -245,30 +247,37 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
     return status
 
 
-def _check_one_certificate(name: str) -> tuple[int, str, str]:
+def _check_one_certificate(name: str, timeout: float = DEFAULT_TIMEOUT) -> tuple[int, str, str]:
     """(status, stdout text, stderr text) of `--check-certificate` for one file."""
     from .design_certificate import CertificateError, check
+    from .timeouts import TimeLimit, time_limit
     try:
         text = Path(name).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         return 2, "", f"{name}: cannot read the certificate: {exc}"
     try:
-        lines = [c.line() for c in check(text)]
+        with time_limit(timeout):
+            lines = [c.line() for c in check(text)]
     except CertificateError as exc:
         return 1, "", f"{name}: the certificate does not check: {exc}"
+    except TimeLimit:
+        return 1, "", (f"{name}: the certificate does not check: not finished within --timeout {timeout:g} s "
+                       "(a step ran that long; a larger --timeout gives it more time)")
     return 0, "\n".join([f"{name}: certificate re-checked", *("  " + line for line in lines)]), ""
 
 
-def check_certificates(files, jobs: int | None = None) -> int:
+def check_certificates(files, jobs: int | None = None, timeout: float = DEFAULT_TIMEOUT) -> int:
     """`--check-certificate`: re-check each file in the kernel, one process
-    per core (forked: the kernel is imported once), reported in order."""
+    per core (forked: the kernel is imported once), reported in order; a
+    file whose check outlives `timeout` seconds does not check."""
     import multiprocessing
     jobs = max(1, min(jobs or os.cpu_count() or 1, len(files)))
+    one = functools.partial(_check_one_certificate, timeout=timeout)
     if jobs > 1 and "fork" in multiprocessing.get_all_start_methods():
         with multiprocessing.get_context("fork").Pool(jobs) as pool:
-            results = pool.map(_check_one_certificate, files, chunksize=1)
+            results = pool.map(one, files, chunksize=1)
     else:
-        results = [_check_one_certificate(name) for name in files]
+        results = [one(name) for name in files]
     for _, out, err in results:
         if err:
             print(err, file=sys.stderr)
@@ -299,8 +308,6 @@ def write_certificates(paths, results, target) -> int:
 
 def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
-    if args.check_certificate:
-        return check_certificates(args.check_certificate, args.jobs)
     try:
         settings.apply(args, DEFAULT_TIMEOUT)   # [tool.uwmr-symbolic] in pyproject.toml; flags win
     except settings.SettingsError as exc:
@@ -312,6 +319,8 @@ def main(argv=None) -> int:
     if args.jobs is not None and args.jobs < 1:
         print("uwmr-verify: --jobs must be at least 1", file=sys.stderr)
         return 2
+    if args.check_certificate:
+        return check_certificates(args.check_certificate, args.jobs, args.timeout)
     if args.check_generated:
         return check_generated(args)
     if args.force and args.codegen is None:

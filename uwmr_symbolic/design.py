@@ -308,6 +308,9 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
         raise DesignError(f"params[{unused[0]!r}] names no symbol of f")
     f = sp.piecewise_fold(f.rewrite(sp.Piecewise)) if f.has(sp.Abs, sp.Max, sp.Min, sp.Heaviside, sp.sign) else f
     _check_real_valued(f)
+    if any(max(abs(r.p), r.q).bit_length() > 14_000 for r in f.atoms(sp.Rational)):   # Python prints <= 4,300 digits
+        raise DesignError("f holds a number of more than 4,200 digits, which cannot be printed into a certificate "
+                          "or code; scale f (or its parameters) to smaller constants")
     gains = _parse_gains(ns.get("gains"))
     name = ns.get("name") if isinstance(ns.get("name"), str) else path.stem
     description = ns.get("description") if isinstance(ns.get("description"), str) else ""

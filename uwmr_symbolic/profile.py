@@ -99,8 +99,8 @@ def elliptic_ratio(f, F):
             break
     else:
         return None
-    if ca == 0 or cb == 0 or not (cb / ca).is_positive:
-        return None
+    if ca == 0 or cb == 0 or (cb / ca).atoms(sp.Function) or not (cb / ca).is_positive:
+        return None         # (exp(-10^10 c^2) in a ratio sent radsimp's nsimplify into a MemoryError)
     r = sp.radsimp((cb / ca) ** sp.Rational(1, m))
     if r == 1 or not r.is_positive or r.has(sp.Float):
         return None

@@ -1462,8 +1462,8 @@ def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
     claim = Claim("identity", _s(l), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(r))
     if _exact_zero(l, r, (var,)):
         return claim, ("sympy-polys",)
+    _cross_check(d, var, lo, hi)        # first: simplify may run for minutes on what is no identity
     _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
-    _cross_check(d, var, lo, hi)
     return claim, ("sympy-simplify", "arb")
 identity = rule("sympy-core")(identity)
 
@@ -1539,9 +1539,9 @@ def identity_plane(*, lhs, rhs, x, y):
     d = l - r
     if _exact_zero(l, r, (x, y)):
         return claim, ("sympy-polys",)
-    _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
     _vanishes_at([(f"({p}, {q})", lambda p=p, q=q: evaluate(d.xreplace({x: p, y: q}), bits=CROSS_CHECK_BITS))
-                  for p, q in _PLANE_POINTS])
+                  for p, q in _PLANE_POINTS])        # first: simplify may run for minutes on what is no identity
+    _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
     return claim, ("sympy-simplify", "arb")
 identity_plane = rule("sympy-core")(identity_plane)
 
