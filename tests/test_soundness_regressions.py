@@ -496,3 +496,14 @@ def test_a_switch_across_a_line_is_refuted_with_a_kernel_checked_jump(tmp_path, 
     report, v = verify(tmp_path, body)
     assert {p for p in refuted_ if v[p] == "refuted"} == refuted_, report.properties
     assert all(v[p] != "refuted" for p in holds), v
+
+
+def test_a_narrow_gaussian_dip_on_an_axis_is_no_crash(tmp_path):
+    """log(1 + e1^2) - 3 (exp(-1e10 (e1 + c)^2) - exp(-1e10 c^2)) + log(1 + e2^2), c = 3.1415: the
+    elliptic ratio was proposed from Taylor coefficients holding exp(-1e10 c^2), and radsimp's
+    nsimplify ran out of memory (exit 2, internal error).  f(-c, 0) = log(1 + c^2) - 3 + 3 exp(-1e10 c^2)
+    < 0: P3 fails."""
+    report, v = verify(tmp_path, "c = Rational(31415, 10000)\n"
+                                 "f = log(1 + e1**2) - 3*(sp.exp(-10**10*(e1 + c)**2) - sp.exp(-10**10*c**2))"
+                                 " + log(1 + e2**2)\n")
+    assert v["P3"] == "refuted" and v["P4"] == "refuted", report.properties
