@@ -363,6 +363,15 @@ def test_tampered_jump_witness_is_rejected():
         bad["properties"]["P6"]["witness"][key] = value
         with pytest.raises(DC.CertificateError, match="P6: (the kernel's conclusions are not the witness 'jump'|jump:)"):
             DC.check(bad)
+    # malformed records are refused as such, never a traceback (found by an adversarial campaign)
+    for key, value, msg in (("points", [["Integer(1)", "1"]], "P6: the kernel's conclusions are not the witness"),
+                            ("branches", [0, 9], "P6: the kernel's conclusions are not the witness"),
+                            ("points", [["Integer(1)", "Integer(0)", "Integer(0)"]], "malformed design certificate"),
+                            ("points", [], "malformed design certificate")):
+        bad = copy.deepcopy(data)
+        bad["properties"]["P6"]["witness"][key] = value
+        with pytest.raises(DC.CertificateError, match=msg):
+            DC.check(bad)
     dropped = copy.deepcopy(data)        # without the theorem that the left branch applies
     kernel = dropped["properties"]["P6"]["kernel"]
     kernel["conclusions"] = kernel["conclusions"][1:]

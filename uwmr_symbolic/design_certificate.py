@@ -39,7 +39,7 @@ from . import e1 as E1, e2 as E2
 from .certify import REDUCTION
 from .kernel.certificate import CertificateError, check_certificate, to_certificate  # noqa: F401 (re-exported)
 from .kernel.core import _TRUE_WHEN, _srepr, derivative    # when a relation l < r (<=, >, >=) holds: the sign of r - l; srepr, cached
-from .kernel.parse import ParseError, parse
+from .kernel.parse import parse
 from .profile import S
 
 FORMAT, VERSION = "uwmr-design-certificate", 1
@@ -630,8 +630,8 @@ def _link_jump(name, f, claims, witness, bad) -> str:
     (x, y), = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
     b, other = (x, y) if v == E1 else (y, x)
     branches, w = witness.get("branches"), parse(witness.get("width"))
-    if not other.is_Rational or not (isinstance(branches, list) and len(branches) == 2
-                                     and all(type(i) is int for i in branches)):
+    if not isinstance(other, sp.Rational) or not (isinstance(branches, list) and len(branches) == 2
+                                                  and all(type(i) is int and 0 <= i < len(f.args) for i in branches)):
         raise bad
     if order and any(f.args[i][0].has(*SMOOTH_ONLY) for i in branches):
         raise CertificateError(f"{name}: a jump of a derivative needs branches without Piecewise, Max, Min or sign")
@@ -827,6 +827,8 @@ def check(data) -> list[PropertyCheck]:
         if p4 is not None and p4.kernel_checked:        # the reduction is the identity P4 rests on
             for c in out:
                 c.unchecked = [u for u in c.unchecked if u != REDUCTION]
-    except (KeyError, TypeError, ParseError) as exc:
+    except CertificateError:
+        raise
+    except (KeyError, TypeError, ValueError, IndexError, AttributeError) as exc:     # (ParseError is a ValueError)
         raise CertificateError(f"malformed design certificate: {type(exc).__name__}: {exc}") from None
     return out
