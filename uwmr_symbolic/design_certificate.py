@@ -293,7 +293,7 @@ def _link_plane(name, f, claims) -> list[str]:
     g, phi = derivative(f, E2), derivative(f, E1)
     plane = (_srepr(sp.Tuple(E1, E2)), "-oo", "oo", True, True, 0, False)
     on = (_srepr(S), "Integer(0)", "oo", True, True)
-    sides = (phi.xreplace({E1: S}), -phi.xreplace({E1: -S}))
+    sides = e1_sides(f)
     want = [("continuous", _srepr(e), *plane) for e in ([f, g] if name == "P8" else [f])]
     ok = not f.has(*SMOOTH_ONLY, *([] if name == "P3" else [sp.Abs])) and (name not in ("P5", "P6")
                                                                           or not phi.has(E2))
@@ -321,6 +321,12 @@ def _link_plane(name, f, claims) -> list[str]:
                                "P3: f = f(e1, 0) + f(0, e2), each half-axis function > 0 and -> oo; "
                                "P1: df/de2 = psi(e2) bounded by one U)")
     return []
+
+
+def e1_sides(f) -> list:
+    """phi(s), -phi(-s) for phi = df/de1 (P5, P6 when phi is free of e2)."""
+    phi = derivative(f, E1)
+    return [phi.xreplace({E1: S}), -phi.xreplace({E1: -S})]
 
 
 def e2_sides(f) -> list:

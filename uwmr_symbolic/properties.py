@@ -28,7 +28,7 @@ import sympy as sp
 
 from . import e1 as E1, e2 as E2
 from .design import Design
-from .design_certificate import SMOOTH_ONLY, axis_split, e2_sides, half_axes
+from .design_certificate import _JUMPS, SMOOTH_ONLY, axis_split, e1_sides, e2_sides, half_axes
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
                       origin_value_theorems, piecewise_sign_theorem, plane_theorems, radial_theorems,
@@ -721,20 +721,20 @@ def _jump_across_a_line(f, name: str) -> Verdict | None:
     apparent jumps took a minute)."""
     if name not in ("P1", "P5", "P6", "P7") or not isinstance(f, sp.Piecewise):
         return None
+    directions = [v for v in (E1, E2) if name in _JUMPS[(v.name, 0)]]      # the jumps that refute `name`
     lines = []
     for rel in sorted(f.atoms(sp.Rel), key=sp.default_sort_key):
         d = rel.rhs - rel.lhs
-        for v, var in ((E1, "e1"), (E2, "e2")):
+        for v in directions:
             line = d.as_poly(v) if d.free_symbols == {v} else None
             c = -line.nth(0) / line.nth(1) if line is not None and line.degree() == 1 else None
-            if c is not None and c.is_Rational and ((var == "e1") == (name != "P7") or name == "P1") \
-                    and (v, var, c) not in lines:
-                lines.append((v, var, c))
-    for v, var, c in lines[:_LINES_TRIED]:
+            if c is not None and c.is_Rational and (v, c) not in lines:
+                lines.append((v, c))
+    for v, c in lines[:_LINES_TRIED]:
         for other in (sp.Integer(1), sp.Integer(-1)):
             x, y = (c, other) if v == E1 else (other, c)
-            found = refuted(f"f or a derivative jumps across the line {var} = {c} at ({x}, {y})",
-                            {"e1": str(x), "e2": str(y), "jump": var})
+            found = refuted(f"f or a derivative jumps across the line {v} = {c} at ({x}, {y})",
+                            {"e1": str(x), "e2": str(y), "jump": v.name})
             if refutation_theorems(name, found, f)[0] is not None:
                 return found
     return None
@@ -832,11 +832,10 @@ def _p5_along_e1(f) -> Verdict | None:
     """P5 of an f analytic on the plane (`continuous_on_plane`) whose df/de1
     = phi(e1) does not depend on e2 (f = g(e1) + h(e2), for instance):
     phi(s) > 0 and -phi(-s) > 0 for s > 0, kernel sign theorems."""
-    phi = _phi_of_e1(f)
-    if phi is None:
+    if _phi_of_e1(f) is None:
         return None
     plane = plane_theorems(f, E1, E2, [])
-    sides = [sign_theorems(e, S, 0, sp.oo)[0] for e in (phi.xreplace({E1: S}), -phi.xreplace({E1: -S}))]
+    sides = [sign_theorems(e, S, 0, sp.oo)[0] for e in e1_sides(f)]
     if not plane or not all(t is not None and len(t) == 1 for t in sides):
         return None
     return proved("df/de1 = phi(e1) does not depend on e2 (f analytic on the plane), and phi(s) > 0, -phi(-s) > 0 "
@@ -852,7 +851,7 @@ def _p6_along_e1(f) -> Verdict | None:
     phi = _phi_of_e1(f)
     if phi is None:
         return None
-    sides = [phi.xreplace({E1: S}), -phi.xreplace({E1: -S})]
+    sides = e1_sides(f)
     k = _proposed_bound([e / S for e in sides])
     if k is None:
         return None
@@ -895,7 +894,9 @@ def _p1_along_e2(f) -> Verdict | None:
         return None
     U = _proposed_bound(sides)
     plane = plane_theorems(f, E1, E2, []) if U is not None else []
-    uppers = [sup_upper_theorem(e, U, S) for e in sides] if plane else [None]
+    if not plane:
+        return None
+    uppers = [sup_upper_theorem(e, U, S) for e in sides]
     if None in uppers:
         return None
     return proved(f"f is analytic on the plane, so C^1; df/de2 = psi(e2) does not depend on e1, and "
@@ -913,10 +914,11 @@ def _p3_separable(f) -> Verdict | None:
     split = separable_theorems(f, E1, E2, axis_split(f))
     if not split:
         return None
-    signs = [sign_theorems(u, S, 0, sp.oo)[0] for u in half_axes(f)]
+    halves = half_axes(f)
+    signs = [sign_theorems(u, S, 0, sp.oo)[0] for u in halves]
     if not all(t is not None and len(t) == 1 for t in signs):
         return None
-    growth = [growth_theorems(u, S) for u in half_axes(f)]
+    growth = [growth_theorems(u, S) for u in halves]
     if not all(len(t) == 1 for t in growth):
         return None
     return proved("f(e1, e2) = f(e1, 0) + f(0, e2) on the plane, and on each half-axis f > 0 and f -> oo "
