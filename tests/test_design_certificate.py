@@ -150,6 +150,21 @@ def test_proved_without_anything_to_rest_on_is_rejected(cert1):
         DC.check(bad)
 
 
+def test_a_verdict_proved_with_nothing_behind_it_is_written_as_the_search_alone():
+    """A proposer that leaves a proved verdict with no kernel theorems and no
+    unchecked facts must not write a certificate that fails to re-check (it
+    would take every other verdict down with it): such an entry rests on the
+    search, visibly."""
+    report = verify_design(DESIGN2)
+    report.properties["P7"].details.update(kernel=[], unchecked=[])
+    cert = DC.build(report)
+    assert cert["properties"]["P7"]["kernel"] is None
+    assert cert["properties"]["P7"]["unchecked"] == [DC.SEARCH_ONLY]
+    checks = _by_name(DC.check(cert))
+    assert not checks["P7"].kernel_checked
+    assert all(checks[p].kernel_checked for p in PROPS if p != "P7")
+
+
 def test_other_version_gives_a_clear_error(cert1):
     bad = dict(cert1, version=2)
     with pytest.raises(DC.CertificateError, match="version 2 is not supported: this checker reads version 1"):

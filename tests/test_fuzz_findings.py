@@ -140,3 +140,18 @@ def test_a_comparison_with_nan_inside_sympy_is_no_crash(verify):
     assert "crash" not in r and "hang" not in r, r
     assert status(r, "P6") == "refuted" and status(r, "P1") != "proved"
     assert [p for p in ("P2", "P3", "P4", "P5", "P7", "P8") if status(r, p) == "refuted"] == []
+
+
+def test_an_exact_zero_sum_of_logarithms_is_kernel_checked(verify):
+    r = verify("log_constant_zero_at_origin.py", timeout=40.0)
+    assert [p for p in r["properties"] if status(r, p) != "proved"] == []
+    assert sorted(r["kernel_checked"]) == ["P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8", "kf"]
+    assert r["kf"]["exact"] == "1/4"
+
+
+def test_xor_ite_and_contains_conditions_are_read_by_the_checker(verify):
+    r = verify("compound_conditions.py", timeout=40.0)
+    assert r.get("certificate_error") is None, r
+    assert status(r, "P4") == "refuted" and status(r, "P2") == "proved"
+    assert r["kernel_checked"] == ["P2"] and r["refutations_checked"] == ["P4"]
+    assert [p for p in r["properties"] if status(r, p) == "proved" and p != "P2"] == []

@@ -967,10 +967,18 @@ def _derivative_order(e, var, c):
     """m and E^(m) with E(c) = ... = E^(m-1)(c) = 0 exactly, E^(m)(c) != 0."""
     d = e
     for m in range(TAYLOR_ORDER + 1):
-        if d.subs(var, c) != 0:         # (a TypeError out of SymPy here is no proof: Prover.prove)
+        if not _exactly_zero(d.xreplace({var: c})):     # (a TypeError out of SymPy: no proof, Prover.prove)
             return m, d
         d = derivative(d, var)
     raise NoProof("Taylor order too high")
+
+
+def _exactly_zero(v) -> bool:
+    """v is 0 as the kernel's Taylor rule sees it (`_const_sign`)."""
+    try:
+        return v == 0 or K._const_sign(v) == 0
+    except (K.KernelError, Undefined):
+        return False
 
 
 def _unique(premises):

@@ -266,6 +266,24 @@ def _check_real_valued(f: sp.Expr) -> None:
             raise DesignError(f"f is not real-valued at (e1, e2) = ({a}, {b}): f = {sp.N(v, 6)}")
 
 
+def _plain_conditions(f: sp.Expr) -> sp.Expr:
+    """f with each Piecewise condition written with relations, And, Or and
+    Not only (the conditions the certificate checker reads): membership
+    `Contains(x, set)` as the set's relations, Xor, ITE, Implies, Equivalent,
+    Nand and Nor in negation normal form (logical equivalences)."""
+    def plain(c):
+        c = c.replace(lambda b: isinstance(b, sp.Contains), lambda b: b.args[1].as_relational(b.args[0]))
+        return c.to_nnf() if c.has(*_COMPOUND) else c
+    pieces = list(f.atoms(sp.Piecewise))
+    if not any(c.has(sp.Contains, *_COMPOUND) for p in pieces for _, c in p.args):
+        return f
+    return f.replace(lambda e: isinstance(e, sp.Piecewise),
+                     lambda e: sp.Piecewise(*[(x, plain(c)) for x, c in e.args]))
+
+
+_COMPOUND = (sp.Xor, sp.ITE, sp.Implies, sp.Equivalent, sp.Nand, sp.Nor)
+
+
 def load_design(path) -> Design:
     """Load and check a design file (the public contract of the README)."""
     path = Path(path)
@@ -307,6 +325,7 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
     if unused:
         raise DesignError(f"params[{unused[0]!r}] names no symbol of f")
     f = sp.piecewise_fold(f.rewrite(sp.Piecewise)) if f.has(sp.Abs, sp.Max, sp.Min, sp.Heaviside, sp.sign) else f
+    f = _plain_conditions(f)
     _check_real_valued(f)
     if any(max(abs(r.p), r.q).bit_length() > 14_000 for r in f.atoms(sp.Rational)):   # Python prints <= 4,300 digits
         raise DesignError("f holds a number of more than 4,200 digits, which cannot be printed into a certificate "

@@ -58,7 +58,8 @@ def build(report) -> dict:
             "status": str(v.status),
             "reason": v.reason,
             "kernel": to_certificate(theorems) if theorems else None,
-            "unchecked": list(v.details.get("unchecked", [SEARCH_ONLY])) if v.proved else [],
+            "unchecked": (list(v.details.get("unchecked") or []) or ([] if theorems else [SEARCH_ONLY]))
+            if v.proved else [],
         }
         if v.refuted:
             try:
@@ -71,7 +72,7 @@ def build(report) -> dict:
     if kf is not None and kf.exact is not None:
         props["kf"] = {"status": "proved", "reason": kf.reason, "exact": _srepr(kf.exact),
                        "kernel": to_certificate(kf.kernel) if kf.kernel else None,
-                       "unchecked": list(kf.unchecked)}
+                       "unchecked": list(kf.unchecked) or ([] if kf.kernel else [SEARCH_ONLY])}
     elif kf is not None and kf.kernel and kf.kernel_bounds is not None:     # kf enclosed: lower <= kf <= upper
         lower, upper = (_srepr(sp.Rational(b.numerator, b.denominator)) for b in kf.kernel_bounds)
         props["kf"] = {"status": "proved", "reason": kf.reason, "exact": None, "lower": lower, "upper": upper,

@@ -184,8 +184,7 @@ def rule(*assumes):
 
 def _apply(fn, assumes, premises, enc: dict) -> Theorem:
     """One application of the rule fn (see `rule`) to its encoded data."""
-    for p in premises:
-        _need(isinstance(p, Theorem), lambda: f"{fn.__name__}: a premise is not a theorem")
+    _need(all(isinstance(p, Theorem) for p in premises), lambda: f"{fn.__name__}: a premise is not a theorem")
     _need(isinstance(enc, dict) and all(_encoded(v) for v in enc.values()),
           lambda: f"{fn.__name__}: rule data must be SymPy objects, numbers, strings or lists")
     try:
@@ -270,17 +269,17 @@ _lt = functools.lru_cache(maxsize=8192)(_lt)      # pure: see core.rule (ends ar
 
 
 def _const_sign(c) -> int:
-    """The sign of an exact constant: exactly 0, or an Arb enclosure that
-    excludes 0; KernelError otherwise."""
+    """The sign of an exact constant: an Arb enclosure that excludes 0, or
+    exactly 0 (SymPy's literal 0, or 0 by `_zero_when_generalized`, which
+    reads log(p/q) as a sum of logarithms of primes); KernelError otherwise."""
     c = _number(c)
     if c == 0:
         return 0
     v = evaluate(c, bits=256)
-    if v.positive():
-        return 1
-    if v.negative():
-        return -1
-    raise KernelError(f"sign of {c} not decided")
+    if v.positive() or v.negative():
+        return 1 if v.positive() else -1
+    _need(_zero_when_generalized(c), lambda: f"sign of {c} not decided")     # exactly 0 (as in `identity`)
+    return 0
 
 
 def _enclose(e, var, a, b, what, bits=128):
@@ -410,8 +409,8 @@ sign_by_cover = rule("arb", "sympy-core")(sign_by_cover)
 
 def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
     """Taylor with the Lagrange remainder, one-sided.  Premises: E(c) = E'(c)
-    = ... = E^(m-1)(c) = 0 exactly (SymPy's automatic evaluation gives the
-    literal 0, confirmed by an Arb enclosure containing 0); E, ..., E^(m)
+    = ... = E^(m-1)(c) = 0 exactly (`_const_sign`, confirmed by an Arb
+    enclosure containing 0); E, ..., E^(m)
     (`sympy.diff` applied k times) are all defined, hence continuous, on the
     closed box B = [c, c+w] (side +1) or [c-w, c] (side -1); E^(m) has one
     strict sign sigma on every closed sub-box of B (cut at the optional exact
@@ -436,7 +435,7 @@ def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
             raise KernelError(f"derivative {k} not defined on [{a}, {b}]: {exc}") from None
         if k < order:
             at_c = d.xreplace({var: c})
-            _need(at_c == 0, lambda: f"derivative {k} at {c} is {at_c}, not exactly 0")
+            _need(at_c == 0 or _const_sign(at_c) == 0, lambda: f"derivative {k} at {c} is {at_c}, not exactly 0")
             _need(evaluate(d, var, c, c, bits=256).hull().contains(0), "Arb disagrees with exact 0")
     sigma = 1 if all(v.positive() for v in boxes) else -1 if all(v.negative() for v in boxes) else 0
     _need(sigma != 0, lambda: f"derivative {order} has no strict sign on [{a}, {b}]")
@@ -1391,6 +1390,9 @@ def _generalized_pass(d, variables, fresh, roots, asked, orders):
                     N, D = (P.quo_term(((m,), 1)).as_expr() for P, m in zip(nd[1:], low))
                     return power(x, k * p, q) * power(N / D if k else b, p, q)
             return power(b, p, q)
+        if isinstance(e, sp.log) and e.args[0].is_Rational and 0 < e.args[0] and max(e.args[0].p, e.args[0].q) < 2**64:
+            return sp.Add(*[k * fresh.setdefault(sp.log(b), sp.Dummy(real=True))   # log of a product of primes
+                            for b, k in sp.factorrat(e.args[0]).items()])
         if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
             return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
         if isinstance(e, _UNARY) and len(e.args) == 1:  # G(u): one symbol per canonical generalised u
@@ -1677,8 +1679,7 @@ def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
     _need(_lt(p, hi) or (p == hi and not hi_open), "point after I")
     v = _enclose(e, var, p, p, lambda: f"E undefined at {p}", bits=256)       # also: E defined at p
     if not v.lo >= evaluate(L, bits=256).hi:      # else E(p) - L exactly 0 (Arb first: exact 0 may cost)
-        d = sp.sympify(e.xreplace({var: p}) - L)
-        _need(d == 0 or _zero_when_generalized(d), lambda: f"E({p}) >= {L} not shown")
+        _need(_const_sign(e.xreplace({var: p}) - L) == 0, lambda: f"E({p}) >= {L} not shown")
     return Claim("sup_lower", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(L))
 sup_lower_by_point = rule("arb", "sympy-core")(sup_lower_by_point)
 
