@@ -58,9 +58,11 @@ def test_rule_data_and_premises_are_checked():
     # (-1)**(1/3) is a number, but the kernel reads x**(1/3) as the real root only for x >= 0
     assert why(K.value_sign, value=sp.Pow(-1, Q(1, 3))) == "not a real constant: (-1)**(1/3) (x**(1/3) needs x >= 0)"
     assert why(K.value_sign, value=oo) == "a finite constant"
-    # (1 + sqrt 2)**2 - 3 - 2 sqrt 2 is exactly 0, but not literally: its Arb ball contains 0
+    # (1 + sqrt 2)**2 - 3 - 2 sqrt 2 is exactly 0, though not literally (polynomial arithmetic in
+    # sqrt 2); 10^-90 more, its Arb ball still contains 0, and it is neither 0 nor signed
     c = (1 + sp.sqrt(2)) ** 2 - 3 - 2 * sp.sqrt(2)
-    assert why(K.value_sign, value=c) == f"sign of {c} not decided"
+    assert K.value_sign(value=c).claim.want == 0
+    assert why(K.value_sign, value=c + Q(1, 10 ** 90)) == f"sign of {c + Q(1, 10 ** 90)} not decided"
     assert why(K.join, 1, 2) == "join: a premise is not a theorem"
 
 

@@ -976,7 +976,7 @@ def _derivative_order(e, var, c):
 def _exactly_zero(v) -> bool:
     """v is 0 as the kernel's Taylor rule sees it (`_const_sign`)."""
     try:
-        return v == 0 or K._const_sign(v) == 0
+        return v == 0 or K._const_sign(v, zero=True) == 0
     except (K.KernelError, Undefined):
         return False
 

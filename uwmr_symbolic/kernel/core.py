@@ -268,17 +268,19 @@ def _lt(a, b) -> bool:
 _lt = functools.lru_cache(maxsize=8192)(_lt)      # pure: see core.rule (ends are compared again and again)
 
 
-def _const_sign(c) -> int:
+def _const_sign(c, zero=False) -> int:
     """The sign of an exact constant: an Arb enclosure that excludes 0, or
-    exactly 0 (SymPy's literal 0, or 0 by `_zero_when_generalized`, which
-    reads log(p/q) as a sum of logarithms of primes); KernelError otherwise."""
+    exactly 0: SymPy's literal 0, and with `zero` also 0 by
+    `_zero_when_generalized` (which reads log(p/q) as a sum of logarithms of
+    primes; without it such a 0 is undecided, for the rules that need a
+    nonzero constant beside a factor SymPy did not cancel); KernelError otherwise."""
     c = _number(c)
     if c == 0:
         return 0
     v = evaluate(c, bits=256)
     if v.positive() or v.negative():
         return 1 if v.positive() else -1
-    _need(_zero_when_generalized(c), lambda: f"sign of {c} not decided")     # exactly 0 (as in `identity`)
+    _need(zero and _zero_when_generalized(c), lambda: f"sign of {c} not decided")     # 0 as in `identity`
     return 0
 
 
@@ -435,7 +437,7 @@ def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
             raise KernelError(f"derivative {k} not defined on [{a}, {b}]: {exc}") from None
         if k < order:
             at_c = d.xreplace({var: c})
-            _need(at_c == 0 or _const_sign(at_c) == 0, lambda: f"derivative {k} at {c} is {at_c}, not exactly 0")
+            _need(at_c == 0 or _const_sign(at_c, zero=True) == 0, lambda: f"derivative {k} at {c} is {at_c}, not exactly 0")
             _need(evaluate(d, var, c, c, bits=256).hull().contains(0), "Arb disagrees with exact 0")
     sigma = 1 if all(v.positive() for v in boxes) else -1 if all(v.negative() for v in boxes) else 0
     _need(sigma != 0, lambda: f"derivative {order} has no strict sign on [{a}, {b}]")
@@ -1308,6 +1310,7 @@ def _numerator(d, variables):
     d is not a rational function of the variables over Q or a denominator
     is the zero polynomial."""
     ring = PolyRing(list(variables), sp.QQ)
+    gens = dict(zip(variables, ring.gens))
 
     def nd(u):
         if u.is_Add or u.is_Mul:
@@ -1318,10 +1321,10 @@ def _numerator(d, variables):
         if u.is_Pow and u.exp.is_Integer:
             (n, e), k = nd(u.base), int(u.exp)
             return (n ** k, e ** k) if k >= 0 else (e ** -k, n ** -k)
-        return ring(u), ring.one
+        return ring.ground_new(sp.QQ(u.p, u.q)) if u.is_Rational else gens[u], ring.one    # KeyError: no polynomial
     try:
         N, D = nd(d)
-    except ValueError:
+    except (ValueError, KeyError):
         return None
     return (ring, N, D) if D else None
 
@@ -1372,13 +1375,12 @@ def _generalized_pass(d, variables, fresh, roots, asked, orders):
             roots[fresh[rt]] = (L, walk(b))     # (b^(1/L))^L = b where b^(1/L) is real
         return walk(b) ** i * fresh[rt] ** r
 
-    def walk(e):
+    def walk(e, ev=False):                      # ev: SymPy's canonical form (else +, *, ^ as built)
         if e.is_Rational or e in variables:
             return e
-        if e.is_Add or e.is_Mul:
-            return e.func(*map(walk, e.args))
-        if e.is_Pow and e.exp.is_Integer and abs(e.exp) <= 64:
-            return walk(e.base) ** e.exp
+        if e.is_Add or e.is_Mul or e.is_Pow and e.exp.is_Integer and abs(e.exp) <= 64:
+            args = [walk(a, ev) for a in e.args]    # (an unchanged subterm is not built again)
+            return e if all(a is b for a, b in zip(args, e.args)) else e.func(*args, evaluate=ev)
         if e.is_Pow and e.exp.is_Rational and e.exp.q <= 12 and abs(e.exp.p) <= 48:
             b, p, q = e.base, e.exp.p, e.exp.q  # b^(p/q) = (b^(1/q))^p where b^(p/q) is real; small p, q only
             x = next((v for v in variables if v.is_positive and _rational_over_q(b, v)), None)
@@ -1396,7 +1398,7 @@ def _generalized_pass(d, variables, fresh, roots, asked, orders):
         if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
             return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
         if isinstance(e, _UNARY) and len(e.args) == 1:  # G(u): one symbol per canonical generalised u
-            u = _cancel(walk(e.args[0]))
+            u = _cancel(walk(e.args[0], True))
             v = _cancel(-u)
             flip = isinstance(e, (sp.cosh, sp.cos, *_ODD_INCREASING, sp.sin)) and \
                 sp.default_sort_key(v) < sp.default_sort_key(u)     # G(-u) = -G(u), or = G(u) for cosh, cos
@@ -1652,11 +1654,11 @@ diverges_by_comparison = rule("sympy-core")(diverges_by_comparison)
 
 
 def value_sign(*, value):
-    """The sign of an exact real constant: 0 when SymPy's automatic
-    evaluation gives the literal 0, else +-1 when its Arb enclosure excludes 0."""
+    """The sign of an exact real constant: +-1 when its Arb enclosure
+    excludes 0, 0 when it is exactly 0 (`_const_sign` with `zero`)."""
     v = _number(value)
     _need(v not in (OO, -OO), "a finite constant")
-    return Claim("value_sign", _s(v), want=_const_sign(v), strict=True)
+    return Claim("value_sign", _s(v), want=_const_sign(v, zero=True), strict=True)
 value_sign = rule("arb", "sympy-core")(value_sign)
 
 
@@ -1679,7 +1681,7 @@ def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
     _need(_lt(p, hi) or (p == hi and not hi_open), "point after I")
     v = _enclose(e, var, p, p, lambda: f"E undefined at {p}", bits=256)       # also: E defined at p
     if not v.lo >= evaluate(L, bits=256).hi:      # else E(p) - L exactly 0 (Arb first: exact 0 may cost)
-        _need(_const_sign(e.xreplace({var: p}) - L) == 0, lambda: f"E({p}) >= {L} not shown")
+        _need(_const_sign(e.xreplace({var: p}) - L, zero=True) == 0, lambda: f"E({p}) >= {L} not shown")
     return Claim("sup_lower", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(L))
 sup_lower_by_point = rule("arb", "sympy-core")(sup_lower_by_point)
 
