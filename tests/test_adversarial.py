@@ -56,3 +56,12 @@ def test_a_check_stuck_in_c_code_is_killed_and_reported_unknown():
     report = json.loads(run.stdout)
     assert all(v["verdict"] == "unknown" for v in report["properties"].values())
     assert "stopped after" in report["properties"]["P1"]["reason"]
+
+
+def test_a_jump_of_the_mixed_second_derivative_refutes_p7():
+    v, report, code = verdicts("mixed_slope_switch.py")
+    assert {p: v[p] for p in ("P1", "P2", "P4", "P5", "P6", "P7")} == {
+        "P1": "refuted", "P2": "proved", "P4": "refuted", "P5": "refuted", "P6": "refuted", "P7": "refuted"}
+    assert {"P1", "P2", "P4", "P5", "P6", "P7"} <= set(report["kernel"]["checked"])
+    assert "(1, 1)" in report["properties"]["P7"]["reason"]
+    assert code == 1

@@ -19,7 +19,7 @@ from uwmr_symbolic.batch import check_file
 from uwmr_symbolic.cache import ResultCache, design_key
 from uwmr_symbolic.design import load_design
 from uwmr_symbolic.kernel.parse import parse
-from uwmr_symbolic.profile import S
+from uwmr_symbolic.profile import E2, S
 from uwmr_symbolic.verify import verify_design
 
 from _cli import ROOT, run_cli
@@ -329,6 +329,34 @@ def test_tampered_jump_of_a_derivative_is_rejected(refuted_certs):
     moved["properties"]["P1"] = copy.deepcopy(cert["properties"]["P7"])
     with pytest.raises(DC.CertificateError, match="P1: a jump of the order-2 derivative in e2 does not refute P1"):
         DC.check(moved)
+
+
+def test_tampered_jump_of_a_mixed_derivative_is_rejected():
+    """P7 of a switch across e1 = 1 (tests/adversarial/mixed_slope_switch.py):
+    d2f/de1de2 jumps at (1, 1), -4/9 on the left and -7/36 on the right.
+    Without `mixed` (d2f/de1^2) it refutes nothing, nor along e2 or of order
+    3; read as a jump of df/de2 the limits are not the kernel's; a condition that
+    also reads e2 leaves the branches' partial derivatives unknown."""
+    design = ROOT / "tests" / "adversarial" / "mixed_slope_switch.py"
+    cert = DC.build(verify_design(design))
+    witness = cert["properties"]["P7"]["witness"]
+    assert (witness["var"], witness["order"], witness["mixed"], witness["points"]) == (
+        "e1", 2, True, [["Integer(1)", "Integer(1)"]])
+    assert "left limit -4/9, right limit -7/36" in _by_name(DC.check(cert))["P7"].witness
+    for change, msg in (({"mixed": False}, "P7: a jump of the order-2 derivative in e1 does not refute P7"),
+                        ({"order": 1}, "P7: the kernel's conclusions are not the witness 'jump'"),
+                        ({"var": "e2"}, "P7: a jump of the order-2 derivative in e2 does not refute P7"),
+                        ({"order": 3}, "P7: a jump of the order-3 derivative in e1 does not refute P7")):
+        bad = copy.deepcopy(cert)
+        bad["properties"]["P7"]["witness"].update(change)
+        with pytest.raises(DC.CertificateError, match=msg):
+            DC.check(bad)
+    other = copy.deepcopy(cert)             # the same steps, for f whose first condition also reads e2
+    f = load_design(design).f
+    other["design"]["f"] = sp.srepr(sp.Piecewise((f.args[0][0], sp.And(f.args[0][1], E2 < 5)), f.args[1]))
+    other["properties"] = {"P7": other["properties"]["P7"]}
+    with pytest.raises(DC.CertificateError, match="P7: a jump of a derivative in e2 needs branches chosen by e1"):
+        DC.check(other)
 
 
 def test_cache_rechecks_a_refutation_witness(tmp_path):

@@ -1676,6 +1676,9 @@ def _witness_candidates(name, witness):
     if name == "P7" and p is not None and p[1] == 0:                  # f(0, t) or a derivative jumps at t = e1?
         for order in (0, 1, 2):
             yield {"kind": "jump", "points": [(sp.Integer(0), p[0])], "var": "e2", "order": order}
+    if name in ("P1", "P7") and p is not None and w.get("jump") == "e1":      # df/de2 or its slope in e1 jumps?
+        for order in (1, 2) if name == "P7" else (1,):
+            yield {"kind": "jump", "points": [p], "var": "e1", "order": order, "mixed": True}
     if name in ("P1", "P7") and p is not None and w.get("jump") == "e2":      # f(e1, t) jumps at t = e2?
         for order in (0, 1) if name == "P1" else (0, 1, 2):
             yield {"kind": "jump", "points": [p], "var": "e2", "order": order}
@@ -1760,7 +1763,7 @@ def _jump_theorems(f, record):
     its conditions' signs on (0, w], the one-sided limits of the branches'
     order-th derivatives, a nonzero gap.  Fills in record's branches, width
     and compare."""
-    from .design_certificate import CertificateError, H, _at, branch_conditions, jump_parts
+    from .design_certificate import E2, CertificateError, H, _at, branch_conditions, jump_parts
     if not isinstance(f, sp.Piecewise):
         raise NoProof("f is not a Piecewise")
     v = sp.Symbol(record.get("var", "e1"), real=True)
@@ -1779,9 +1782,11 @@ def _jump_theorems(f, record):
         if len(found) < 2:
             continue
         branches = [found[0][0], found[1][0]]
+        if record.get("mixed") and any(c.has(E2) for _, c in f.args[:max(branches) + 1]):
+            raise NoProof("a branch there is chosen by e2 too")
         try:
             lims = [_rule(K.continuous_at_end, expr=e, var=H, c=0, width=w)
-                    for e in jump_parts(f, b, branches, w, v, order, other)]
+                    for e in jump_parts(f, b, branches, w, v, order, other, record.get("mixed", False))]
         except NoProof:
             continue
         left, right = (K.parse(t.claim.other) for t in lims)

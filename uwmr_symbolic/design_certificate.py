@@ -511,7 +511,7 @@ _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "st
             "e2_limit": ("P8",), "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",),
             "unbounded": ("P1", "P5", "P6", "P7", "P8"), "jump": ("P1", "P5", "P6", "P7")}
 _JUMPS = {("e1", 0): ("P1", "P5", "P6"), ("e1", 1): ("P1", "P5", "P6"), ("e2", 0): ("P1", "P7"), ("e2", 1): ("P1", "P7"),
-          ("e2", 2): ("P7",)}
+          ("e2", 2): ("P7",), ("e1", 1, "mixed"): ("P1", "P7"), ("e1", 2, "mixed"): ("P7",)}
 _UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo"), ("P6", "e1", 1, "0"),
               ("P7", "e2", 2, "0"), ("P7", "e2", 1, "0"), ("P8", "e2", 1, "0"),
               ("P1", "e1", 1, "0", "plain"), ("P5", "e1", 1, "0", "plain"), ("P6", "e1", 1, "0", "plain")}
@@ -594,12 +594,13 @@ def _relation_claims(rel, at, truth):
     return [(d, want, strict)] if truth else [(d, -want, not strict)]
 
 
-def jump_parts(f, b, branches, w, v=E1, order=0, other=0):
-    """The one-sided branch expressions (their order-th derivatives in v)
-    at the points b - h and b + h of the v line (`_on_axis`)."""
+def jump_parts(f, b, branches, w, v=E1, order=0, other=0, mixed=False):
+    """The one-sided branch expressions (their order-th derivatives in v;
+    `mixed`: the first of them in e2 instead) at the points b - h and b + h
+    of the v line (`_on_axis`)."""
     parts = [f.args[i][0] for i in branches]
-    for _ in range(order):                      # one order at a time (SymPy's diff(e, v, 2) can be far slower)
-        parts = [derivative(e, v) for e in parts]
+    for k in range(order):                      # one order at a time (SymPy's diff(e, v, 2) can be far slower)
+        parts = [derivative(e, E2 if mixed and k == 0 else v) for e in parts]
     return [e.xreplace(_on_axis(v, b, side, other)) for e, side in zip(parts, (-1, 1))]
 
 
@@ -630,8 +631,8 @@ def _one_of(c, options, on) -> bool:
 
 
 def _link_jump(name, f, claims, witness, bad) -> str:
-    v, order = witness.get("var", "e1"), witness.get("order", 0)
-    if name not in _JUMPS.get((v, order), ()):
+    v, order, mixed = witness.get("var", "e1"), witness.get("order", 0), witness.get("mixed", False) is True
+    if name not in _JUMPS.get((v, order, "mixed") if mixed else (v, order), ()):
         raise CertificateError(f"{name}: a jump of the order-{order} derivative in {v} does not refute {name}")
     v = {"e1": E1, "e2": E2}[v]
     (x, y), = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
@@ -642,10 +643,12 @@ def _link_jump(name, f, claims, witness, bad) -> str:
         raise bad
     if order and any(f.args[i][0].has(*SMOOTH_ONLY) for i in branches):
         raise CertificateError(f"{name}: a jump of a derivative needs branches without Piecewise, Max, Min or sign")
+    if mixed and any(c.has(E2) for _, c in f.args[:max(branches) + 1]):
+        raise CertificateError(f"{name}: a jump of a derivative in e2 needs branches chosen by e1 alone")
     on = (_srepr(H), "Integer(0)", _srepr(w), True, False)
     k = 0
     limits = []
-    for side, i, part in zip((-1, 1), branches, jump_parts(f, b, branches, w, v, order, other)):
+    for side, i, part in zip((-1, 1), branches, jump_parts(f, b, branches, w, v, order, other, mixed)):
         for options in branch_conditions(f, b, side, i, w, v, other):
             if not _one_of(claims[k] if k < len(claims) else None, options, on):
                 raise bad
@@ -662,7 +665,7 @@ def _link_jump(name, f, claims, witness, bad) -> str:
     if gap is None or len(claims) != k + 1 or claims[k].kind != "value_sign" or claims[k].expr != _srepr(gap) \
             or claims[k].want == 0:
         raise bad
-    what = {0: "f", 1: f"df/d{v}", 2: f"d2f/d{v}^2"}[order]
+    what = {1: "df/de2", 2: "d2f/de1de2"}[order] if mixed else {0: "f", 1: f"df/d{v}", 2: f"d2f/d{v}^2"}[order]
     along = f"t, {other}" if v == E1 else f"{other}, t"
     return (f"{what}({along}) jumps at t = {b}: left limit {limits[0]}, right limit {limits[1]}"
             + (f", value {value}" if order == 0 else ""))

@@ -713,7 +713,8 @@ _LINES_TRIED = 4
 
 
 def _jump_across_a_line(f, name: str) -> Verdict | None:
-    """P1, P5, P6 (f jumps in the e1 direction) or P1, P7 (in e2) of a
+    """P1, P5, P6 (f jumps in the e1 direction), P1, P7 (in e2, or df/de2
+    or its slope in e1 jumps in the e1 direction) of a
     Piecewise f with a condition that switches across a line e1 = c or
     e2 = c, c rational: the kernel's jump witness at a point of that line
     (`design_certificate`, kind "jump"), tried at two points off the axes,
@@ -721,7 +722,7 @@ def _jump_across_a_line(f, name: str) -> Verdict | None:
     apparent jumps took a minute)."""
     if name not in ("P1", "P5", "P6", "P7") or not isinstance(f, sp.Piecewise):
         return None
-    directions = [v for v in (E1, E2) if name in _JUMPS[(v.name, 0)]]      # the jumps that refute `name`
+    directions = [v for v in (E1, E2) if any(name in r for k, r in _JUMPS.items() if k[0] == v.name)]   # refuting `name`
     lines = []
     for rel in sorted(f.atoms(sp.Rel), key=sp.default_sort_key):
         d = rel.rhs - rel.lhs
