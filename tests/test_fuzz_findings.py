@@ -155,3 +155,17 @@ def test_xor_ite_and_contains_conditions_are_read_by_the_checker(verify):
     assert status(r, "P4") == "refuted" and status(r, "P2") == "proved"
     assert r["kernel_checked"] == ["P2"] and r["refutations_checked"] == ["P4"]
     assert [p for p in r["properties"] if status(r, p) == "proved" and p != "P2"] == []
+
+
+def test_the_kf_bound_of_a_saturating_tanh_is_kernel_checked(verify):
+    r = verify("tanh_kf_bound.py", timeout=40.0)
+    assert {p: status(r, p) for p in r["properties"]} == {**{f"P{i}": "proved" for i in range(1, 9)}, "P3": "refuted"}
+    assert sorted(r["kernel_checked"]) == ["P1", "P2", "P4", "P5", "P6", "P7", "P8", "kf"]
+    assert kf_encloses(r, mpmath.mpf("1.11311587212026790026831555721"))
+
+
+def test_a_slope_that_cancels_at_64_bits_is_kernel_checked(verify):
+    r = verify("tanh_scaled_slope.py", timeout=40.0)
+    assert status(r, "P5") == "proved" and "P5" in r["kernel_checked"]
+    assert status(r, "P3") == "refuted" and status(r, "P1") == "proved"
+    assert kf_encloses(r, mpmath.mpf("2.22623174424053580053663111441"))

@@ -1553,7 +1553,7 @@ def test_sign_below_sup_claims_and_messages():
     assert why(B, pos, expr=1 - s * sp.tanh(s), bounded=sp.tanh(s)) == f"{1 - s * sp.tanh(s)} is not a + m tanh(s)"
     assert why(B, pos, expr=s - sp.tanh(s), bounded=sp.tanh(s)) == f"{s - sp.tanh(s)} is not a + m tanh(s)"
     assert why(B, pos, expr=1 - sp.tanh(s) ** 2, bounded=sp.tanh(s)) == f"{1 - sp.tanh(s) ** 2} is not a + m tanh(s)"
-    needs = "needs m != 0 and a - |m| sup G >= 0"
+    needs = "needs m != 0 and w a - |m| sup G >= 0"
     for e in (sp.Integer(0), sp.Integer(1)):                       # m = 0: "0 > 0" must not follow
         assert why(B, pos, expr=e, bounded=sp.tanh(s)) == needs
     for e in (Q(99, 100) + sp.tanh(s), Q(99, 100) - sp.tanh(s), Q(3, 2) - sp.atan(s), Q(3, 2) + sp.atan(s),
@@ -1565,6 +1565,15 @@ def test_sign_below_sup_claims_and_messages():
     # m > 0: tanh > -1 and atan > -pi/2 everywhere (odd, sup never attained)
     assert B(pos, expr=1 + sp.tanh(s), bounded=sp.tanh(s)).claim == sign(1 + sp.tanh(s), s, 0, 2, True, False)
     assert B(pos, expr=sp.pi + 2 * sp.atan(s), bounded=sp.atan(s)).claim.strict
+    # want = -1: a + m G(Y) < 0 where a + |m| sup G <= 0 (tanh(s) - 1 < 0; sin(s) - 1 <= 0 only)
+    assert B(pos, expr=sp.tanh(s) - 1, bounded=sp.tanh(s), want=-1).claim == \
+        sign(sp.tanh(s) - 1, s, 0, 2, True, False, want=-1)
+    assert B(pos, expr=-4 - 2 * sp.atan(s), bounded=sp.atan(s), want=-1).claim.strict      # 4 > pi
+    assert not B(pos, expr=sp.sin(s) - 1, bounded=sp.sin(s), want=-1).claim.strict
+    for e in (sp.tanh(s) - Q(99, 100), 1 - sp.tanh(s), -Q(5, 2) - 2 * sp.atan(s)):    # 0.99 < 1; > 0; 5/2 < pi
+        assert why(B, pos, expr=e, bounded=e.atoms(sp.tanh, sp.atan).pop(), want=-1) == needs, e
+    assert why(B, pos, expr=sp.tanh(s) - 1, bounded=sp.tanh(s), want=2) == "want is +1 or -1"
+    assert why(B, pos, expr=sp.tanh(s) - 1, bounded=sp.tanh(s), want=0) == "want is +1 or -1"
 
 
 def test_sign_of_increasing_difference_claims_and_messages():
@@ -1681,7 +1690,7 @@ def test_sign_below_sup_of_sin_and_cos_is_weak_at_the_maximum():
     weak = B(pos, expr=1 - sp.sin(s), bounded=sp.sin(s))
     assert weak.claim == sign(1 - sp.sin(s), s, 0, 2, True, False, strict=False)
     assert B(pos, expr=2 - 3 * sp.cos(s) / 2, bounded=sp.cos(s)).claim == sign(2 - 3 * sp.cos(s) / 2, s, 0, 2, True, False)
-    needs = "needs m != 0 and a - |m| sup G >= 0"
+    needs = "needs m != 0 and w a - |m| sup G >= 0"
     assert why(B, pos, expr=Q(1, 2) - sp.sin(s), bounded=sp.sin(s)) == needs
     assert why(B, pos, expr=Q(1, 2) + sp.sin(s), bounded=sp.sin(s)) == needs
     # sin and cos reach -1 too: 1 + sin(Y) >= 0 only weakly, 2 + cos(Y) > 0

@@ -457,10 +457,11 @@ class Prover:
                     premises.append(sub(base, 1, strict or bool(n < 0)))
                     continue
                 st = strict or bool(n < 0)
+                first = -1 if _against(base, var, I, 1) else 1      # (the hopeless sign can spend the budget)
                 try:
-                    p = sub(base, 1, st)
+                    p = sub(base, first, st)
                 except NoProof:
-                    p = sub(base, -1, st)
+                    p = sub(base, -first, st)
                 premises.append(p)
                 sign *= p.claim.want ** int(n % 2)
             if sign != want:
@@ -495,8 +496,10 @@ class Prover:
                         premises.append(sub(t, want, False))
                 return _rule(K.sign_of_sum, *premises, expr=e, want=want)
             except NoProof as exc:
-                if exc is self.spent or want < 0:
+                if exc is self.spent or want < 0 and not e.has(*K._SUP, *K._MAX):
                     raise
+                if want < 0:                # a + m G(Y) < 0: tanh(s) - 1
+                    return self._below_sup(e, var, I, strict, depth, near, want)
                 if _product_split(e, var) is not None:
                     try:
                         return self._below_product(e, var, I, depth, near)
@@ -511,7 +514,7 @@ class Prover:
                     if exc is self.spent:
                         raise
                 size = sp.count_ops(e)
-                for attempt in (_tanh_form, None, _factored) if size <= CHEAP_RATIONAL else (None,):
+                for attempt in (_factored, _tanh_form, None) if size <= CHEAP_RATIONAL else (None,):
                     try:
                         if attempt is None:
                             return self._above_floor(e, var, I, strict, depth, near)
@@ -520,7 +523,7 @@ class Prover:
                             self.charge(CANCEL_UNITS * size ** 2)
                         return self._rewritten(e, form, var, I, want, strict, depth, near)
                     except NoProof as exc:
-                        if exc is self.spent or attempt is _factored or size > CHEAP_RATIONAL:
+                        if exc is self.spent or attempt is None:
                             raise
         raise NoProof("no structural rule for {}", e)
 
@@ -577,9 +580,9 @@ class Prover:
                         raise
         raise NoProof("no term of {} is linear in {}", e, g)
 
-    def _below_sup(self, e, var, I, strict, depth, near):
-        """e > 0 where e is a + m G(Y), |G| bounded by sup G (tanh, erf,
-        atan, sin, cos; sinh(Y)/cosh(Y) read as tanh(Y)): `sign_below_sup`; or where a
+    def _below_sup(self, e, var, I, strict, depth, near, want=1):
+        """want e > 0 where e is a + m G(Y), |G| bounded by sup G (tanh, erf,
+        atan, sin, cos; sinh(Y)/cosh(Y) read as tanh(Y)): `sign_below_sup`; or (want = 1) where a
         term t = -M G(Y) of e, M >= 0, gives e = (e - t + t|G=sup G) +
         M (sup G - G(Y)), each part signed (sup G - G(Y) > 0 for tanh, erf,
         atan; >= 0 only for sin and cos, whose maximum is attained); or t =
@@ -592,7 +595,8 @@ class Prover:
                 y = g.args[0]
                 for w in (1, -1):                # any sign of Y on I shows Y defined there
                     try:
-                        th = _rule(K.sign_below_sup, self.prove(y, var, I, w, False, depth, near), expr=form, bounded=g)
+                        th = _rule(K.sign_below_sup, self.prove(y, var, I, w, False, depth, near), expr=form, bounded=g,
+                                   **({"want": want} if want < 0 else {}))
                         if strict and not th.claim.strict:
                             raise NoProof("{} reaches 0", form)
                         break
@@ -601,6 +605,8 @@ class Prover:
                 else:
                     continue
                 return th if form == e else self._rewritten_by(e, form, th, var, I)
+            if want < 0:
+                continue
             top = {**K._SUP, **K._MAX}[type(g)]
             stricts = (False, strict) if type(g) in K._SUP else (strict, False)
             for end, part in ((top, lambda t: (-t / g) * (top - g)), (-top, lambda t: (t / g) * (g + top))):

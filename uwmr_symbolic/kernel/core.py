@@ -194,8 +194,7 @@ def _apply(fn, assumes, premises, enc: dict) -> Theorem:
     out = fn(*premises, **data)
     claim, extra = out if isinstance(out, tuple) else (out, ())
     assumptions = frozenset(assumes).union(extra, *[p.assumptions for p in premises])
-    return Theorem(claim, fn.__name__, tuple(premises), json.dumps(enc, sort_keys=True),
-                   assumptions, _token=_TOKEN)
+    return Theorem(claim, fn.__name__, tuple(premises), json.dumps(enc, sort_keys=True), assumptions, _token=_TOKEN)
 
 
 # ---------------------------------------------------------------- helpers
@@ -722,13 +721,14 @@ _SUP = {sp.tanh: sp.Integer(1), sp.erf: sp.Integer(1), sp.atan: sp.pi / 2}   # s
 _MAX = {sp.sin: sp.Integer(1), sp.cos: sp.Integer(1)}                       # max over R, attained
 
 
-def sign_below_sup(arg, *, expr, bounded):
-    """a + m G(Y) > 0 on I for exact constants a, m != 0 with a - |m| sup G
-    >= 0, G = tanh or erf (sup 1) or atan (sup pi/2), each odd: -sup G <
-    G(y) < sup G for every real y.  For G = sin or cos (|G| <= 1, attained)
-    a + m G(Y) >= a - |m|, so the claim is strict only when a - |m| > 0,
-    else weak.  `bounded` is G(Y); the premise, any sign theorem about Y on
-    I, shows Y defined there."""
+def sign_below_sup(arg, *, expr, bounded, want=1):
+    """w (a + m G(Y)) > 0 on I (w = `want`, +-1) for exact constants a, m != 0
+    with w a - |m| sup G >= 0, G = tanh or erf (sup 1) or atan (sup pi/2),
+    each odd: -sup G < G(y) < sup G for every real y, so w (a + m G(Y)) >
+    w a - |m| sup G.  For G = sin or cos (|G| <= 1, attained) only >=, so
+    the claim is strict only when w a - |m| > 0, else weak.  `bounded` is
+    G(Y); the premise, any sign theorem about Y on I, shows Y defined there."""
+    _need(want in (1, -1), "want is +1 or -1")
     c, var = _is_sign(arg)
     e, g = _expr(expr, var), _expr(bounded, var)
     top = {**_SUP, **_MAX}.get(type(g))
@@ -737,9 +737,9 @@ def sign_below_sup(arg, *, expr, bounded):
     m = e.xreplace({g: 1}) - a
     _need(not (a.has(var) or m.has(var)) and a + m * g == e, lambda: f"{e} is not a + m {g}")
     sign = _const_sign(m)
-    margin = _const_sign(a - sign * m * top)
-    _need(sign != 0 and margin >= 0, "needs m != 0 and a - |m| sup G >= 0")
-    return _sign_on(c, e, 1, type(g) in _SUP or margin > 0)
+    margin = _const_sign(want * a - sign * m * top)
+    _need(sign != 0 and margin >= 0, "needs m != 0 and w a - |m| sup G >= 0")
+    return _sign_on(c, e, want, type(g) in _SUP or margin > 0)
 sign_below_sup = rule("arb", "sympy-core")(sign_below_sup)
 
 
