@@ -1274,8 +1274,10 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
     a + m B(Y) >= 0; or, when F has algebraic terms, G their sum, or the sum
     of the others: F - G is the sum of the rest, which must be >= 0 (a
     vanishing transcendental term beside a power, sqrt(h)/2 + 10 (1 -
-    tanh(h^-2)^2)/(3 h); bounded rational terms beside a log); a product
-    c(h) (A + B) is read as c A + c B."""
+    tanh(h^-2)^2)/(3 h); bounded rational terms beside a log); or, for a
+    product A B of functions of h, A B(R0), R0 the first start (F - G =
+    A (B - B(R0)) >= 0 where B increases); a product c(h) (A + B) is read
+    as c A + c B."""
     spread = sp.expand_mul(F, deep=False)
     terms = sp.Add.make_args(spread)
     bounded = {t: abs(c) * {**K._SUP, **K._MAX}[type(b)] for t in terms
@@ -1283,15 +1285,19 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
     algebraic = [t for t in terms if not t.atoms(sp.Function)]
     transcendental = [t for t in terms if t.atoms(sp.Function)]
     floors = [sp.Add(*[-bounded[t] if t in bounded else t for t in terms])] if bounded else []
+    factors = [b for b in sp.Mul.make_args(F) if b.has(var)]
+    gaps = {F / b * b.subs(var, starts[0]): F / b * (b - b.subs(var, starts[0])) for b in factors} \
+        if len(factors) > 1 else {}             # G = A B(R0): F - G = A (B - B(R0))
     leading = _leading_terms(terms, var)
     prover = Prover(_scaled(WORK, F))
-    for G in floors + [sp.Add(*ts) for ts in (algebraic, leading, transcendental) if ts and len(ts) < len(terms)]:
-        for R in starts if _plausible(G - 2 * G.subs(var, starts[0]) - 1, var, 10 ** 6, 1) else ():
-            try:
+    for G in floors + [*gaps] + [sp.Add(*ts) for ts in (algebraic, leading, transcendental) if ts and len(ts) < len(terms)]:
+        nest = K.unbounded_increasing(G.as_independent(var, as_Add=True)[1].as_independent(var)[1])
+        for R in starts if nest or _plausible(G - 2 * G.subs(var, starts[0]) - 1, var, 10 ** 6, 1) else ():
+            try:                        # (a nest of logs grows too slowly for the plausibility filter)
                 I = (R, OO, False, True)
-                lower = prover.prove(F - G, var, I, 1, False) if spread == F else \
-                    prover._rewritten(F - G, spread - G, var, I, 1, False, 0, False)
-                div = _diverges(G, var, (R,))
+                lower = prover.prove(F - G, var, I, 1, False) if spread == F and G not in gaps else \
+                    prover._rewritten(F - G, gaps.get(G, spread - G), var, I, 1, False, 0, False)
+                div = _diverges(G, var, (R,)) or (_diverges_inside(G, var) if nest else [])
                 if div:
                     return [_rule(K.diverges_by_comparison, lower, div[0], expr=F)]
                 break                   # G does not grow: the next G
