@@ -82,3 +82,29 @@ def test_a_constant_written_as_a_python_number_is_read(tmp_path):
     path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nf = True\n")
     with pytest.raises(DesignError, match="is a bool"):
         load_design(path)
+
+
+def test_functions_the_checker_does_not_read_are_rewritten_when_that_is_an_identity(tmp_path):
+    """sech, coth, cot and the golden ratio become quotients of cosh, sinh,
+    cos, sin and a radical (the same function on the same domain), and an
+    unevaluated Subs of a Derivative is carried out, so that the kernel can
+    re-check the design; Catalan's constant has no such form, and the
+    certificate check then says which name it cannot read."""
+    from uwmr_symbolic import design_certificate as DC
+    from uwmr_symbolic.verify import verify_design
+    e1, e2 = sp.symbols("e1 e2", real=True)
+    rho = e1 ** 2 + e2 ** 2
+    cases = {"sp.sech(rho) + sp.coth(1 + rho) + sp.cot(1 + rho)":
+             1 / sp.cosh(rho) + sp.cosh(1 + rho) / sp.sinh(1 + rho) + sp.cos(1 + rho) / sp.sin(1 + rho),
+             "sp.GoldenRatio * sp.log(1 + rho)": (1 + sp.sqrt(5)) / 2 * sp.log(1 + rho),
+             "sp.Subs(sp.Derivative(sp.log(1 + t * rho), t), t, 1)": rho / (1 + rho)}
+    for text, want in cases.items():
+        path = tmp_path / "d.py"
+        path.write_text(f"import sympy as sp\nfrom uwmr_symbolic import e1, e2\nt = sp.Symbol('t')\n"
+                        f"rho = e1**2 + e2**2\nf = {text}\n")
+        f = load_design(path).f
+        assert sp.simplify(f - want) == 0 and not f.has(sp.sech, sp.coth, sp.cot, sp.Subs, sp.GoldenRatio), f
+    path = tmp_path / "catalan.py"
+    path.write_text("import sympy as sp\nfrom uwmr_symbolic import e1, e2\nf = sp.Catalan * sp.log(1 + e1**2 + e2**2)\n")
+    with pytest.raises(DC.CertificateError, match="cannot read the design's f .name not allowed: Catalan."):
+        DC.check(DC.build(verify_design(path)))

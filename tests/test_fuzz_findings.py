@@ -169,3 +169,21 @@ def test_a_slope_that_cancels_at_64_bits_is_kernel_checked(verify):
     assert status(r, "P5") == "proved" and "P5" in r["kernel_checked"]
     assert status(r, "P3") == "refuted" and status(r, "P1") == "proved"
     assert kf_encloses(r, mpmath.mpf("2.22623174424053580053663111441"))
+
+
+def test_a_series_that_does_not_return_is_cut_off_by_the_time_limit(verify):
+    r = verify("series_outside_time_limit.py", timeout=10.0)
+    assert "hang" not in r and "crash" not in r, r
+    assert r["seconds"] < 20, r["seconds"]      # was always the hard kill, timeout + 10 s
+    assert [p for p in r["properties"] if status(r, p) == "refuted"] == []
+
+
+def test_a_slope_at_the_origin_that_is_zero_in_disguise_refutes_nothing(verify):
+    r = verify("disguised_zero_slope.py", timeout=40.0)     # (the search's verdicts: --trust-search)
+    assert [p for p in r["properties"] if status(r, p) == "refuted"] == []
+    assert status(r, "P8") == "proved" and status(r, "P1") == "proved"
+
+
+def test_a_derivative_formula_on_a_switching_line_refutes_nothing(verify):
+    r = verify("max_min_on_the_diagonal.py", timeout=40.0)
+    assert [p for p in r["properties"] if status(r, p) == "refuted"] == []

@@ -1290,7 +1290,7 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
         if len(factors) > 1 else {}             # G = A B(R0): F - G = A (B - B(R0))
     leading = _leading_terms(terms, var)
     prover = Prover(_scaled(WORK, F))
-    for G in floors + [*gaps] + [sp.Add(*ts) for ts in (algebraic, leading, transcendental) if ts and len(ts) < len(terms)]:
+    for G in floors + [sp.Add(*ts) for ts in (algebraic, leading, transcendental) if ts and len(ts) < len(terms)] + [*gaps]:
         nest = K.unbounded_increasing(G.as_independent(var, as_Add=True)[1].as_independent(var)[1])
         for R in starts if nest or _plausible(G - 2 * G.subs(var, starts[0]) - 1, var, 10 ** 6, 1) else ():
             try:                        # (a nest of logs grows too slowly for the plausibility filter)

@@ -266,6 +266,25 @@ def _check_real_valued(f: sp.Expr) -> None:
             raise DesignError(f"f is not real-valued at (e1, e2) = ({a}, {b}): f = {sp.N(v, 6)}")
 
 
+_RECIPROCALS = {sp.sech: lambda x: 1 / sp.cosh(x), sp.csch: lambda x: 1 / sp.sinh(x),
+                sp.coth: lambda x: sp.cosh(x) / sp.sinh(x), sp.sec: lambda x: 1 / sp.cos(x),
+                sp.csc: lambda x: 1 / sp.sin(x), sp.cot: lambda x: sp.cos(x) / sp.sin(x)}
+
+
+def _plain_functions(f: sp.Expr) -> sp.Expr:
+    """f with what the certificate checker does not read written with what
+    it does, where that is an identity on the same domain: sech, csch, coth,
+    sec, csc, cot as quotients of cosh, sinh, cos, sin; the golden ratio and
+    the tribonacci constant as radicals; unevaluated derivatives, integrals,
+    sums and substitutions carried out (when SymPy can)."""
+    if f.has(sp.Derivative, sp.Integral, sp.Sum, sp.Subs):
+        done = f.doit()
+        f = done if not done.has(sp.Derivative, sp.Integral, sp.Sum, sp.Subs) else f
+    for func, quotient in _RECIPROCALS.items():
+        f = f.replace(lambda e, func=func: isinstance(e, func), lambda e, q=quotient: q(e.args[0]))
+    return f.xreplace({c: c.rewrite(sp.sqrt) for c in f.atoms(sp.GoldenRatio.func, sp.TribonacciConstant.func)})
+
+
 def _plain_conditions(f: sp.Expr) -> sp.Expr:
     """f with each Piecewise condition written with relations, And, Or and
     Not only (the conditions the certificate checker reads): membership
@@ -325,7 +344,7 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
     if unused:
         raise DesignError(f"params[{unused[0]!r}] names no symbol of f")
     f = sp.piecewise_fold(f.rewrite(sp.Piecewise)) if f.has(sp.Abs, sp.Max, sp.Min, sp.Heaviside, sp.sign) else f
-    f = _plain_conditions(f)
+    f = _plain_conditions(_plain_functions(f))
     _check_real_valued(f)
     if any(max(abs(r.p), r.q).bit_length() > 14_000 for r in f.atoms(sp.Rational)):   # Python prints <= 4,300 digits
         raise DesignError("f holds a number of more than 4,200 digits, which cannot be printed into a certificate "

@@ -39,7 +39,7 @@ from . import e1 as E1, e2 as E2
 from .certify import REDUCTION
 from .kernel.certificate import CertificateError, check_certificate, to_certificate  # noqa: F401 (re-exported)
 from .kernel.core import _TRUE_WHEN, _srepr, derivative    # when a relation l < r (<=, >, >=) holds: the sign of r - l; srepr, cached
-from .kernel.parse import parse
+from .kernel.parse import ParseError, parse
 from .profile import S
 
 FORMAT, VERSION = "uwmr-design-certificate", 1
@@ -803,7 +803,12 @@ def check(data) -> list[PropertyCheck]:
         raise CertificateError(f"design certificate version {data.get('version')!r} is not supported: "
                                f"this checker reads version {VERSION} only")
     try:
-        f = parse(data["design"]["f"], design=True)
+        try:
+            f = parse(data["design"]["f"], design=True)
+        except ParseError as exc:
+            raise CertificateError(f"the checker cannot read the design's f ({exc}): nothing can be re-checked; "
+                                   f"the kernel reads exp, log, sqrt and powers, trigonometric and hyperbolic "
+                                   f"functions and their inverses, erf, Abs, Max, Min, Piecewise") from None
         props = data["properties"]
         out = []
         for name in sorted(props):

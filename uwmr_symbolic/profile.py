@@ -88,10 +88,9 @@ def elliptic_ratio(f, F):
     identity, or None.  r is proposed from the leading Taylor terms of f on
     the two axes (a proposal only); the identity decides."""
     t = sp.Symbol("t", positive=True)
-    try:
-        a = sp.series(f.subs({E1: t, E2: 0}), t, 0, 7).removeO()
-        b = sp.series(f.subs({E1: 0, E2: t}), t, 0, 7).removeO()
-    except Exception:  # noqa: BLE001
+    a, b = (attempt(lambda g=g: sp.series(g, t, 0, 7).removeO(), 2.0)      # (SymPy's series can run for minutes)
+            for g in (f.subs({E1: t, E2: 0}), f.subs({E1: 0, E2: t})))
+    if a is None or b is None:
         return None
     for m in (1, 2, 3):
         ca, cb = a.coeff(t, 2 * m), b.coeff(t, 2 * m)

@@ -148,8 +148,14 @@ class Analysis:
 
     @cached_property
     def dF0(self):
-        """F'(0+): the limit of |grad f| at the origin."""
-        return one_sided_value(self.derivative(self.profile.pieces[0].expr, 1), 0, +1)
+        """F'(0+): the limit of |grad f| at the origin; the literal 0 when it
+        is 0 in disguise (log 6 - log 2 - log 3), None when neither 0 nor
+        signed (`exact_sign`): a refutation needs a value shown nonzero."""
+        d = one_sided_value(self.derivative(self.profile.pieces[0].expr, 1), 0, +1)
+        if d is None or d == 0 or not d.is_number or not d.is_finite:
+            return d
+        sign = exact_sign(d)
+        return sp.Integer(0) if sign == 0 else None if sign is None else d
 
     @cached_property
     def d2F0(self):
@@ -665,9 +671,10 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
                 lim = limit_right(prepare(g.subs({E1: dx / X, E2: dy / X})), X).value
             except (NoLimit, ZeroDivisionError, TypeError, ValueError):
                 continue
-            if lim in (sp.oo, -sp.oo):
-                return refuted(f"|df/de2| -> oo along the ray through ({dx}, {dy}): kf is infinite",
-                               {"direction": [dx, dy], "limit": str(lim)})
+            found = refuted(f"|df/de2| -> oo along the ray through ({dx}, {dy}): kf is infinite",
+                            {"direction": [dx, dy], "limit": str(lim)}) if lim in (sp.oo, -sp.oo) else None
+            if found is not None and _stands(name, found, f):
+                return found
     if name == "P6" and not f.has(*SMOOTH_ONLY):    # df/de1(h, 0)/h unbounded: no k with df/de1 = k e1 h, h <= 1
         g = derivative(f, E1)
         for where, h in (("oo", 1 / X), ("0+", X)):
@@ -744,11 +751,12 @@ def _jump_across_a_line(f, name: str) -> Verdict | None:
 
 
 def _stands(name: str, v: Verdict, f) -> bool:
-    """A refutation of P5 or P6 found through the formula of df/de1 stands
-    for an f with Piecewise, Max, Min or sign only where the kernel checks a
-    witness of it (a `step` of f itself): there the formula may be that of a
-    branch taken on a line only (Eq(e1, 1)), unrelated to f's derivative."""
-    return name not in ("P5", "P6") or not f.has(*SMOOTH_ONLY) or refutation_theorems(name, v, f)[0] is not None
+    """A refutation of P1, P5 or P6 found through the formula of a partial
+    derivative stands for an f with Piecewise, Max, Min or sign only where
+    the kernel checks a witness of it: there the formula may be that of a
+    branch taken on a line only (Eq(e1, 1), or Max(e1^2, e2^2) on the
+    diagonal), unrelated to f's derivative."""
+    return name not in ("P1", "P5", "P6") or not f.has(*SMOOTH_ONLY) or refutation_theorems(name, v, f)[0] is not None
 
 
 _LINES = [(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, 1), (1, -1), (-1, -1)]

@@ -218,13 +218,13 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Tr
             timed_out = True
     props = {p: props[p] for p in PROPERTIES}
     kf = None
-    if analysis.reduced and analysis.profile is not None:
-        try:
-            with time_limit(stage_seconds(deadline, 1.0, time.monotonic())):
+    try:
+        with time_limit(stage_seconds(deadline, 1.0, time.monotonic())):
+            if analysis.reduced and analysis.profile is not None:
                 kf = analysis.kf    # sup |F'| over the pieces, also when P1 fails
-        except TimeLimit:
-            kf = None
-            timed_out = True
+    except TimeLimit:
+        kf = None
+        timed_out = True
     try:
         with time_limit(stage_seconds(deadline, 5.0, time.monotonic())), design_budget(design.f):   # the witnesses' own budget
             certificate, kernel = _kernel_check(Report(path, design, props, kf))
