@@ -187,3 +187,16 @@ def test_a_slope_at_the_origin_that_is_zero_in_disguise_refutes_nothing(verify):
 def test_a_derivative_formula_on_a_switching_line_refutes_nothing(verify):
     r = verify("max_min_on_the_diagonal.py", timeout=40.0)
     assert [p for p in r["properties"] if status(r, p) == "refuted"] == []
+
+
+def test_a_substitution_of_several_variables_is_carried_out_at_once(verify):
+    r = verify("subs_all_at_once.py", timeout=40.0)
+    assert {p: status(r, p) for p in ("P3", "P4", "P8")} == {"P3": "refuted", "P4": "refuted", "P8": "refuted"}
+    assert status(r, "P5") != "refuted" and status(r, "P6") != "refuted"
+
+
+def test_a_weak_sign_theorem_is_left_to_the_search_not_written_as_a_proof(verify):
+    r = verify("weak_slope_claim.py", timeout=40.0)
+    assert r["certificate_error"] is None, r["certificate_error"]
+    assert {"P2", "P3", "P4", "P8"} <= set(r["kernel_checked"])
+    assert [p for p in r["properties"] if status(r, p) == "refuted"] == []

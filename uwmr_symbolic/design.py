@@ -275,11 +275,14 @@ def _plain_functions(f: sp.Expr) -> sp.Expr:
     """f with what the certificate checker does not read written with what
     it does, where that is an identity on the same domain: sech, csch, coth,
     sec, csc, cot as quotients of cosh, sinh, cos, sin; the golden ratio and
-    the tribonacci constant as radicals; unevaluated derivatives, integrals,
-    sums and substitutions carried out (when SymPy can)."""
-    if f.has(sp.Derivative, sp.Integral, sp.Sum, sp.Subs):
-        done = f.doit()
-        f = done if not done.has(sp.Derivative, sp.Integral, sp.Sum, sp.Subs) else f
+    the tribonacci constant as radicals; unevaluated derivatives carried out,
+    and substitutions, all variables at once (SymPy's Subs.doit substitutes
+    them one after another: Subs(g, (e1, e2), (e2, e1)) would become
+    g(e1, e1)).  Sums and integrals are left as written: carrying them out
+    can bring in removable singularities or floor."""
+    if f.has(sp.Derivative, sp.Subs):
+        f = f.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
+        f = f.replace(lambda e: isinstance(e, sp.Subs), lambda e: e.expr.xreplace(dict(zip(e.variables, e.point))))
     for func, quotient in _RECIPROCALS.items():
         f = f.replace(lambda e, func=func: isinstance(e, func), lambda e, q=quotient: q(e.args[0]))
     return f.xreplace({c: c.rewrite(sp.sqrt) for c in f.atoms(sp.GoldenRatio.func, sp.TribonacciConstant.func)})
