@@ -1821,3 +1821,20 @@ def test_derivative_keeps_the_log_term_of_a_variable_exponent_and_sympys_rules_e
     assert K.derivative(sp.Abs(x - 1), x) == sp.sign(x - 1)
     assert K.derivative(sp.Piecewise((x, x < 1), (x ** 2, True)), x) == sp.Piecewise((1, x < 1), (2 * x, True))
     assert K.derivative(sp.Max(x, 1 - x) + x, x) == sp.diff(sp.Max(x, 1 - x), x) + 1
+
+
+def test_logarithms_of_rationals_are_read_through_their_primes():
+    """log(p/q), 0 < p/q and p, q < 2^64, is a sum of logarithms of primes,
+    one fresh symbol per prime: log(3/4) - log 3 + 2 log 2 and log 256 - 8 log 2
+    are 0 exactly (Arb alone cannot say so); log 2^64 is not factored (the cost
+    bound), so log(2^64) - 64 log 2 stays undecided.  Distinct primes keep
+    distinct symbols: (log 3 - log 2)(sqrt 3 - r), r within 10^-90 of sqrt 3,
+    is not 0 although Arb's 256 bits cannot sign it."""
+    V = K.value_sign
+    assert V(value=sp.log(Q(3, 4)) - sp.log(3) + 2 * sp.log(2)).claim.want == 0
+    assert V(value=sp.log(256) - 8 * sp.log(2)).claim.want == 0
+    big = sp.log(sp.Integer(2) ** 64) - 64 * sp.log(2)
+    assert why(V, value=big) == f"sign of {big} not decided"
+    r = sp.Rational(sp.floor(sp.sqrt(3) * 10 ** 90), 10 ** 90)
+    c = (sp.log(3) - sp.log(2)) * (sp.sqrt(3) - r)
+    assert why(V, value=c) == f"sign of {c} not decided"
