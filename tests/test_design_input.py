@@ -108,3 +108,16 @@ def test_functions_the_checker_does_not_read_are_rewritten_when_that_is_an_ident
     path.write_text("import sympy as sp\nfrom uwmr_symbolic import e1, e2\nf = sp.Catalan * sp.log(1 + e1**2 + e2**2)\n")
     with pytest.raises(DC.CertificateError, match="cannot read the design's f .name not allowed: Catalan."):
         DC.check(DC.build(verify_design(path)))
+
+
+def test_a_membership_without_relations_is_left_as_written(tmp_path):
+    """Contains(e1, [0, 1]) becomes 0 <= e1 <= 1; a set with no relations
+    (the even integers, an ImageSet) stays a Contains, with no internal error."""
+    e1 = sp.Symbol("e1", real=True)
+    for where, want in (("sp.Interval(0, 1)", sp.And(e1 >= 0, e1 <= 1)),
+                        ("sp.ImageSet(sp.Lambda(n, 2 * n), sp.Integers)", None)):
+        path = tmp_path / "d.py"
+        path.write_text("import sympy as sp\nfrom uwmr_symbolic import e1, e2\nn = sp.Symbol('n')\n"
+                        f"f = sp.Piecewise((e1**2 + e2**2, sp.Contains(e1, {where})), (2*e1**2 + e2**2, True))\n")
+        cond = load_design(path).f.args[0][1]
+        assert cond == want if want is not None else isinstance(cond, sp.Contains), cond

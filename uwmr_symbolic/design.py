@@ -293,8 +293,14 @@ def _plain_conditions(f: sp.Expr) -> sp.Expr:
     Not only (the conditions the certificate checker reads): membership
     `Contains(x, set)` as the set's relations, Xor, ITE, Implies, Equivalent,
     Nand and Nor in negation normal form (logical equivalences)."""
+    def relations(b):                   # (an ImageSet has no relations: left as it is, unread by the checker)
+        try:
+            return b.args[1].as_relational(b.args[0])
+        except (AttributeError, NotImplementedError, TypeError, ValueError):
+            return b
+
     def plain(c):
-        c = c.replace(lambda b: isinstance(b, sp.Contains), lambda b: b.args[1].as_relational(b.args[0]))
+        c = c.replace(lambda b: isinstance(b, sp.Contains), relations)
         return c.to_nnf() if c.has(*_COMPOUND) else c
     pieces = list(f.atoms(sp.Piecewise))
     if not any(c.has(sp.Contains, *_COMPOUND) for p in pieces for _, c in p.args):
