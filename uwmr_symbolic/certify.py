@@ -1245,11 +1245,18 @@ def growth_theorems(F, var, last=None) -> list:
                               lambda g: (_diverges(g, var, (R,)) or _diverges_above(g, var, (R,)))[0])]
         except (NoProof, IndexError, K.KernelError, Undefined):
             return []
-    G = F.as_independent(var, as_Add=True)[1].as_independent(var)[1]
-    if K.unbounded_increasing(G) and G.args[0].atoms(sp.Function):     # a nest: the rates grow slow and dear
+    G = _outer(F, var)
+    if G is not None and G.args[0].atoms(sp.Function):     # a nest: the rates grow slow and dear
         return _diverges_inside(F, var) or _diverges(F, var, (sp.Integer(4), sp.Integer(16))) or \
             _diverges_above(F, var)
     return _diverges(F, var, (sp.Integer(4), sp.Integer(16))) or _diverges_above(F, var) or _diverges_inside(F, var)
+
+
+def _outer(F, var):
+    """G for F = a + m G(Y), a and m constants (m > 0: the kernel checks), G
+    increasing and unbounded (`unbounded_increasing`), else None."""
+    G = F.as_independent(var, as_Add=True)[1].as_independent(var)[1]
+    return G if K.unbounded_increasing(G) else None
 
 
 def _diverges_inside(F, var) -> list:
@@ -1257,8 +1264,8 @@ def _diverges_inside(F, var) -> list:
     increasing and unbounded (log, exp, sinh, asinh, Y^p): `diverges_through_increasing`
     (log(1 + log(1 + s^2)), slower than any rate `diverges_by_growth` knows;
     nested deeper through a = 1)."""
-    G = F.as_independent(var, as_Add=True)[1].as_independent(var)[1]      # (a constant factor m > 0: the kernel checks)
-    if not K.unbounded_increasing(G):
+    G = _outer(F, var)
+    if G is None:
         return []
     inner = growth_theorems(G.args[0], var)
     try:
@@ -1291,13 +1298,13 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
     leading = _leading_terms(terms, var)
     prover = Prover(_scaled(WORK, F))
     for G in floors + [sp.Add(*ts) for ts in (algebraic, leading, transcendental) if ts and len(ts) < len(terms)] + [*gaps]:
-        nest = K.unbounded_increasing(G.as_independent(var, as_Add=True)[1].as_independent(var)[1])
+        nest = _outer(G, var) is not None
         for R in starts if nest or _plausible(G - 2 * G.subs(var, starts[0]) - 1, var, 10 ** 6, 1) else ():
             try:                        # (a nest of logs grows too slowly for the plausibility filter)
                 I = (R, OO, False, True)
                 lower = prover.prove(F - G, var, I, 1, False) if spread == F and G not in gaps else \
                     prover._rewritten(F - G, gaps.get(G, spread - G), var, I, 1, False, 0, False)
-                div = _diverges(G, var, (R,)) or (_diverges_inside(G, var) if nest else [])
+                div = _diverges(G, var, (R,)) or _diverges_inside(G, var)
                 if div:
                     return [_rule(K.diverges_by_comparison, lower, div[0], expr=F)]
                 break                   # G does not grow: the next G
@@ -1775,7 +1782,7 @@ def _jump_theorems(f, record):
     its conditions' signs on (0, w], the one-sided limits of the branches'
     order-th derivatives, a nonzero gap.  Fills in record's branches, width
     and compare."""
-    from .design_certificate import E2, CertificateError, H, _at, branch_conditions, jump_parts
+    from .design_certificate import CertificateError, H, _at, branch_conditions, chosen_by_e1, jump_parts
     if not isinstance(f, sp.Piecewise):
         raise NoProof("f is not a Piecewise")
     v = sp.Symbol(record.get("var", "e1"), real=True)
@@ -1794,7 +1801,7 @@ def _jump_theorems(f, record):
         if len(found) < 2:
             continue
         branches = [found[0][0], found[1][0]]
-        if record.get("mixed") and any(c.has(E2) for _, c in f.args[:max(branches) + 1]):
+        if record.get("mixed") and not chosen_by_e1(f, branches):
             raise NoProof("a branch there is chosen by e2 too")
         try:
             lims = [_rule(K.continuous_at_end, expr=e, var=H, c=0, width=w)

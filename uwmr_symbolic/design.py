@@ -283,8 +283,7 @@ def _plain_functions(f: sp.Expr) -> sp.Expr:
     if f.has(sp.Derivative, sp.Subs):
         f = f.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
         f = f.replace(lambda e: isinstance(e, sp.Subs), lambda e: e.expr.xreplace(dict(zip(e.variables, e.point))))
-    for func, quotient in _RECIPROCALS.items():
-        f = f.replace(lambda e, func=func: isinstance(e, func), lambda e, q=quotient: q(e.args[0]))
+    f = f.replace(lambda e: type(e) in _RECIPROCALS, lambda e: _RECIPROCALS[type(e)](e.args[0]))
     return f.xreplace({c: c.rewrite(sp.sqrt) for c in f.atoms(sp.GoldenRatio.func, sp.TribonacciConstant.func)})
 
 

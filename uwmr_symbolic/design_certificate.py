@@ -623,6 +623,13 @@ def _tail_branch(f, v, witness, claims, at, order, bad):
     return claims[len(conds):], f.args[i][0]
 
 
+def chosen_by_e1(f, branches) -> bool:
+    """Every condition of the Piecewise f up to the later branch is free of
+    e2: where such a branch applies at (b + h, c) it applies on the whole
+    line e1 = b + h, so near a jump line e1 = b it is f on an open strip."""
+    return not any(c.has(E2) for _, c in f.args[:max(branches) + 1])
+
+
 def _one_of(c, options, on) -> bool:
     """The claim c is a sign claim on the interval `on` that shows one of
     the acceptable (expression, want, strict) of `branch_conditions`."""
@@ -643,7 +650,7 @@ def _link_jump(name, f, claims, witness, bad) -> str:
         raise bad
     if order and any(f.args[i][0].has(*SMOOTH_ONLY) for i in branches):
         raise CertificateError(f"{name}: a jump of a derivative needs branches without Piecewise, Max, Min or sign")
-    if mixed and any(c.has(E2) for _, c in f.args[:max(branches) + 1]):
+    if mixed and not chosen_by_e1(f, branches):
         raise CertificateError(f"{name}: a jump of a derivative in e2 needs branches chosen by e1 alone")
     on = (_srepr(H), "Integer(0)", _srepr(w), True, False)
     k = 0
