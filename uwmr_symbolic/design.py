@@ -13,6 +13,7 @@ import numbers
 import re
 import runpy
 import sys
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -20,12 +21,16 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from . import e1 as E1, e2 as E2
+from .timeouts import attempt
 
 GAIN_KEYS = ("k1", "k2", "lam", "Vmax", "Wmax", "Vr_max", "Wr_max")
 #: |Wr|max = 0 is a straight-line reference: (3) bounds |Wr(t)| by it and
 #: bound (10) holds with it as written.  Every other entry must be positive
 #: (lam, k1, k2 > 0 in (9); lim Vr(t) != 0 needs |Vr|max > 0).
 NONNEGATIVE_KEYS = ("Wr_max",)
+
+
+REWRITE_SECONDS = 5.0     # SymPy's rewrite of Abs, Max, Min, ... as a Piecewise
 
 
 class DesignError(Exception):
@@ -351,7 +356,13 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
     unused = sorted(set(params) - {s.name for s in _canonical_symbols(f_source).free_symbols})
     if unused:
         raise DesignError(f"params[{unused[0]!r}] names no symbol of f")
-    f = sp.piecewise_fold(f.rewrite(sp.Piecewise)) if f.has(sp.Abs, sp.Max, sp.Min, sp.Heaviside, sp.sign) else f
+    if f.has(sp.Abs, sp.Max, sp.Min, sp.Heaviside, sp.sign):
+        start = time.monotonic()
+        f = attempt(lambda: sp.piecewise_fold(f.rewrite(sp.Piecewise)), REWRITE_SECONDS)
+        if f is None:       # SymPy can loop on an argument whose sign it cannot decide (a constant 0 in disguise)
+            raise DesignError(f"SymPy could not write the Abs, Max, Min, Heaviside or sign of f as a Piecewise "
+                              f"(stopped after {time.monotonic() - start:.1f} s); simplify their constant arguments, "
+                              f"or write f as a Piecewise")
     f = _plain_conditions(_plain_functions(f))
     _check_real_valued(f)
     if any(max(abs(r.p), r.q).bit_length() > 14_000 for r in f.atoms(sp.Rational)):   # Python prints <= 4,300 digits

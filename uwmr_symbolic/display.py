@@ -60,7 +60,7 @@ def report_html(report) -> str:
         parts.append("<table><tr><th>bound (10)</th><th>|V| bound</th><th>margin</th><th>|W| bound</th>"
                      f"<th>margin</th><th>largest λ</th></tr>{grows}</table>")
     pr = d["proof_replay"]
-    parts.append(f"<p>proof replay (11)-(19): {'ok' if pr.get('ok') else 'NOT ok'}<br>"
+    parts.append(f"<p>proof replay (11)-(19): {'not run' if not pr.get('steps') else 'ok' if pr.get('ok') else 'NOT ok'}<br>"
                  f"<b>{esc(status_text(d))}</b> (exit status {d['exit_status']}, {d['seconds']:.2f} s)</p></div>")
     return "".join(parts)
 

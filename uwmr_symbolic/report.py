@@ -161,8 +161,8 @@ def render_text(r) -> str:
         lines.append(f"  {kernel_text(d['kernel'])}")
     lines.append("")
     pr = d["proof_replay"]
-    lines.append(f"  proof replay: {'ok' if pr.get('ok') else 'NOT ok'} — "
-                 + "; ".join(f"{k}: {'ok' if s['ok'] else 'no'}" for k, s in pr.get("steps", {}).items()))
+    lines.append("  proof replay: " + ("not run" if not pr.get("steps") else f"{'ok' if pr.get('ok') else 'NOT ok'} — "
+                 + "; ".join(f"{k}: {'ok' if s['ok'] else 'no'}" for k, s in pr["steps"].items())))
     served = ", served from the cache" if d.get("cached") else ""
     lines.append(f"  => {status_text(d)}  ({d['seconds']:.2f} s{served})")
     return "\n".join(lines)
