@@ -698,6 +698,19 @@ def test_identity_with_transcendental_constants_is_exact():
                hi_open=False) == "the rational functions differ"
 
 
+def test_power_of_a_positive_variable_is_split_off_a_radicand_exactly():
+    """b = s^3/(s - 1) - 2 s^2/(s - 1) = s^2 (s - 2)/(s - 1), a sum SymPy
+    keeps whole: sqrt(b) = s sqrt((s - 2)/(s - 1)) for s >= 2, exactly
+    (N/D once s^2 is divided out); a split into sqrt(N D) would make
+    s sqrt((s - 2)(s - 1)), which is no identity, exact instead."""
+    b = s ** 3 / (s - 1) - 2 * s ** 2 / (s - 1)
+    ends = dict(var=s, lo=I3, hi=sp.Integer(4), lo_open=False, hi_open=False)
+    assert K.identity(lhs=sp.sqrt(b), rhs=s * sp.sqrt((s - 2) / (s - 1)), **ends).assumptions == \
+        {"sympy-core", "sympy-polys"}
+    assert why(K.identity, lhs=sp.sqrt(b), rhs=s * sp.sqrt((s - 2) * (s - 1)), **ends).startswith(
+        "the identity fails at s = 31/10: lhs - rhs = [-2.467976807794")
+
+
 def tail(E, Et, Rv, ident_lo=0, ident_hi=oo, ident_hi_open=True):
     tt = K.sign_by_taylor(expr=Et, var=t, c=I0, side=1, width=1 / Rv, order=1)
     ident = K.identity(lhs=Et, rhs=E.subs(s, 1 / t), var=t, lo=sp.sympify(ident_lo), hi=sp.sympify(ident_hi),
