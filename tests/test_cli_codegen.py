@@ -39,6 +39,30 @@ def test_refuted_design_needs_force_and_then_carries_the_banner(tmp_path):
         assert "NOT VERIFIED: P3 refuted" in head, name
 
 
+def test_output_that_cannot_take_the_files_is_a_one_line_error(tmp_path):
+    """--codegen naming a file, or a folder where a generated file's name is
+    a folder: exit 2, one line, nothing written (`python -m
+    uwmr_symbolic.codegen` alike)."""
+    (tmp_path / "afile").write_text("mine")
+    run = cli(ROOT / "designs/design1_jiang.py", "--codegen", tmp_path / "afile")
+    assert run.returncode == 2 and "Traceback" not in run.stderr, run.stderr
+    assert run.stderr.strip() == (f"{ROOT / 'designs/design1_jiang.py'}: no code generated: {tmp_path / 'afile'}: "
+                                  "exists and is not a folder; name a folder for the generated code")
+    (tmp_path / "half" / "design1_jiang.py").mkdir(parents=True)
+    run = cli(ROOT / "designs/design1_jiang.py", "--codegen", tmp_path / "half")
+    assert run.returncode == 2 and len(run.stderr.strip().splitlines()) == 1, run.stderr
+    assert "design1_jiang.py: is a folder, where the generated file design1_jiang.py goes" in run.stderr
+    assert [p.name for p in (tmp_path / "half").iterdir()] == ["design1_jiang.py"]
+    module = subprocess.run([sys.executable, "-m", "uwmr_symbolic.codegen", "--out", tmp_path / "afile",
+                             ROOT / "designs/design1_jiang.py", ROOT / "tests/bad_inputs/no_f.py"],
+                            cwd=ROOT, capture_output=True, text=True, timeout=600)
+    assert module.returncode == 2 and "Traceback" not in module.stderr, module.stderr
+    lines = module.stderr.strip().splitlines()
+    assert len(lines) == 2 and "cannot write the generated code (Not a directory)" in lines[0], lines
+    assert lines[1].endswith("no_f.py: defines no `f`; add e.g. `f = sympy.log(1 + e1**2 + e2**2) / 2`")
+    assert (tmp_path / "afile").read_text() == "mine"
+
+
 def test_force_without_codegen_is_a_usage_error():
     run = cli(ROOT / "designs/design1_jiang.py", "--force")
     assert run.returncode == 2 and "--codegen" in run.stderr

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import importlib.util
 import math
+import os
 from fractions import Fraction
 import subprocess
 import sys
@@ -12,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from uwmr_symbolic.codegen import CodegenRefused, build, casadi_function, generate
+from uwmr_symbolic.codegen import CodegenRefused, OutputError, build, casadi_function, generate, install
 from uwmr_symbolic.codegen import c_backend
 from uwmr_symbolic.verify import verify_design
 
@@ -95,6 +96,53 @@ def test_failure_while_writing_leaves_old_files(reports, tmp_path, monkeypatch):
         generate(ROOT / "designs" / "design1_jiang.py", out, report=reports["design1_jiang"])
     assert {p.name: p.read_text() for p in out.iterdir()} == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["design1_jiang"]   # no temp dir left
+
+
+FILES = {"a.py": "new a", "b.c": "new b", "c.h": "new c"}
+
+
+def test_install_puts_back_the_old_set_when_a_move_fails(tmp_path, monkeypatch):
+    """A move that fails half-way (the disk, a permission) leaves the folder
+    as it was: the files moved so far are taken back, the old ones restored."""
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "a.py").write_text("old a")
+    (out / "c.h").write_text("old c")
+    (out / "keep.txt").write_text("the user's")
+    real, calls = os.replace, []
+
+    def failing(src, dst):
+        calls.append(Path(dst).name)
+        if Path(src).name == "c.h" and Path(src).parent != out:    # the new c.h, once the old one is aside
+            raise PermissionError(13, "Permission denied")
+        return real(src, dst)
+    monkeypatch.setattr(os, "replace", failing)
+    with pytest.raises(OutputError, match=r"out: cannot write the generated code \(Permission denied\); "
+                                          r"nothing was changed"):
+        install(FILES, out)
+    monkeypatch.setattr(os, "replace", real)
+    # old a.py aside, new a.py and b.c in, old c.h aside, new c.h fails; then old c.h and a.py back
+    assert calls == ["a.py.old", "a.py", "b.c", "c.h.old", "c.h", "c.h", "a.py"]
+    assert {p.name: p.read_text() for p in out.iterdir()} == {"a.py": "old a", "c.h": "old c", "keep.txt": "the user's"}
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]        # no temp folder left
+    # a folder it had to create is removed again
+    with monkeypatch.context() as m:
+        m.setattr(os, "replace", failing)
+        with pytest.raises(OutputError):
+            install(FILES, tmp_path / "new")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
+
+
+def test_install_refuses_a_target_that_is_no_place_for_a_file(tmp_path):
+    (tmp_path / "file").write_text("x")
+    with pytest.raises(OutputError, match="file: exists and is not a folder; name a folder"):
+        install(FILES, tmp_path / "file")
+    (tmp_path / "out" / "b.c").mkdir(parents=True)
+    with pytest.raises(OutputError, match=r"b.c: is a folder, where the generated file b.c goes"):
+        install(FILES, tmp_path / "out")
+    assert [p.name for p in (tmp_path / "out").iterdir()] == ["b.c"]
+    assert install(FILES, tmp_path / "fresh") == [tmp_path / "fresh" / n for n in sorted(FILES)]
+    assert {p.name: p.read_text() for p in (tmp_path / "fresh").iterdir()} == FILES
 
 
 def test_python_module_imports_numpy_only():

@@ -222,8 +222,9 @@ def run_simulations(results, args, reports: Reports) -> int:
 
 
 def write_code(paths, results, out, force, reports: Reports) -> int:
-    """`--codegen`: generate each usable design; 1 if one was refused."""
-    from .codegen import CodegenInvalid, CodegenRefused, generate
+    """`--codegen`: generate each usable design; 1 if one was refused, 2 if
+    the output folder cannot take the files (nothing written there)."""
+    from .codegen import CodegenInvalid, CodegenRefused, OutputError, generate
     status = 0
     usable = {d["design"] for d in results if d.get("error") is None}
     for path in map(Path, paths):
@@ -242,6 +243,10 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
                   f"reason(s): {exc.reasons[0]} ...); use --force for a NOT VERIFIED build",
                   file=sys.stderr)
             status = 1
+            continue
+        except OutputError as exc:
+            print(f"{path}: no code generated: {exc}", file=sys.stderr)
+            status = worst_status([status, 2])
             continue
         print(f"{path}: wrote " + ", ".join(str(p) for p in written), file=sys.stderr)
     return status

@@ -37,7 +37,9 @@ heading between calls (e3 is never wrapped), and
 errors -> law -> commands in one call; gains {"k1", "k2", "lam"} ("lambda"
 is accepted for lam).  Units: m, rad, m/s, rad/s.
 
-NOT VERIFIED (--force): no accuracy is promised.
+NOT VERIFIED (--force): checked against the exact law like verified code
+(errors <= 1e-12 of the scale, status 0 wherever the law is finite) except
+bound (10), which needs a certified kf; no accuracy bound is proved for it.
 """
 import numpy
 

@@ -77,9 +77,11 @@ extern "C" {
  *                       UWMR_HEADING_MAX or a turn count beyond
  *                       UWMR_TURNS_MAX (see the tracker below)
  *
- * NOT VERIFIED: generated with --force.  The validation against the exact
- * law was run, but with --force its failures do not stop generation, and
- * bound (10) is not checked: no accuracy is promised.
+ * NOT VERIFIED: generated with --force.  The code passed the validation
+ * against the exact law that verified code passes (status codes, safe stop,
+ * finite outputs, errors <= 1e-12 (double) / 1e-5 (float) of the scale at a
+ * few thousand inputs) except bound (10), which needs a certified kf.  No
+ * accuracy bound is proved for it.
  * No dynamic memory, no mutable global state; reentrant (a tracker belongs
  * to one control loop).  libm may set errno on an underflow inside the
  * computation.  The gain field was called `lambda` before uwmr-symbolic

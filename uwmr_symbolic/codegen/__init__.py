@@ -28,7 +28,8 @@ from . import accuracy, c_backend, python_backend
 from .law import LawModel, build_model
 from .printers import Unsupported, double_literal
 
-__all__ = ["generate", "casadi_function", "CodegenRefused", "CodegenInvalid", "build", "not_verified_reasons"]
+__all__ = ["generate", "install", "casadi_function", "CodegenRefused", "CodegenInvalid", "OutputError", "build",
+           "not_verified_reasons"]
 
 TEMPLATES = Path(__file__).parent / "templates"
 
@@ -224,19 +225,54 @@ def generate(design_path, out_dir=None, force=False, report=None, validate=True)
         # NOT VERIFIED design only bound (10) is not checked: there is no certified kf)
         validate_build(design_path, model, files, report)
     out = Path(out_dir) if out_dir is not None else Path("generated") / model.stem
-    out.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))
+    return install(files, out)
+
+
+class OutputError(OSError):
+    """The output folder cannot take the files; the message is one line."""
+
+
+def install(files: dict[str, str], out: Path) -> list[Path]:
+    """Write the rendered `files` into the folder `out` as one set: they
+    are written to a temporary folder beside it and then moved in; if a move
+    fails, the files already moved are taken back and the old ones restored,
+    so `out` holds either the whole new set or what it held before.  Raises
+    OutputError (one line) when `out` or one of its targets is not a place
+    for a file, or the disk refuses."""
+    if out.exists() and not out.is_dir():
+        raise OutputError(f"{out}: exists and is not a folder; name a folder for the generated code")
+    taken = [out / n for n in sorted(files) if (out / n).is_dir()]
+    if taken:
+        raise OutputError(f"{taken[0]}: is a folder, where the generated file {taken[0].name} goes; move it away")
+    moved: list[tuple[Path, Path | None]] = []        # (target, its old file kept in tmp, or None)
+    created = not out.exists()
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))
+    except OSError as exc:
+        raise OutputError(f"{out}: cannot write the generated code ({exc.strerror or exc})") from None
     try:
         for name, text in files.items():
             (tmp / name).write_text(text, encoding="utf-8")
-        out.mkdir(exist_ok=True)
-        written = []
         for name in sorted(files):
-            os.replace(tmp / name, out / name)
-            written.append(out / name)
+            target, old = out / name, tmp / f"{name}.old"
+            kept = old if target.exists() else None
+            if kept:
+                os.replace(target, kept)
+            moved.append((target, kept))
+            os.replace(tmp / name, target)
+    except OSError as exc:
+        for target, kept in reversed(moved):          # back to what out held before
+            target.unlink(missing_ok=True)
+            if kept:
+                os.replace(kept, target)
+        if created:
+            shutil.rmtree(out, ignore_errors=True)
+        raise OutputError(f"{out}: cannot write the generated code ({exc.strerror or exc}); "
+                          f"nothing was changed") from None
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
-    return written
+    return [target for target, _ in moved]
 
 
 def casadi_function(design_path, report=None, force=False):
