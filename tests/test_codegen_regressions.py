@@ -142,6 +142,31 @@ def test_piecewise_erf_join_tail_does_not_divide_by_zero(tmp_path):
         assert res.returncode == 0 and "runtime error" not in res.stderr, f"sanitizer: {res.stderr}"
 
 
+def test_exp_of_a_negative_power_of_t_does_not_divide_by_zero(tmp_path):
+    """Found by a code-generation campaign: the tail form D(t) = s exp(-1/t^2)
+    + 1/sqrt(t^2 + 1) printed exp(-1.0/x0) with x0 = tt*tt, which underflows
+    to 0 for |e| > ~1e154 (float ~1e19): a division by zero for the sanitizer,
+    although exp(-inf) = 0 gave the right w.  Now exp(-(st*st)).  F'(s) =
+    s/sqrt(1 + s^2) + s exp(-s^2), so w = lam vr F'(s) e2/s -> 1 on e1 = 0."""
+    from uwmr_symbolic.codegen.harness import build_executable, run_executable
+    path = ROOT / "designs_codegen" / "c11_exp_of_rho_tail.py"
+    generate(path, tmp_path / path.stem, force=True)
+    assert "exp(-(st*st))" in (tmp_path / path.stem / f"{path.stem}.c").read_text()
+    exe = build_executable(tmp_path / path.stem, path.stem, tmp_path,
+                           extra=("-O1", "-g", "-fsanitize=address,undefined,float-divide-by-zero",
+                                  "-fno-sanitize-recover=all"))
+    law = reference.Law.of(load_design(path))
+    for f32, pairs in ((False, [(0.0, 1e200), (1e300, -1e300), (0.0, 1.7e308), (3.0, 4.0)]),
+                       (True, [(0.0, 1e30), (1e20, 1e20), (3.0, 4.0)])):
+        rows = _law_rows(pairs)
+        rows = rows.astype(np.float32).astype(np.float64) if f32 else rows
+        v, w, st, res = run_executable(exe, rows, tmp_path, f32=f32)
+        assert res.returncode == 0 and "runtime error" not in res.stderr, f"sanitizer: {res.stderr}"
+        check(path.stem, "C float" if f32 else "C double", rows, reference.table(law, rows), v, w, st,
+              "float" if f32 else "double")
+        assert w[0] == pytest.approx(1.0, rel=1e-12 if not f32 else 1e-6)
+
+
 def test_piecewise_branch_chosen_from_the_exact_rho(tmp_path):
     """Design 4 (NOT VERIFIED, f jumps at rho = (pi + 1)^2 - 1): in float, e2 =
     4.0190534591674805 has rho 1e-6 above the switch, but rho rounded to float

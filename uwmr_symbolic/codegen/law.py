@@ -209,7 +209,12 @@ def _t_power(expr) -> int:
 
 
 def _polish_tail(expr: sp.Expr) -> sp.Expr:
-    return absorb_t_powers(use_log1p(stabilize(split_logs(prepare(expr))))).xreplace({1 / T: ST})
+    """The tail form for printing; a power 1/t^k that is left (inside exp(-1/t^2),
+    a sum, ...: `absorb_t_powers` clears those of products) becomes s^k, which
+    at most overflows to inf where t^k would underflow to 0 and be divided by."""
+    polished = absorb_t_powers(use_log1p(stabilize(split_logs(prepare(expr)))))
+    return polished.xreplace({p: ST ** -p.exp for p in polished.atoms(sp.Pow)
+                              if p.base == T and p.exp.is_Integer and p.exp < 0})
 
 
 def absorb_t_powers(expr: sp.Expr, var=T) -> sp.Expr:
