@@ -235,6 +235,34 @@ def test_cache_hit_is_used_only_when_its_certificate_rechecks(tmp_path):
     assert third["cached"] is False and third["properties"]["P3"]["verdict"] == "proved"
 
 
+def test_cache_hit_derives_kf_gains_replay_and_exit_status_again(tmp_path):
+    """What a certificate does not hold is never served as stored: design 2's
+    lemniscate scenario fails bound (10) by 1.77e-5 (kf = 1 exactly, W bound
+    1.832 + 0.0285 * 0.6322 * 1 + 0.15 = 2.0000177 > Wmax = 2), exit 1.  An entry
+    whose gain row, proof replay and exit status were edited is served with
+    all three derived again; one whose kf was edited is a miss."""
+    design2 = ROOT / "designs" / "design2_sqrt.py"
+    first = check_file(str(design2), 60, str(tmp_path))
+    assert first["exit_status"] == 1 and first["gains"]["lemniscate"]["W_ok"] is False
+    cache = ResultCache(tmp_path)
+    key = design_key(load_design(design2))
+    entry = json.loads(cache.path_for(key).read_text())
+    entry["result"]["gains"]["lemniscate"].update(W_ok=True, W_margin="177/10000000", W_margin_float=1.77e-5)
+    entry["result"]["proof_replay"] = {"ok": False, "steps": {}}
+    entry["result"]["exit_status"] = 0
+    cache.path_for(key).write_text(json.dumps(entry))
+    hit = check_file(str(design2), 60, str(tmp_path))
+    assert hit["cached"] is True and hit["exit_status"] == 1
+    assert hit["gains"] == first["gains"] and hit["proof_replay"] == first["proof_replay"]
+    assert hit["gains"]["lemniscate"]["W_margin"] == "-177/10000000" and hit["proof_replay"]["ok"] is True
+    for edit in ({"exact": "1/2"}, {"exact": "1", "upper": 0.5}, {"unbounded": True}):
+        entry = json.loads(cache.path_for(key).read_text())
+        entry["result"]["kf"].update(edit)
+        cache.path_for(key).write_text(json.dumps(entry))
+        again = check_file(str(design2), 60, str(tmp_path))
+        assert again["cached"] is False and again["kf"]["exact"] == "1", edit
+
+
 # ---------------------------------------------------------------- refuted designs
 
 REFUTED = sorted((ROOT / "tests" / "designs").glob("r*.py"))

@@ -20,9 +20,12 @@ import sympy as sp
 
 from . import design_certificate as certificates
 from .cache import ResultCache, design_key, source_hash
-from .report import design_fields, to_dict
+from .gains import check_gains
+from .interval import Interval
+from .report import design_fields, gains_dict, to_dict
 from .properties import PROPERTIES
-from .verdict import unknown
+from .replay import replay
+from .verdict import Status, Verdict, unknown
 from .verify import Report, kernel_summary, load_with_limit, verify_loaded
 
 GLOB_CHARS = set("*?[")
@@ -57,7 +60,8 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
     key = (design_key(design) | ({} if kernel_only else {"trust_search": True})) if use_cache else None
     if cache is not None:
         hit = cache.get(key, timeout)     # not if computed with less time while a limit expired
-        if hit is not None and isinstance(hit.get("exit_status"), int) and rechecks(hit, design, kernel_only):
+        hit = served(hit, design, kernel_only) if hit is not None else None
+        if hit is not None:
             return {**hit, **design_fields(design), "cached": True}
     report = verify_loaded(design, timeout, start, kernel_only)
     result = {**to_dict(report), "certificate": report.certificate}
@@ -66,20 +70,56 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
     return {**result, "cached": False}
 
 
-def rechecks(hit: dict, design, kernel_only: bool = True) -> bool:
-    """A cached result is used only if its design certificate re-checks in
-    the kernel, is about this design's f, and agrees with the cached verdicts
-    (each the certificate's, or, with `kernel_only`, unknown where the kernel
-    did not check it)."""
+def served(hit: dict, design, kernel_only: bool = True) -> dict | None:
+    """The cached result to serve, or None (a miss).  Its design certificate
+    must re-check in the kernel, be about this design's f and agree with the
+    cached verdicts (each the certificate's, or, with `kernel_only`, unknown
+    where the kernel did not check it), and its kf must be the one the kernel
+    checked (exact, enclosed, or infinite by a checked witness; one that
+    rests on the search is shown, not used, by default, and computed again
+    with --trust-search).  Bound (10) per scenario, the
+    proof replay (11)-(19) and the exit status are derived again from the
+    certificate and the design, so a cache entry is never taken on trust."""
     cert = hit.get("certificate")
     try:
-        kernel = kernel_summary(certificates.check(cert))
+        checks = certificates.check(cert)
     except certificates.CertificateError:
-        return False
-    verdicts = {p: str(v.get("verdict")) for p, v in hit.get("properties", {}).items()}
+        return None
+    kernel = kernel_summary(checks)
     statuses = {p: e.get("status") for p, e in cert["properties"].items() if p in PROPERTIES}
     expected = {p: "unknown" if kernel_only and p in kernel["search"] else s for p, s in statuses.items()}
-    return cert["design"]["f"] == sp.srepr(design.f) and hit.get("kernel") == kernel and verdicts == expected
+    verdicts = {p: str(v.get("verdict")) for p, v in hit.get("properties", {}).items()}
+    if cert["design"]["f"] != sp.srepr(design.f) or hit.get("kernel") != kernel or verdicts != expected:
+        return None
+    kf = _checked_kf(cert, kernel, hit.get("kf") or {}, kernel_only)
+    if kf is None:
+        return None
+    gains = check_gains(design.gains, *kf)
+    proof = replay(design.f, statuses.get("P4") == "proved")
+    props = {p: Verdict(Status(v), "") for p, v in verdicts.items()}
+    status = Report(design.path, design, props, None, gains, proof).exit_status
+    return {**hit, "gains": gains_dict(gains), "proof_replay": proof, "exit_status": status}
+
+
+def _checked_kf(cert: dict, kernel: dict, shown: dict, kernel_only: bool) -> tuple | None:
+    """(kf_upper, kf_known, kf_lower) for `gains.check_gains` from what the
+    kernel checked of kf, if the cached `shown` kf is that one; else None."""
+    entry = cert["properties"].get("kf") or {}
+    p1 = cert["properties"].get("P1") or {}
+    values = (shown.get("exact"), shown.get("lower"), shown.get("upper"), bool(shown.get("unbounded")))
+    if "kf" in kernel["checked"] and entry.get("exact") is not None:
+        exact = certificates.parse(entry["exact"])
+        inside = None not in values[1:3] and values[1] <= float(exact) <= values[2]
+        return (exact, True, None) if values[0] == str(exact) and inside and not values[3] else None
+    if "kf" in kernel["checked"]:
+        L, U = certificates.parse(entry["lower"]), certificates.parse(entry["upper"])
+        enclosure = (None, Interval.point(L).lower_float(), Interval.point(U).upper_float(), False)
+        return (U, True, L) if values == enclosure else None
+    if "P1" in kernel["checked"] and (p1.get("witness") or {}).get("kind") == "unbounded":
+        return (None, True, None) if values == (None, None, None, True) else None
+    # kf rests on the search: by default bound (10) does not use it (W undecided) and the report
+    # says so; with --trust-search it does, and it is computed again
+    return (None, False, None) if kernel_only or values == (None, None, None, False) else None
 
 
 def _internal_error(path: str, exc: BaseException) -> dict:

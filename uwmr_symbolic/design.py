@@ -188,6 +188,33 @@ def mistake_hint(exc: Exception, line_text: str = "") -> str | None:
     return None
 
 
+def _assumed(s: sp.Symbol) -> dict:
+    """The assumptions a symbol was declared with (as written, e.g. positive=True)."""
+    return dict(getattr(s, "_assumptions_orig", None) or s.assumptions0)
+
+
+def _check_assumptions(f_source: sp.Expr, params: dict) -> None:
+    """SymPy uses a symbol's assumptions while the file builds f (sqrt(e1**2)
+    becomes e1 for a positive e1, |c| - c becomes 0 for a positive c), so
+    they must hold: e1, e2 range over all reals, and a parameter's value must
+    satisfy what its symbol was declared."""
+    for s in sorted(f_source.free_symbols, key=lambda x: x.name):
+        facts = _assumed(s)
+        if s.name in ("e1", "e2"):
+            strong = sorted(k for k, v in facts.items() if E1.assumptions0.get(k) != v)
+            if strong:
+                raise DesignError(f"{s.name} is declared {strong[0]}={facts[strong[0]]}, but f is studied for every real "
+                                  f"{s.name}, and SymPy may already have used that to simplify f; declare "
+                                  f"e1, e2 = sympy.symbols('e1 e2', real=True)")
+        elif s.name in params:
+            value = params[s.name]
+            wrong = sorted(k for k, v in facts.items() if getattr(value, f"is_{k}", None) != v)
+            if wrong:
+                raise DesignError(f"params[{s.name!r}] = {value} does not satisfy {wrong[0]}={facts[wrong[0]]}, which "
+                                  f"the symbol {s.name} was declared with and SymPy may already have used to simplify f; "
+                                  f"give a value that does, or declare {s.name} with fewer assumptions")
+
+
 def _canonical_symbols(expr: sp.Expr) -> sp.Expr:
     """Replace any symbol named e1/e2 (whatever its assumptions) by ours."""
     return expr.xreplace({s: {"e1": E1, "e2": E2}[s.name]
@@ -346,6 +373,7 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
         raise DesignError("f contains a non-finite float (nan or inf)")
     f = f.xreplace({x: exact_float(x) for x in f.atoms(sp.Float)})
     params = _parse_params(ns.get("params"), f)
+    _check_assumptions(f_source, params)
     f = f.subs({s: params[s.name] for s in f.free_symbols if s.name in params})
     extra = sorted(s.name for s in f.free_symbols if s not in (E1, E2))
     if extra and not f.has(E1, E2):

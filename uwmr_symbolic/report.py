@@ -90,12 +90,7 @@ def to_dict(r: Report) -> dict:
                "attained": None if kf is None else kf.attained,
                "unbounded": kf is not None and kf.upper is None and bool(kf.unbounded_witness),
                "reason": "undecided (f not radial or P1 not analysed)" if kf is None else kf.reason},
-        "gains": {name: {"V_bound": _num(g.V_bound), "W_bound": _num(g.W_bound),
-                         "V_margin": str(g.V_margin), "W_margin": None if g.W_margin is None else str(g.W_margin),
-                         "V_margin_float": _num(g.V_margin), "W_margin_float": _num(g.W_margin),
-                         "V_ok": g.V_ok, "W_ok": g.W_ok, "lam_max": _num(g.lam_max),
-                         "lam_max_exact": None if g.lam_max is None else str(g.lam_max)}
-                  for name, g in r.gains.items()},
+        "gains": gains_dict(r.gains),
         "proof_replay": r.proof_replay,
         "kernel": r.kernel,
         "seconds": round(r.seconds, 3),
@@ -106,6 +101,16 @@ def to_dict(r: Report) -> dict:
     else:
         d["f_line"] = d["gains_line"] = 1
     return d
+
+
+def gains_dict(gains: dict) -> dict:
+    """Bound (10) per gain scenario (`gains.GainCheck`) as JSON-able data."""
+    return {name: {"V_bound": _num(g.V_bound), "W_bound": _num(g.W_bound),
+                   "V_margin": str(g.V_margin), "W_margin": None if g.W_margin is None else str(g.W_margin),
+                   "V_margin_float": _num(g.V_margin), "W_margin_float": _num(g.W_margin),
+                   "V_ok": g.V_ok, "W_ok": g.W_ok, "lam_max": _num(g.lam_max),
+                   "lam_max_exact": None if g.lam_max is None else str(g.lam_max)}
+            for name, g in gains.items()}
 
 
 def _as_dict(r) -> dict:
