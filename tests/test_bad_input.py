@@ -31,6 +31,8 @@ CASES = {
     "undefined_function.py": "f = g(rho) with g = sympy.Function('g')",
     "huge_constant.py": "a constant of 5,001 digits",
     "max_of_hidden_zero.py": "Max of a constant 0 in disguise (SymPy's Piecewise rewrite loops)",
+    "e1_declared_positive.py": "e1, e2 declared positive (SymPy simplified f with it)",
+    "param_against_assumption.py": "a parameter declared positive given -1",
 }
 
 #: file -> the words of the one line that name the fix
@@ -42,6 +44,8 @@ FIXES = {
     "undefined_function.py": ["the undefined function 'g'", "write f with SymPy's functions"],
     "huge_constant.py": ["more than 4,200 digits", "scale f"],
     "max_of_hidden_zero.py": ["could not write the Abs, Max", "write f as a Piecewise"],
+    "e1_declared_positive.py": ["e1 is declared positive=True", "sympy.symbols('e1 e2', real=True)"],
+    "param_against_assumption.py": ["params['c'] = -1 does not satisfy positive=True", "give a value that does"],
 }
 HANGS = "sleep_forever.py"
 

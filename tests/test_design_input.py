@@ -121,3 +121,33 @@ def test_a_membership_without_relations_is_left_as_written(tmp_path):
                         f"f = sp.Piecewise((e1**2 + e2**2, sp.Contains(e1, {where})), (2*e1**2 + e2**2, True))\n")
         cond = load_design(path).f.args[0][1]
         assert cond == want if want is not None else isinstance(cond, sp.Contains), cond
+
+
+def test_symbol_assumptions_that_hold_are_accepted_and_the_others_refused(tmp_path):
+    """e1, e2 with no assumptions or real=True (SymPy's simplifications for
+    them hold for every real value) are read as the real e1, e2; anything
+    more, or a parameter value against its symbol's declaration, is refused
+    (tests/bad_inputs has the cases where SymPy had already used it)."""
+    design = tmp_path / "d.py"
+    head = "import sympy as sp\n"
+    for decl in ("sp.symbols('e1 e2')", "sp.symbols('e1 e2', real=True)", "sp.symbols('e1 e2', finite=True)"):
+        design.write_text(head + f"e1, e2 = {decl}\nf = sp.sqrt(e1**2) + e2**2\n")
+        f = load_design(design).f       # |e1| + e2^2, whatever form: 3 at (-3, 0) (e1 + e2^2 would give -3)
+        assert f.subs({sp.Symbol("e1", real=True): -3, sp.Symbol("e2", real=True): 0}) == 3, decl
+    for decl, fact in (("sp.symbols('e1 e2', nonnegative=True)", "nonnegative=True"),
+                       ("sp.symbols('e1 e2', integer=True)", "integer=True"),
+                       ("(sp.Symbol('e1', real=True), sp.Symbol('e2', nonzero=True))", "nonzero=True")):
+        design.write_text(head + f"e1, e2 = {decl}\nf = e1**2 + e2**2\n")
+        with pytest.raises(DesignError, match=f"is declared {fact}, but f is studied for every real"):
+            load_design(design)
+    params = "e1, e2 = sp.symbols('e1 e2', real=True)\nc = sp.Symbol('c', {})\nf = c * (e1**2 + e2**2)\n" \
+             "params = {{c: {}}}\n"
+    for decl, value, read in (("positive=True", "sp.Rational(1, 3)", sp.Rational(1, 3)), ("integer=True", "2", 2),
+                              ("real=True", "-1", -1)):
+        design.write_text(head + params.format(decl, value))
+        assert load_design(design).params["c"] == read, decl
+    for decl, value, fact in (("positive=True", "0", "positive=True"), ("integer=True", "0.5", "integer=True"),
+                              ("nonpositive=True", "sp.sqrt(2)", "nonpositive=True")):
+        design.write_text(head + params.format(decl, value))
+        with pytest.raises(DesignError, match=rf"params\['c'\] = .* does not satisfy {fact}"):
+            load_design(design)
