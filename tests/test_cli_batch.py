@@ -491,3 +491,57 @@ def test_a_long_exact_kf_shows_its_digits_in_the_summary():
     assert _kf_summary({**base, "exact": long, "exact_digits": "1.4285714285714285966e-31"}) == \
         "1.4285714285714286e-31..."
     assert _kf_summary({**base, "exact": None, "exact_digits": None}) == "~0.6496"
+
+
+def test_unusable_options_end_before_anything_is_verified_or_written(tmp_path):
+    """Exit 2 with one line and nothing written: a --timeout that is not a
+    number of seconds the workers can wait (inf, nan, above 1e6), a folder
+    with no design file, --reference or --delay without --simulate, limits
+    of --delay and --monte-carlo, two files of one name with --codegen or
+    --certificate, a --reference naming no gain scenario (the certificate is
+    not written first).  A CSV reference may name its columns t,x,y."""
+    d1 = ROOT / "designs/design1_jiang.py"
+    (tmp_path / "empty").mkdir()
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    shutil.copy(d1, tmp_path / "a/d.py")
+    shutil.copy(ROOT / "designs/design3_logcosh.py", tmp_path / "b/d.py")
+    line = "t,x,y\n" + "".join(f"{t},{t * 0.1},0.0\n" for t in range(0, 61))
+    (tmp_path / "line.csv").write_text(line)
+    cases = [
+        ([d1, "--timeout", "inf"], "--timeout must be a number of seconds above 0 and at most 1e+06, not inf"),
+        ([d1, "--timeout", "nan"], "--timeout must be a number of seconds above 0 and at most 1e+06, not nan"),
+        ([d1, "--timeout", "2e6"], "--timeout must be a number of seconds above 0 and at most 1e+06, not 2e+06"),
+        ([tmp_path / "empty"], f"no design files in {tmp_path / 'empty'} (a folder is read for its *.py files)"),
+        ([d1, "--delay", "5"], "--reference and --delay only make sense with --simulate"),
+        ([d1, "--reference", f"circle={tmp_path / 'line.csv'}"], "--reference and --delay only make sense with"),
+        ([d1, "--simulate", "--delay", "1001"], "--monte-carlo must be in 0..100000 and --delay in 0..1000"),
+        ([d1, "--monte-carlo", "100001"], "--monte-carlo must be in 0..100000 and --delay in 0..1000"),
+        ([tmp_path / "a/d.py", tmp_path / "b/d.py", "--codegen", tmp_path / "out"],
+         f"{tmp_path / 'a/d.py'} and {tmp_path / 'b/d.py'} have the same name 'd'"),
+        ([d1, "--simulate", "--certificate", tmp_path / "c.json", "--reference", f"lien={tmp_path / 'line.csv'}"],
+         "--reference lien=...: no design has a gain scenario 'lien' (theirs: circle, lemniscate)"),
+    ]
+    for args, message in cases:
+        proc = run([*args, "--no-cache"], tmp_path / "cache")
+        assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1, (args, proc.stderr)
+        assert proc.stderr.startswith("uwmr-verify: " + message), (args, proc.stderr)
+        assert proc.stdout == "", args
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a", "b", "empty", "line.csv"]
+    from uwmr_symbolic.cli import load_references
+    ref = load_references([f"line={tmp_path / 'line.csv'}"])["line"]
+    assert (ref.t0, ref.t1) == (0.0, 60.0)
+
+
+def test_simulate_says_what_it_did_not_simulate(tmp_path):
+    """--simulate on a design whose loading outlives --timeout, and on one
+    without gain scenarios: one line each on stderr, no traceback; the exit
+    status is the verification's (3, and 0 for the proved design without
+    gains)."""
+    slow, plain = tmp_path / "slow.py", tmp_path / "plain.py"
+    slow.write_text(SLOW_DESIGN)
+    plain.write_text((ROOT / "designs/design1_jiang.py").read_text().split("# Table 1")[0])
+    proc = run([slow, plain, "--simulate", "--timeout", "2", "--no-cache", "-q"], tmp_path / "cache")
+    assert proc.returncode == 3, proc.stderr
+    assert proc.stderr.splitlines() == [f"{slow}: not simulated: the design file did not load within --timeout",
+                                        f"{plain}: not simulated: the design has no gain scenarios"]

@@ -53,8 +53,11 @@ cache:
   Results are cached by the design's canonical expression, parameters, gains,
   the tool's version and the verifier's source, in --cache-dir, else
   $UWMR_CACHE_DIR, else cache-dir in [tool.uwmr-symbolic], else
-  ~/.cache/uwmr-symbolic; --no-cache recomputes everything and stores nothing.
-  A result in which a time limit expired is not stored.
+  $XDG_CACHE_HOME/uwmr-symbolic or ~/.cache/uwmr-symbolic; --no-cache
+  recomputes everything and stores nothing.  A result in which a time limit
+  expired answers only runs with the same or a shorter --timeout.  A hit is
+  used only when its certificate re-checks; bound (10), the proof replay and
+  the exit status are derived again from it.
 
 settings:
   [tool.uwmr-symbolic] in the nearest pyproject.toml with that table (searched
@@ -86,7 +89,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--no-cache", action="store_true", help="neither read nor write the result cache")
     p.add_argument("--cache-dir", metavar="DIR", default=None,
                    help="folder of the result cache (default $UWMR_CACHE_DIR, else cache-dir in "
-                        "[tool.uwmr-symbolic], else ~/.cache/uwmr-symbolic)")
+                        "[tool.uwmr-symbolic], else $XDG_CACHE_HOME/uwmr-symbolic or ~/.cache/uwmr-symbolic)")
     p.add_argument("-q", "--quiet", action="store_true",
                    help="text format: with several files print only the summary table")
     p.add_argument("--codegen", nargs="?", const="", metavar="DIR",
@@ -99,12 +102,14 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--simulate", action="store_true",
                    help="after verifying, run the generated C and Python controllers in closed loop on "
                         "each gain scenario (circle, lemniscate or --reference), continuous time and "
-                        "100 Hz, beside the unsaturated baseline (38); exit 1 if a check fails")
+                        "100 Hz, beside the unsaturated baseline (38), within max(--timeout, 600 s) per design; "
+                        "exit 1 if a check fails, 3 if a simulation does not finish")
     p.add_argument("--monte-carlo", type=int, default=0, metavar="N",
-                   help="with --simulate: also N random initial poses per scenario (100 Hz, vectorised)")
+                   help="with --simulate: also N random initial poses per scenario (100 Hz, vectorised; "
+                        "at most 100000)")
     p.add_argument("--seed", type=int, default=0, help="seed for --monte-carlo and pose noise (default 0)")
     p.add_argument("--delay", type=int, default=0, metavar="SAMPLES",
-                   help="with --simulate: command delay of the 100 Hz loop in samples (default 0)")
+                   help="with --simulate: command delay of the 100 Hz loop in samples (default 0, at most 1000)")
     p.add_argument("--reference", action="append", default=[], metavar="SCENARIO=FILE",
                    help="with --simulate: the reference for a gain scenario, from a CSV of waypoints "
                         "(columns t,x,y) or a Python file defining pose(t) -> (xr, yr, thr, vr, wr) "
@@ -145,6 +150,11 @@ def check_generated(args) -> int:
     return 1 if problems else 0
 
 
+MAX_DELAY = 1000            # samples: 10 s of the 100 Hz loop
+SIMULATION_SECONDS = 600    # a design's simulations stop after the larger of this and --timeout
+MAX_MONTE_CARLO = 100_000   # random initial poses per scenario
+
+
 class UsageError(Exception):
     """A command-line argument cannot be used (exit 2, one line)."""
 
@@ -162,7 +172,10 @@ def load_references(specs) -> dict:
         path = Path(file)
         try:
             if path.suffix == ".csv":
-                data = np.loadtxt(path, delimiter=",", ndmin=2, comments="#")
+                lines = path.read_text(encoding="utf-8").splitlines()
+                header = next((i for i, line in enumerate(lines) if line.strip() and not line.startswith("#")), 0)
+                named = lines and "".join(lines[header].split()).lower() == "t,x,y"    # the columns' names
+                data = np.loadtxt(path, delimiter=",", ndmin=2, comments="#", skiprows=header + 1 if named else 0)
                 if data.shape[1] != 3:
                     raise UsageError(f"{path}: expected three columns t,x,y, found {data.shape[1]}")
                 refs[name] = from_waypoints(data[:, 0], data[:, 1], data[:, 2], name=name)
@@ -197,23 +210,38 @@ class Reports:
         return self._reports[key]
 
 
-def run_simulations(results, args, reports: Reports) -> int:
-    """--simulate: attach result["simulation"]; 1 if a check failed."""
+def run_simulations(results, args, refs: dict, reports: Reports) -> int:
+    """--simulate: attach result["simulation"]; 1 if a check failed, 3 if a
+    design's simulations did not finish within the larger of --timeout and
+    SIMULATION_SECONDS."""
     from .codegen import CodegenInvalid
     from .simulation import simulate_design
-    refs = load_references(args.reference)
+    from .timeouts import TimeLimit, time_limit
     status = 0
     for d in results:
         if d.get("error") is not None:
             continue
+        if d.get("f") is None:              # loading it did not finish within --timeout (not tried again)
+            print(f"{d['design']}: not simulated: the design file did not load within --timeout", file=sys.stderr)
+            continue
+        report = reports(d["design"])
+        if report.design is None or not report.design.gains:
+            print(f"{d['design']}: not simulated: the design has no gain scenarios", file=sys.stderr)
+            continue
         try:
-            sim = simulate_design(d["design"], report=reports(d["design"]), monte_carlo=args.monte_carlo,
-                                  seed=args.seed, references=refs or None, delay=args.delay)
+            with time_limit(max(args.timeout, SIMULATION_SECONDS)):
+                sim = simulate_design(d["design"], report=report, monte_carlo=args.monte_carlo,
+                                      seed=args.seed, references=refs or None, delay=args.delay)
         except CodegenInvalid as exc:
             # the simulator runs the generated code, which the validation gate refused (--force or not)
             print(f"{d['design']}: not simulated, the generated code failed its validation: {exc.reasons[0]}",
                   file=sys.stderr)
             status = 1
+            continue
+        except TimeLimit:
+            print(f"{d['design']}: the simulation did not finish within {max(args.timeout, SIMULATION_SECONDS):g} s "
+                  f"(the larger of --timeout and {SIMULATION_SECONDS} s)", file=sys.stderr)
+            status = worst_status([status, 3])
             continue
         d["simulation"] = sim
         if not all(entry.get("ok", True) for entry in sim.values()):
@@ -230,6 +258,9 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
     for path in map(Path, paths):
         if str(path) not in usable:
             continue
+        if next(d for d in results if d["design"] == str(path)).get("f") is None:     # not tried again
+            print(f"{path}: no code generated: the design file did not load within --timeout", file=sys.stderr)
+            continue
         target = None if out == "" else (Path(out) / path.stem if len(paths) > 1 else Path(out))
         try:
             written = generate(path, target, force=force, report=reports(path))
@@ -239,9 +270,9 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
             status = 1
             continue
         except CodegenRefused as exc:
+            hint = "" if force else "; use --force for a NOT VERIFIED build"
             print(f"{path}: no code generated, the design is not verified ({len(exc.reasons)} "
-                  f"reason(s): {exc.reasons[0]} ...); use --force for a NOT VERIFIED build",
-                  file=sys.stderr)
+                  f"reason(s): {exc.reasons[0]} ...){hint}", file=sys.stderr)
             status = 1
             continue
         except OutputError as exc:
@@ -318,8 +349,9 @@ def main(argv=None) -> int:
     except settings.SettingsError as exc:
         print(f"uwmr-verify: {exc}", file=sys.stderr)
         return 2
-    if args.timeout <= 0:
-        print("uwmr-verify: --timeout must be positive", file=sys.stderr)
+    if not 0 < args.timeout <= settings.MAX_TIMEOUT:        # (nan fails both)
+        print(f"uwmr-verify: --timeout must be a number of seconds above 0 and at most {settings.MAX_TIMEOUT:g}, "
+              f"not {args.timeout:g}", file=sys.stderr)
         return 2
     if args.jobs is not None and args.jobs < 1:
         print("uwmr-verify: --jobs must be at least 1", file=sys.stderr)
@@ -334,17 +366,44 @@ def main(argv=None) -> int:
     if not args.files:
         print("uwmr-verify: no design file given (try: uwmr-verify designs/*.py)", file=sys.stderr)
         return 2
-    if args.monte_carlo < 0 or args.delay < 0:
-        print("uwmr-verify: --monte-carlo and --delay must not be negative", file=sys.stderr)
+    if not 0 <= args.monte_carlo <= MAX_MONTE_CARLO or not 0 <= args.delay <= MAX_DELAY:
+        print(f"uwmr-verify: --monte-carlo must be in 0..{MAX_MONTE_CARLO} and --delay in 0..{MAX_DELAY} "
+              f"(samples of the 100 Hz loop)", file=sys.stderr)
         return 2
     simulate = args.simulate or args.monte_carlo > 0
+    if not simulate and (args.reference or args.delay):
+        print("uwmr-verify: --reference and --delay only make sense with --simulate", file=sys.stderr)
+        return 2
     paths = expand_paths(args.files)
+    if not paths:
+        print(f"uwmr-verify: no design files in {', '.join(args.files)} (a folder is read for its *.py files)",
+              file=sys.stderr)
+        return 2
+    if len(paths) > 1 and (args.codegen is not None or args.certificate):
+        stems = {}
+        for path in paths:
+            other = stems.setdefault(Path(path).stem, path)
+            if other != path:
+                print(f"uwmr-verify: {other} and {path} have the same name {Path(path).stem!r}, and --codegen and "
+                      f"--certificate write one folder or file per name; rename one", file=sys.stderr)
+                return 2
+    try:                # before anything is verified or written
+        refs = load_references(args.reference) if simulate else {}
+    except UsageError as exc:
+        print(f"uwmr-verify: {exc}", file=sys.stderr)
+        return 2
     progress = Progress(len(paths))
     try:
         results = check_files(paths, args.timeout, use_cache=not args.no_cache, jobs=args.jobs,
                               cache_dir=args.cache_dir, progress=progress, kernel_only=args.kernel_only)
     finally:
         progress.close()
+    scenarios = {name for d in results for name in (d.get("gains") or {})}
+    unused = sorted(set(refs) - scenarios)
+    if unused:
+        print(f"uwmr-verify: --reference {unused[0]}=...: no design has a gain scenario {unused[0]!r} "
+              f"(theirs: {', '.join(sorted(scenarios)) or 'none'})", file=sys.stderr)
+        return 2
     cert_status = write_certificates(paths, results, args.certificate) if args.certificate else 0
     for d in results:
         d.pop("certificate", None)
@@ -353,11 +412,7 @@ def main(argv=None) -> int:
     sim_status = 0
     reports = Reports(args.timeout)
     if simulate:
-        try:
-            sim_status = run_simulations(results, args, reports)
-        except UsageError as exc:
-            print(f"uwmr-verify: {exc}", file=sys.stderr)
-            return 2
+        sim_status = run_simulations(results, args, refs, reports)
     good = [d for d in results if d.get("error") is None]
     many = len(paths) > 1
     if args.format == "json":

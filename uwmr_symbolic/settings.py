@@ -32,6 +32,8 @@ else:                                   # pragma: no cover - Python 3.10
 
 TABLE = "uwmr-symbolic"
 KNOWN_KEYS = ("cache-dir", "designs", "jobs", "timeout")
+#: the largest --timeout: the workers' waits take whole milliseconds in a C int (about 24 days)
+MAX_TIMEOUT = 1e6
 
 
 class SettingsError(Exception):
@@ -89,8 +91,9 @@ def load(start: Path | str | None = None) -> Settings:
     base = path.parent
     if "timeout" in table:
         value = table["timeout"]
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not value > 0:
-            raise SettingsError(f"{where} timeout must be a positive number of seconds, not {value!r}")
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not 0 < value <= MAX_TIMEOUT:
+            raise SettingsError(f"{where} timeout must be a number of seconds above 0 and at most "
+                                f"{MAX_TIMEOUT:g}, not {value!r}")
         out.timeout = float(value)
     if "jobs" in table:
         value = table["jobs"]
