@@ -117,6 +117,35 @@ def test_wrapped_heading_is_refused():
         from_function(_wrapped_lemniscate, 0.0, 20.0, name="wrapped")
 
 
+def test_a_reference_that_breaks_2_is_refused():
+    """The paper's circle (speed 0.5, 1 rad/s) with vr = 0.52 or wr = 1.04:
+    4 % off (2), which the check let through (5 % per step) and then blamed
+    the design for the convergence that (2) was supposed to give."""
+    from uwmr_symbolic.simulation.reference import ReferenceError
+    ref = circle()
+
+    def off(i, k):
+        return lambda t: tuple(a * k if j == i else a for j, a in enumerate(ref(t)))
+    with pytest.raises(ReferenceError, match=r"\(xr', yr'\) != vr \(cos thr, sin thr\)"):
+        from_function(off(3, 1.04), 0.0, 80.0, name="v")
+    with pytest.raises(ReferenceError, match="thr' != wr near t = "):
+        from_function(off(4, 1.04), 0.0, 80.0, name="w")
+    from_function(off(3, 1.0), 0.0, 80.0, name="exact")         # (2) itself passes
+
+
+def test_a_pose_function_may_give_constants_and_needs_a_time_span():
+    """pose(t) = (0.3 t, 0, 0, 0.3, 0) with plain numbers for the constant
+    outputs (a straight line along x at 0.3 m/s) is read as arrays wherever
+    it is called; a duration of 0 or below is refused."""
+    from uwmr_symbolic.simulation.reference import ReferenceError
+    ref = from_function(lambda t: (0.3 * t, 0.0, 0.0, 0.3, 0.0), 0.0, 10.0, name="line")
+    out = ref.fn(np.array([1.0, 2.0]))
+    assert [a.tolist() for a in out] == [[0.3, 0.6], [0.0, 0.0], [0.0, 0.0], [0.3, 0.3], [0.0, 0.0]]
+    for t1 in (0.0, -5.0, math.inf):
+        with pytest.raises(ReferenceError, match="time span .* is empty or not finite"):
+            from_function(lambda t: (0.3 * t, 0.0, 0.0, 0.3, 0.0), 0.0, t1, name="line")
+
+
 def test_lemniscate_heading_is_continuous_and_atan2_mod_2pi():
     ref = lemniscate()
     t = np.linspace(0, 200, 200001)

@@ -246,6 +246,7 @@ def run_simulations(results, args, refs: dict, reports: Reports) -> int:
         d["simulation"] = sim
         if not all(entry.get("ok", True) for entry in sim.values()):
             status = 1
+            d["exit_status"] = worst_status([d["exit_status"], 1])     # the summary, JUnit, GitHub say so too
     return status
 
 

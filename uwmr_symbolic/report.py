@@ -257,8 +257,9 @@ def _classname(path: str) -> str:
 
 
 def _testcases(d: dict):
-    """(name, outcome, type, message, text) per property, proof replay and gain
-    scenario; outcome is 'passed', 'failure', 'error' or 'skipped'."""
+    """(name, outcome, type, message, text) per property, proof replay, gain
+    scenario and `--simulate` scenario; outcome is 'passed', 'failure',
+    'error' or 'skipped'."""
     if d.get("error") is not None:
         yield "load", "error", "unusable", d["error"], d["error"]
         return
@@ -287,6 +288,31 @@ def _testcases(d: dict):
             yield f"gains[{name}]", "failure", "refuted", f"bound (10) fails for {which} in scenario {name}", text
         else:
             yield f"gains[{name}]", "failure", "unknown", f"kf undecided: |W| bound of scenario {name} unchecked", text
+    failures = simulation_failures(d)
+    for name in d.get("simulation") or {}:
+        why = failures.get(name)
+        if why is None:
+            yield f"simulation[{name}]", "passed", None, None, ""
+        elif why.startswith("skipped"):
+            yield f"simulation[{name}]", "skipped", None, why, why
+        else:
+            yield f"simulation[{name}]", "failure", "simulation", f"simulation of scenario {name} failed: {why}", why
+
+
+def simulation_failures(d: dict) -> dict:
+    """{scenario: why} for each `--simulate` scenario that failed a check
+    (the failed checks per run) or was skipped ("skipped: ...")."""
+    out = {}
+    for name, entry in (d.get("simulation") or {}).items():
+        if "skipped" in entry:
+            out[name] = f"skipped: {entry['skipped']}"
+        elif not entry.get("ok", True):
+            runs = [f"{kind}: {', '.join(entry[kind]['failed'])}" for kind in ("continuous", "digital")
+                    if entry.get(kind) and not entry[kind]["ok"]]
+            if entry.get("monte_carlo") and not entry["monte_carlo"].get("ok", True):
+                runs.append("monte carlo")
+            out[name] = "; ".join(runs) or "a check failed"
+    return out
 
 
 def render_junit(results: list[dict]) -> str:
@@ -384,6 +410,9 @@ def render_github(results: list[dict]) -> str:
             elif word == "?":
                 out.append(_annotation("warning", path, gains_line, f"uwmr-verify bound (10) unchecked ({name}, {scen})",
                                        "kf undecided, so the |W| bound cannot be checked"))
+        for scen, why in simulation_failures(d).items():
+            if not why.startswith("skipped"):
+                out.append(_annotation("error", path, gains_line, f"uwmr-verify simulation fails ({name}, {scen})", why))
         if d["exit_status"] == 0:
             out.append(_annotation("notice", path, f_line, f"uwmr-verify proved ({name})",
                                    f"P1-P8 proved, kf = {_kf_summary(d['kf'])}, "
