@@ -71,6 +71,22 @@ def test_design_imports_a_helper_module_beside_it(tmp_path):
     assert load_design(design).f == sp.sqrt(1 + e1**2 + e2**2) - 1
 
 
+def test_design_imports_a_helper_package_beside_it(tmp_path):
+    """The same with a package (helpers/shapes.py): its modules are forgotten
+    too, so an edit is seen by the next load in the same session."""
+    (tmp_path / "uwmr_test_helpers").mkdir()
+    (tmp_path / "uwmr_test_helpers" / "__init__.py").write_text("")
+    shapes = tmp_path / "uwmr_test_helpers" / "shapes.py"
+    shapes.write_text("import sympy as sp\ndef g(a, b):\n    return sp.log(1 + a**2 + b**2) / 2\n")
+    design = tmp_path / "uses_package.py"
+    design.write_text("from uwmr_symbolic import e1, e2\nfrom uwmr_test_helpers.shapes import g\nf = g(e1, e2)\n")
+    e1, e2 = sp.symbols("e1 e2", real=True)
+    assert load_design(design).f == sp.log(1 + e1**2 + e2**2) / 2
+    assert not any(m.startswith("uwmr_test_helpers") for m in sys.modules)
+    shapes.write_text("import sympy as sp\ndef g(a, b):\n    return sp.sqrt(1 + a**2 + b**2) - 1\n")
+    assert load_design(design).f == sp.sqrt(1 + e1**2 + e2**2) - 1
+
+
 def test_a_constant_written_as_a_python_number_is_read(tmp_path):
     """f = 0 (a plain int) is the design f = 0: f(0, 0) = 0 (P2), f > 0 fails
     everywhere (P3), df/de1 = 0 so P5 fails; 0.5 keeps its binary value."""

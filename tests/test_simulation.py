@@ -112,6 +112,21 @@ def _wrapped_lemniscate(t):
             np.hypot(dx, dy), (dx * ddy - ddx * dy) / (dx * dx + dy * dy))
 
 
+def test_controllers_follow_the_design_not_the_file_time(tmp_path):
+    """A design file that takes f from a helper: after the helper changes, the
+    same (unchanged) file gives another controller in the same session
+    (load_controllers was keyed by the file's path and time)."""
+    from uwmr_symbolic.verify import verify_design
+    helper = tmp_path / "uwmr_test_sim_shape.py"
+    helper.write_text("import sympy as sp\ndef g(a, b):\n    return sp.log(1 + a**2 + b**2) / 2\n")
+    design = tmp_path / "d.py"
+    design.write_text("from uwmr_symbolic import e1, e2\nfrom uwmr_test_sim_shape import g\nf = g(e1, e2)\n")
+    first = load_controllers(design, report=verify_design(design))
+    helper.write_text("import sympy as sp\ndef g(a, b):\n    return sp.sqrt(1 + a**2 + b**2) - 1\n")
+    second = load_controllers(design, report=verify_design(design))
+    assert (first.module.KF, second.module.KF) == (0.5, 1.0)
+
+
 def test_wrapped_heading_is_refused():
     with pytest.raises(WrappedHeadingError, match="heading jumps"):
         from_function(_wrapped_lemniscate, 0.0, 20.0, name="wrapped")

@@ -145,8 +145,9 @@ def _run_file(path: Path) -> tuple[dict, str]:
 @contextlib.contextmanager
 def _importable(directory: Path):
     """The design's own directory is importable while it loads (a helper
-    module beside it), and the modules imported from there are forgotten
-    afterwards (an edited helper is read again next time)."""
+    module or package beside it), and the modules imported from there (and
+    below) are forgotten afterwards (an edited helper is read again next
+    time)."""
     directory = directory.resolve()
     before = set(sys.modules)
     sys.path.insert(0, str(directory))
@@ -157,7 +158,7 @@ def _importable(directory: Path):
             sys.path.remove(str(directory))
         for name in set(sys.modules) - before:
             file = getattr(sys.modules.get(name), "__file__", None)
-            if file and Path(file).resolve().parent == directory:
+            if file and Path(file).resolve().is_relative_to(directory):     # beside it or in a package there
                 del sys.modules[name]
 
 

@@ -167,13 +167,15 @@ def load_controllers(design_path, report=None, generated_dir=None) -> Controller
     design_path = Path(design_path).resolve()
     stem = design_path.stem
     if generated_dir is None:
-        if design_path.exists():
-            key = (str(design_path), design_path.stat().st_mtime_ns)
-        else:   # a design given in memory (api.verify): keyed by what the generated code depends on
-            from ..codegen import not_verified_reasons
-            d, kf = report.design, report.kf
-            key = (str(design_path), d.name, repr(d.f), repr(d.f_source), repr(sorted(d.params.items())),
-                   None if kf is None else (str(kf.exact), str(kf.upper)), tuple(not_verified_reasons(report)))
+        # keyed by what the generated code depends on, not by the file's time: a design file may
+        # take f from a helper module that changed since
+        from ..codegen import not_verified_reasons
+        if report is None:
+            from ..verify import verify_design
+            report = verify_design(design_path)
+        d, kf = report.design, report.kf
+        key = (str(design_path), d.name, repr(d.f), repr(d.f_source), repr(sorted(d.params.items())),
+               None if kf is None else (str(kf.exact), str(kf.upper)), tuple(not_verified_reasons(report)))
         if key in _CACHE:
             return _CACHE[key]
         src = _tmpdir(f"uwmr-sim-{stem}-")
