@@ -167,6 +167,25 @@ def test_exp_of_a_negative_power_of_t_does_not_divide_by_zero(tmp_path):
         assert w[0] == pytest.approx(1.0, rel=1e-12 if not f32 else 1e-6)
 
 
+def test_a_law_without_e1_builds_with_the_strict_flags(tmp_path):
+    """Separable f = log(1 + e1^2) + log(1 + e2^2): df/de2 = 2 e2/(1 + e2^2)
+    has no e1, and gterm_law's unused parameter stopped the -Werror build
+    (found by a simulation campaign; the design refutes P4, so only --force
+    code).  Written and compiled without the validation, which such a general
+    (non-radial) form still fails at |e2| near the largest double."""
+    from uwmr_symbolic.codegen import build, install
+    from uwmr_symbolic.verify import verify_design
+    path = tmp_path / "sep.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\n"
+                    "f = sp.log(1 + e1**2) + sp.log(1 + e2**2)\n")
+    _, files = build(path, force=True, report=verify_design(path))
+    assert "(void)e1;" in files["sep.c"] and "(void)e2;" not in files["sep.c"]
+    install(files, tmp_path / "sep")
+    lib = build_library(tmp_path / "sep", "sep", tmp_path)
+    v, w, st = lib.run(_law_rows([(5.0, 1.0), (0.0, 3.0)]))
+    assert (st == 0).all() and w == pytest.approx([1.0 * 2 / 2, 1.0 * 6 / 10], rel=1e-15)
+
+
 def test_piecewise_branch_chosen_from_the_exact_rho(tmp_path):
     """Design 4 (NOT VERIFIED, f jumps at rho = (pi + 1)^2 - 1): in float, e2 =
     4.0190534591674805 has rho 1e-6 above the switch, but rho rounded to float

@@ -165,7 +165,8 @@ def gterm_lines(model: LawModel, cfg: CConfig, names) -> list[str]:
     t = cfg.ctype
     if not model.radial:
         lines, g = cse_lines(model.general, pr, decl)
-        return [*lines, f"const {t} g = {g};", *_product(cfg, ["lam", "vr", "sinc", "g"], "x")]
+        unused = [f"(void){n};" for x, n in ((E1, "e1"), (E2, "e2")) if x not in model.general.free_symbols]
+        return [*unused, *lines, f"const {t} g = {g};", *_product(cfg, ["lam", "vr", "sinc", "g"], "x")]
 
     out = [f"const {t} a1 = fabs{cfg.fn}(e1), a2 = fabs{cfg.fn}(e2);",
            f"const {t} m = a1 > a2 ? a1 : a2;"]
