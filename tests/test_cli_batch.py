@@ -177,7 +177,7 @@ def test_mixed_folder_github_annotations(mixed):
     assert not any(a.startswith(("::error", "::warning")) and paths["a_proved.py"] in a for a in ann)
     for a in ann:   # workflow-command syntax: ::level key=value,...::message on one line
         assert re.fullmatch(r"::(error|warning|notice) file=[^,:]+,line=\d+,title=[^:]+::.+", a), a
-    assert "5 design file(s): 1 proved, 1 refuted or failing gains, 1 inconclusive, 2 unusable" in r.stdout
+    assert "5 design file(s): 1 proved, 1 refuted or failing a check, 1 inconclusive, 2 unusable" in r.stdout
     md = mixed["step_summary"].read_text()          # $GITHUB_STEP_SUMMARY gets a Markdown table
     assert md.count("\n| `") == 5 and "| `PPPPPPPP` |" in md and "**unusable**" in md
 
@@ -193,7 +193,7 @@ def test_mixed_folder_text_summary(mixed):
     assert re.search(r"PPRPPPPP .* 1 ", rows["b_refuted.py"]), rows
     assert re.search(r"\?\?\?\?\?\?\?\? .* 3 ", rows["c_inconclusive.py"]), rows
     assert "unusable: syntax error" in rows["d_syntax_error.py"]
-    assert "5 design file(s): 1 proved, 1 refuted or failing gains, 1 inconclusive, 2 unusable" in out
+    assert "5 design file(s): 1 proved, 1 refuted or failing a check, 1 inconclusive, 2 unusable" in out
     assert r.stderr.count("\n") == 2         # the two malformed files; no progress output off a TTY
 
 
@@ -545,3 +545,27 @@ def test_simulate_says_what_it_did_not_simulate(tmp_path):
     assert proc.returncode == 3, proc.stderr
     assert proc.stderr.splitlines() == [f"{slow}: not simulated: the design file did not load within --timeout",
                                         f"{plain}: not simulated: the design has no gain scenarios"]
+
+
+def test_a_failed_simulation_shows_in_every_format(tmp_path):
+    """A --simulate scenario that fails a check (here written into design 1's
+    result by hand: the circle's continuous run did not converge) is a JUnit
+    failure, a GitHub ::error and "sim:circle:FAIL" in the summary; a passed
+    one is a passed test case and a skipped one a skipped test case."""
+    from uwmr_symbolic.report import render_github, render_junit, render_summary
+    d = batch.check_file(str(ROOT / "designs/design1_jiang.py"), 60, None, use_cache=False)
+    run = {"ok": True, "failed": []}
+    d["simulation"] = {"circle": {"ok": False, "continuous": {"ok": False, "failed": ["convergence", "Lyapunov"]},
+                                  "digital": run},
+                       "lemniscate": {"ok": True, "continuous": run, "digital": run},
+                       "line": {"skipped": "no reference for scenario 'line'", "ok": True}}
+    suite = ET.fromstring(render_junit([d])).find("testsuite")
+    cases = {c.get("name"): c for c in suite.iter("testcase")}
+    failure = cases["simulation[circle]"].find("failure")
+    assert failure.get("type") == "simulation" and failure.get("message") == \
+        "simulation of scenario circle failed: continuous: convergence, Lyapunov"
+    assert list(cases["simulation[lemniscate]"]) == [] and cases["simulation[line]"].find("skipped") is not None
+    assert suite.get("failures") == "1" and suite.get("skipped") == "1"
+    assert "title=uwmr-verify simulation fails (Design 1 (Jiang et al.)%2C circle)::continuous: convergence, " \
+           "Lyapunov" in render_github([d])
+    assert "circle:ok lemniscate:ok sim:circle:FAIL" in render_summary([d])

@@ -62,8 +62,10 @@ def test_no_file_means_defaults(tmp_path, monkeypatch):
 
 @pytest.mark.parametrize("body, message", [
     ("timout = 5", "[tool.uwmr-symbolic] unknown setting 'timout' (known: cache-dir, designs, jobs, timeout)"),
-    ("timeout = -1", "[tool.uwmr-symbolic] timeout must be a positive number of seconds, not -1"),
-    ('timeout = "60"', "[tool.uwmr-symbolic] timeout must be a positive number of seconds, not '60'"),
+    ("timeout = -1", "[tool.uwmr-symbolic] timeout must be a number of seconds above 0 and at most 1e+06, not -1"),
+    ('timeout = "60"', "[tool.uwmr-symbolic] timeout must be a number of seconds above 0 and at most 1e+06, "
+                       "not '60'"),
+    ("timeout = inf", "[tool.uwmr-symbolic] timeout must be a number of seconds above 0 and at most 1e+06, not inf"),
     ("jobs = 0", "[tool.uwmr-symbolic] jobs must be an integer of at least 1, not 0"),
     ("jobs = 1.5", "[tool.uwmr-symbolic] jobs must be an integer of at least 1, not 1.5"),
     ("designs = [1]", "[tool.uwmr-symbolic] designs must be a list of glob patterns, not [1]"),

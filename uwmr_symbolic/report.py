@@ -224,11 +224,12 @@ def render_summary(results: list[dict]) -> str:
             continue
         row = "".join(LETTER[d["properties"][p]["verdict"]] for p in d["properties"])
         gains = " ".join(f"{n}:{_gain_word(g)}" for n, g in d["gains"].items()) or "-"
+        gains += "".join(f" sim:{n}:FAIL" for n, why in simulation_failures(d).items() if not why.startswith("skip"))
         cached = "  (cached)" if d.get("cached") else ""
         lines.append(f"{d['design']:<{width}}  {row:<8}  {_kf_summary(d['kf']):<20} {gains:<30} "
                      f"{d['exit_status']:>4}  {d['seconds']:5.2f} s{cached}")
     counts = {s: sum(1 for d in results if d["exit_status"] == s) for s in (0, 1, 3, 2)}
-    lines.append(f"{len(results)} design file(s): {counts[0]} proved, {counts[1]} refuted or failing gains, "
+    lines.append(f"{len(results)} design file(s): {counts[0]} proved, {counts[1]} refuted or failing a check, "
                  f"{counts[3]} inconclusive, {counts[2]} unusable")
     return "\n".join(lines)
 
