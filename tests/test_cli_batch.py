@@ -521,6 +521,9 @@ def test_unusable_options_end_before_anything_is_verified_or_written(tmp_path):
          f"{tmp_path / 'a/d.py'} and {tmp_path / 'b/d.py'} have the same name 'd'"),
         ([d1, "--simulate", "--certificate", tmp_path / "c.json", "--reference", f"lien={tmp_path / 'line.csv'}"],
          "--reference lien=...: no design has a gain scenario 'lien' (theirs: circle, lemniscate)"),
+        (["--codegen", d1], f"--codegen takes a folder, and {d1} is a design file; name the design files before"),
+        (["--check-certificate", tmp_path / "c.json", d1],
+         f"--check-certificate takes certificate files (.json), and {d1} looks like a design file"),
     ]
     for args, message in cases:
         proc = run([*args, "--no-cache"], tmp_path / "cache")

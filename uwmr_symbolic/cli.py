@@ -357,12 +357,21 @@ def main(argv=None) -> int:
     if args.jobs is not None and args.jobs < 1:
         print("uwmr-verify: --jobs must be at least 1", file=sys.stderr)
         return 2
+    designs = [c for c in args.check_certificate or () if c.endswith(".py")]
+    if designs:
+        print(f"uwmr-verify: --check-certificate takes certificate files (.json), and {designs[0]} looks like a design "
+              f"file; verify it with `uwmr-verify {designs[0]}`", file=sys.stderr)
+        return 2
     if args.check_certificate:
         return check_certificates(args.check_certificate, args.jobs, args.timeout)
     if args.check_generated:
         return check_generated(args)
     if args.force and args.codegen is None:
         print("uwmr-verify: --force only makes sense with --codegen", file=sys.stderr)
+        return 2
+    if args.codegen and args.codegen.endswith(".py") and Path(args.codegen).is_file():
+        print(f"uwmr-verify: --codegen takes a folder, and {args.codegen} is a design file; name the design files "
+              f"before the option (uwmr-verify {args.codegen} --codegen) or write --codegen=DIR", file=sys.stderr)
         return 2
     if not args.files:
         print("uwmr-verify: no design file given (try: uwmr-verify designs/*.py)", file=sys.stderr)
