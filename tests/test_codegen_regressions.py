@@ -186,6 +186,19 @@ def test_a_law_without_e1_builds_with_the_strict_flags(tmp_path):
     assert (st == 0).all() and w == pytest.approx([1.0 * 2 / 2, 1.0 * 6 / 10], rel=1e-15)
 
 
+def test_a_design_name_with_comment_and_docstring_delimiters(tmp_path):
+    """A name holding */, /*, triple quotes and a backslash ended the strict
+    C build ("/*" within comment) or would end the Python docstring: in
+    comments it is written harmlessly, and NAME keeps it exactly."""
+    path = tmp_path / "odd_name.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\n"
+                    "name = 'A */ b /* c \"\"\" \\\\N{BULLET}'\nf = sp.log(1 + e1**2 + e2**2) / 2\n")
+    _, mod = _generated(path, tmp_path)
+    assert mod.NAME == 'A */ b /* c """ \\N{BULLET}'
+    header = (tmp_path / "odd_name" / "odd_name.h").read_text()
+    assert " * Control law (9) for A * / b / * c \'\'\' /N{BULLET}:" in header
+
+
 def test_piecewise_branch_chosen_from_the_exact_rho(tmp_path):
     """Design 4 (NOT VERIFIED, f jumps at rho = (pi + 1)^2 - 1): in float, e2 =
     4.0190534591674805 has rho 1e-6 above the switch, but rho rounded to float

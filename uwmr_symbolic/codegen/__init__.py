@@ -95,8 +95,10 @@ def _float_text(x: np.float32) -> str:
     return (text if ("." in text or "e" in text) else text + ".0") + "F"
 
 
-def _ascii_safe(text: str) -> str:
-    return text.replace("*/", "* /")
+def _comment_safe(text: str) -> str:
+    """text as one line that a C comment, a # comment or a Python docstring
+    can hold: no comment or docstring delimiters, no backslashes."""
+    return " ".join(text.split()).replace("*/", "* /").replace("/*", "/ *").replace('"""', "'''").replace("\\", "/")
 
 
 def _banner(model: LawModel, source: str, comment: str) -> str:
@@ -113,7 +115,7 @@ def _banner(model: LawModel, source: str, comment: str) -> str:
         lines.append("Note: " + note)
     wrapped = []
     for ln in lines:
-        wrapped.extend(textwrap.wrap(_ascii_safe(ln), 74, break_long_words=False, break_on_hyphens=False) or [""])
+        wrapped.extend(textwrap.wrap(_comment_safe(ln), 74, break_long_words=False, break_on_hyphens=False) or [""])
     if comment == "c":
         rule = "/* " + "*" * 74
         body = [f" * {ln}".rstrip() for ln in wrapped]
@@ -140,7 +142,8 @@ def _context(design, model: LawModel) -> dict:
     else:
         example = {k: double_literal(gains[scenario][k]) for k in ("k1", "k2", "lam", "Vmax", "Wmax")}
         example["source"] = f"scenario {scenario!r} of {source}"
-    return dict(name=model.name, source=source, f_text=_ascii_safe(f_text), params=params,
+    return dict(name=model.name, title=_comment_safe(model.name), source=_comment_safe(source),
+                f_text=_comment_safe(f_text), params=params,
                 kf_text=model.kf_text, verified=model.verified, clamp=model.bound_kf is not None,
                 kf_status="certified upper bound" if model.kf_upper is not None else "no finite bound certified",
                 kf_double="INFINITY" if math.isinf(kf) else repr(kf),
