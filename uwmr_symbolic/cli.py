@@ -175,7 +175,7 @@ def load_references(specs) -> dict:
                 lines = path.read_text(encoding="utf-8").splitlines()
                 header = next((i for i, line in enumerate(lines) if line.strip() and not line.startswith("#")), 0)
                 named = lines and "".join(lines[header].split()).lower() == "t,x,y"    # the columns' names
-                data = np.loadtxt(path, delimiter=",", ndmin=2, comments="#", skiprows=header + 1 if named else 0)
+                data = np.loadtxt(lines[header + 1:] if named else lines, delimiter=",", ndmin=2, comments="#")
                 if data.shape[1] != 3:
                     raise UsageError(f"{path}: expected three columns t,x,y, found {data.shape[1]}")
                 refs[name] = from_waypoints(data[:, 0], data[:, 1], data[:, 2], name=name)
@@ -255,11 +255,11 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
     the output folder cannot take the files (nothing written there)."""
     from .codegen import CodegenInvalid, CodegenRefused, OutputError, generate
     status = 0
-    usable = {d["design"] for d in results if d.get("error") is None}
-    for path in map(Path, paths):
-        if str(path) not in usable:
+    for d in results:                       # (in the order of paths)
+        path = Path(d["design"])
+        if d.get("error") is not None:
             continue
-        if next(d for d in results if d["design"] == str(path)).get("f") is None:     # not tried again
+        if d.get("f") is None:              # loading it did not finish within --timeout (not tried again)
             print(f"{path}: no code generated: the design file did not load within --timeout", file=sys.stderr)
             continue
         target = None if out == "" else (Path(out) / path.stem if len(paths) > 1 else Path(out))

@@ -44,6 +44,12 @@ class ReferenceError(ValueError):
 TOLERANCE_2 = 1e-3
 
 
+def _shaped(values, t: np.ndarray) -> tuple:
+    """The values (xr, yr, thr, vr, wr) at the times t as float arrays of t's
+    shape; a constant may be given as a plain number."""
+    return tuple(np.asarray(a, dtype=float) * np.ones_like(t) for a in values)
+
+
 @dataclass
 class Reference:
     """A reference pose trajectory of (2) on [t0, t1].
@@ -58,7 +64,7 @@ class Reference:
 
     def __call__(self, t):
         t = np.atleast_1d(np.asarray(t, dtype=float))
-        return tuple(np.asarray(a, dtype=float) * np.ones_like(t) for a in self.fn(t))
+        return _shaped(self.fn(t), t)
 
     def at(self, t: float) -> tuple:
         """The five values at one time, as Python floats."""
@@ -209,9 +215,8 @@ def from_function(fn: Callable, t0: float, t1: float, name: str = "user") -> Ref
         raise ReferenceError(f"reference {name!r}: the time span [{t0:g}, {t1:g}] s is empty or not finite; "
                              f"give a positive, finite duration")
 
-    def shaped(t):          # a constant output may be written as a plain number
-        t = np.asarray(t, dtype=float)
-        return tuple(np.asarray(a, dtype=float) * np.ones_like(t) for a in fn(t))
+    def shaped(t):          # the loops call fn itself: a constant output may be a plain number there too
+        return _shaped(fn(t), np.asarray(t, dtype=float))
     ref = Reference(name, shaped, float(t0), float(t1), "user function of t")
     ref.check()
     return ref
