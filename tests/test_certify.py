@@ -38,6 +38,9 @@ TRUE = [
     # u - sin(u) > 0 for u = sqrt(1 + s^2) - 1 > 0 (sin u < u for u > 0): only as G(u) = u - sin(u)
     # (`sign_by_substitution`); in s the two copies of u cancel to about s^6/48 and boxes cannot see it
     (sp.sqrt(1 + S ** 2) - 1 - sp.sin(sp.sqrt(1 + S ** 2) - 1), 0, sp.oo),
+    # s^(3/2) + sqrt(1+s^2) - 1 > 0: s^(3/2) > 0 and sqrt(1+s^2) - 1 > 0; no Taylor series at 0 (s^(3/2)),
+    # and the constant -1 has the other sign alone: only as s^(3/2) + (sqrt(1+s^2) - 1)
+    (S ** Q(3, 2) + sp.sqrt(1 + S ** 2) - 1, 0, sp.oo),
 ]
 
 

@@ -885,10 +885,13 @@ def _sum_groups(e, var, I, want) -> list:
     its terms, or, where a term or the constant has the other sign
     somewhere, the rational terms together (9 s^2 - 20 s + 9, signed by
     Sturm) and the others one by one (the logs' terms of a numerator put over
-    one denominator); NoProof when a term with the other sign is left alone."""
+    one denominator), or, when only the constant has the other sign, the
+    constant with one term (s^(3/2) + (sqrt(s^2 + 1) - 1)); NoProof when a
+    term with the other sign is left alone."""
     terms = [t for t in e.args if t.has(var)]
     constant = sp.Add(*[t for t in e.args if not t.has(var)])
-    if not any(_against(t, var, I, want) for t in terms) and K._const_sign(constant) != -want:
+    clear = not any(_against(t, var, I, want) for t in terms)
+    if clear and K._const_sign(constant) != -want:
         return terms
     shared = _by_denominator(terms, var)
     if 1 < len(shared) < len(terms) and K._const_sign(constant) != -want and \
@@ -896,9 +899,12 @@ def _sum_groups(e, var, I, want) -> list:
         return shared
     rational = [t for t in e.args if t.is_rational_function(var)]
     others = [t for t in terms if not t.is_rational_function(var)]
-    if not others or any(_against(t, var, I, want) for t in others) or _against(sp.Add(*rational), var, I, want):
-        raise NoProof("a term of {} has the other sign", e)
-    return [sp.Add(*rational), *others]
+    if others and not any(_against(t, var, I, want) for t in others) and not _against(sp.Add(*rational), var, I, want):
+        return [sp.Add(*rational), *others]
+    for i, t in enumerate(terms if clear and len(terms) > 1 else ()):  # s^(3/2) + (sqrt(s^2 + 1) - 1)
+        if not _against(t + constant, var, I, want):
+            return [t + constant, *terms[:i], *terms[i + 1:]]
+    raise NoProof("a term of {} has the other sign", e)
 
 
 def _by_denominator(terms, var) -> list:
