@@ -223,6 +223,16 @@ def test_limit_of_a_rational_product_that_is_zero_times_infinity_as_written():
     assert limit_right(x ** -3 * (x + x ** 2), x).value == sp.oo          # (1 + x)/x^2
 
 
+def test_limit_of_a_product_with_a_sum_that_is_zero_times_infinity_as_written():
+    from uwmr_symbolic.limits import limit_right
+    x = sp.Symbol("x", positive=True)
+    # not rational: distributed, x^(-1/2) (sqrt(x) + x) = 1 + sqrt(x) -> 1, from above
+    assert limit_right(x ** sp.Rational(-1, 2) * (sp.sqrt(x) + x), x).value == 1
+    # F'(s)/s of F = s^(3/2) + sqrt(1 + s^2) - 1: 3/(2 sqrt(s)) + 1/sqrt(1 + s^2) -> oo
+    lim = limit_right((3 * sp.sqrt(x) / 2 + x / sp.sqrt(x ** 2 + 1)) / x, x)
+    assert (lim.value, lim.side) == (sp.oo, 1)
+
+
 def test_a_condition_on_one_axis_is_not_taken_for_the_origin(tmp_path):
     # f = 0 on the whole line e1 = 0, log(1 + rho) elsewhere: not radial (f(0, 1) = 0 < f(1, 0))
     report, v = verify(tmp_path, "f = Piecewise((0, Eq(e1, 0)), (log(1 + rho), True))\n")
@@ -507,3 +517,13 @@ def test_a_narrow_gaussian_dip_on_an_axis_is_no_crash(tmp_path):
                                  "f = log(1 + e1**2) - 3*(sp.exp(-10**10*(e1 + c)**2) - sp.exp(-10**10*c**2))"
                                  " + log(1 + e2**2)\n")
     assert v["P3"] == "refuted" and v["P4"] == "refuted", report.properties
+
+
+def test_a_power_below_one_plus_a_smooth_term_is_decided_by_the_kernel(tmp_path):
+    # F(s) = s^(3/2) + sqrt(1 + s^2) - 1 (rho^(3/4) + ...): F > 0 (two positive parts) and -> oo: P3;
+    # F' = 3 sqrt(s)/2 + s/sqrt(1 + s^2) > 0: P5; F' -> oo: kf infinite, P1 false;
+    # F'/s = 3/(2 sqrt(s)) + 1/sqrt(1 + s^2) -> oo as s -> 0+: P6 false; F'' ~ 3/(4 sqrt(s)): P7 false;
+    # F'(0+) = 0 and F' bounded near every s > 0: P8.  Every verdict from the kernel (P3, P6 were unknown)
+    _, v = verify(tmp_path, "f = rho**Rational(3, 4) + sqrt(1 + rho) - 1\n")
+    assert v == {"P1": "refuted", "P2": "proved", "P3": "proved", "P4": "proved", "P5": "proved",
+                 "P6": "refuted", "P7": "refuted", "P8": "proved"}

@@ -107,8 +107,9 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
         if isinstance(expr, sp.Mul):
             try:
                 return _mul(limits)
-            except NoLimit:     # 0 * oo in a rational function: 1/(x^2 (1 + x^-2)) is 1/(x^2 + 1)
-                cancelled = sp.cancel(expr) if expr.is_rational_function(x) else expr
+            except NoLimit:     # 0 * oo in a rational function: 1/(x^2 (1 + x^-2)) is 1/(x^2 + 1);
+                # else a product with a sum, distributed: (3 sqrt(x)/2 + x)/x is 3/(2 sqrt(x)) + 1
+                cancelled = sp.cancel(expr) if expr.is_rational_function(x) else sp.expand_mul(expr)
                 if cancelled == expr:
                     raise
                 return _limit(cancelled, x)
