@@ -8,6 +8,7 @@ from fractions import Fraction
 import pytest
 import sympy as sp
 
+from uwmr_symbolic.limits import Lim
 from uwmr_symbolic.profile import S, continuous_on
 from uwmr_symbolic.univariate import polynomial_sign, prove_sign
 from uwmr_symbolic.verify import verify_design
@@ -231,6 +232,19 @@ def test_limit_of_a_product_with_a_sum_that_is_zero_times_infinity_as_written():
     # F'(s)/s of F = s^(3/2) + sqrt(1 + s^2) - 1: 3/(2 sqrt(s)) + 1/sqrt(1 + s^2) -> oo
     lim = limit_right((3 * sp.sqrt(x) / 2 + x / sp.sqrt(x ** 2 + 1)) / x, x)
     assert (lim.value, lim.side) == (sp.oo, 1)
+
+
+def test_a_power_beats_a_logarithm_but_not_a_faster_growth():
+    from uwmr_symbolic.limits import NoLimit, limit_right
+    x = sp.Symbol("x", positive=True)
+    # log(1/x)^3 x^(1/2) -> 0 from above; asinh(1/x^2) (-x) -> 0 from below (asinh u <= log(2u + 1))
+    assert limit_right(sp.log(1 / x) ** 3 * sp.sqrt(x), x) == Lim(0, 1)
+    assert limit_right(-x * sp.asinh(1 / x ** 2), x) == Lim(0, -1)
+    # the tail form of s^3 asinh(s^2/100)/(s^2 + 1)^2 at t = 1/s: t asinh(1/(100 t^2))/(t^2 + 1)^2 -> 0
+    assert limit_right(x * sp.asinh(1 / (100 * x ** 2)) / (x ** 2 + 1) ** 2, x).value == 0
+    # log(exp(1/x) + 1) ~ 1/x grows faster than any power of log(1/x): x log(exp(1/x) + 1) -> 1, not 0
+    with pytest.raises(NoLimit):
+        limit_right(x * sp.log(sp.exp(1 / x) + 1), x)
 
 
 def test_a_condition_on_one_axis_is_not_taken_for_the_origin(tmp_path):

@@ -110,9 +110,9 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
             except NoLimit:     # 0 * oo in a rational function: 1/(x^2 (1 + x^-2)) is 1/(x^2 + 1);
                 # else a product with a sum, distributed: (3 sqrt(x)/2 + x)/x is 3/(2 sqrt(x)) + 1
                 cancelled = sp.cancel(expr) if expr.is_rational_function(x) else sp.expand_mul(expr)
-                if cancelled == expr:
-                    raise
-                return _limit(cancelled, x)
+                if cancelled != expr:
+                    return _limit(cancelled, x)
+                return _power_beats_logarithm(expr, x)
         lim = _add(limits)
         if lim.side is None and not lim.infinite and sign_of(lim.value) == 0:
             lim = Lim(lim.value, _polynomial_side(expr, x))
@@ -136,6 +136,42 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
 
 
 _NEAR = sp.Rational(1, 64)
+_RATES = (sp.Integer(1), sp.Rational(1, 2), sp.Rational(1, 4), sp.Rational(1, 8))
+
+
+def _logarithmic(factor, x) -> bool:
+    """factor = G(u)^n, n > 0, G = log or asinh, u -> +oo at most as fast
+    as a power of 1/x (u x^m has a finite limit, m <= 16): then 0 < factor
+    <= C log(1/x)^n near 0+ (log u <= log C' + m log(1/x); asinh u <= log(2u + 1))."""
+    base, n = factor.as_base_exp()
+    if not (isinstance(base, (sp.log, sp.asinh)) and n.is_Rational and n > 0):
+        return False
+    u = base.args[0]
+    try:
+        if _limit(u, x).value != sp.oo:
+            return False
+        return any(not _limit(u * x ** m, x).infinite for m in (1, 2, 4, 8, 16))
+    except NoLimit:
+        return False
+
+
+def _power_beats_logarithm(expr, x) -> Lim:
+    """lim of the product expr = L * R, L the factors that are `_logarithmic`
+    (-> +oo, below C log(1/x)^n), R the rest: when R x^-q has a finite
+    limit for some q > 0, |L R| <= C' log(1/x)^n x^q -> 0, and L R has R's
+    eventual sign."""
+    slow = [a for a in expr.args if _logarithmic(a, x)]
+    rest = sp.Mul(*[a for a in expr.args if a not in slow])
+    if not slow or not rest.has(x):
+        raise NoLimit("0 * inf")
+    for q in _RATES:
+        try:
+            scaled = _limit(rest * x ** -q, x)
+        except NoLimit:
+            continue
+        if not scaled.infinite:
+            return Lim(sp.Integer(0), _eventual_sign(_limit(rest, x)))
+    raise NoLimit("0 * inf")
 
 
 def rational_poly(expr, x) -> sp.Poly | None:
