@@ -165,6 +165,25 @@ def test_a_verdict_proved_with_nothing_behind_it_is_written_as_the_search_alone(
     assert all(checks[p].kernel_checked for p in PROPS if p != "P7")
 
 
+def test_a_property_whose_kernel_theorems_do_not_recheck_is_left_to_the_search_alone(cert1, monkeypatch):
+    """A proposer bug in one property's theorems (here P5's Sturm step made to
+    claim the other sign) costs that verdict only: the verifier re-checks the
+    others, reports P5 as resting on the search, and names the failure."""
+    from uwmr_symbolic import verify as V
+
+    def build(report):
+        bad = copy.deepcopy(cert1)
+        step = next(t for t in bad["properties"]["P5"]["kernel"]["theorems"] if t["rule"] == "sign_by_sturm")
+        step["data"]["want"] = -step["data"]["want"]
+        return bad
+    monkeypatch.setattr(DC, "build", build)
+    cert, kernel = V._kernel_check(None)
+    assert kernel["search"] == ["P5"] and set(kernel["checked"]) == set(PROPS) - {"P5"} | {"kf"}
+    assert len(kernel["failed"]) == 1 and kernel["failed"][0].startswith("P5: theorem")
+    assert cert["properties"]["P5"]["kernel"] is None and "do not re-check" in cert["properties"]["P5"]["unchecked"][0]
+    assert not _by_name(DC.check(cert))["P5"].kernel_checked        # what is written re-checks, P5 left open
+
+
 def test_other_version_gives_a_clear_error(cert1):
     bad = dict(cert1, version=2)
     with pytest.raises(DC.CertificateError, match="version 2 is not supported: this checker reads version 1"):

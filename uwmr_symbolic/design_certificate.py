@@ -796,6 +796,35 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
     return what, kind == "slope"
 
 
+def _check_property(name, entry, f) -> PropertyCheck:
+    """Re-check one property's entry of a design certificate against f."""
+    pc = PropertyCheck(name, entry["status"], unchecked=list(entry["unchecked"]))
+    if entry["kernel"] is not None:
+        try:
+            theorems = check_certificate(entry["kernel"])
+        except CertificateError as exc:
+            raise CertificateError(f"{name}: {exc}") from None
+        pc.theorems = len(theorems)
+        pc.assumptions = sorted(set().union(*[t.assumptions for t in theorems]))
+        if pc.status == "refuted":
+            pc.witness, diff = link_refutation(name, f, theorems, entry["witness"])
+            if diff:                        # the link differentiates f itself
+                pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
+        elif pc.status == "proved":
+            bounds = None if name != "kf" else (parse(entry["exact"]),) * 2 if entry["exact"] is not None \
+                else (parse(entry["lower"]), parse(entry["upper"]))
+            pc.unchecked += [u for u in _link(name, f, theorems, bounds) if u not in pc.unchecked]
+            if name not in ("P2", "P4"):        # the link differentiates F itself
+                pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
+        else:
+            raise CertificateError(f"{name}: kernel theorems for a verdict {pc.status!r}")
+    elif pc.status == "refuted" and not pc.unchecked:     # as written before witnesses were checked
+        pc.unchecked = [WITNESS_SEARCH]
+    elif pc.status == "proved" and not pc.unchecked:
+        raise CertificateError(f"{name}: proved with neither kernel theorems nor unchecked facts")
+    return pc
+
+
 def check(data) -> list[PropertyCheck]:
     """Re-check a design certificate (a dict or JSON text).  Raises
     CertificateError naming the first property or step that fails."""
@@ -819,32 +848,13 @@ def check(data) -> list[PropertyCheck]:
         props = data["properties"]
         out = []
         for name in sorted(props):
-            entry = props[name]
-            pc = PropertyCheck(name, entry["status"], unchecked=list(entry["unchecked"]))
-            if entry["kernel"] is not None:
-                try:
-                    theorems = check_certificate(entry["kernel"])
-                except CertificateError as exc:
-                    raise CertificateError(f"{name}: {exc}") from None
-                pc.theorems = len(theorems)
-                pc.assumptions = sorted(set().union(*[t.assumptions for t in theorems]))
-                if pc.status == "refuted":
-                    pc.witness, diff = link_refutation(name, f, theorems, entry["witness"])
-                    if diff:                        # the link differentiates f itself
-                        pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
-                elif pc.status == "proved":
-                    bounds = None if name != "kf" else (parse(entry["exact"]),) * 2 if entry["exact"] is not None \
-                        else (parse(entry["lower"]), parse(entry["upper"]))
-                    pc.unchecked += [u for u in _link(name, f, theorems, bounds) if u not in pc.unchecked]
-                    if name not in ("P2", "P4"):        # the link differentiates F itself
-                        pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
-                else:
-                    raise CertificateError(f"{name}: kernel theorems for a verdict {pc.status!r}")
-            elif pc.status == "refuted" and not pc.unchecked:     # as written before witnesses were checked
-                pc.unchecked = [WITNESS_SEARCH]
-            elif pc.status == "proved" and not pc.unchecked:
-                raise CertificateError(f"{name}: proved with neither kernel theorems nor unchecked facts")
-            out.append(pc)
+            try:
+                out.append(_check_property(name, props[name], f))
+            except (CertificateError, KeyError, TypeError, ValueError, IndexError, AttributeError) as exc:
+                error = exc if isinstance(exc, CertificateError) else \
+                    CertificateError(f"malformed design certificate ({name}): {type(exc).__name__}: {exc}")
+                error.prop = name               # (`verify._kernel_check` leaves that verdict to the search)
+                raise error from None
         p4 = next((c for c in out if c.name == "P4"), None)
         if p4 is not None and p4.kernel_checked:        # the reduction is the identity P4 rests on
             for c in out:

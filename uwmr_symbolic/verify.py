@@ -145,16 +145,27 @@ def kernel_summary(checked) -> dict:
 
 def _kernel_check(search: Report) -> tuple[dict | None, dict]:
     """The design certificate of the search's verdicts and what the kernel
-    re-checked of it.  A certificate that does not re-check (a proposer bug)
-    leaves every verdict to the search, and says so ("error")."""
+    re-checked of it.  A property whose kernel theorems do not re-check (a
+    proposer bug) is left to the search in the certificate, and the others
+    are checked again; the failures are named ("failed").  A certificate
+    that fails as a whole leaves every verdict to the search ("error")."""
     from . import design_certificate as certificates
     cert = certificates.build(search)
-    try:
-        return cert, kernel_summary(certificates.check(cert))
-    except certificates.CertificateError as exc:
-        decided = [p for p, v in search.properties.items() if v.proved or v.refuted]
-        return cert, {"checked": [], "search": decided + (["kf"] if "kf" in cert["properties"] else []),
-                      "error": f"the certificate does not re-check: {exc}"}
+    failed = []
+    while True:
+        try:
+            summary = kernel_summary(certificates.check(cert))
+            return cert, summary | ({"failed": failed} if failed else {})
+        except certificates.CertificateError as exc:
+            entry = cert["properties"].get(getattr(exc, "prop", None))
+            if entry is None or entry["kernel"] is None:
+                decided = [p for p, v in search.properties.items() if v.proved or v.refuted]
+                return cert, {"checked": [], "search": decided + (["kf"] if "kf" in cert["properties"] else []),
+                              "error": f"the certificate does not re-check: {exc}"}
+            failed.append(str(exc))
+            entry["kernel"] = None
+            what = "the witness of the refutation" if entry["status"] == "refuted" else "the whole argument"
+            entry["unchecked"] = [f"{what} (the proposer's kernel theorems do not re-check: {exc})"]
 
 
 def kernel_verdict(name: str, v: Verdict, kernel: dict) -> Verdict:
