@@ -499,7 +499,9 @@ def test_unusable_options_end_before_anything_is_verified_or_written(tmp_path):
     with no design file, --reference or --delay without --simulate, limits
     of --delay and --monte-carlo, two files of one name with --codegen or
     --certificate, a --reference naming no gain scenario (the certificate is
-    not written first).  A CSV reference may name its columns t,x,y."""
+    not written first), --seed without --simulate, --trust-search with
+    --kernel-only, argparse's own errors (one line, not the usage block).  A
+    CSV reference may name its columns t,x,y."""
     d1 = ROOT / "designs/design1_jiang.py"
     (tmp_path / "empty").mkdir()
     (tmp_path / "a").mkdir()
@@ -513,8 +515,12 @@ def test_unusable_options_end_before_anything_is_verified_or_written(tmp_path):
         ([d1, "--timeout", "nan"], "--timeout must be a number of seconds above 0 and at most 1e+06, not nan"),
         ([d1, "--timeout", "2e6"], "--timeout must be a number of seconds above 0 and at most 1e+06, not 2e+06"),
         ([tmp_path / "empty"], f"no design files in {tmp_path / 'empty'} (a folder is read for its *.py files)"),
-        ([d1, "--delay", "5"], "--reference and --delay only make sense with --simulate"),
-        ([d1, "--reference", f"circle={tmp_path / 'line.csv'}"], "--reference and --delay only make sense with"),
+        ([d1, "--delay", "5"], "--reference, --delay and --seed only make sense with --simulate"),
+        ([d1, "--reference", f"circle={tmp_path / 'line.csv'}"], "--reference, --delay and --seed only make sense"),
+        ([d1, "--seed", "0"], "--reference, --delay and --seed only make sense with --simulate"),
+        ([d1, "--trust-search", "--kernel-only"], "--trust-search and --kernel-only contradict each other"),
+        ([d1, "--formt", "json"], "unrecognized arguments: --formt json (uwmr-verify --help lists the options)"),
+        ([d1, "--timeout", "abc"], "argument --timeout: invalid float value: 'abc'"),
         ([d1, "--simulate", "--delay", "1001"], "--monte-carlo must be in 0..100000 and --delay in 0..1000"),
         ([d1, "--monte-carlo", "100001"], "--monte-carlo must be in 0..100000 and --delay in 0..1000"),
         ([tmp_path / "a/d.py", tmp_path / "b/d.py", "--codegen", tmp_path / "out"],
@@ -572,3 +578,21 @@ def test_a_failed_simulation_shows_in_every_format(tmp_path):
     assert "title=uwmr-verify simulation fails (Design 1 (Jiang et al.)%2C circle)::continuous: convergence, " \
            "Lyapunov" in render_github([d])
     assert "circle:ok lemniscate:ok sim:circle:FAIL" in render_summary([d])
+
+
+def test_a_cache_hit_certificate_names_the_file_given_and_an_unwritable_cache_is_said(tmp_path):
+    """The cache key is the design's content, so a copy of a design is served
+    its original's entry: the certificate written from that hit names the
+    copy.  A cache folder that cannot be written is one warning line, and the
+    run goes on (exit 0), uncached."""
+    copy = tmp_path / "mycopy.py"
+    shutil.copy(ROOT / "designs/design1_jiang.py", copy)
+    assert run([ROOT / "designs/design1_jiang.py", "-q"], tmp_path / "cache").returncode == 0
+    proc = run([copy, "--format", "json", "--certificate", tmp_path / "c.json"], tmp_path / "cache")
+    assert proc.returncode == 0 and json.loads(proc.stdout)["cached"] is True, describe(proc)
+    assert json.loads((tmp_path / "c.json").read_text())["design"]["file"] == str(copy)
+    (tmp_path / "afile").write_text("")
+    proc = run([copy, "-q"], tmp_path / "afile")
+    assert proc.returncode == 0, describe(proc)
+    assert proc.stderr.startswith(f"uwmr-verify: warning: the cache folder {tmp_path / 'afile'} cannot be written "
+                                  f"(File exists); results are not cached") and proc.stderr.count("\n") == 1

@@ -82,6 +82,13 @@ def test_check_generated_detects_a_stale_file(tmp_path):
     c_file.unlink()
     run = cli("--check-generated", "design1_jiang.py", cwd=tmp_path)
     assert "design1_jiang.c: missing" in run.stdout and "extra.txt: not produced" in run.stdout
+    # named designs are checked alone: another design's folder is not an orphan then, but is without names
+    shutil.copytree(ROOT / "generated/design2_sqrt", tmp_path / "generated/design2_sqrt")
+    assert "design2_sqrt" not in cli("--check-generated", "design1_jiang.py", cwd=tmp_path).stdout
+    (tmp_path / "designs").mkdir()
+    shutil.move(tmp_path / "design1_jiang.py", tmp_path / "designs/design1_jiang.py")
+    run = cli("--check-generated", cwd=tmp_path)
+    assert f"{Path('generated/design2_sqrt')}: no design file design2_sqrt.py" in run.stdout, run.stdout
 
 
 def test_design_that_prints_keeps_json_clean(tmp_path):

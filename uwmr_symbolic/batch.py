@@ -98,7 +98,8 @@ def served(hit: dict, design, kernel_only: bool = True) -> dict | None:
     proof = replay(design.f, statuses.get("P4") == "proved")
     props = {p: Verdict(Status(v), "") for p, v in verdicts.items()}
     status = Report(design.path, design, props, None, gains, proof).exit_status
-    return {**hit, "gains": gains_dict(gains), "proof_replay": proof, "exit_status": status}
+    here = {**cert, "design": {**cert["design"], "file": str(design.path), "name": design.name}}   # (a copy's entry)
+    return {**hit, "certificate": here, "gains": gains_dict(gains), "proof_replay": proof, "exit_status": status}
 
 
 def _checked_kf(cert: dict, kernel: dict, shown: dict, kernel_only: bool) -> tuple | None:

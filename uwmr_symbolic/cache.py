@@ -130,6 +130,15 @@ class ResultCache:
         self.directory = Path(directory) if directory is not None else default_dir()
         self.max_entries = max_entries
 
+    def unwritable(self) -> str | None:
+        """Why results cannot be stored in the folder (None: they can)."""
+        try:
+            self.directory.mkdir(parents=True, exist_ok=True)
+            with tempfile.TemporaryFile(dir=self.directory):
+                return None
+        except OSError as exc:
+            return exc.strerror or str(exc)
+
     def path_for(self, key: dict) -> Path:
         return self.directory / f"{digest(key)}.json"
 

@@ -10,6 +10,7 @@ from pathlib import Path
 
 from . import __version__, settings
 from .batch import Progress, check_files, expand_paths, worst_status
+from .cache import ResultCache
 from .report import (render_github, render_json, render_junit, render_markdown_summary, render_summary,
                      render_text)
 from .verify import DEFAULT_TIMEOUT
@@ -69,8 +70,16 @@ A design file defines f (a SymPy expression in real symbols e1, e2) and
 optionally params, gains, name, description: see the README."""
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse, but a usage mistake is one line on stderr (exit 2), not the
+    usage block followed by the error."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: {message} (uwmr-verify --help lists the options)\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(
+    p = _Parser(
         prog="uwmr-verify",
         description="Prove or refute properties P1-P8 of f(e1, e2) for the saturated "
                     "controller family (9) of Moreno-Valenzuela et al. (2020), certify kf, "
@@ -105,9 +114,10 @@ def build_parser() -> argparse.ArgumentParser:
                         "100 Hz, beside the unsaturated baseline (38), within max(--timeout, 600 s) per design; "
                         "exit 1 if a check fails, 3 if a simulation does not finish")
     p.add_argument("--monte-carlo", type=int, default=0, metavar="N",
-                   help="with --simulate: also N random initial poses per scenario (100 Hz, vectorised; "
-                        "at most 100000)")
-    p.add_argument("--seed", type=int, default=0, help="seed for --monte-carlo and pose noise (default 0)")
+                   help="simulate (implies --simulate) and also N random initial poses per scenario "
+                        "(100 Hz, vectorised; at most 100000)")
+    p.add_argument("--seed", type=int, default=None,
+                   help="with --simulate: seed for --monte-carlo and pose noise (default 0)")
     p.add_argument("--delay", type=int, default=0, metavar="SAMPLES",
                    help="with --simulate: command delay of the 100 Hz loop in samples (default 0, at most 1000)")
     p.add_argument("--reference", action="append", default=[], metavar="SCENARIO=FILE",
@@ -124,11 +134,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help="re-check certificate file(s) in the kernel without any search (in parallel, --jobs) and "
                         "say what each property rests on (exit 0 all check, 1 one does not or its check outlives "
                         "--timeout, 2 unreadable)")
-    p.add_argument("--trust-search", dest="kernel_only", action="store_false",
+    p.add_argument("--trust-search", action="store_true",
                    help="also count verdicts the search proved or refuted but the trusted kernel could not "
                         "re-check (by default they are 'unknown' and a gain check needs a kernel-checked kf); "
                         "the report's kernel line names them")
-    p.add_argument("--kernel-only", dest="kernel_only", action="store_true", default=True,
+    p.add_argument("--kernel-only", dest="kernel_only_flag", action="store_true",
                    help="count only the kernel's verdicts (the default; kept for scripts)")
     p.add_argument("--version", action="version", version=f"uwmr-verify {__version__}")
     return p
@@ -142,7 +152,7 @@ def check_generated(args) -> int:
         print("uwmr-verify: --check-generated found no design files (run it from the "
               "repository root or name them)", file=sys.stderr)
         return 2
-    problems = stale_files(designs, Path("generated"))
+    problems = stale_files(designs, Path("generated"), orphans=not args.files)    # named files: only theirs
     for line in problems:
         print(line)
     if not problems:
@@ -231,7 +241,7 @@ def run_simulations(results, args, refs: dict, reports: Reports) -> int:
         try:
             with time_limit(max(args.timeout, SIMULATION_SECONDS)):
                 sim = simulate_design(d["design"], report=report, monte_carlo=args.monte_carlo,
-                                      seed=args.seed, references=refs or None, delay=args.delay)
+                                      seed=args.seed or 0, references=refs or None, delay=args.delay)
         except CodegenInvalid as exc:
             # the simulator runs the generated code, which the validation gate refused (--force or not)
             print(f"{d['design']}: not simulated, the generated code failed its validation: {exc.reasons[0]}",
@@ -345,6 +355,7 @@ def write_certificates(paths, results, target) -> int:
 
 def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
+    args.kernel_only = not args.trust_search
     try:
         settings.apply(args, DEFAULT_TIMEOUT)   # [tool.uwmr-symbolic] in pyproject.toml; flags win
     except settings.SettingsError as exc:
@@ -381,8 +392,11 @@ def main(argv=None) -> int:
               f"(samples of the 100 Hz loop)", file=sys.stderr)
         return 2
     simulate = args.simulate or args.monte_carlo > 0
-    if not simulate and (args.reference or args.delay):
-        print("uwmr-verify: --reference and --delay only make sense with --simulate", file=sys.stderr)
+    if not simulate and (args.reference or args.delay or args.seed is not None):
+        print("uwmr-verify: --reference, --delay and --seed only make sense with --simulate", file=sys.stderr)
+        return 2
+    if args.trust_search and args.kernel_only_flag:
+        print("uwmr-verify: --trust-search and --kernel-only contradict each other; give one", file=sys.stderr)
         return 2
     paths = expand_paths(args.files)
     if not paths:
@@ -402,6 +416,11 @@ def main(argv=None) -> int:
     except UsageError as exc:
         print(f"uwmr-verify: {exc}", file=sys.stderr)
         return 2
+    cache = None if args.no_cache else ResultCache(args.cache_dir)
+    why = cache and cache.unwritable()
+    if why:
+        print(f"uwmr-verify: warning: the cache folder {cache.directory} cannot be written "
+              f"({why}); results are not cached (--cache-dir DIR or --no-cache)", file=sys.stderr)
     progress = Progress(len(paths))
     try:
         results = check_files(paths, args.timeout, use_cache=not args.no_cache, jobs=args.jobs,

@@ -8,8 +8,9 @@ from pathlib import Path
 from . import build
 
 
-def stale_files(designs, generated_root) -> list[str]:
-    """One line per problem: a missing, differing or unexpected file."""
+def stale_files(designs, generated_root, orphans: bool = True) -> list[str]:
+    """One line per problem: a missing, differing or unexpected file (and,
+    with `orphans`, a folder of generated_root that no design produces)."""
     problems = []
     root = Path(generated_root)
     for path in sorted(Path(p) for p in designs):
@@ -25,7 +26,7 @@ def stale_files(designs, generated_root) -> list[str]:
             for extra in sorted(set(p.name for p in folder.iterdir() if p.is_file()) - set(files)):
                 problems.append(f"{folder / extra}: not produced by the generator")
     known = {Path(p).stem for p in designs}
-    if root.is_dir():
+    if orphans and root.is_dir():
         for folder in sorted(p for p in root.iterdir() if p.is_dir() and p.name not in known
                              and not p.name.startswith(".")):
             problems.append(f"{folder}: no design file {folder.name}.py")
