@@ -590,6 +590,9 @@ def test_a_cache_hit_certificate_names_the_file_given_and_an_unwritable_cache_is
     assert run([ROOT / "designs/design1_jiang.py", "-q"], tmp_path / "cache").returncode == 0
     proc = run([copy, "--format", "json", "--certificate", tmp_path / "c.json"], tmp_path / "cache")
     assert proc.returncode == 0 and json.loads(proc.stdout)["cached"] is True, describe(proc)
+    # every verdict kernel-checked, P4 too: nothing is left to the search, the reduction included
+    assert {p: v["unchecked"] for p, v in json.loads(proc.stdout)["properties"].items()} == {
+        f"P{i}": [] for i in range(1, 9)}
     assert json.loads((tmp_path / "c.json").read_text())["design"]["file"] == str(copy)
     (tmp_path / "afile").write_text("")
     proc = run([copy, "-q"], tmp_path / "afile")

@@ -249,6 +249,9 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Tr
     except TimeLimit:
         proof = {"ok": False, "steps": {"replay": {"ok": False, "detail": "timed out"}}}
         timed_out = True
+    # a verdict the kernel checked leaves nothing to the search (P4's identity included, `design_certificate.check`)
+    props = {p: replace(v, details={**v.details, "unchecked": []}) if p in kernel["checked"] and v.details.get(
+        "unchecked") else v for p, v in props.items()}
     if kernel_only:
         props = {p: kernel_verdict(p, v, kernel) for p, v in props.items()}
     checked_kf = kf
