@@ -69,6 +69,20 @@ def test_verified_files_have_no_banner(reports, tmp_path):
         assert "NOT VERIFIED" not in text and "Verified: P1-P8 proved, kf = 2" in text
 
 
+def test_the_banner_names_the_design_files_gains_that_break_bound_10(reports):
+    """Design 2 is verified, but its lemniscate gains exceed Wmax by 1.77e-5
+    in bound (10) (|Wr|max + lam |Vr|max kf + k2 = 1.832 + 0.0285 0.6322 1 +
+    0.15 = 2.0000177): the gains are passed in at run time, so the banner
+    says so; design 1's gains all satisfy it, and its banner is silent."""
+    _, files = build(ROOT / "designs" / "design2_sqrt.py", report=reports["design2_sqrt"])
+    head = " ".join(" ".join(files["design2_sqrt.h"].split("*/")[0].split("*")).split())
+    assert ("Note: the design file's gains 'lemniscate' break bound (10): |W| bound 2.0000177 > Wmax "
+            "(margin -1.770e-05)") in head
+    assert "'circle'" not in head
+    _, files = build(ROOT / "designs" / "design1_jiang.py", report=reports["design1_jiang"])
+    assert "bound (10):" not in files["design1_jiang.py"].split('"""')[0]
+
+
 def test_deterministic_and_generated_dir_is_current(reports):
     """What `make generate` writes is what is committed (the CI staleness
     check is `git diff --exit-code generated/` after regenerating)."""

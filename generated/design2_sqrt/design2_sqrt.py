@@ -3,6 +3,9 @@
 # edit:
 # regenerate with `uwmr-verify FILE --codegen` (or `make generate`).
 # Verified: P1-P8 proved, kf = 1.
+# Note: the design file's gains 'lemniscate' break bound (10): |W| bound
+# 2.0000177 > Wmax (margin -1.770e-05); with them the commands are not
+# promised to stay within the limits.
 # ##########################################################################
 """Control law (9) for Design 2, generated from design2_sqrt.py.
 

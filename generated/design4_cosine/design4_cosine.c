@@ -15,6 +15,9 @@
  * This controller was generated with --force although the design does not
  * have all of P1-P8: its closed loop is NOT known to be stable or within
  * bound (10).
+ * Note: the design file's gains 'lemniscate' break bound (10): |W| bound
+ * 2.0000177 > Wmax (margin -1.770e-05); with them the commands are not
+ * promised to stay within the limits.
  *************************************************************************** */
 #include "design4_cosine.h"
 

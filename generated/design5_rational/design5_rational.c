@@ -9,6 +9,9 @@
  * This controller was generated with --force although the design does not
  * have all of P1-P8: its closed loop is NOT known to be stable or within
  * bound (10).
+ * Note: the design file's gains 'circle' break bound (10): |W| bound
+ * 2.00001285 > Wmax (margin -1.285e-05); with them the commands are not
+ * promised to stay within the limits.
  *************************************************************************** */
 #include "design5_rational.h"
 

@@ -8,6 +8,12 @@
  * This controller was generated with --force although the design does not
  * have all of P1-P8: its closed loop is NOT known to be stable or within
  * bound (10).
+ * Note: the design file's gains 'circle' break bound (10): kf is infinite,
+ * so |W| has no bound; with them the commands are not promised to stay
+ * within the limits.
+ * Note: the design file's gains 'lemniscate' break bound (10): kf is
+ * infinite, so |W| has no bound; with them the commands are not promised to
+ * stay within the limits.
  *************************************************************************** */
 #ifndef UWMR_UNSATURATED_BASELINE_H
 #define UWMR_UNSATURATED_BASELINE_H

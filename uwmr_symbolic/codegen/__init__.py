@@ -163,7 +163,25 @@ def _model(design_path, force, report) -> tuple[LawModel, object]:
         raise CodegenRefused(reasons)
     model = build_model(report.design, Analysis(report.design), report)
     model.reasons = reasons
+    model.notes += _gain_notes(report.gains or {})
     return model, report
+
+
+def _gain_notes(gains: dict) -> list[str]:
+    """The design file's gain scenarios that break bound (10) or leave it
+    undecided: the gains are passed in at run time, so the banner warns."""
+    notes = []
+    for name, g in gains.items():
+        broken = [f"|V| bound {float(g.V_bound):.9g} > Vmax (margin {float(g.V_margin):+.3e})"] if not g.V_ok else []
+        if g.W_ok is False:
+            broken.append("kf is infinite, so |W| has no bound" if g.W_margin is None else
+                          f"|W| bound {float(g.W_bound):.9g} > Wmax (margin {float(g.W_margin):+.3e})")
+        if broken:
+            notes.append(f"the design file's gains {name!r} break bound (10): {'; '.join(broken)}; "
+                         f"with them the commands are not promised to stay within the limits.")
+        elif g.W_ok is None:
+            notes.append(f"the design file's gains {name!r}: the |W| part of bound (10) is undecided.")
+    return notes
 
 
 def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, str]]:
