@@ -36,6 +36,7 @@ exit status:
   1  a property refuted (with a witness) or a gain check fails
   2  unusable input: the design file is missing, broken or not a valid design
   3  inconclusive: some verdict is unknown, nothing refuted
+  141  the output pipe closed early (`uwmr-verify ... | head`), as for other tools
 With several files the status is the worst one (2 > 1 > 3 > 0).
 
 FILE may be a glob ('designs/*.py', quoted or not) or a directory (its *.py files).
@@ -47,8 +48,9 @@ formats:
   junit   JUnit XML as pytest writes it: a test case per design and property P1-P8,
           proof replay and gain scenario (refuted/unknown are failures)
   github  GitHub Actions annotations (::error at the line defining f for a refuted
-          property, ::warning for an unknown one), then the summary table; also
-          appended as Markdown to $GITHUB_STEP_SUMMARY when that is set
+          property or at the gains line for a failing bound (10), ::warning for an
+          unknown one, ::notice for a design proved in full), then the summary
+          table; also appended as Markdown to $GITHUB_STEP_SUMMARY when that is set
 
 cache:
   Results are cached by the design's canonical expression, parameters, gains,

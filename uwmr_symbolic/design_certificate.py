@@ -796,6 +796,10 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
     return what, kind == "slope"
 
 
+def _malformed(exc) -> str:
+    return f"no entry {exc}" if isinstance(exc, KeyError) else f"{type(exc).__name__}: {exc}"
+
+
 def _check_property(name, entry, f) -> PropertyCheck:
     """Re-check one property's entry of a design certificate against f."""
     pc = PropertyCheck(name, entry["status"], unchecked=list(entry["unchecked"]))
@@ -852,7 +856,7 @@ def check(data) -> list[PropertyCheck]:
                 out.append(_check_property(name, props[name], f))
             except (CertificateError, KeyError, TypeError, ValueError, IndexError, AttributeError) as exc:
                 error = exc if isinstance(exc, CertificateError) else \
-                    CertificateError(f"malformed design certificate ({name}): {type(exc).__name__}: {exc}")
+                    CertificateError(f"malformed design certificate ({name}): {_malformed(exc)}")
                 error.prop = name               # (`verify._kernel_check` leaves that verdict to the search)
                 raise error from None
         p4 = next((c for c in out if c.name == "P4"), None)
@@ -862,5 +866,5 @@ def check(data) -> list[PropertyCheck]:
     except CertificateError:
         raise
     except (KeyError, TypeError, ValueError, IndexError, AttributeError) as exc:     # (ParseError is a ValueError)
-        raise CertificateError(f"malformed design certificate: {type(exc).__name__}: {exc}") from None
+        raise CertificateError(f"malformed design certificate: {_malformed(exc)}") from None
     return out
