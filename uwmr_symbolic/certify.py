@@ -902,7 +902,7 @@ def _sum_groups(e, var, I, want) -> list:
     if others and not any(_against(t, var, I, want) for t in others) and not _against(sp.Add(*rational), var, I, want):
         return [sp.Add(*rational), *others]
     for i, t in enumerate(terms if clear and len(terms) > 1 else ()):  # s^(3/2) + (sqrt(s^2 + 1) - 1)
-        if not _against(t + constant, var, I, want):
+        if set(_signs(t + constant, var, I, want)) == {1}:      # seen to have the sign, not just not against
             return [t + constant, *terms[:i], *terms[i + 1:]]
     raise NoProof("a term of {} has the other sign", e)
 
@@ -936,20 +936,27 @@ def _product_split(e, var):
     return (c, A, B) if A.has(var) and B.has(var) else None
 
 
-def _against(t, var, I, want) -> bool:
-    """t has the sign -want at one of three inner points of I (Arb): no sum
-    rule can use t."""
+def _signs(t, var, I, want) -> list[int]:
+    """At three inner points of I (Arb, 64 bits), +1 where t has the sign
+    want, -1 where it has the other, 0 where the enclosure cannot tell."""
     lo, hi = I[0], I[1]
     points = [lo + sp.Rational(1, 16), lo + 1, lo + 16] if hi == OO else \
         [lo + (hi - lo) * sp.Rational(k, 8) for k in (1, 4, 7)]
+    out = []
     for p in points:
         try:
             v = evaluate(t, var, p, p, bits=64)
         except Undefined:
             continue
-        if v.negative() if want > 0 else v.positive():
-            return True
-    return False
+        out.append(1 if (v.positive() if want > 0 else v.negative()) else
+                   -1 if (v.negative() if want > 0 else v.positive()) else 0)
+    return out
+
+
+def _against(t, var, I, want) -> bool:
+    """t has the sign -want at one of three inner points of I (Arb): no sum
+    rule can use t."""
+    return -1 in _signs(t, var, I, want)
 
 
 def _with_tanh(e):

@@ -109,7 +109,9 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
                 return _mul(limits)
             except NoLimit:     # 0 * oo in a rational function: 1/(x^2 (1 + x^-2)) is 1/(x^2 + 1);
                 # else a product with a sum, distributed: (3 sqrt(x)/2 + x)/x is 3/(2 sqrt(x)) + 1
-                cancelled = sp.cancel(expr) if expr.is_rational_function(x) else sp.expand_mul(expr)
+                sums = [len(a.args) for a in expr.args if isinstance(a, sp.Add)]
+                cancelled = sp.cancel(expr) if expr.is_rational_function(x) else \
+                    sp.expand_mul(expr) if 0 < sp.prod(sums) <= 64 else expr       # (a bounded number of terms)
                 if cancelled != expr:
                     return _limit(cancelled, x)
                 return _power_beats_logarithm(expr, x)
