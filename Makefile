@@ -101,7 +101,7 @@ clean:
 	rm -rf $(VENV) build *.egg-info fuzz-findings site mutants mutants.log
 
 # Mutation testing of the trusted kernel: mutmut (settings in pyproject.toml) mutates
-# uwmr_symbolic/kernel/ and runs the fast kernel tests on each mutant (about 25 min on the
+# uwmr_symbolic/kernel/ and runs the fast kernel tests on each mutant (about 37 min on the
 # 2 shared cores; MUTATE_JOBS workers, default 2), then prints killed / total and the
 # survivors by function; fails below MUTATE_MIN % killed (default 90).  Equivalent
 # survivors: docs/kernel.md, "Mutation testing".

@@ -171,7 +171,8 @@ Why simulation and the real robot differ
   160-200 s are still ~1e-3-1e-2 m, measured ~0.1 m.
 * The RMS of V and W are dominated by the reference (Vr = 0.5, Wr = 1 on the
   circle; RMS Vr = 0.4471, RMS Wr = 0.7549 on the lemniscate), so they agree
-  with the measurements to ~1-2 %; the remaining difference is the robot's
+  with the measurements to within 3 % (2.7-2.9 % for design 2 on the lemniscate,
+  the worst); the remaining difference is the robot's
   residual tracking error.
 * The ranking of the designs by tracking error in Tables 2-3 is a property of
   the real experiment (noise, dynamics), not reproduced by the ideal model,
