@@ -317,6 +317,19 @@ def errors_status(x, y, th, xr, yr, thr):
     """Errors (7) from the measured pose (x, y [m], th [rad]) and the reference
     pose (xr, yr, thr), headings as given (e3 = thr - th, not wrapped);
     elementwise over broadcast arrays: (e1, e2, e3, status)."""
+    x, y, th, xr, yr, thr = (numpy.asarray(v, dtype=float) for v in (x, y, th, xr, yr, thr))
+    with numpy.errstate(all="ignore"):      # first as _errors_core computes them, unbroadcast:
+        c, s = numpy.cos(th), numpy.sin(th)
+        xt, yt = xr - x, yr - y
+        a, b, d = c * xt + s * yt, c * yt - s * xt, (thr - th) + 0.0
+    if numpy.isfinite(a).all() and numpy.isfinite(b).all() and numpy.isfinite(d).all():
+        # a finite a needs finite x, y, th, xr, yr (c xt is not finite where xt is not, c = 0 too)
+        # and a finite d finite th, thr: every input is finite, every status 0
+        shape = numpy.broadcast_shapes(x.shape, y.shape, th.shape, xr.shape, yr.shape, thr.shape)
+        if shape == ():
+            return float(a), float(b), float(d), _E_OK
+        a, b, d = (v if v.shape == shape else numpy.broadcast_to(v, shape).copy() for v in (a, b, d))
+        return a, b, d, numpy.zeros(shape, dtype=int)
     (x, y, th, xr, yr, thr), shape = _flat(x, y, th, xr, yr, thr)
     a, b, d, status = _errors_core(x, y, th, xr, yr, thr, numpy.zeros(x.shape))
     return (_shaped(a, shape), _shaped(b, shape), _shaped(d, shape),
