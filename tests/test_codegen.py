@@ -254,3 +254,6 @@ def test_generated_python_errors_fast_path_is_the_checked_path_bit_for_bit():
     assert type(e1) is float and type(status) is int and status == 0
     assert math.copysign(1.0, e3) == 1.0        # (thr - th) + 2 pi n: (-0 - 0) + 0 = +0, as the C code gives
     assert mod.errors_status(np.zeros(3), 0.0, 0.0, 1.0, 0.0, 0.0)[0].tolist() == [1.0, 1.0, 1.0]
+    # Fortran-ordered input: C-ordered, writable results, as the checked path gives (found by a review)
+    out = mod.errors_status(np.ones((3, 4)).T * 2.0, 0.0, 0.0, 1.0, 1.0, 0.0)
+    assert all(a.flags.c_contiguous and a.flags.writeable and a.shape == (4, 3) for a in out)

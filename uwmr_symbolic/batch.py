@@ -65,7 +65,7 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
             return {**hit, **design_fields(design), "cached": True}
     report = verify_loaded(design, timeout, start, kernel_only)
     result = {**to_dict(report), "certificate": report.certificate}
-    if cache is not None and report.certificate is not None and not {"error", "stopped"} & set(report.kernel):
+    if cache is not None and report.certificate is not None and not {"error", "stopped", "failed"} & set(report.kernel):
         cache.put(key, result, timeout=timeout, timed_out=report.timed_out)
     return {**result, "cached": False}
 

@@ -154,7 +154,12 @@ def check_generated(args) -> int:
         print("uwmr-verify: --check-generated found no design files (run it from the "
               "repository root or name them)", file=sys.stderr)
         return 2
-    problems = stale_files(designs, Path("generated"), orphans=not args.files)    # named files: only theirs
+    from .codegen import CodegenRefused
+    try:
+        problems = stale_files(designs, Path("generated"), orphans=not args.files)    # named files: only theirs
+    except CodegenRefused as exc:           # (only an unusable design: stale_files generates with force)
+        print(f"uwmr-verify: --check-generated: {exc.path}: {'; '.join(exc.reasons)}", file=sys.stderr)
+        return 2
     for line in problems:
         print(line)
     if not problems:
@@ -394,6 +399,9 @@ def main(argv=None) -> int:
               f"(samples of the 100 Hz loop)", file=sys.stderr)
         return 2
     simulate = args.simulate or args.monte_carlo > 0
+    if args.seed is not None and args.seed < 0:
+        print(f"uwmr-verify: --seed must be a non-negative integer, not {args.seed}", file=sys.stderr)
+        return 2
     if not simulate and (args.reference or args.delay or args.seed is not None):
         print("uwmr-verify: --reference, --delay and --seed only make sense with --simulate", file=sys.stderr)
         return 2

@@ -796,12 +796,17 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
     return what, kind == "slope"
 
 
+_PROPERTIES = tuple(f"P{i}" for i in range(1, 9))
+
+
 def _malformed(exc) -> str:
     return f"no entry {exc}" if isinstance(exc, KeyError) else f"{type(exc).__name__}: {exc}"
 
 
 def _check_property(name, entry, f) -> PropertyCheck:
     """Re-check one property's entry of a design certificate against f."""
+    if not (isinstance(entry["unchecked"], list) and all(isinstance(u, str) for u in entry["unchecked"])):
+        raise CertificateError(f"{name}: 'unchecked' must be a list of texts")
     pc = PropertyCheck(name, entry["status"], unchecked=list(entry["unchecked"]))
     if entry["kernel"] is not None:
         try:
@@ -850,6 +855,10 @@ def check(data) -> list[PropertyCheck]:
                                    f"the kernel reads exp, log, sqrt and powers, trigonometric and hyperbolic "
                                    f"functions and their inverses, erf, Abs, Max, Min, Piecewise") from None
         props = data["properties"]
+        names = set(props) if isinstance(props, dict) else set()
+        if not names or not names <= {*_PROPERTIES, "kf"}:
+            raise CertificateError(f"the certificate's properties must be among P1-P8 and kf, and they are "
+                                   f"{', '.join(sorted(names)) or 'none'}")
         out = []
         for name in sorted(props):
             try:

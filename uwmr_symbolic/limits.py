@@ -111,7 +111,7 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
                 # else a product with a sum, distributed: (3 sqrt(x)/2 + x)/x is 3/(2 sqrt(x)) + 1
                 sums = [len(a.args) for a in expr.args if isinstance(a, sp.Add)]
                 cancelled = sp.cancel(expr) if expr.is_rational_function(x) else \
-                    sp.expand_mul(expr) if 0 < sp.prod(sums) <= 64 else expr       # (a bounded number of terms)
+                    sp.expand_mul(expr, deep=False) if sums and sp.prod(sums) <= 64 else expr   # (at most 64 terms)
                 if cancelled != expr:
                     return _limit(cancelled, x)
                 return _power_beats_logarithm(expr, x)

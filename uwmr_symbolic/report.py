@@ -184,8 +184,8 @@ def kernel_text(k: dict) -> str:
     if not k["search"]:
         return f"kernel: re-checked {' '.join(k['checked'])} (every decided verdict)"
     checked = f"re-checked {' '.join(k['checked'])}; " if k["checked"] else ""
-    failed = "".join(f"; the proposer's theorems of {m.split(':')[0]} do not re-check (a bug: please report it)"
-                     for m in k.get("failed", ()))
+    failed = "".join(f"; the checker rejected the proposer's certificate of {name} (a bug: please report it)"
+                     for name, _ in k.get("failed", ()))
     return (f"kernel: {checked}resting on the search alone: {' '.join(k['search'])} (counted only with "
             f"--trust-search; --certificate FILE says why){failed}")
 

@@ -155,14 +155,14 @@ def _kernel_check(search: Report) -> tuple[dict | None, dict]:
     while True:
         try:
             summary = kernel_summary(certificates.check(cert))
-            return cert, summary | ({"failed": failed} if failed else {})
+            return cert, summary | ({"failed": failed} if failed else {})        # [[property, why], ...]
         except certificates.CertificateError as exc:
             entry = cert["properties"].get(getattr(exc, "prop", None))
             if entry is None or entry["kernel"] is None:
                 decided = [p for p, v in search.properties.items() if v.proved or v.refuted]
                 return cert, {"checked": [], "search": decided + (["kf"] if "kf" in cert["properties"] else []),
                               "error": f"the certificate does not re-check: {exc}"}
-            failed.append(str(exc))
+            failed.append([exc.prop, str(exc)])
             entry["kernel"] = None
             what = "the witness of the refutation" if entry["status"] == "refuted" else "the whole argument"
             entry["unchecked"] = [f"{what} (the proposer's kernel theorems do not re-check: {exc})"]

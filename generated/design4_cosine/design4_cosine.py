@@ -345,7 +345,8 @@ def errors_status(x, y, th, xr, yr, thr):
         shape = numpy.broadcast_shapes(x.shape, y.shape, th.shape, xr.shape, yr.shape, thr.shape)
         if shape == ():
             return float(a), float(b), float(d), _E_OK
-        a, b, d = (v if v.shape == shape else numpy.broadcast_to(v, shape).copy() for v in (a, b, d))
+        a, b, d = (numpy.ascontiguousarray(numpy.broadcast_to(v, shape)) if v.shape != shape or not
+                   v.flags.c_contiguous else v for v in (a, b, d))      # C order, as the checked path gives
         return a, b, d, numpy.zeros(shape, dtype=int)
     (x, y, th, xr, yr, thr), shape = _flat(x, y, th, xr, yr, thr)
     a, b, d, status = _errors_core(x, y, th, xr, yr, thr, numpy.zeros(x.shape))

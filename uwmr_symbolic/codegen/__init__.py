@@ -176,6 +176,8 @@ def _gain_notes(gains: dict) -> list[str]:
         if g.W_ok is False:
             broken.append("kf is infinite, so |W| has no bound" if g.W_margin is None else
                           f"|W| bound {float(g.W_bound):.9g} > Wmax (margin {float(g.W_margin):+.3e})")
+        elif broken and g.W_ok is None:
+            broken.append("the |W| part is undecided")
         if broken:
             notes.append(f"the design file's gains {name!r} break bound (10): {'; '.join(broken)}; "
                          f"with them the commands are not promised to stay within the limits.")

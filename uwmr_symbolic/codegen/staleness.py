@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from . import build
+from . import CodegenRefused, build
 
 
 def stale_files(designs, generated_root, orphans: bool = True) -> list[str]:
@@ -14,7 +14,11 @@ def stale_files(designs, generated_root, orphans: bool = True) -> list[str]:
     problems = []
     root = Path(generated_root)
     for path in sorted(Path(p) for p in designs):
-        _, files = build(path, force=True)
+        try:
+            _, files = build(path, force=True)
+        except CodegenRefused as exc:       # with force, only an unusable design file
+            exc.path = path
+            raise
         folder = root / path.stem
         for name, text in sorted(files.items()):
             target = folder / name
