@@ -258,3 +258,26 @@ def test_python_fast_path_is_taken_and_exact(case):
     ref = {k: val[sl][keep] for k, val in case.ref_double.items()}
     assert max(m.max() for m in reference.errors(ref, v, w)[:2]) <= DOUBLE_TOL
     assert max(m.max() for m in reference.errors(ref, cv, cw)[:2]) <= DOUBLE_TOL
+
+
+def test_two_designs_whose_names_differ_only_in_punctuation_link_into_one_program(tmp_path):
+    """`my-design` and `my design` once both became uwmr_my_design_*: two
+    definitions of every function when linked together.  A stem that is not
+    a lower-case C identifier now gets 8 hex digits of its hash."""
+    import subprocess
+    from uwmr_symbolic.codegen import generate
+    from uwmr_symbolic.codegen.c_backend import c_identifier
+    assert c_identifier("design1_jiang") == "design1_jiang"
+    names = ["my-design", "my design", "My_design", "my_design"]
+    assert len({c_identifier(n).upper() for n in names}) == 4       # the macros (upper case) differ too
+    objects = []
+    for n in names[:2]:
+        shutil.copy(ROOT / "designs" / "design1_jiang.py", tmp_path / f"{n}.py")
+        generate(tmp_path / f"{n}.py", tmp_path / n.replace(" ", "_"))
+        obj = tmp_path / f"{n.replace(' ', '_')}.o"
+        subprocess.run(["gcc", "-std=c99", "-O1", "-Wall", "-Wextra", "-Werror", "-c",
+                        str(tmp_path / n.replace(" ", "_") / f"{n}.c"), "-o", str(obj)], check=True)
+        objects.append(str(obj))
+    link = subprocess.run(["gcc", "-shared", *objects, "-o", str(tmp_path / "both.so"), "-lm"],
+                          capture_output=True, text=True)
+    assert link.returncode == 0, link.stderr

@@ -8,6 +8,7 @@ template and differ by the `CConfig` below."""
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 import math
 import re
 from dataclasses import dataclass
@@ -89,8 +90,13 @@ FLOAT = CConfig("float", "_f32", *THRESHOLDS["float"], sinc_cut=2.0 ** -6,
 
 
 def c_identifier(stem: str) -> str:
+    """The C name of a design's functions and (upper-cased) macros: the stem
+    itself when it is a lower-case C identifier; otherwise the stem made
+    one, plus 8 hex digits of its SHA-256, so that `my-design`, `my design`
+    and `My_design` do not clash when linked into one program."""
     ident = re.sub(r"[^0-9A-Za-z_]", "_", stem)
-    return ident if not ident[:1].isdigit() else "d_" + ident
+    ident = ident if not ident[:1].isdigit() else "d_" + ident
+    return ident if ident == stem.lower() == stem else f"{ident}_{hashlib.sha256(stem.encode()).hexdigest()[:8]}"
 
 
 def _indent(lines, n):
