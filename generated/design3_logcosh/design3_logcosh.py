@@ -301,6 +301,14 @@ def _shaped(a, shape):
     return float(a[0]) if shape == () else a.reshape(shape)
 
 
+def _errors_raw(x, y, th, xr, yr, thr, n):
+    """(cos th, sin th, e1, e2, e3) of (7), e3 = (thr - th) + 2 pi n, as
+    computed, with no check (the caller ignores numpy's warnings)."""
+    c, s = numpy.cos(th), numpy.sin(th)
+    xt, yt = xr - x, yr - y
+    return c, s, c * xt + s * yt, c * yt - s * xt, (thr - th) + n * TWO_PI
+
+
 def _errors_core(x, y, th, xr, yr, thr, n):
     """Errors (7) with e3 = (thr - th) + 2 pi n on 1-d arrays: (e1, e2, e3, status).
     Non-finite input: status 2; a result beyond the double range: status 4;
@@ -309,10 +317,7 @@ def _errors_core(x, y, th, xr, yr, thr, n):
     finite = numpy.isfinite(x) & numpy.isfinite(y) & numpy.isfinite(th)
     finite &= numpy.isfinite(xr) & numpy.isfinite(yr) & numpy.isfinite(thr)
     with numpy.errstate(all="ignore"):
-        c, s = numpy.cos(th), numpy.sin(th)
-        xt, yt = xr - x, yr - y
-        a = c * xt + s * yt
-        b = c * yt - s * xt
+        c, s, a, b, d = _errors_raw(x, y, th, xr, yr, thr, n)
         again = finite & ~(numpy.isfinite(a) & numpy.isfinite(b))
         if again.any():
             hx = 0.5 * xr[again] - 0.5 * x[again]
@@ -320,7 +325,6 @@ def _errors_core(x, y, th, xr, yr, thr, n):
             ca, sa = c[again], s[again]
             a[again] = 2.0 * (ca * hx + sa * hy)
             b[again] = 2.0 * (ca * hy - sa * hx)
-        d = (thr - th) + n * TWO_PI
         again = finite & ~numpy.isfinite(d)
         if again.any():
             d[again] = 2.0 * ((0.5 * thr[again] - 0.5 * th[again]) + n[again] * (0.5 * TWO_PI))
@@ -338,10 +342,8 @@ def errors_status(x, y, th, xr, yr, thr):
     pose (xr, yr, thr), headings as given (e3 = thr - th, not wrapped);
     elementwise over broadcast arrays: (e1, e2, e3, status)."""
     x, y, th, xr, yr, thr = (numpy.asarray(v, dtype=float) for v in (x, y, th, xr, yr, thr))
-    with numpy.errstate(all="ignore"):      # first as _errors_core computes them, unbroadcast:
-        c, s = numpy.cos(th), numpy.sin(th)
-        xt, yt = xr - x, yr - y
-        a, b, d = c * xt + s * yt, c * yt - s * xt, (thr - th) + 0.0
+    with numpy.errstate(all="ignore"):      # first as _errors_core computes them, unbroadcast (n = 0)
+        _, _, a, b, d = _errors_raw(x, y, th, xr, yr, thr, 0.0)
     if numpy.isfinite(a).all() and numpy.isfinite(b).all() and numpy.isfinite(d).all():
         # a finite a needs finite x, y, th, xr, yr (c xt is not finite where xt is not, c = 0 too)
         # and a finite d finite th, thr: every input is finite, every status 0
