@@ -147,19 +147,17 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def check_generated(args) -> int:
-    """`--check-generated`: 0 when generated/ is up to date, 1 when stale."""
+    """`--check-generated`: 0 when generated/ is up to date, 1 when stale
+    (UsageError when there is no design file or one is unusable)."""
+    from .codegen import CodegenRefused
     from .codegen.staleness import stale_files
     designs = [Path(p) for p in expand_paths(args.files)] if args.files else sorted(Path("designs").glob("*.py"))
     if not designs:
-        print("uwmr-verify: --check-generated found no design files (run it from the "
-              "repository root or name them)", file=sys.stderr)
-        return 2
-    from .codegen import CodegenRefused
+        raise UsageError("--check-generated found no design files (run it from the repository root or name them)")
     try:
         problems = stale_files(designs, Path("generated"), orphans=not args.files)    # named files: only theirs
     except CodegenRefused as exc:           # (only an unusable design: stale_files generates with force)
-        print(f"uwmr-verify: --check-generated: {exc.path}: {'; '.join(exc.reasons)}", file=sys.stderr)
-        return 2
+        raise UsageError(f"--check-generated: {exc.path}: {'; '.join(exc.reasons)}") from None
     for line in problems:
         print(line)
     if not problems:
@@ -365,67 +363,54 @@ def main(argv=None) -> int:
     args.kernel_only = not args.trust_search
     try:
         settings.apply(args, DEFAULT_TIMEOUT)   # [tool.uwmr-symbolic] in pyproject.toml; flags win
-    except settings.SettingsError as exc:
+        return _main(args)
+    except (settings.SettingsError, UsageError) as exc:     # one line, exit 2
         print(f"uwmr-verify: {exc}", file=sys.stderr)
         return 2
+
+
+def _main(args) -> int:
     if not 0 < args.timeout <= settings.MAX_TIMEOUT:        # (nan fails both)
-        print(f"uwmr-verify: --timeout must be a number of seconds above 0 and at most {settings.MAX_TIMEOUT:g}, "
-              f"not {args.timeout:g}", file=sys.stderr)
-        return 2
+        raise UsageError(f"--timeout must be a number of seconds above 0 and at most {settings.MAX_TIMEOUT:g}, "
+                         f"not {args.timeout:g}")
     if args.jobs is not None and args.jobs < 1:
-        print("uwmr-verify: --jobs must be at least 1", file=sys.stderr)
-        return 2
+        raise UsageError("--jobs must be at least 1")
     designs = [c for c in args.check_certificate or () if c.endswith(".py")]
     if designs:
-        print(f"uwmr-verify: --check-certificate takes certificate files (.json), and {designs[0]} looks like a design "
-              f"file; verify it with `uwmr-verify {designs[0]}`", file=sys.stderr)
-        return 2
+        raise UsageError(f"--check-certificate takes certificate files (.json), and {designs[0]} looks like a design "
+                         f"file; verify it with `uwmr-verify {designs[0]}`")
     if args.check_certificate:
         return check_certificates(args.check_certificate, args.jobs, args.timeout)
     if args.check_generated:
         return check_generated(args)
     if args.force and args.codegen is None:
-        print("uwmr-verify: --force only makes sense with --codegen", file=sys.stderr)
-        return 2
+        raise UsageError("--force only makes sense with --codegen")
     if args.codegen and args.codegen.endswith(".py") and Path(args.codegen).is_file():
-        print(f"uwmr-verify: --codegen takes a folder, and {args.codegen} is a design file; name the design files "
-              f"before the option (uwmr-verify {args.codegen} --codegen) or write --codegen=DIR", file=sys.stderr)
-        return 2
+        raise UsageError(f"--codegen takes a folder, and {args.codegen} is a design file; name the design files "
+                         f"before the option (uwmr-verify {args.codegen} --codegen) or write --codegen=DIR")
     if not args.files:
-        print("uwmr-verify: no design file given (try: uwmr-verify designs/*.py)", file=sys.stderr)
-        return 2
+        raise UsageError("no design file given (try: uwmr-verify designs/*.py)")
     if not 0 <= args.monte_carlo <= MAX_MONTE_CARLO or not 0 <= args.delay <= MAX_DELAY:
-        print(f"uwmr-verify: --monte-carlo must be in 0..{MAX_MONTE_CARLO} and --delay in 0..{MAX_DELAY} "
-              f"(samples of the 100 Hz loop)", file=sys.stderr)
-        return 2
+        raise UsageError(f"--monte-carlo must be in 0..{MAX_MONTE_CARLO} and --delay in 0..{MAX_DELAY} "
+                         f"(samples of the 100 Hz loop)")
     simulate = args.simulate or args.monte_carlo > 0
     if args.seed is not None and args.seed < 0:
-        print(f"uwmr-verify: --seed must be a non-negative integer, not {args.seed}", file=sys.stderr)
-        return 2
+        raise UsageError(f"--seed must be a non-negative integer, not {args.seed}")
     if not simulate and (args.reference or args.delay or args.seed is not None):
-        print("uwmr-verify: --reference, --delay and --seed only make sense with --simulate", file=sys.stderr)
-        return 2
+        raise UsageError("--reference, --delay and --seed only make sense with --simulate")
     if args.trust_search and args.kernel_only_flag:
-        print("uwmr-verify: --trust-search and --kernel-only contradict each other; give one", file=sys.stderr)
-        return 2
+        raise UsageError("--trust-search and --kernel-only contradict each other; give one")
     paths = expand_paths(args.files)
     if not paths:
-        print(f"uwmr-verify: no design files in {', '.join(args.files)} (a folder is read for its *.py files)",
-              file=sys.stderr)
-        return 2
+        raise UsageError(f"no design files in {', '.join(args.files)} (a folder is read for its *.py files)")
     if len(paths) > 1 and (args.codegen is not None or args.certificate):
         stems = {}
         for path in paths:
             other = stems.setdefault(Path(path).stem, path)
             if other != path:
-                print(f"uwmr-verify: {other} and {path} have the same name {Path(path).stem!r}, and --codegen and "
-                      f"--certificate write one folder or file per name; rename one", file=sys.stderr)
-                return 2
-    try:                # before anything is verified or written
-        refs = load_references(args.reference) if simulate else {}
-    except UsageError as exc:
-        print(f"uwmr-verify: {exc}", file=sys.stderr)
-        return 2
+                raise UsageError(f"{other} and {path} have the same name {Path(path).stem!r}, and --codegen and "
+                                 f"--certificate write one folder or file per name; rename one")
+    refs = load_references(args.reference) if simulate else {}      # before anything is verified or written
     cache = None if args.no_cache else ResultCache(args.cache_dir)
     why = cache and cache.unwritable()
     if why:
@@ -440,9 +425,8 @@ def main(argv=None) -> int:
     scenarios = {name for d in results for name in (d.get("gains") or {})}
     unused = sorted(set(refs) - scenarios)
     if unused:
-        print(f"uwmr-verify: --reference {unused[0]}=...: no design has a gain scenario {unused[0]!r} "
-              f"(theirs: {', '.join(sorted(scenarios)) or 'none'})", file=sys.stderr)
-        return 2
+        raise UsageError(f"--reference {unused[0]}=...: no design has a gain scenario {unused[0]!r} "
+                         f"(theirs: {', '.join(sorted(scenarios)) or 'none'})")
     cert_status = write_certificates(paths, results, args.certificate) if args.certificate else 0
     for d in results:
         d.pop("certificate", None)
