@@ -237,6 +237,17 @@ def test_cli_writes_and_rechecks_a_certificate(tmp_path):
                                                     "--timeout 0.001 s (a step ran that long; a larger --timeout "
                                                     "gives it more time)\n"), slow.describe()
     assert slow.stdout == ""
+    # a property the certificate leaves out is named as absent, not passed over in silence
+    del data["properties"]["P5"], data["properties"]["kf"]
+    data["properties"]["P2"] = json.loads(out.read_text())["properties"]["P2"]
+    partial = tmp_path / "partial.json"
+    partial.write_text(json.dumps(data))
+    r = run_cli(["--check-certificate", str(partial)])
+    assert r.returncode == 0, r.describe()
+    assert r.stdout.splitlines()[-2:] == [
+        "  P5: absent (this certificate says nothing about it)",
+        "  kf: absent (a certificate holds kf only when the verifier certified a finite kf)"]
+    assert "P1: proved" in ok.stdout and "absent" not in ok.stdout
 
 
 def test_a_certificate_rechecks_in_a_fresh_process_whatever_form_the_prover_held(tmp_path):

@@ -302,6 +302,7 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
 def _check_one_certificate(name: str, timeout: float = DEFAULT_TIMEOUT) -> tuple[int, str, str]:
     """(status, stdout text, stderr text) of `--check-certificate` for one file."""
     from .design_certificate import CertificateError, check
+    from .properties import PROPERTIES
     from .timeouts import TimeLimit, time_limit
     try:
         text = Path(name).read_text(encoding="utf-8")
@@ -309,12 +310,17 @@ def _check_one_certificate(name: str, timeout: float = DEFAULT_TIMEOUT) -> tuple
         return 2, "", f"{name}: cannot read the certificate: {exc}"
     try:
         with time_limit(timeout):
-            lines = [c.line() for c in check(text)]
+            checks = check(text)
     except CertificateError as exc:
         return 1, "", f"{name}: the certificate does not check: {exc}"
     except TimeLimit:
         return 1, "", (f"{name}: the certificate does not check: not finished within --timeout {timeout:g} s "
                        "(a step ran that long; a larger --timeout gives it more time)")
+    present = {c.name for c in checks}
+    lines = [c.line() for c in checks] + [f"{p}: absent (this certificate says nothing about it)"
+                                          for p in PROPERTIES if p not in present]
+    if "kf" not in present:
+        lines.append("kf: absent (a certificate holds kf only when the verifier certified a finite kf)")
     return 0, "\n".join([f"{name}: certificate re-checked", *("  " + line for line in lines)]), ""
 
 
