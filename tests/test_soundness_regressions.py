@@ -549,3 +549,21 @@ def test_a_power_below_one_plus_a_smooth_term_is_decided_by_the_kernel(tmp_path)
     _, v = verify(tmp_path, "f = rho**Rational(3, 4) + sqrt(1 + rho) - 1\n")
     assert v == {"P1": "refuted", "P2": "proved", "P3": "proved", "P4": "proved", "P5": "proved",
                  "P6": "refuted", "P7": "refuted", "P8": "proved"}
+
+
+@pytest.mark.parametrize("scale", [1, 100])
+def test_a_gaussian_slope_gets_its_kf_from_the_kernel(tmp_path, scale):
+    # F(s) = erf(s^2/c): F' = (4 s/(c sqrt(pi))) exp(-s^4/c^2) > 0, F'' = (4/(c sqrt(pi))) (1 - 4 s^4/c^2)
+    # exp(-s^4/c^2): one maximum, at s^4 = c^2/4, so kf = F'(sqrt(c/2)) = 2 sqrt(2) e^(-1/4)/(sqrt(c pi)),
+    # attained.  F'/s = (4/(c sqrt(pi))) exp(-s^4/c^2) <= 4/(c sqrt(pi)): P6 (h = exp(-rho^2/c^2)); F is
+    # smooth with F'(0) = 0: P1, P7, P8; f -> 1: P3 false.  kf was unknown: for c = 1 the sum
+    # 16 s^4 exp(-s^4) - 4 exp(-s^4) (F'' up to its sign) beyond the peak had no cover within the budget
+    # (taken apart as 4 (4 s^4 - 1) exp(-s^4) now); for c = 100 the peak (s = 7.07) lies beyond where
+    # the search's branch and bound starts its tail, where it then found no bound.
+    report, v = verify(tmp_path, f"f = sp.erf(rho/{scale})\n")
+    assert v == {**{p: "proved" for p in v}, "P3": "refuted"}
+    assert set(report.kernel["checked"]) == {"P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8", "kf"}
+    kf = 2 * sp.sqrt(2) * sp.exp(-sp.Rational(1, 4)) / sp.sqrt(scale * sp.pi)
+    assert sp.simplify(report.kf.exact - kf) == 0 and report.kf.attained
+    dF = [mpmath.diff(lambda x: mpmath.erf(x ** 2 / scale), mpmath.mpf(i) / 400) for i in range(1, 400 * 12)]
+    assert float(kf) - 1e-6 < max(dF) <= float(kf) * (1 + 1e-12)       # sampled F' up to s = 12

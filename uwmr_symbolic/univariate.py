@@ -886,9 +886,12 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
             blind = box.upper_fraction() is None
         except Undefined:
             blind = True
-        if blind and prove_sign(sp.diff(expr, var), var, R, sp.oo, want=-1, lo_open=False,
-                                strict=False, budget=1500).proved:
-            pass   # expr is non-increasing on [R, oo): sup there is expr(R), in the first part
+        # expr non-increasing on [R', oo): sup there is expr(R'), in the first part, now [lo, R']
+        # (a peak beyond R, as of s exp(-s^4/10^4) at s = 7.07: a later R')
+        later = next((r for r in (R, 4 * R, 16 * R, 64 * R) if blind and prove_sign(
+            sp.diff(expr, var), var, r, sp.oo, want=-1, lo_open=False, strict=False, budget=1500).proved), None)
+        if later is not None:
+            parts[0] = ("s", expr, lo, later)
         else:
             parts.append(("t", tail, sp.Integer(0), 1 / R))
     if hi != sp.oo:
