@@ -195,3 +195,71 @@ def test_generation_refuses_code_outside_its_certificate(models, tmp_path, monke
     with pytest.raises(CodegenInvalid, match="outside the certified accuracy"):
         generate(ROOT / "designs" / "design1_jiang.py", out_dir=tmp_path / "out", report=rep)
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("name", ["design1_jiang", "design3_logcosh"])
+def test_term_bound_holds_where_sinc_is_below_the_normal_range(models, name):
+    """e = (0, 1), vr = 1, wr = k1 = k2 = 0: w is the term lam g(0, 1) sin(e3)/e3.
+    For |e3| near the largest number sin(e3)/e3 is subnormal (it lost up to 8
+    digits, an error of 1.2e-10 in double and 7.9e-3 in float was measured,
+    against certified bounds of about 1e-14 and 1e-6), while with a large lam
+    the term is a normal number, where the header certifies it (the term
+    bound of the region of m = 1).  Checked in C (double and float) and in
+    both Python entry points against mpmath."""
+    import mpmath
+    from uwmr_symbolic.codegen.validate import load_module
+    rep, model = models[name]
+    _, files = build(ROOT / "designs" / f"{name}.py", report=rep)
+    g = mp_g(rep.design, 0.0, 1.0)
+    for cfg, e3s, lam in ((DOUBLE, [1.000066427752305e308, 1.7976931348623157e308, -9e307], 1e10),
+                          (FLOAT, [1.0156026172643704e38, 3.4028234663852886e38, -2e38], 1e6)):
+        rows = np.zeros((len(e3s), 8))
+        rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 7] = 1.0, e3s, 1.0, lam
+        if cfg is FLOAT:
+            rows = rows.astype(np.float32).astype(np.float64)
+        with mpmath.workdps(60):
+            exact = [float(lam * g * mpmath.sin(mpmath.mpf(e3)) / mpmath.mpf(e3)) for e3 in rows[:, 2]]
+        assert all(abs(x) > accuracy.MIN_NORMAL[cfg.precision] for x in exact)    # the term is normal
+        bound = next(r.term for r in certify(model, cfg.precision, cfg.sinc_cut).certified
+                     if r.m_range[0] <= 1.0 <= r.m_range[1])
+        w, st = _measured_g(files, model.stem, rows, cfg is FLOAT)
+        results = [("C " + cfg.precision, w, st)]
+        if cfg is DOUBLE:
+            with tempfile.TemporaryDirectory() as tmp:
+                (Path(tmp) / f"{model.stem}.py").write_text(files[f"{model.stem}.py"])
+                mod = load_module(Path(tmp) / f"{model.stem}.py", model.stem)
+            cols = [rows[:, i] for i in range(8)]
+            results += [("Python control_status", *mod.control_status(*cols)[1:]),
+                        ("Python control", mod.control(*cols)[1], np.zeros(len(rows)))]
+        for what, got, status in results:
+            for x, y, s in zip(exact, got, status):
+                assert s == 0 and abs(y - x) <= bound * abs(x), (what, x, y, bound)
+
+
+def test_python_fast_path_never_clamps_an_overflow_into_a_finite_w(tmp_path):
+    """f = log(1 + rho): H = F'(s)/s = 2/(1 + rho) is 2 > KF = 1 near the
+    origin, so lam vr H overflows where lam |vr| KF does not.  The fast path
+    of `control` clamped that inf to lam |vr| KF (1e308 at the first row,
+    exact 1.92e305) and returned it; it must take the careful path, which
+    agrees with `control_status` and with the exact law (mpmath)."""
+    import mpmath
+    from uwmr_symbolic.codegen import generate
+    from uwmr_symbolic.codegen.validate import load_module
+    design = tmp_path / "logrho.py"
+    design.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nf = sp.log(1 + e1**2 + e2**2)\n")
+    generate(design, out_dir=tmp_path / "out")
+    mod = load_module(tmp_path / "out" / "logrho.py", "logrho")
+    rows = [(1e-3, 1e-3, 0.5, 1e154, 0.0, 0.0, 0.0, 1e154),
+            (0.7, 0.7, math.pi, 1.0, 0.0, 0.0, 0.0, 1.7976931348623157e308),
+            (1e-50, 1e-50, 0.5, 1.0, 0.0, 0.0, 0.0, 1.7976931348623157e308)]
+    for e1, e2, e3, vr, wr, k1, k2, lam in rows:
+        with mpmath.workdps(60):
+            E1, E2, E3, LV = (mpmath.mpf(x) for x in (e1, e2, e3, lam))
+            exact = float(LV * vr * 2 * E2 / (1 + E1 ** 2 + E2 ** 2) * mpmath.sin(E3) / E3)
+        assert math.isfinite(exact)
+        for entry in (mod.control, lambda *a: mod.control_status(*a)[:2]):
+            w = entry(e1, e2, e3, vr, wr, k1, k2, lam)[1]
+            assert abs(w - exact) <= 1e-14 * abs(exact), (e1, e3, lam, w, exact)
+        # the same rows as arrays (the fast path is tried on whole arrays)
+        w = mod.control(*[np.full(3, x) for x in (e1, e2, e3, vr, wr, k1, k2, lam)])[1]
+        assert np.all(np.abs(w - exact) <= 1e-14 * abs(exact))

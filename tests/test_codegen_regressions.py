@@ -246,3 +246,34 @@ def test_a_tiny_scale_generates_and_validates(tmp_path):
     rows = _law_rows([(0.0, 1e15), (3.0, -4.0), (1e20, 1e10), (0.0, 1e-3)])
     _, mod, _ = _check_all(path, tmp_path, rows, rows)
     assert abs(mod.KF - 1e-15) <= 1e-15 * 1e-9
+
+
+def test_a_result_just_beyond_the_largest_number_rounds_to_it_not_to_inf(tmp_path):
+    """The reference rounds as IEEE does: an exact value between the largest
+    finite number and it plus half an ulp (2^1024 - 2^970; float 2^128 -
+    2^103) rounds to that number, so a code result of it with status 0 is
+    right.  The reference used to call every value beyond the largest number
+    an overflow, and refused f = (1 + rho^2)^(1/4) - 1, a proved design:
+    at e2 = -DBL_MAX, lam = DBL_MAX, vr = 1, wr = -1 the exact w is about
+    -(DBL_MAX + 1)."""
+    import flint
+    big = 1.7976931348623157e308
+    old, flint.ctx.prec = flint.ctx.prec, 256          # as `reference.table` evaluates
+    try:
+        top = flint.arb(2) ** 1024 - flint.arb(2) ** 970
+        assert reference._to_float(top) == np.inf and reference._to_float(-top) == -np.inf
+        assert reference._to_float(top - 1) == big and reference._to_float(-(flint.arb(big) + 1)) == -big
+    finally:
+        flint.ctx.prec = old
+    ftop = 2.0 ** 128 - 2.0 ** 103
+    ref = {"v_hi": np.array([0.0, 0.0, 0.0]), "v_lo": np.zeros(3), "scale_v": np.ones(3), "scale_w": np.ones(3),
+           "w_hi": np.array([3.4028234663852886e38 * (1 + 2.0 ** -26), np.nextafter(ftop, 0), ftop]),
+           "w_lo": np.zeros(3)}
+    assert list(reference.errors(ref, np.zeros(3), np.zeros(3), "float")[2]) == [False, False, True]
+    design = tmp_path / "quarter.py"
+    design.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\n"
+                      "f = (1 + (e1**2 + e2**2)**2)**sp.Rational(1, 4) - 1\n")
+    lib, mod = _generated(design, tmp_path)
+    row = np.array([[0.5, -big, 0.0, 1.0, -1.0, 0.25, 0.7, big]])
+    v, w, st = lib.run(row)
+    assert st[0] == 0 and abs(w[0] + big) <= 1e-12 * big      # (within an ulp of -DBL_MAX: the validation)

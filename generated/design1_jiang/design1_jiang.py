@@ -62,6 +62,7 @@ _TINY, _FAR = 1e-100, 10000.0
 _TINY2, _FAR2 = 1e-200, 100000000.0
 _SINC_CUT = 0.000244140625
 _DMIN = 2.2250738585072014e-308
+_SINC_SHIFT, _SINC_UP = 512, 1.3407807929942597e+154
 _DMAX = 1.7976931348623157e+308
 
 def _H0(rho):
@@ -72,19 +73,28 @@ def _D0(tt):
 
 
 def _sinc(e3):
+    """(sinc, shift) with sin(e3)/e3 = sinc 2^shift: shift = -S where
+    sin(e3)/e3 is below the normal range (|e3| near the largest number,
+    digits lost), then sinc = sin(e3) 2^S/e3, exact and normal (the C
+    careful path's)."""
     a3 = numpy.abs(e3)
     small = a3 < _SINC_CUT
-    if not numpy.any(small):
-        return numpy.sin(e3) / e3
     d = numpy.where(small, 1.0, e3)
+    s3 = numpy.sin(d)
     z = e3 * e3
-    return numpy.where(small, 1.0 - z * (1.0 / 6.0 - z * (1.0 / 120.0)), numpy.sin(d) / d)
+    sinc = numpy.where(small, 1.0 - z * (1.0 / 6.0 - z * (1.0 / 120.0)), s3 / d)
+    shift = numpy.zeros(e3.shape, dtype=numpy.int64)
+    low = numpy.abs(sinc) < _DMIN
+    if low.any():
+        sinc[low] = (s3[low] * _SINC_UP) / d[low]
+        shift[low] = -_SINC_SHIFT
+    return sinc, shift
 
 
-def _prod(xs):
-    """Product of equally shaped arrays, guarded like the C `prod`."""
+def _prod(xs, shift):
+    """Product of equally shaped arrays times 2^shift, guarded like the C `prod`."""
     p = xs[0]
-    ok = numpy.ones(p.shape, dtype=bool)
+    ok = shift == 0
     for x in xs[1:]:
         p = p * x
         ok &= numpy.abs(p) >= _DMIN
@@ -92,7 +102,7 @@ def _prod(xs):
     if not ok.all():
         bad = ~ok
         mant = numpy.ones(int(bad.sum()))
-        ex = numpy.zeros(mant.shape, dtype=numpy.int64)
+        ex = shift[bad].copy()
         zero = numpy.zeros(mant.shape, dtype=bool)
         for x in xs:
             xb = x[bad]
@@ -113,8 +123,8 @@ def _H(rho):
     return _H0(rho)
 
 
-def _gterm_careful(e1, e2, lam, vr, sinc):
-    """lam vr df/de2 sinc for finite 1-d arrays, region by region."""
+def _gterm_careful(e1, e2, lam, vr, sinc, shift):
+    """lam vr df/de2 sinc 2^shift for finite 1-d arrays, region by region."""
     out = numpy.zeros(e1.shape)
     a1, a2 = numpy.abs(e1), numpy.abs(e2)
     m = numpy.maximum(a1, a2)
@@ -122,7 +132,7 @@ def _gterm_careful(e1, e2, lam, vr, sinc):
     if mid.any():
         x1, x2 = e1[mid], e2[mid]
         rho = x1 * x1 + x2 * x2
-        out[mid] = _prod([lam[mid], vr[mid], sinc[mid], x2, _H(rho)])
+        out[mid] = _prod([lam[mid], vr[mid], sinc[mid], x2, _H(rho)], shift[mid])
     other = ~mid & (m > 0)
     if not other.any():
         return out
@@ -131,7 +141,7 @@ def _gterm_careful(e1, e2, lam, vr, sinc):
     r = numpy.sqrt(1.0 + q * q)
     ir = 1.0 / r
     x2 = e2[other]
-    lo, vo, so = lam[other], vr[other], sinc[other]
+    lo, vo, so, sho = lam[other], vr[other], sinc[other], shift[other]
     res = numpy.zeros(mo.shape)
     tiny = mo < _TINY
     if tiny.any():
@@ -139,7 +149,7 @@ def _gterm_careful(e1, e2, lam, vr, sinc):
         mt, rt = mo[tiny], r[tiny]
         c = (x2[tiny] / mt) * ir[tiny]
         res[tiny] = _prod([lo[tiny], vo[tiny], so[tiny], c, numpy.full(mt.shape, 1.0)]
-                          + [mt] * 1 + [rt] * 1)
+                          + [mt] * 1 + [rt] * 1, sho[tiny])
     far = ~tiny
     if far.any():
         im, irf = 1.0 / mo[far], ir[far]
@@ -150,16 +160,20 @@ def _gterm_careful(e1, e2, lam, vr, sinc):
         if sel.any():
             ims, irs = im[sel], irf[sel]
             fres[sel] = _prod([lo[far][sel], vo[far][sel], so[far][sel], x2[far][sel], ims, irs,
-                               _D0(tt[sel])] + [ims, irs] * 1)
+                               _D0(tt[sel])] + [ims, irs] * 1,
+                              sho[far][sel])
         res[far] = fres
     out[other] = res
     return out
 
 
 def _normal(x):
-    """True when every element of x is a normal number or +-inf (inf is caught
-    by the final test); False for a zero, a subnormal or a NaN."""
+    """True when every element of x is a finite normal number; False for a
+    zero, a subnormal, an infinity or a NaN (an infinite q would be clamped to
+    a finite lam |vr| KF by `_bounded`, and pass the final test)."""
     lo, hi = numpy.min(x), numpy.max(x)
+    if not (-_DMAX <= lo and hi <= _DMAX):
+        return False
     return bool(lo >= _DMIN or hi <= -_DMIN or numpy.min(numpy.abs(x)) >= _DMIN)
 
 
@@ -170,7 +184,8 @@ def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
 
     Tests (reductions only): gains >= 0; TINY^2 <= rho <= FAR^2 (the
     mid-region form; a NaN or inf in e1, e2 fails); lam vr normal; q = lam vr H
-    sinc normal (a zero e3 gives NaN and fails), so that only the last product
+    sinc and lam vr H sinc finite normal numbers (a zero e3 gives NaN and
+    fails; so does a sin(e3)/e3 below the normal range), so that only the last product
     q e2 may underflow; v and w finite (any other NaN or inf input, or an
     overflow, shows there: the sums of v and of w are finite).  Within these,
     the result is the careful path's mid-region formula without its guards.
@@ -189,6 +204,8 @@ def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
         q *= _H(rho)
         numpy.sin(e3, out=a)
         a /= e3
+        if not _normal(a):
+            return None
         q *= a
         if not _normal(q):
             return None
@@ -230,8 +247,8 @@ def _careful(e1, e2, e3, vr, wr, k1, k2, lam):
     good = status == OK
     e1, e2, e3, vr, wr, k1, k2, lam = (numpy.where(good, a, 0.0) for a in x)
     with numpy.errstate(all="ignore"):
-        sinc = _sinc(e3)
-        p = _bounded(_gterm_careful(e1, e2, lam, vr, sinc), lam, vr)
+        sinc, shift = _sinc(e3)
+        p = _bounded(_gterm_careful(e1, e2, lam, vr, sinc, shift), lam, vr)
         c3, t1, t3 = numpy.cos(e3), numpy.tanh(e1), numpy.tanh(e3)
         v = vr * c3 + k1 * t1
         w = wr + p + k2 * t3
@@ -241,7 +258,8 @@ def _careful(e1, e2, e3, vr, wr, k1, k2, lam):
             v[again] = 2.0 * (0.5 * vr[again] * c3[again] + 0.5 * k1[again] * t1[again])
         again = ~numpy.isfinite(w)
         if again.any():
-            ph = _bounded(_gterm_careful(e1[again], e2[again], 0.5 * lam[again], vr[again], sinc[again]),
+            ph = _bounded(_gterm_careful(e1[again], e2[again], 0.5 * lam[again], vr[again], sinc[again],
+                                         shift[again]),
                           0.5 * lam[again], vr[again])
             w[again] = 2.0 * (0.5 * wr[again] + ph + 0.5 * k2[again] * t3[again])
     status[good & ~(numpy.isfinite(v) & numpy.isfinite(w))] = ERR_RANGE

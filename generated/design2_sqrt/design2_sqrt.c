@@ -16,13 +16,14 @@
 /* ---- double precision ---------------------------------------------------------- */
 #ifndef UWMR_NO_DOUBLE   /* define it to build the float variant alone */
 
-/* x[0] * ... * x[n-1] when a plain product of them leaves the normal range
- * somewhere (an overflow, an underflow, a zero): mantissas and exponents are
- * multiplied separately, so the result is right whenever it is representable. */
-static double prod_slow(const double *x, int n)
+/* x[0] * ... * x[n-1] * 2^shift when a plain product of them leaves the
+ * normal range somewhere (an overflow, an underflow, a zero), or shift != 0:
+ * mantissas and exponents are multiplied separately, so the result is right
+ * whenever it is representable. */
+static double prod_slow(const double *x, int n, int shift)
 {
     double mant = 1.0;
-    int i, ex = 0, e;
+    int i, ex = shift, e;
     for (i = 0; i < n; ++i) {
         if (x[i] == 0.0) {
             return 0.0;
@@ -41,8 +42,8 @@ static double prod_slow(const double *x, int n)
     return ldexp(mant, ex);
 }
 
-/* lam vr df/de2(e1, e2) sinc(e3) for finite inputs */
-static double gterm_law(double e1, double e2, double lam, double vr, double sinc)
+/* lam vr df/de2(e1, e2) sinc(e3) 2^shift for finite inputs */
+static double gterm_law(double e1, double e2, double lam, double vr, double sinc, int shift)
 {
     const double a1 = fabs(e1), a2 = fabs(e2);
     const double m = a1 > a2 ? a1 : a2;
@@ -54,11 +55,11 @@ static double gterm_law(double e1, double e2, double lam, double vr, double sinc
             const double p2 = p1 * sinc;
             const double p3 = p2 * e2;
             const double p4 = p3 * H;
-            if ((fabs(p1) >= DBL_MIN) & (fabs(p2) >= DBL_MIN) & (fabs(p3) >= DBL_MIN) & (fabs(p4) >= DBL_MIN) & (fabs(p4) <= DBL_MAX)) {
+            if ((shift == 0) & (fabs(p1) >= DBL_MIN) & (fabs(p2) >= DBL_MIN) & (fabs(p3) >= DBL_MIN) & (fabs(p4) >= DBL_MIN) & (fabs(p4) <= DBL_MAX)) {
                 return p4;
             } else {
                 const double x[5] = {lam, vr, sinc, e2, H};
-                return prod_slow(x, 5);
+                return prod_slow(x, 5, shift);
             }
         }
     }
@@ -78,11 +79,11 @@ static double gterm_law(double e1, double e2, double lam, double vr, double sinc
             const double p4 = p3 * 1.0;
             const double p5 = p4 * m;
             const double p6 = p5 * r;
-            if ((fabs(p1) >= DBL_MIN) & (fabs(p2) >= DBL_MIN) & (fabs(p3) >= DBL_MIN) & (fabs(p4) >= DBL_MIN) & (fabs(p5) >= DBL_MIN) & (fabs(p6) >= DBL_MIN) & (fabs(p6) <= DBL_MAX)) {
+            if ((shift == 0) & (fabs(p1) >= DBL_MIN) & (fabs(p2) >= DBL_MIN) & (fabs(p3) >= DBL_MIN) & (fabs(p4) >= DBL_MIN) & (fabs(p5) >= DBL_MIN) & (fabs(p6) >= DBL_MIN) & (fabs(p6) <= DBL_MAX)) {
                 return p6;
             } else {
                 const double x[7] = {lam, vr, sinc, c, 1.0, m, r};
-                return prod_slow(x, 7);
+                return prod_slow(x, 7, shift);
             }
         }
         {
@@ -97,11 +98,11 @@ static double gterm_law(double e1, double e2, double lam, double vr, double sinc
                 const double p4 = p3 * im;
                 const double p5 = p4 * ir;
                 const double p6 = p5 * D;
-                if ((fabs(p1) >= DBL_MIN) & (fabs(p2) >= DBL_MIN) & (fabs(p3) >= DBL_MIN) & (fabs(p4) >= DBL_MIN) & (fabs(p5) >= DBL_MIN) & (fabs(p6) >= DBL_MIN) & (fabs(p6) <= DBL_MAX)) {
+                if ((shift == 0) & (fabs(p1) >= DBL_MIN) & (fabs(p2) >= DBL_MIN) & (fabs(p3) >= DBL_MIN) & (fabs(p4) >= DBL_MIN) & (fabs(p5) >= DBL_MIN) & (fabs(p6) >= DBL_MIN) & (fabs(p6) <= DBL_MAX)) {
                     return p6;
                 } else {
                     const double x[7] = {lam, vr, sinc, e2, im, ir, D};
-                    return prod_slow(x, 7);
+                    return prod_slow(x, 7, shift);
                 }
             }
         }
@@ -112,9 +113,9 @@ static double gterm_law(double e1, double e2, double lam, double vr, double sinc
  * KF, |sinc| <= 1): the clamp only moves a rounded value towards it, and
  * bound (10) then holds within the rounding of the final sums.  Where lam vr
  * is not a normal number its rounding is too coarse for a cap: no clamp. */
-static double gterm(double e1, double e2, double lam, double vr, double sinc)
+static double gterm(double e1, double e2, double lam, double vr, double sinc, int shift)
 {
-    const double x = gterm_law(e1, e2, lam, vr, sinc);
+    const double x = gterm_law(e1, e2, lam, vr, sinc, shift);
     const double lv = fabs(lam * vr);
     return lv >= DBL_MIN ? fmin(fmax(x, -lv * UWMR_DESIGN2_SQRT_KF), lv * UWMR_DESIGN2_SQRT_KF) : x;
 }
@@ -133,6 +134,7 @@ static int careful(double e1, double e2, double e3, double vr, double wr,
                    const uwmr_design2_sqrt_gains *gains, double *v, double *w)
 {
     double k1, k2, lam, sinc, c3, t1, t3, vv, ww;
+    int shift = 0;
     if (v != NULL) {
         *v = 0.0;
     }
@@ -156,19 +158,27 @@ static int careful(double e1, double e2, double e3, double vr, double wr,
         const double z = e3 * e3;
         sinc = 1.0 - z * (0.16666666666666666 - z * 0.008333333333333333);
     } else {
-        sinc = sin(e3) / e3;   /* (kept apart from cos: glibc's sincos is slower) */
+        const double s3 = sin(e3);   /* (kept apart from cos: glibc's sincos is slower) */
+        sinc = s3 / e3;
+        if (fabs(sinc) < DBL_MIN) {
+            /* below the normal range sin(e3)/e3 has lost digits (|e3| near the
+             * largest number): sinc 2^512, exact, normal (|sin| >= 2^-61),
+             * and the factor 2^-512 enters the product as an exponent */
+            sinc = (s3 * 1.3407807929942597e+154) / e3;
+            shift = -512;
+        }
     }
     c3 = cos(e3);
     t1 = tanh(e1);
     t3 = tanh(e3);
     vv = vr * c3 + k1 * t1;
-    ww = wr + gterm(e1, e2, lam, vr, sinc) + k2 * t3;
+    ww = wr + gterm(e1, e2, lam, vr, sinc, shift) + k2 * t3;
     if (!isfinite(vv)) {
         /* a term overflowed: the sum may still be finite */
         vv = 2.0 * (0.5 * vr * c3 + 0.5 * k1 * t1);
     }
     if (!isfinite(ww)) {
-        ww = 2.0 * (0.5 * wr + gterm(e1, e2, 0.5 * lam, vr, sinc) + 0.5 * k2 * t3);
+        ww = 2.0 * (0.5 * wr + gterm(e1, e2, 0.5 * lam, vr, sinc, shift) + 0.5 * k2 * t3);
     }
     if (!(isfinite(vv) && isfinite(ww))) {
         return UWMR_ERR_RANGE;
@@ -342,13 +352,14 @@ int uwmr_design2_sqrt_step(uwmr_design2_sqrt_tracker *tracker, const uwmr_design
 
 /* ---- float precision ---------------------------------------------------------- */
 
-/* x[0] * ... * x[n-1] when a plain product of them leaves the normal range
- * somewhere (an overflow, an underflow, a zero): mantissas and exponents are
- * multiplied separately, so the result is right whenever it is representable. */
-static float prod_slow_f32(const float *x, int n)
+/* x[0] * ... * x[n-1] * 2^shift when a plain product of them leaves the
+ * normal range somewhere (an overflow, an underflow, a zero), or shift != 0:
+ * mantissas and exponents are multiplied separately, so the result is right
+ * whenever it is representable. */
+static float prod_slow_f32(const float *x, int n, int shift)
 {
     float mant = 1.0F;
-    int i, ex = 0, e;
+    int i, ex = shift, e;
     for (i = 0; i < n; ++i) {
         if (x[i] == 0.0F) {
             return 0.0F;
@@ -367,8 +378,8 @@ static float prod_slow_f32(const float *x, int n)
     return ldexpf(mant, ex);
 }
 
-/* lam vr df/de2(e1, e2) sinc(e3) for finite inputs */
-static float gterm_law_f32(float e1, float e2, float lam, float vr, float sinc)
+/* lam vr df/de2(e1, e2) sinc(e3) 2^shift for finite inputs */
+static float gterm_law_f32(float e1, float e2, float lam, float vr, float sinc, int shift)
 {
     const float a1 = fabsf(e1), a2 = fabsf(e2);
     const float m = a1 > a2 ? a1 : a2;
@@ -380,11 +391,11 @@ static float gterm_law_f32(float e1, float e2, float lam, float vr, float sinc)
             const float p2 = p1 * sinc;
             const float p3 = p2 * e2;
             const float p4 = p3 * H;
-            if ((fabsf(p1) >= FLT_MIN) & (fabsf(p2) >= FLT_MIN) & (fabsf(p3) >= FLT_MIN) & (fabsf(p4) >= FLT_MIN) & (fabsf(p4) <= FLT_MAX)) {
+            if ((shift == 0) & (fabsf(p1) >= FLT_MIN) & (fabsf(p2) >= FLT_MIN) & (fabsf(p3) >= FLT_MIN) & (fabsf(p4) >= FLT_MIN) & (fabsf(p4) <= FLT_MAX)) {
                 return p4;
             } else {
                 const float x[5] = {lam, vr, sinc, e2, H};
-                return prod_slow_f32(x, 5);
+                return prod_slow_f32(x, 5, shift);
             }
         }
     }
@@ -404,11 +415,11 @@ static float gterm_law_f32(float e1, float e2, float lam, float vr, float sinc)
             const float p4 = p3 * 1.0F;
             const float p5 = p4 * m;
             const float p6 = p5 * r;
-            if ((fabsf(p1) >= FLT_MIN) & (fabsf(p2) >= FLT_MIN) & (fabsf(p3) >= FLT_MIN) & (fabsf(p4) >= FLT_MIN) & (fabsf(p5) >= FLT_MIN) & (fabsf(p6) >= FLT_MIN) & (fabsf(p6) <= FLT_MAX)) {
+            if ((shift == 0) & (fabsf(p1) >= FLT_MIN) & (fabsf(p2) >= FLT_MIN) & (fabsf(p3) >= FLT_MIN) & (fabsf(p4) >= FLT_MIN) & (fabsf(p5) >= FLT_MIN) & (fabsf(p6) >= FLT_MIN) & (fabsf(p6) <= FLT_MAX)) {
                 return p6;
             } else {
                 const float x[7] = {lam, vr, sinc, c, 1.0F, m, r};
-                return prod_slow_f32(x, 7);
+                return prod_slow_f32(x, 7, shift);
             }
         }
         {
@@ -423,11 +434,11 @@ static float gterm_law_f32(float e1, float e2, float lam, float vr, float sinc)
                 const float p4 = p3 * im;
                 const float p5 = p4 * ir;
                 const float p6 = p5 * D;
-                if ((fabsf(p1) >= FLT_MIN) & (fabsf(p2) >= FLT_MIN) & (fabsf(p3) >= FLT_MIN) & (fabsf(p4) >= FLT_MIN) & (fabsf(p5) >= FLT_MIN) & (fabsf(p6) >= FLT_MIN) & (fabsf(p6) <= FLT_MAX)) {
+                if ((shift == 0) & (fabsf(p1) >= FLT_MIN) & (fabsf(p2) >= FLT_MIN) & (fabsf(p3) >= FLT_MIN) & (fabsf(p4) >= FLT_MIN) & (fabsf(p5) >= FLT_MIN) & (fabsf(p6) >= FLT_MIN) & (fabsf(p6) <= FLT_MAX)) {
                     return p6;
                 } else {
                     const float x[7] = {lam, vr, sinc, e2, im, ir, D};
-                    return prod_slow_f32(x, 7);
+                    return prod_slow_f32(x, 7, shift);
                 }
             }
         }
@@ -438,9 +449,9 @@ static float gterm_law_f32(float e1, float e2, float lam, float vr, float sinc)
  * KF, |sinc| <= 1): the clamp only moves a rounded value towards it, and
  * bound (10) then holds within the rounding of the final sums.  Where lam vr
  * is not a normal number its rounding is too coarse for a cap: no clamp. */
-static float gterm_f32(float e1, float e2, float lam, float vr, float sinc)
+static float gterm_f32(float e1, float e2, float lam, float vr, float sinc, int shift)
 {
-    const float x = gterm_law_f32(e1, e2, lam, vr, sinc);
+    const float x = gterm_law_f32(e1, e2, lam, vr, sinc, shift);
     const float lv = fabsf(lam * vr);
     return lv >= FLT_MIN ? fminf(fmaxf(x, -lv * UWMR_DESIGN2_SQRT_KF_F32), lv * UWMR_DESIGN2_SQRT_KF_F32) : x;
 }
@@ -459,6 +470,7 @@ static int careful_f32(float e1, float e2, float e3, float vr, float wr,
                        const uwmr_design2_sqrt_gains_f32 *gains, float *v, float *w)
 {
     float k1, k2, lam, sinc, c3, t1, t3, vv, ww;
+    int shift = 0;
     if (v != NULL) {
         *v = 0.0F;
     }
@@ -482,19 +494,27 @@ static int careful_f32(float e1, float e2, float e3, float vr, float wr,
         const float z = e3 * e3;
         sinc = 1.0F - z * (0.16666667F - z * 0.008333334F);
     } else {
-        sinc = sinf(e3) / e3;   /* (kept apart from cos: glibc's sincos is slower) */
+        const float s3 = sinf(e3);   /* (kept apart from cos: glibc's sincos is slower) */
+        sinc = s3 / e3;
+        if (fabsf(sinc) < FLT_MIN) {
+            /* below the normal range sin(e3)/e3 has lost digits (|e3| near the
+             * largest number): sinc 2^100, exact, normal (|sin| >= 2^-28.2),
+             * and the factor 2^-100 enters the product as an exponent */
+            sinc = (s3 * 1.2676506e+30F) / e3;
+            shift = -100;
+        }
     }
     c3 = cosf(e3);
     t1 = tanhf(e1);
     t3 = tanhf(e3);
     vv = vr * c3 + k1 * t1;
-    ww = wr + gterm_f32(e1, e2, lam, vr, sinc) + k2 * t3;
+    ww = wr + gterm_f32(e1, e2, lam, vr, sinc, shift) + k2 * t3;
     if (!isfinite(vv)) {
         /* a term overflowed: the sum may still be finite */
         vv = 2.0F * (0.5F * vr * c3 + 0.5F * k1 * t1);
     }
     if (!isfinite(ww)) {
-        ww = 2.0F * (0.5F * wr + gterm_f32(e1, e2, 0.5F * lam, vr, sinc) + 0.5F * k2 * t3);
+        ww = 2.0F * (0.5F * wr + gterm_f32(e1, e2, 0.5F * lam, vr, sinc, shift) + 0.5F * k2 * t3);
     }
     if (!(isfinite(vv) && isfinite(ww))) {
         return UWMR_ERR_RANGE;

@@ -716,7 +716,10 @@ def _template(prec, reg, E_term):
 
 
 def sinc_error(prec, cut) -> arb:
-    """sin(e3)/e3 (|e3| >= cut) or 1 - z (1/6 - z/120), z = e3^2 (|e3| < cut)."""
+    """sin(e3)/e3 (|e3| >= cut) or 1 - z (1/6 - z/120), z = e3^2 (|e3| < cut).
+    Where sin(e3)/e3 would be below the normal range the code divides sin(e3)
+    2^S instead (exact, normal: `law.SINC_SHIFT`) and multiplies 2^-S in by
+    exponents, exactly: the same two roundings, on a normal number."""
     u = arb(fmpq(1, 2 ** (53 if prec == "double" else 24)))
     direct = (1 + LIBM_U["sin"] * u) * (1 + u) - 1
     z = arb(cut) ** 2

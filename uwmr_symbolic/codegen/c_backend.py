@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .law import LT, RHO, ST, THRESHOLDS, LawModel, mid_h_bounds
+from .law import LT, RHO, SIN_MIN, SINC_SHIFT, ST, THRESHOLDS, LawModel, mid_h_bounds
 from .printers import CPrinter, cse_lines
 from .. import e1 as E1, e2 as E2
 from ..univariate import T
@@ -138,19 +138,21 @@ def _chain(branches, var, cfg, body):
 
 
 def _product(cfg, factors, name):
-    """Multiply the factors in order; if a partial product leaves the normal
-    range (or a factor is 0) call the exponent-splitting `prod_slow`."""
+    """Multiply the factors in order, times 2^shift (shift != 0 only for a
+    sin(e3)/e3 below the normal range, passed scaled: see the template's
+    `careful`); if a partial product leaves the normal range (or a factor is
+    0), or shift != 0, call the exponent-splitting `prod_slow`."""
     n = len(factors)
     t = cfg.ctype
     lines = [f"const {t} p1 = {factors[0]} * {factors[1]};"]
     for i in range(2, n):
         lines.append(f"const {t} p{i} = p{i - 1} * {factors[i]};")
-    checks = " & ".join(f"(fabs{cfg.fn}(p{i}) >= {cfg.limit}_MIN)" for i in range(1, n))
+    checks = " & ".join(["(shift == 0)"] + [f"(fabs{cfg.fn}(p{i}) >= {cfg.limit}_MIN)" for i in range(1, n)])
     lines += [f"if ({checks} & (fabs{cfg.fn}(p{n - 1}) <= {cfg.limit}_MAX)) {{",
               f"    return p{n - 1};",
               "} else {",
               f"    const {t} {name}[{n}] = {{{', '.join(factors)}}};",
-              f"    return prod_slow{cfg.suffix}({name}, {n});",
+              f"    return prod_slow{cfg.suffix}({name}, {n}, shift);",
               "}"]
     return lines
 
@@ -320,6 +322,8 @@ def render(env, model: LawModel, context: dict) -> dict[str, str]:
                              cap=kf_cap(model, cfg),
                              rho_cmp=model.radial and len(model.mid) > 1,
                              tiny=cfg.lit(cfg.tiny), far=cfg.lit(cfg.far), cut=cfg.lit(cfg.sinc_cut),
+                             sinc_shift=SINC_SHIFT[base.precision], sinc_up=cfg.lit(2 ** SINC_SHIFT[base.precision]),
+                             sin_min=SIN_MIN[base.precision],
                              zero=cfg.lit(0), one=cfg.lit(1), two=cfg.lit(2), half=cfg.lit(sp.Rational(1, 2)), huge="HUGE_VALF" if cfg.precision == "float" else "HUGE_VAL", c6=cfg.lit(sp.Rational(1, 6)),
                              c120=cfg.lit(sp.Rational(1, 120)), pi=cfg.lit(sp.pi), two_pi=cfg.lit(2 * sp.pi),
                              heading_max="UWMR_HEADING_MAX" + cfg.suffix.upper(),

@@ -53,6 +53,14 @@ ST = sp.Symbol("st", positive=True)
 #: overflow (rho <= 2 FAR**2) and makes t <= 1/FAR small in the tail forms.
 THRESHOLDS = {"double": (1e-100, 1e4), "float": (1e-12, 1e4)}
 
+#: The careful path passes a sin(e3)/e3 below the normal range (|e3| near the
+#: largest number: digits lost) as sin(e3) 2^S/e3 and multiplies 2^-S in by
+#: exponents (`prod_slow`): exact, and normal since |sin(x)| >= SIN_MIN for
+#: every x of the type with |x| >= the series cut (doubles: Kahan/McDonald;
+#: floats: 3.2e-9, at x = 1.5458358e29, by enumeration of all floats >= 2^-6).
+SINC_SHIFT = {"double": 512, "float": 100}
+SIN_MIN = {"double": "2^-61", "float": "2^-28.2"}
+
 
 @dataclass
 class Branch:

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .law import LT, RHO, ST, THRESHOLDS, LawModel
+from .law import LT, RHO, SINC_SHIFT, ST, THRESHOLDS, LawModel
 from .printers import PyPrinter, cse_lines, double_literal
 from .. import e1 as E1, e2 as E2
 from ..univariate import T
@@ -56,7 +56,8 @@ def render(env, model: LawModel, context: dict, config: PythonConfig | None = No
     ctx = dict(context, cfg=config, radial=model.radial,
                tiny_lit=double_literal(config.tiny), far_lit=double_literal(config.far),
                tiny2=double_literal(config.tiny ** 2), far2=double_literal(config.far ** 2),
-               cut=double_literal(config.sinc_cut))
+               cut=double_literal(config.sinc_cut), sinc_shift=SINC_SHIFT["double"],
+               sinc_up=double_literal(2.0 ** SINC_SHIFT["double"]))
     if not model.radial:
         functions += _function("_g_general", "e1, e2", model.general, pr)
         ctx.update(functions=functions, needs_scipy=any("scipy." in ln for ln in functions))

@@ -235,11 +235,22 @@ LIMITS = {"double": (2.2250738585072014e-308, 1.7976931348623157e308),
           "float": (1.1754943508222875e-38, 3.4028234663852886e38)}
 
 
+#: Where rounding to nearest overflows, as a double: inf for double (its
+#: threshold 2^1024 - 2^970, the largest double plus half its ulp, is no
+#: double: `_to_float` applies it), 2^128 - 2^103 for float (an exact double).
+OVERFLOW = {"double": math.inf, "float": 2.0 ** 127 * (2 - 2.0 ** -24)}
+_DOUBLE_TOP = 2 ** 1024 - 2 ** 970
+
+
 def _to_float(x) -> float:
-    """Nearest double of an arb's midpoint (+-inf beyond the double range)."""
+    """Nearest double of an arb's midpoint, rounded as IEEE does: +-inf from
+    2^1024 - 2^970 on, the largest double between that and the largest double."""
     m = x.mid()
     if abs(m) > flint.arb(1.7976931348623157e308):
-        return math.inf if m > 0 else -math.inf
+        man, exp = m.man_exp()                  # the exact dyadic midpoint
+        mag = abs(int(man))
+        beyond = (mag << exp) >= _DOUBLE_TOP if exp >= 0 else mag >= _DOUBLE_TOP << -exp
+        return math.copysign(math.inf if beyond else 1.7976931348623157e308, int(man))
     return float(m)
 
 
@@ -289,12 +300,13 @@ def table_parallel(design_path, inputs: np.ndarray, procs: int = 2) -> dict:
 def errors(ref: dict, v, w, precision: str = "double"):
     """(err_v, err_w, over): relative errors |computed - exact| / scale with
     the scale floored at the precision's smallest normal number, and `over`
-    where an exact |v| or |w| exceeds its largest finite number (the code must
-    then report a range error; the errors there are set to 0)."""
-    floor, limit = LIMITS[precision]
+    where an exact |v| or |w| rounds to infinity in the precision (`OVERFLOW`:
+    the code must then report a range error; the errors there are set to 0)."""
+    floor, _ = LIMITS[precision]
     v = np.asarray(v, dtype=float)
     w = np.asarray(w, dtype=float)
-    over = ~(np.abs(ref["v_hi"]) <= limit) | ~(np.abs(ref["w_hi"]) <= limit)
+    top = OVERFLOW[precision]
+    over = ~(np.abs(ref["v_hi"]) < top) | ~(np.abs(ref["w_hi"]) < top)
     with np.errstate(all="ignore"):
         ev = np.abs((v - ref["v_hi"]) - ref["v_lo"]) / np.maximum(ref["scale_v"], floor)
         ew = np.abs((w - ref["w_hi"]) - ref["w_lo"]) / np.maximum(ref["scale_w"], floor)
