@@ -567,3 +567,42 @@ def test_a_gaussian_slope_gets_its_kf_from_the_kernel(tmp_path, scale):
     assert sp.simplify(report.kf.exact - kf) == 0 and report.kf.attained
     dF = [mpmath.diff(lambda x: mpmath.erf(x ** 2 / scale), mpmath.mpf(i) / 400) for i in range(1, 400 * 12)]
     assert float(kf) - 1e-6 < max(dF) <= float(kf) * (1 + 1e-12)       # sampled F' up to s = 12
+
+
+def test_a_sup_reached_only_where_f_jumps_is_not_called_attained(tmp_path):
+    # f = log(1 + rho) except 0 on the circle rho = 1: |df/de2| = 2 |e2|/(1 + rho) < 1 wherever the
+    # partials exist (off the circle: 2 s/(1 + s^2) = 1 only at s = 1); on the circle f jumps, so there
+    # are no partials there.  kf = sup = 1, approached, never attained (it was reported attained).
+    # The same f continuous at s = 1 (C^1 join of log(1 + rho) with itself) attains it there.
+    report, _ = verify(tmp_path, "f = Piecewise((log(1 + rho), sp.Ne(rho, 1)), (0, True))\n",
+                       kernel_only=False)
+    assert report.kf.exact == 1 and report.kf.attained is not True
+    report, _ = verify(tmp_path, "f = Piecewise((log(1 + rho), rho <= 1), (log(1 + rho), True))\n",
+                       kernel_only=False)
+    assert report.kf.exact == 1 and report.kf.attained is True
+
+
+def test_a_gaussian_beside_a_logarithm_gets_its_kf_from_the_kernel(tmp_path):
+    # F = log(1 + s^2) + 1 - exp(-s^2): F' = 2 s/(1 + s^2) + 2 s exp(-s^2) > 0, F'(0) = 0, F' -> 0 at oo,
+    # one maximum (about 1.8193598 at s = 0.6); F'/s = 2/(1 + s^2) + 2 exp(-s^2) <= 4 (P6); smooth: all of
+    # P1-P8 hold.  kf was unknown: beyond R the tail in t = 1/s holds t^-1 exp(-t^-2), which interval
+    # arithmetic cannot enclose at t = 0; F'' is now signed with its exp(-s^2) terms grouped,
+    # 2 (1 - s^2)/(1 + s^2)^2 + 2 (1 - 2 s^2) exp(-s^2) <= 0 beyond s = 1, so F' falls beyond R.
+    report, v = verify(tmp_path, "f = log(1 + rho) + 1 - sp.exp(-rho)\n")
+    assert v == {p: "proved" for p in v} and set(report.kernel["checked"]) == {*v, "kf"}
+    dF = lambda s: 2 * s / (1 + s ** 2) + 2 * s * mpmath.exp(-s ** 2)     # noqa: E731
+    s_max = mpmath.findroot(lambda s: mpmath.diff(dF, s), 0.6)
+    assert report.kf.lower <= Fraction(str(mpmath.nstr(dF(s_max), 30))) <= report.kf.upper
+
+
+def test_an_exponential_beats_a_power_in_the_limit_calculus():
+    # t^-m exp(-c/t^k) -> 0 as t -> 0+ (c > 0, k > 0), with the power's sign; nothing is claimed for
+    # exp(+1/t) t (-> oo) or beyond the powers tried
+    from uwmr_symbolic.limits import NoLimit, limit_right
+    t = sp.Symbol("t", positive=True)
+    assert limit_right(sp.exp(-1 / t ** 2) / t, t) == Lim(0, 1)
+    assert limit_right(-sp.exp(-1 / t) / t ** 3, t) == Lim(0, -1)
+    assert limit_right(sp.exp(-2 / sp.sqrt(t)) * (1 + 1 / t), t) == Lim(0, 1)
+    for e in (t * sp.exp(1 / t), sp.exp(-1 / t ** 2) * sp.sin(1 / t) / t):
+        with pytest.raises(NoLimit):
+            limit_right(e, t)

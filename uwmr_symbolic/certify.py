@@ -865,24 +865,25 @@ def _common_factors(e):
     """e with the factors common to its terms taken out (`factor_terms`, no
     polynomial factoring): 16 s^4 exp(-s^4) - 4 exp(-s^4) = 4 (4 s^4 - 1)
     exp(-s^4), whose sign is that of its factors on any interval, where a
-    cover of the sum needs boxes narrower than 1/s^3.  Else the terms that
-    share their exponentials are so grouped, the rest left as they are:
-    2 (1 - s^2)/(1 + s^2)^2 + 2 exp(-s^2) - 4 s^2 exp(-s^2) as the first term
-    plus 2 (1 - 2 s^2) exp(-s^2), each of one sign beyond s = 1 (the grouped
-    form's tail in t = 1/s, exp(-1/t^2) (1 - 2/t^2), is signed factor by
-    factor, the sum's is not: 2/t^2 exp(-1/t^2) has no enclosure near t = 0).
-    e itself when nothing is common."""
+    cover of the sum needs boxes narrower than 1/s^3.  Else, expanded, the
+    terms that share their exponentials grouped and factored, and those with
+    none over one denominator: 2 s (-2 s exp(-s^2) - 2 s/(s^2 + 1)^2) +
+    2 exp(-s^2) + 2/(s^2 + 1) (F'' of log(1 + s^2) + 1 - exp(-s^2)) as
+    2 (1 - s^2)/(s^2 + 1)^2 + 2 (1 - 2 s^2) exp(-s^2), both parts negative
+    beyond s = 1, while in t = 1/s the sum's t^-2 exp(-t^-2) has no
+    enclosure at t = 0.  e itself when nothing is gained."""
     f = sp.factor_terms(e)
     c, rest = f.as_coeff_Mul()
     if not rest.is_Add:
         return f if f.is_Mul else e
     groups = {}
-    for t in rest.args:
+    for t in sp.Add.make_args(sp.expand(rest)):
         key = frozenset(a for a in sp.Mul.make_args(t) if isinstance(a, sp.exp) and a.free_symbols)
-        groups.setdefault(key or t, []).append(t)
-    if len(groups) == len(rest.args):
+        groups.setdefault(key, []).append(t)
+    if len(groups) < 2:
         return e
-    return sp.Add(*[c * sp.factor_terms(sp.Add(*ts)) for ts in groups.values()])
+    parts = [sp.together(sp.Add(*ts)) if not key else sp.factor_terms(sp.Add(*ts)) for key, ts in groups.items()]
+    return sp.Add(*[c * p for p in parts])
 
 
 def _increasing_difference(e, var):

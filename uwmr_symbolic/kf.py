@@ -200,6 +200,20 @@ def _continued_at(exprs, pieces, point, value) -> bool:
     return True
 
 
+def _value_continued_at(profile, point) -> bool:
+    """F itself continuous at a boundary: its one-sided limits there and its
+    value there (the branch taken at the point) agree.  Where F jumps, f has
+    no partial derivatives on that circle, so a sup of |F'| reached only
+    there as a one-sided limit is not attained (f = log(1 + rho) except 0 on
+    rho = 1: kf = 1 at s = 1, not attained)."""
+    values = [one_sided_value(p.expr, point, side) for p in profile.pieces
+              for end, side in ((p.lo, +1), (p.hi, -1)) if end == point]
+    if point in profile.at_point:
+        values.append(exact_value(profile.at_point[point], S, point))
+    return all(v is not None and v not in (sp.oo, -sp.oo) for v in values) and \
+        all(exact_sign(v - values[0]) == 0 for v in values[1:])
+
+
 def _quick_lower(exprs, pieces):
     """The largest lower bound of the sup that the values at a few inner
     points of each piece give (None if none): a floor for the pieces that
@@ -293,7 +307,8 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
             # a one-sided limit at a piece end is a value only where the
             # neighbouring piece (or the origin) continues it
             attained = True if (piece.lo < point < piece.hi or point == 0 or
-                                _continued_at(exprs, pieces, point, value)) else None
+                                _continued_at(exprs, pieces, point, value)
+                                and _value_continued_at(analysis.profile, point)) else None
         else:
             attained = False if strict else None
         where = f"at s = {point}" if point is not None else "approached as s -> oo"

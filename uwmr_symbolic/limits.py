@@ -114,7 +114,10 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
                     sp.expand_mul(expr, deep=False) if sums and sp.prod(sums) <= 64 else expr   # (at most 64 terms)
                 if cancelled != expr:
                     return _limit(cancelled, x)
-                return _power_beats_logarithm(expr, x)
+                try:
+                    return _power_beats_logarithm(expr, x)
+                except NoLimit:
+                    return _exponential_beats_power(expr, x)
         lim = _add(limits)
         if lim.side is None and not lim.infinite and sign_of(lim.value) == 0:
             lim = Lim(lim.value, _polynomial_side(expr, x))
@@ -169,6 +172,36 @@ def _power_beats_logarithm(expr, x) -> Lim:
     for q in _RATES:
         try:
             scaled = _limit(rest * x ** -q, x)
+        except NoLimit:
+            continue
+        if not scaled.infinite:
+            return Lim(sp.Integer(0), _eventual_sign(_limit(rest, x)))
+    raise NoLimit("0 * inf")
+
+
+def _exponential_beats_power(expr, x) -> Lim:
+    """lim of the product expr = E * R, E the factors exp(g) with g x^k ->
+    L < 0 for some k > 0 (so g <= L/(2 x^k) near 0+), R the rest: when
+    R x^m has a finite limit for some m >= 0, |E R| <= C x^-m exp(L/(2 x^k))
+    -> 0, and E R has R's eventual sign (E > 0): exp(-1/x^2)/x -> 0+."""
+    def fast(a):
+        if not isinstance(a, sp.exp):
+            return False
+        for k in (*_RATES[::-1], 2, 4, 8):
+            try:
+                lim = _limit(a.args[0] * x ** k, x)
+            except NoLimit:
+                continue
+            if not lim.infinite and sign_of(lim.value) < 0:
+                return True
+        return False
+    quick = [a for a in expr.args if fast(a)]
+    rest = sp.Mul(*[a for a in expr.args if a not in quick])
+    if not quick:
+        raise NoLimit("0 * inf")
+    for m in (0, 1, 2, 4, 8, 16, 32):
+        try:
+            scaled = _limit(rest * x ** m, x)
         except NoLimit:
             continue
         if not scaled.infinite:
