@@ -606,3 +606,12 @@ def test_an_exponential_beats_a_power_in_the_limit_calculus():
     for e in (t * sp.exp(1 / t), sp.exp(-1 / t ** 2) * sp.sin(1 / t) / t):
         with pytest.raises(NoLimit):
             limit_right(e, t)
+
+
+def test_growth_like_a_power_is_tried_at_its_own_rate_first(tmp_path):
+    # F = (1 + s^2)^(1/3) + (1 + s^2)^(1/4) - 2 > 0 for s > 0 and ~ s^(2/3) -> oo: P3 (all of P1-P8 hold:
+    # F' = (2/3) s (1 + s^2)^(-2/3) + (1/2) s (1 + s^2)^(-3/4) > 0, bounded, F'/s <= 2/3 + 1/2, smooth).
+    # F -> oo rested on the search: the proposer tried the rate s F' >= k first (true, but its proof
+    # spent the budget); the rate s^(1/2) F' >= k, the one F's growth suggests, is now tried first
+    report, v = verify(tmp_path, "f = (1 + rho)**Rational(1, 3) + (1 + rho)**Rational(1, 4) - 2\n")
+    assert v == {p: "proved" for p in v} and "P3" in report.kernel["checked"]

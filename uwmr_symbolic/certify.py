@@ -1414,11 +1414,26 @@ def _tail_first(prover, e, var, R, want=1, strict=False, depth=0):
 _POWER_RATES = (sp.Rational(1, 2), sp.Rational(1, 4))     # F ~ s^p: F' s^(1-p) >= k (`diverges_by_growth`)
 
 
+def _growth_exponent(F, var, R):
+    """log(F(64 R)/F(R))/log 64 by Arb at 64 bits, a guess of p in F ~ s^p
+    (it only orders the rates `_diverges` tries); None when not positive."""
+    try:
+        a, b = (float(evaluate(F, var, x, x, bits=64).lo.mid()) for x in (R, 64 * R))
+    except (Undefined, ValueError, OverflowError):
+        return None
+    return math.log(b / a) / math.log(64) if a > 0 and b > a else None
+
+
 def _diverges(F, var, starts) -> list:
     d = derivative(F, var)
     prover = Prover(_scaled(WORK, d))        # one budget for every attempt
+    rates = [("linear", d), ("log", var * d), *((p, var ** (1 - p) * d) for p in _POWER_RATES)]
+    grow = _growth_exponent(F, var, starts[-1])
+    if grow is not None:     # the likeliest rate first (s^(2/3) + ...: 1/2, not log, whose proof spent the budget)
+        rates.sort(key=lambda r: 0 if r[0] == "linear" and grow > 0.95 else
+                   1 if r[0] not in ("linear", "log") and r[0] < grow - 0.05 else 2 if r[0] == "log" else 3)
     for R in starts:
-        for rate, g in (("linear", d), ("log", var * d), *((p, var ** (1 - p) * d) for p in _POWER_RATES)):
+        for rate, g in rates:
             try:
                 lo = float(evaluate(g, var, R, R, bits=128).lo.lower())
             except Undefined:
