@@ -232,6 +232,11 @@ def test_bound_10_where_g_reaches_kf(tmp_path):
     rows = _law_rows([(0.0, x) for x in e2])
     for who, (v, w, st) in (("C double", lib.run(rows)), ("Python", mod.control_status(*rows.T))):
         assert (st == 0).all() and w.max() <= 21.0 and w.max() >= 21.0 * (1 - 1e-12), (who, w.max())
+    # Python's fast path (e3 = 0 takes the careful one): sin(1e-10)/1e-10 rounds to 1, the same rows
+    fast = rows.copy()
+    fast[:, 2] = 1e-10
+    w = mod.control(*fast.T)[1]
+    assert w.max() <= 21.0 and w.max() >= 21.0 * (1 - 1e-12), w.max()
     xf = np.array([np.float32(10.498237609863281), np.float32(10.5)]
                   + [np.float32(10.5) * np.float32(1 + k * 2.0 ** -16) for k in range(-3000, 3001)], dtype=np.float64)
     v, w, st = lib.run(_law_rows([(0.0, x) for x in xf]), f32=True)

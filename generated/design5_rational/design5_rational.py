@@ -200,7 +200,6 @@ def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
         if not _normal(q):
             return None
         q *= e2
-        q = _bounded(q, lam, vr)
         v = numpy.cos(e3, out=a)
         v *= vr
         t = numpy.tanh(e1, out=rho)
