@@ -897,11 +897,9 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
             later = next((r for r in (R, 4 * R, 16 * R, 64 * R) if sign_theorems(
                 -sp.diff(expr, var), var, r, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None),
                 None)
-        if later is None and blind:
-            tail_bound = _bound_by_sign_rules(expr, var, R, floor)
         if later is not None:
             parts[0] = ("s", expr, lo, later)
-        elif tail_bound is None:
+        else:
             parts.append(("t", tail, sp.Integer(0), 1 / R))
     if hi != sp.oo:
         parts.append(("s", expr, lo, hi))
@@ -979,29 +977,6 @@ TAIL_DEGREE = 400      # `_bound_on_tail` leaves larger rational functions to th
 #: rules for on a tail it cannot enclose: a sixth of a lemma's, so that a
 #: design's budget is left to its properties' own lemmas
 TAIL_WORK = 10_000
-
-
-def _bound_by_sign_rules(expr, var, R, floor) -> Fraction | None:
-    """A c with expr <= c on [R, oo) by the kernel's sign rules on c - expr
-    (`certify.sign_theorems`), for a tail whose form in t = 1/s interval
-    arithmetic cannot enclose: c just below `floor`, else just above the limit
-    at oo (s/sqrt(1 + s^2) + 2 s exp(-s^2) rises to 1 there); None when
-    neither is shown."""
-    from .certify import sign_theorems
-    try:
-        lim = limit_at_infinity(expr, var)
-    except NoLimit:
-        lim = None
-    cands = [] if floor is None else [decimal_beyond(floor - max(abs(floor), Fraction(1, 10 ** 30)) / 10 ** 9,
-                                                     -1, 10)]
-    if lim is not None and lim.is_number and lim.is_finite:
-        v = value_at(lim, var, 0, prec=128).upper_fraction()
-        if v is not None:
-            cands.append(decimal_beyond(v + max(abs(v), Fraction(1, 10 ** 30)) / 10 ** 6, 1, 10))
-    for c in cands:
-        if sign_theorems(c - expr, var, R, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None:
-            return Fraction(c.p, c.q)
-    return None
 
 
 def _bound_on_tail(expr, var, R, floor) -> Fraction | None:
