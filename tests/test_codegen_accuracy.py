@@ -263,3 +263,25 @@ def test_python_fast_path_never_clamps_an_overflow_into_a_finite_w(tmp_path):
         # the same rows as arrays (the fast path is tried on whole arrays)
         w = mod.control(*[np.full(3, x) for x in (e1, e2, e3, vr, wr, k1, k2, lam)])[1]
         assert np.all(np.abs(w - exact) <= 1e-14 * abs(exact))
+
+
+def test_printed_bounds_are_never_below_the_certified_ones(models):
+    """The header rounds each certified bound up to two digits (it rounded to
+    nearest: design 3's term bound 4.3xe-14 printed as 4.3e-14), and the ends
+    of a range NOT CERTIFIED outwards (8.507e37 printed as 8.51e37 left
+    8.507e37..8.51e37 promised)."""
+    import re
+    from uwmr_symbolic.codegen.accuracy import _above, _range
+    assert [_above(x) for x in (3.34e-15, 4.301e-14, 9.97e-7, 2.5e-15)] == ["3.4e-15", "4.4e-14", "1e-06", "2.5e-15"]
+    assert _range(8.507059e37, 1e39, widen=True) == "m > 8.5e+37"
+    assert _range(1.234e-5, 5.678e3, widen=True) == "1.23e-05 <= m <= 5.68e+03"
+    _, model = models["design3_logcosh"]
+    for cfg in (DOUBLE, FLOAT):
+        acc = certify(model, cfg.precision, cfg.sinc_cut)
+        text = " ".join(acc.lines())
+        printed = lambda what: float(re.search(what + r" <= ([0-9.e+-]+)", text).group(1))   # noqa: E731
+        assert printed(r"\|g\^ - g\|") >= acc.g
+        assert printed(r"\|term\^ - term\|") >= max(r.term for r in acc.certified)
+        assert printed(r"\|v\^ - v\|") >= acc.v and printed(r"\|w\^ - w\|") >= acc.w
+        for r in acc.certified:
+            assert float(re.search(re.escape(r.where) + r": g within ([0-9.e+-]+?)\.( |$)", text).group(1)) >= r.g

@@ -40,13 +40,13 @@ and math-library functions within these ulps: acosh 4, asinh 4, atan 4,
 atanh 4, cos 4, cosh 4, erf 4, erfc 10, exp 4, expm1 4, gamma 10, log 4,
 log1p 4, pow 4, sin 4, sinh 4, tanh 10.  g = df/de2(e1, e2) as computed,
 term = lam vr g sin(e3)/e3.
-  double: |g^ - g| <= 6.2e-15 |g| and |term^ - term| <= 7.7e-15 |term|
-    where the term is a normal number; |v^ - v| <= 2.4e-15 (|vr| + k1) +
-    8.9e-308, |w^ - w| <= 7.9e-15 (|wr| + lam |vr| KF + k2) + 8.9e-308
-    (the absolute terms: underflow).
-      0 < m < 1e-100: g within 2.4e-15.
+  double: |g^ - g| <= 6.3e-15 |g| and |term^ - term| <= 7.7e-15 |term|
+    where the term is a normal number; |v^ - v| <= 2.5e-15 (|vr| + k1) +
+    9e-308, |w^ - w| <= 7.9e-15 (|wr| + lam |vr| KF + k2) + 9e-308 (the
+    absolute terms: underflow).
+      0 < m < 1e-100: g within 2.5e-15.
       1e-100 <= m <= 1e+04: g within 5.6e-16.
-      m > 1e+04: g within 6.2e-15.
+      m > 1e+04: g within 6.3e-15.
 """
 import numpy
 

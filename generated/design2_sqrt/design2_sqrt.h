@@ -110,17 +110,17 @@ extern "C" {
  * atanh 4, cos 4, cosh 4, erf 4, erfc 10, exp 4, expm1 4, gamma 10, log 4,
  * log1p 4, pow 4, sin 4, sinh 4, tanh 10.  g = df/de2(e1, e2) as computed,
  * term = lam vr g sin(e3)/e3.
- *   double: |g^ - g| <= 3.3e-15 |g| and |term^ - term| <= 4.8e-15 |term|
- *     where the term is a normal number; |v^ - v| <= 2.4e-15 (|vr| + k1) +
- *     8.9e-308, |w^ - w| <= 5e-15 (|wr| + lam |vr| KF + k2) + 8.9e-308
- *     (the absolute terms: underflow).
- *       0 < m < 1e-100: g within 2.4e-15.
+ *   double: |g^ - g| <= 3.4e-15 |g| and |term^ - term| <= 4.8e-15 |term|
+ *     where the term is a normal number; |v^ - v| <= 2.5e-15 (|vr| + k1) +
+ *     9e-308, |w^ - w| <= 5e-15 (|wr| + lam |vr| KF + k2) + 9e-308 (the
+ *     absolute terms: underflow).
+ *       0 < m < 1e-100: g within 2.5e-15.
  *       1e-100 <= m <= 1e+04: g within 5e-16.
- *       m > 1e+04: g within 3.3e-15.
- *   float (_f32): |g^ - g| <= 7.2e-07 |g| and |term^ - term| <= 1.4e-06
- *     |term| where the term is a normal number; |v^ - v| <= 1.3e-06 (|vr|
- *     + k1) + 4.7e-38, |w^ - w| <= 1.5e-06 (|wr| + lam |vr| KF + k2) +
- *     4.7e-38 (the absolute terms: underflow).
+ *       m > 1e+04: g within 3.4e-15.
+ *   float (_f32): |g^ - g| <= 7.2e-07 |g| and |term^ - term| <= 1.5e-06
+ *     |term| where the term is a normal number; |v^ - v| <= 1.4e-06 (|vr|
+ *     + k1) + 4.8e-38, |w^ - w| <= 1.6e-06 (|wr| + lam |vr| KF + k2) +
+ *     4.8e-38 (the absolute terms: underflow).
  *       0 < m < 1e-12: g within 7.2e-07.
  *       1e-12 <= m <= 1e+04: g within 2.7e-07.
  *       m > 1e+04: g within 6.3e-07.

@@ -108,9 +108,9 @@ extern "C" {
  * log1p 4, pow 4, sin 4, sinh 4, tanh 10.  g = df/de2(e1, e2) as computed,
  * term = lam vr g sin(e3)/e3.
  *   double outside the ranges marked NOT CERTIFIED: |g^ - g| <= 4.2e-14
- *     |g| and |term^ - term| <= 4.3e-14 |term| where the term is a normal
- *     number; |v^ - v| <= 2.4e-15 (|vr| + k1) + 8.9e-308, |w^ - w| <=
- *     4.4e-14 (|wr| + lam |vr| KF + k2) + 8.9e-308 (the absolute terms:
+ *     |g| and |term^ - term| <= 4.4e-14 |term| where the term is a normal
+ *     number; |v^ - v| <= 2.5e-15 (|vr| + k1) + 9e-308, |w^ - w| <=
+ *     4.4e-14 (|wr| + lam |vr| KF + k2) + 9e-308 (the absolute terms:
  *     underflow).
  *       0 < m < 1e-100: g within 4.6e-15.
  *       1e-100 <= m <= 1e+04: g within 4.2e-14.
@@ -118,13 +118,13 @@ extern "C" {
  *       NOT CERTIFIED for m > 4.49e+307: a partial product may overflow.
  *   float (_f32) outside the ranges marked NOT CERTIFIED: |g^ - g| <=
  *     3.9e-06 |g| and |term^ - term| <= 4.6e-06 |term| where the term is a
- *     normal number; |v^ - v| <= 1.3e-06 (|vr| + k1) + 4.7e-38, |w^ - w|
- *     <= 4.7e-06 (|wr| + lam |vr| KF + k2) + 4.7e-38 (the absolute terms:
+ *     normal number; |v^ - v| <= 1.4e-06 (|vr| + k1) + 4.8e-38, |w^ - w|
+ *     <= 4.8e-06 (|wr| + lam |vr| KF + k2) + 4.8e-38 (the absolute terms:
  *     underflow).
- *       0 < m < 1e-12: g within 1.3e-06.
+ *       0 < m < 1e-12: g within 1.4e-06.
  *       1e-12 <= m <= 1e+04: g within 3.9e-06.
- *       m > 1e+04 (except as listed): g within 1.9e-06.
- *       NOT CERTIFIED for m > 8.51e+37: a partial product may overflow.
+ *       m > 1e+04 (except as listed): g within 2e-06.
+ *       NOT CERTIFIED for m > 8.5e+37: a partial product may overflow.
  * No dynamic memory, no mutable global state; reentrant (a tracker belongs
  * to one control loop).  libm may set errno on an underflow inside the
  * computation.  The gain field was called `lambda` before uwmr-symbolic

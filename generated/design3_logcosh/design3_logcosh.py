@@ -41,9 +41,9 @@ atanh 4, cos 4, cosh 4, erf 4, erfc 10, exp 4, expm1 4, gamma 10, log 4,
 log1p 4, pow 4, sin 4, sinh 4, tanh 10.  g = df/de2(e1, e2) as computed,
 term = lam vr g sin(e3)/e3.
   double outside the ranges marked NOT CERTIFIED: |g^ - g| <= 4.2e-14
-    |g| and |term^ - term| <= 4.3e-14 |term| where the term is a normal
-    number; |v^ - v| <= 2.4e-15 (|vr| + k1) + 8.9e-308, |w^ - w| <=
-    4.4e-14 (|wr| + lam |vr| KF + k2) + 8.9e-308 (the absolute terms:
+    |g| and |term^ - term| <= 4.4e-14 |term| where the term is a normal
+    number; |v^ - v| <= 2.5e-15 (|vr| + k1) + 9e-308, |w^ - w| <=
+    4.4e-14 (|wr| + lam |vr| KF + k2) + 9e-308 (the absolute terms:
     underflow).
       0 < m < 1e-100: g within 4.6e-15.
       1e-100 <= m <= 1e+04: g within 4.2e-14.

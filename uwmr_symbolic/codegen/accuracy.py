@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal
 
 import flint
 import sympy as sp
@@ -463,12 +464,12 @@ class Accuracy:
         if not self.certified:
             return [f"{name}: no accuracy certified ({self.regions[0].reason if self.regions else 'f is not radial'})."]
         where = " outside the ranges marked NOT CERTIFIED" if self.uncertified else ""
-        out = [f"{name}{where}: |g^ - g| <= {self.g:.2g} |g| and |term^ - term| <= "
-               f"{max(r.term for r in self.certified):.2g} |term| where the term is a normal number; "
-               f"|v^ - v| <= {self.v:.2g} (|vr| + k1) + {self.absolute:.2g}, |w^ - w| <= {self.w:.2g} "
-               f"(|wr| + lam |vr| KF + k2) + {self.absolute:.2g} (the absolute terms: underflow)."]
+        out = [f"{name}{where}: |g^ - g| <= {_above(self.g)} |g| and |term^ - term| <= "
+               f"{_above(max(r.term for r in self.certified))} |term| where the term is a normal number; "
+               f"|v^ - v| <= {_above(self.v)} (|vr| + k1) + {_above(self.absolute)}, |w^ - w| <= {_above(self.w)} "
+               f"(|wr| + lam |vr| KF + k2) + {_above(self.absolute)} (the absolute terms: underflow)."]
         for r in self.certified:
-            out.append(f"  {r.where}: g within {r.g:.2g}.")
+            out.append(f"  {r.where}: g within {_above(r.g)}.")
         for r in self.uncertified:
             out.append(f"  NOT CERTIFIED for {r.where}: {r.reason}.")
         return out
@@ -476,6 +477,17 @@ class Accuracy:
 
 def _fmt(x) -> str:
     return f"{float(x):.3g}"
+
+
+def _above(x, digits: int = 2, rounding=ROUND_CEILING) -> str:
+    """x > 0 with `digits` significant digits, rounded up (`rounding`
+    ROUND_FLOOR: down): a printed bound is never below the certified one
+    (3.34e-15 prints as 3.4e-15, not 3.3e-15)."""
+    d = Decimal(float(x))
+    if d <= 0 or not d.is_finite():
+        return f"{float(x):.{digits}g}"
+    e = d.adjusted() - (digits - 1)
+    return f"{float(d.scaleb(-e).to_integral_value(rounding=rounding).scaleb(e)):.{digits}g}"
 
 
 def _geometric_boxes(lo: float, hi: float, ratio: float = 16.0):
@@ -745,13 +757,14 @@ def certify(model: LawModel, precision: str, sinc_cut: float) -> Accuracy:
             try:
                 E, bad = run()
             except Uncertified as exc:
-                acc.regions.append(RegionAccuracy(name, _range(lo, hi), None, reason=str(exc), m_range=(lo, hi)))
+                acc.regions.append(RegionAccuracy(name, _range(lo, hi, widen=True), None, reason=str(exc),
+                                                  m_range=(lo, hi)))
                 continue
             term = _up(_products([arb(E), E_sinc], 3, reg.u))
             bad = _merge(bad)
             where = _range(lo, hi) + (" (except as listed)" if bad else "")
             acc.regions.append(RegionAccuracy(name, where, E, term, m_range=(lo, hi)))
-            acc.regions += [RegionAccuracy(name, _range(max(a, lo), min(b, hi)), None, reason=why,
+            acc.regions += [RegionAccuracy(name, _range(max(a, lo), min(b, hi), widen=True), None, reason=why,
                                            m_range=(max(a, lo), min(b, hi))) for a, b, why in bad]
         worst = max((r.term for r in acc.regions if r.term is not None), default=0.0)
         acc.v, acc.w, acc.absolute = _template(precision, reg, worst)
@@ -786,12 +799,15 @@ def first_violation(acc: Accuracy, x, ref: dict, v, w, st, kf: float):
     return int(idx[0]) if len(idx) else None
 
 
-def _range(lo, hi) -> str:
+def _range(lo, hi, widen=False) -> str:
+    """The range lo..hi of m as printed; `widen` (a range NOT CERTIFIED):
+    its ends rounded outwards, so that the printed range holds it."""
+    low, high = (_above(lo, 3, ROUND_FLOOR), _above(hi, 3)) if widen else (_fmt(lo), _fmt(hi))
     if lo == 0:
-        return f"0 < m < {_fmt(hi)}"
+        return f"0 < m < {high}"
     if hi >= 1e38:
-        return f"m > {_fmt(lo)}"
-    return f"{_fmt(lo)} <= m <= {_fmt(hi)}"
+        return f"m > {low}"
+    return f"{low} <= m <= {high}"
 
 
 def contract_lines(accuracies: list, width: int = 72) -> list[str]:
