@@ -302,8 +302,8 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
 def _check_one_certificate(name: str, timeout: float = DEFAULT_TIMEOUT) -> tuple[int, str, str]:
     """(status, stdout text, stderr text) of `--check-certificate` for one file."""
     from .design_certificate import CertificateError, check
-    from .properties import PROPERTIES
     from .timeouts import TimeLimit, time_limit
+    from .verdict import PROPERTIES
     try:
         text = Path(name).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:

@@ -41,6 +41,7 @@ from .kernel.certificate import CertificateError, check_certificate, to_certific
 from .kernel.core import _TRUE_WHEN, _srepr, derivative    # when a relation l < r (<=, >, >=) holds: the sign of r - l; srepr, cached
 from .kernel.parse import ParseError, parse
 from .profile import S
+from .verdict import PROPERTIES
 
 FORMAT, VERSION = "uwmr-design-certificate", 1
 SEARCH_ONLY = "the whole argument (no kernel rules for it yet)"
@@ -796,9 +797,6 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
     return what, kind == "slope"
 
 
-_PROPERTIES = tuple(f"P{i}" for i in range(1, 9))
-
-
 def _malformed(exc) -> str:
     return f"no entry {exc}" if isinstance(exc, KeyError) else f"{type(exc).__name__}: {exc}"
 
@@ -856,7 +854,7 @@ def check(data) -> list[PropertyCheck]:
                                    f"functions and their inverses, erf, Abs, Max, Min, Piecewise") from None
         props = data["properties"]
         names = set(props) if isinstance(props, dict) else set()
-        if not names or not names <= {*_PROPERTIES, "kf"}:
+        if not names or not names <= {*PROPERTIES, "kf"}:
             raise CertificateError(f"the certificate's properties must be among P1-P8 and kf, and they are "
                                    f"{', '.join(sorted(names)) or 'none'}")
         out = []

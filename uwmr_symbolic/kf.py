@@ -206,12 +206,10 @@ def _value_continued_at(profile, point) -> bool:
     no partial derivatives on that circle, so a sup of |F'| reached only
     there as a one-sided limit is not attained (f = log(1 + rho) except 0 on
     rho = 1: kf = 1 at s = 1, not attained)."""
-    values = [one_sided_value(p.expr, point, side) for p in profile.pieces
-              for end, side in ((p.lo, +1), (p.hi, -1)) if end == point]
-    if point in profile.at_point:
-        values.append(exact_value(profile.at_point[point], S, point))
-    return all(v is not None and v not in (sp.oo, -sp.oo) for v in values) and \
-        all(exact_sign(v - values[0]) == 0 for v in values[1:])
+    pieces = profile.pieces
+    value = exact_value(profile.at_point[point], S, point) if point in profile.at_point else \
+        next((one_sided_value(p.expr, point, -1) for p in pieces if p.hi == point), None)
+    return value is not None and _continued_at([p.expr for p in pieces], pieces, point, value)
 
 
 def _quick_lower(exprs, pieces):

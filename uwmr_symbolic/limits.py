@@ -169,9 +169,16 @@ def _power_beats_logarithm(expr, x) -> Lim:
     rest = sp.Mul(*[a for a in expr.args if a not in slow])
     if not slow or not rest.has(x):
         raise NoLimit("0 * inf")
-    for q in _RATES:
+    return _vanishes_beside(rest, x, [-q for q in _RATES])
+
+
+def _vanishes_beside(rest, x, powers) -> Lim:
+    """0 with rest's eventual sign, when rest x^p has a finite limit for one
+    of `powers` (the other factors of the product, `_power_beats_logarithm`
+    and `_exponential_beats_power`, then force it to 0); else NoLimit."""
+    for p in powers:
         try:
-            scaled = _limit(rest * x ** -q, x)
+            scaled = _limit(rest * x ** p, x)
         except NoLimit:
             continue
         if not scaled.infinite:
@@ -199,14 +206,7 @@ def _exponential_beats_power(expr, x) -> Lim:
     rest = sp.Mul(*[a for a in expr.args if a not in quick])
     if not quick:
         raise NoLimit("0 * inf")
-    for m in (0, 1, 2, 4, 8, 16, 32):
-        try:
-            scaled = _limit(rest * x ** m, x)
-        except NoLimit:
-            continue
-        if not scaled.infinite:
-            return Lim(sp.Integer(0), _eventual_sign(_limit(rest, x)))
-    raise NoLimit("0 * inf")
+    return _vanishes_beside(rest, x, (0, 1, 2, 4, 8, 16, 32))
 
 
 def rational_poly(expr, x) -> sp.Poly | None:

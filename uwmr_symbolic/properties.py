@@ -42,9 +42,7 @@ from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_valu
                       same_value, split_profile, verify_radial)
 from .univariate import (MAX_BOXES, T, X, enclose, exact_sign, exact_value, far_out_trend, limit_at_infinity, prepare,
                          prove_sign, tail_form, tail_start, value_at)
-from .verdict import Verdict, proved, refuted, unknown
-
-PROPERTIES = ("P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8")
+from .verdict import PROPERTIES, Verdict, proved, refuted, unknown  # noqa: F401 (PROPERTIES re-exported)
 
 
 def _at(s_value):

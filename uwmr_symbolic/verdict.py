@@ -18,6 +18,9 @@ class Status(str, Enum):
 
 PROVED, REFUTED, UNKNOWN = Status.PROVED, Status.REFUTED, Status.UNKNOWN
 
+#: the properties of f that the paper's Proposition 1 asks for
+PROPERTIES = ("P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8")
+
 
 @dataclass
 class Verdict:
