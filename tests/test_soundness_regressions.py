@@ -615,3 +615,42 @@ def test_growth_like_a_power_is_tried_at_its_own_rate_first(tmp_path):
     # spent the budget); the rate s^(1/2) F' >= k, the one F's growth suggests, is now tried first
     report, v = verify(tmp_path, "f = (1 + rho)**Rational(1, 3) + (1 + rho)**Rational(1, 4) - 2\n")
     assert v == {p: "proved" for p in v} and "P3" in report.kernel["checked"]
+
+
+@pytest.mark.parametrize("body, dF", [
+    # F = tanh(s^2) + log(1 + s^2): F' = 2 s sech(s^2)^2 + 2 s/(1 + s^2) > 0, F'(0) = 0, F' -> 0 at oo;
+    # F'/s = 2 sech(s^2)^2 + 2/(1 + s^2) <= 4 (P6); smooth, all of P1-P8 hold.  The tail of F' in t = 1/s
+    # holds t^-1 sech(t^-2)^2 (0 times oo at t = 0 for interval arithmetic), and the sign rules do not
+    # show F'' <= 0 beyond R within a lemma's budget: kf was unknown.  Term by term, 2 s sech(s^2)^2
+    # falls beyond R (its own derivative is signed) and 2 s/(1 + s^2) <= 1/2 there, far below the sup.
+    ("f = sp.tanh(rho) + log(1 + rho)\n",
+     lambda s: 2 * s / mpmath.cosh(s ** 2) ** 2 + 2 * s / (1 + s ** 2)),
+    # F = sqrt(1 + s^2) - exp(-s^2): F' = s/sqrt(1 + s^2) + 2 s exp(-s^2), the first term rising to 1
+    # (bounded by its tail form), the second falling; sup about 1.473 near s = 0.8
+    ("f = sqrt(1 + rho) - sp.exp(-rho)\n",
+     lambda s: s / mpmath.sqrt(1 + s ** 2) + 2 * s * mpmath.exp(-s ** 2)),
+])
+def test_a_sum_with_a_blind_tail_gets_its_kf_from_the_kernel_term_by_term(tmp_path, body, dF):
+    report, v = verify(tmp_path, body)
+    assert v == {p: "proved" for p in v} and set(report.kernel["checked"]) == {*v, "kf"}
+    s_max = max((mpmath.mpf(i) / 200 for i in range(1, 200 * 12)), key=dF)
+    s_max = mpmath.findroot(lambda s: mpmath.diff(dF, s), s_max)
+    assert report.kf.lower <= Fraction(str(mpmath.nstr(dF(s_max), 30))) <= report.kf.upper
+    assert report.kf.upper - report.kf.lower < Fraction(1, 10 ** 6)
+
+
+def test_exploring_lemmas_do_not_spend_the_designs_budget():
+    # the search's tail lemmas (`exploring`) draw on a pool of their own: after them the design's
+    # budget has as much left as before, and a spent pool stops them at once
+    from uwmr_symbolic import certify
+    from uwmr_symbolic.univariate import term_bound_on_tail
+    s = sp.Symbol("s", nonnegative=True)
+    # (a term and tail start no other test asks about: a lemma proved before costs nothing)
+    term = 3 * s / sp.cosh(s ** 2) ** 2            # non-increasing beyond 4, its tail form not enclosed
+    with certify.design_budget(term):
+        before = certify._design.limit - certify._work()
+        assert 0 < term_bound_on_tail(term, s, sp.Integer(4)) <= Fraction(1, 10 ** 9)
+        assert certify._design.limit - certify._work() == before
+        assert certify._pool[0] < certify.EXPLORE_WORK
+        certify._pool[0] = 0
+        assert term_bound_on_tail(term, s, sp.Integer(7)) is None

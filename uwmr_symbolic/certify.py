@@ -67,6 +67,7 @@ IDENTITY_UNITS = 30
 CHEAP_RATIONAL = 30     # larger rational functions try the sign rules of their parts first
 WORK = 60_000           # for one lemma (about 0.5 s here); the verdict does not depend on it
 DESIGN_WORK = 300_000   # for all the lemmas of one design (see `design_budget`)
+EXPLORE_WORK = 120_000  # for the search's exploratory lemmas of one design (see `exploring`)
 LEMMA_SIZE = 50         # a lemma about an expression of n > LEMMA_SIZE ops gets n/LEMMA_SIZE times the work
 CPU_CAP = 8.0           # a budget also ends after CPU_CAP times its nominal CPU seconds (backstop)
 WALL_CAP = 4.0          # and a sign lemma after WALL_CAP times its nominal seconds on the clock, inside SymPy too
@@ -96,7 +97,11 @@ def machine_factor() -> float:
 
 
 def _work() -> int:
-    return arb.nodes + _charged
+    return arb.nodes + _charged - _explored[0]
+
+
+def _cpu() -> float:
+    return time.process_time() - _explored[1]
 
 
 class Budget:
@@ -104,13 +109,13 @@ class Budget:
 
     def __init__(self, work, outer=None):
         self.limit = _work() + work
-        self.cpu = time.process_time() + CPU_CAP * UNIT_SECONDS * work * machine_factor()
+        self.cpu = _cpu() + CPU_CAP * UNIT_SECONDS * work * machine_factor()
         if outer is not None:
             self.limit, self.cpu = min(self.limit, outer.limit), min(self.cpu, outer.cpu)
 
     def spent(self, extra=0) -> bool:
         """True if the budget is spent, or would be by `extra` more units."""
-        return _work() + extra > self.limit or time.process_time() > self.cpu
+        return _work() + extra > self.limit or _cpu() > self.cpu
 
 
 def _scaled(work, e) -> int:
@@ -175,11 +180,37 @@ def design_budget(f=None):
     size = sp.count_ops(sp.diff(f, sorted(f.free_symbols, key=str)[0])) if isinstance(f, sp.Basic) and \
         f.free_symbols else 0
     old, _design = _design, Budget(DESIGN_WORK * max(branches(f), size // LEMMA_SIZE))
+    old_pool, _pool[0] = _pool[0], EXPLORE_WORK
     _FAILED.clear()
     try:
         yield
     finally:
-        _design = old
+        _design, _pool[0] = old, old_pool
+
+
+_pool = [EXPLORE_WORK]      # what is left of the design's pool for `exploring`
+_explored = [0, 0.0]        # the work and CPU seconds spent in `exploring`, which no budget outside it sees
+
+
+@contextmanager
+def exploring():
+    """Lemmas the search asks for only to find where a proof may start (the
+    sign rules on a tail it cannot enclose: `univariate.enclose_sup`,
+    `univariate.term_bound_on_tail`) spend a pool of their own, EXPLORE_WORK
+    per design, and not the design's budget: their failures do not starve
+    the properties' own lemmas, nor those of a proof under way that asked
+    for them.  Outside a design, the pool alone bounds them."""
+    global _design
+    outer, start, cpu = _design, _work(), _cpu()
+    _design = Budget(_pool[0])
+    try:
+        yield
+    finally:
+        spent = _work() - start
+        _pool[0] = max(0, _pool[0] - spent)
+        _explored[0] += spent
+        _explored[1] += _cpu() - cpu
+        _design = outer
 
 
 def branches(f) -> int:
@@ -371,6 +402,12 @@ class Prover:
                 return self._weaken(_cover(e, var, lo, hi, want, strict), I, strict)
             except NoProof as exc:
                 last = exc
+        elif want > 0 and e.is_Add:
+            try:                                # before the sum's other forms spend the budget
+                return self._constant_shared(e, var, I, strict, depth)
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
         try:
             return self._structure(e, var, I, want, strict, depth, near)
         except NoProof as exc:
@@ -526,6 +563,39 @@ class Prover:
                         if exc is self.spent or attempt is None:
                             raise
         raise NoProof("no structural rule for {}", e)
+
+    def _constant_shared(self, e, var, I, strict, depth):
+        """e on I = <lo, oo) where its tail form in t = 1/s has no interval
+        cover at t = 0 and e = c - (a_1 + ... + a_k), c > 0: the head <lo, R]
+        as any finite interval, and on [R, oo) each c_i - a_i >= 0, c_i just
+        above sup a_i there as the search sees it (`univariate.
+        term_bound_on_tail`), the c_i adding up to at most c (`sign_of_sum`):
+        kf - F' for F = tanh(s^2) + log(1 + s^2), whose F' = 2 s sech(s^2)^2
+        + 2 s/(s^2 + 1) has no such cover, and whose F'' the sign rules do
+        not sign within a budget."""
+        from .univariate import tail_box, tail_start, term_bound_on_tail
+        lo, _, lo_open, _ = I
+        R = tail_start(lo)
+        c, rest = e.as_independent(var, as_Add=True)
+        terms = sp.Add.make_args(rest)
+        if not (c.is_Rational and c > 0 and len(terms) > 1) or tail_box(e, var, R) is not None:
+            raise NoProof("{} is not c - (a_1 + ... + a_k), c > 0, with a blind tail", e)
+        bounds = []
+        for t in terms:                         # each a_i >= 0 somewhere on the tail (none growing to oo)
+            bounds.append(term_bound_on_tail(-t, var, R))
+            if bounds[-1] is None or bounds[-1] < 0:
+                raise NoProof("a term of {} is not seen bounded, >= 0 somewhere, beyond {}", e, R)
+        if sum(bounds) >= c:
+            raise NoProof("the terms of {} are not seen below its constant", e)
+        room = (Fraction(c.p, c.q) - sum(bounds)) / (2 * len(terms))
+        step = Fraction(1, 2 ** max(0, math.ceil(-math.log2(room))))      # a short dyadic in (b, b + room]
+        shares = [sp.Rational(math.floor(b / step) + 1, 1) * sp.Rational(step.numerator, step.denominator)
+                  for b in bounds]
+        J = (R, OO, False, True)
+        tail = _rule(K.sign_of_sum, *[self.prove(share + t, var, J, 1, False, depth) for share, t in zip(shares, terms)],
+                     expr=e, want=1)
+        head = self.prove(e, var, (lo, R, lo_open, False), 1, strict, depth)
+        return _rule(K.join, head, self._weaken(tail, J, strict))
 
     def _below_product(self, e, var, I, depth, near):
         """c - A B >= 0 (`sign_below_product`, see `_product_split`) from

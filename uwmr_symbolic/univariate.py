@@ -881,11 +881,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
         tail_bound = _bound_on_tail(expr, var, R, floor)
     if hi == sp.oo and tail_bound is None:
         tail = tail_form(expr, var)
-        try:
-            box = _compiled(tail, T, "range")(Interval.of(0, 1 / R))
-            blind = box.upper_fraction() is None
-        except Undefined:
-            blind = True
+        blind = tail_box(expr, var, R, tail) is None
         # expr non-increasing on [R', oo): sup there is expr(R'), in the first part, now [lo, R']
         # (a peak beyond R, as of s exp(-s^4/10^4) at s = 7.07: a later R')
         later = R if blind and prove_sign(sp.diff(expr, var), var, R, sp.oo, want=-1, lo_open=False,
@@ -893,10 +889,13 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
         if blind and later is None:
             # the kernel's sign rules: a peak beyond R (s exp(-s^4/10^4) at s = 7.07), or an
             # exp(-s^2) factor that interval covers of the tail in t = 1/s cannot enclose at t = 0
-            from .certify import sign_theorems
-            later = next((r for r in (R, 4 * R, 16 * R, 64 * R) if sign_theorems(
-                -sp.diff(expr, var), var, r, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None),
-                None)
+            from .certify import exploring, sign_theorems
+            with exploring():
+                later = next((r for r in (R, 4 * R, 16 * R, 64 * R) if sign_theorems(
+                    -sp.diff(expr, var), var, r, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None),
+                    None)
+        if blind and later is None and len(_terms(expr)) > 1:
+            later, tail_bound = _termwise_tail(expr, var, lo, R)
         if later is not None:
             parts[0] = ("s", expr, lo, later)
         else:
@@ -968,6 +967,73 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
     ups = [h[-1] for h in heap] + ([tail_bound] if tail_bound is not None else [])
     upper = None if (not ups or any(u is None for u in ups)) else max(ups)
     return SupEnclosure(lower, upper, at_infinity=False, near=None, point=point)
+
+
+def _termwise_tail(expr, var, lo, R):
+    """(R', c) with expr <= c on [R', oo), R' one of R, 4R, 16R, 64R, c the
+    sum of bounds of expr's terms there -- a term's own tail form enclosed
+    in t = 1/s, else its value at R' where the kernel's sign rules show it
+    non-increasing (2 s sech(s^2)^2 beside 2 s/(s^2 + 1): F' of tanh(s^2) +
+    log(1 + s^2), whose tail form no interval cover encloses at t = 0) --
+    taken only when c is below a value expr reaches on [lo, R'] (then the
+    sup is not in the tail); (None, None) if there is none."""
+    for r in (R, 4 * R, 16 * R, 64 * R):
+        try:
+            reached = max(v for v in (_lo(value_at(expr, var, lo + (r - lo) * sp.Rational(k, 16), prec=64))
+                                      for k in range(1, 16)) if v is not None)
+        except (Undefined, ValueError):
+            return None, None
+        total = Fraction(0)
+        for term in _terms(expr):
+            bound = term_bound_on_tail(term, var, r)
+            if bound is None:
+                break
+            total += bound
+        else:
+            if total < reached:
+                return r, total
+    return None, None
+
+
+def tail_box(expr, var, R, tail=None) -> Interval | None:
+    """An interval cover of expr on [R, oo), through its tail form in t =
+    1/s on [0, 1/R]; None where that is not bounded (2/(t cosh(t^-2)^2): 0
+    times oo at t = 0, or an upper end of oo)."""
+    try:
+        box = _compiled(tail_form(expr, var) if tail is None else tail, T, "range")(Interval.of(0, 1 / R))
+    except Undefined:
+        return None
+    return box if _hi(box) is not None and _lo(box) is not None else None     # (to doubles: exp(-10^30/t^2))
+
+
+def _terms(e) -> tuple:
+    """The terms of e, a product's one sum multiplied out (2 s (sech(s^2)^2
+    + 1/(s^2 + 1)), as `prepare` writes F')."""
+    sums = [a for a in sp.Mul.make_args(e) if a.is_Add]
+    if e.is_Mul and len(sums) == 1:
+        return tuple(e / sums[0] * a for a in sums[0].args)
+    return sp.Add.make_args(e)
+
+
+def term_bound_on_tail(term, var, R) -> Fraction | None:
+    """A c >= term on [R, oo): the upper end of an interval cover of its
+    tail form in t = 1/s, else its value at R where the kernel's sign rules
+    show it non-increasing (2 s sech(s^2)^2), else 0 where they show it
+    <= 0; None if neither."""
+    from .certify import exploring, sign_theorems
+    box = tail_box(term, var, R)
+    if box is not None:
+        return _hi(box)
+    with exploring():
+        if sign_theorems(-sp.diff(term, var), var, R, sp.oo, lo_open=False, strict=False,
+                         work=TAIL_WORK)[0] is not None:
+            try:
+                return _hi(value_at(term, var, R, prec=64))
+            except Undefined:
+                pass
+        if sign_theorems(-term, var, R, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None:
+            return Fraction(0)
+    return None
 
 
 TAIL_DEGREE = 400      # `_bound_on_tail` leaves larger rational functions to the tail form (root isolation slows)
