@@ -654,3 +654,16 @@ def test_exploring_lemmas_do_not_spend_the_designs_budget():
         assert certify._pool[0] < certify.EXPLORE_WORK
         certify._pool[0] = 0
         assert term_bound_on_tail(term, s, sp.Integer(7)) is None
+
+
+def test_a_product_of_bounded_functions_gets_its_kf_from_the_kernel(tmp_path):
+    # F = tanh(s^2) atan(s^2): F' = 2 s sech(s^2)^2 atan(s^2) + 2 s tanh(s^2)/(1 + s^4) >= 0, bounded, -> 0
+    # at oo (F -> pi/2: P3 fails).  The first term's tail is 0 times oo in t = 1/s; beyond R it is
+    # (2 s sech(s^2)^2) atan(s^2) <= (its first factor's value at R) pi/2, the first factor shown
+    # non-increasing by the sign rules (`bounded_factors`, `sign_below_product`).  kf was unknown.
+    report, v = verify(tmp_path, "f = sp.tanh(rho)*atan(rho)\n")
+    assert v["P1"] == "proved" and v["P3"] == "refuted" and {"P1", "kf"} <= set(report.kernel["checked"])
+    dF = lambda s: 2 * s * mpmath.atan(s ** 2) / mpmath.cosh(s ** 2) ** 2 + 2 * s * mpmath.tanh(s ** 2) / (1 + s ** 4)  # noqa: E731
+    s_max = max((mpmath.mpf(i) / 200 for i in range(1, 200 * 12)), key=dF)
+    s_max = mpmath.findroot(lambda s: mpmath.diff(dF, s), s_max)
+    assert report.kf.lower <= Fraction(str(mpmath.nstr(dF(s_max), 30))) <= report.kf.upper

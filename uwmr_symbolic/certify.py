@@ -573,11 +573,11 @@ class Prover:
         kf - F' for F = tanh(s^2) + log(1 + s^2), whose F' = 2 s sech(s^2)^2
         + 2 s/(s^2 + 1) has no such cover, and whose F'' the sign rules do
         not sign within a budget."""
-        from .univariate import tail_box, tail_start, term_bound_on_tail
+        from .univariate import split_terms, tail_box, tail_start, term_bound_on_tail
         lo, _, lo_open, _ = I
         R = tail_start(lo)
         c, rest = e.as_independent(var, as_Add=True)
-        terms = sp.Add.make_args(rest)
+        terms = split_terms(rest)              # (k - F'/s: the 1/s multiplied in)
         if not (c.is_Rational and c > 0 and len(terms) > 1) or tail_box(e, var, R) is not None:
             raise NoProof("{} is not c - (a_1 + ... + a_k), c > 0, with a blind tail", e)
         bounds = []
@@ -591,11 +591,29 @@ class Prover:
         step = Fraction(1, 2 ** max(0, math.ceil(-math.log2(room))))      # a short dyadic in (b, b + room]
         shares = [sp.Rational(math.floor(b / step) + 1, 1) * sp.Rational(step.numerator, step.denominator)
                   for b in bounds]
-        J = (R, OO, False, True)
-        tail = _rule(K.sign_of_sum, *[self.prove(share + t, var, J, 1, False, depth) for share, t in zip(shares, terms)],
-                     expr=e, want=1)
+        J, form = (R, OO, False, True), c + sp.Add(*terms)
+        tail = _rule(K.sign_of_sum, *[self._share_above(share, -t, var, J, depth) for share, t in zip(shares, terms)],
+                     expr=form, want=1)
+        tail = tail if form == e else self._rewritten_by(e, form, tail, var, J)
         head = self.prove(e, var, (lo, R, lo_open, False), 1, strict, depth)
         return _rule(K.join, head, self._weaken(tail, J, strict))
+
+    def _share_above(self, c, a, var, J, depth):
+        """c - a >= 0 on the tail J = [R, oo) (`_constant_shared`), for a
+        product a = A B with 0 <= B <= b (`univariate.bounded_factors`) by
+        c/b - A >= 0, B >= 0 and b - B >= 0 (`sign_below_product`), else as
+        any claim."""
+        from .univariate import bounded_factors
+        split = bounded_factors(a, var, J[0])
+        if split is not None:
+            A, B, b = split
+            sub = lambda x: self.prove(x, var, J, 1, False, depth)    # noqa: E731
+            try:
+                return _rule(K.sign_below_product, sub(c / b - A), sub(B), sub(b - B), expr=c - a, a=c / b, b=b)
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
+        return self.prove(c - a, var, J, 1, False, depth)
 
     def _below_product(self, e, var, I, depth, near):
         """c - A B >= 0 (`sign_below_product`, see `_product_split`) from

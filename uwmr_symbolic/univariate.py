@@ -894,7 +894,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
                 later = next((r for r in (R, 4 * R, 16 * R, 64 * R) if sign_theorems(
                     -sp.diff(expr, var), var, r, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None),
                     None)
-        if blind and later is None and len(_terms(expr)) > 1:
+        if blind and later is None and len(split_terms(expr)) > 1:
             later, tail_bound = _termwise_tail(expr, var, lo, R)
         if later is not None:
             parts[0] = ("s", expr, lo, later)
@@ -984,7 +984,7 @@ def _termwise_tail(expr, var, lo, R):
         except (Undefined, ValueError):
             return None, None
         total = Fraction(0)
-        for term in _terms(expr):
+        for term in split_terms(expr):
             bound = term_bound_on_tail(term, var, r)
             if bound is None:
                 break
@@ -1006,7 +1006,7 @@ def tail_box(expr, var, R, tail=None) -> Interval | None:
     return box if _hi(box) is not None and _lo(box) is not None else None     # (to doubles: exp(-10^30/t^2))
 
 
-def _terms(e) -> tuple:
+def split_terms(e) -> tuple:
     """The terms of e, a product's one sum multiplied out (2 s (sech(s^2)^2
     + 1/(s^2 + 1)), as `prepare` writes F')."""
     sums = [a for a in sp.Mul.make_args(e) if a.is_Add]
@@ -1015,15 +1015,45 @@ def _terms(e) -> tuple:
     return sp.Add.make_args(e)
 
 
+def bounded_factors(term, var, R):
+    """(A, B, b) with term = A B on [R, oo), B the product of term's factors
+    whose tail forms have interval covers there with lower ends > 0 (atan(s^2)
+    in 2 s sech(s^2)^2 atan(s^2): bounded, and not what makes the product
+    fall), 0 <= B <= b, b a short dyadic, and A the others, among them a
+    factor in s; None where there is no such split."""
+    if not term.is_Mul:
+        return None
+    inside, rest = [], []
+    for f in term.args:
+        box = tail_box(f, var, R) if f.has(var) else None
+        (inside if box is not None and _lo(box) > 0 else rest).append(f)
+    if not inside or not any(f.has(var) for f in rest):
+        return None
+    B = sp.Mul(*inside)
+    box = tail_box(B, var, R)
+    if box is None or _lo(box) < 0 or _hi(box) <= 0:
+        return None
+    return sp.Mul(*rest), B, decimal_beyond(_hi(box), 1, 6)
+
+
 def term_bound_on_tail(term, var, R) -> Fraction | None:
     """A c >= term on [R, oo): the upper end of an interval cover of its
-    tail form in t = 1/s, else its value at R where the kernel's sign rules
-    show it non-increasing (2 s sech(s^2)^2), else 0 where they show it
-    <= 0; None if neither."""
+    tail form in t = 1/s; else a A's such bound times b where term = A B
+    with 0 <= B <= b (`bounded_factors`) and the sign rules show A >= 0;
+    else its value at R where the kernel's sign rules show it non-increasing
+    (2 s sech(s^2)^2), else 0 where they show it <= 0; None if neither."""
     from .certify import exploring, sign_theorems
     box = tail_box(term, var, R)
     if box is not None:
         return _hi(box)
+    split = bounded_factors(term, var, R)
+    if split is not None:
+        A, _, b = split
+        a = term_bound_on_tail(A, var, R)
+        with exploring():
+            if a is not None and a >= 0 and \
+                    sign_theorems(A, var, R, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None:
+                return a * Fraction(b.p, b.q)
     with exploring():
         if sign_theorems(-sp.diff(term, var), var, R, sp.oo, lo_open=False, strict=False,
                          work=TAIL_WORK)[0] is not None:
