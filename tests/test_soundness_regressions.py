@@ -649,21 +649,42 @@ def test_exploring_lemmas_do_not_spend_the_designs_budget():
     term = 3 * s / sp.cosh(s ** 2) ** 2            # non-increasing beyond 4, its tail form not enclosed
     with certify.design_budget(term):
         before = certify._design.limit - certify._work()
-        assert 0 < term_bound_on_tail(term, s, sp.Integer(4)) <= Fraction(1, 10 ** 9)
+        bound, how = term_bound_on_tail(term, s, sp.Integer(4))
+        assert 0 < bound <= Fraction(1, 10 ** 9) and how == "falls"
         assert certify._design.limit - certify._work() == before
         assert certify._pool[0] < certify.EXPLORE_WORK
         certify._pool[0] = 0
         assert term_bound_on_tail(term, s, sp.Integer(7)) is None
 
 
-def test_a_product_of_bounded_functions_gets_its_kf_from_the_kernel(tmp_path):
+@pytest.mark.parametrize("body, dF", [
     # F = tanh(s^2) atan(s^2): F' = 2 s sech(s^2)^2 atan(s^2) + 2 s tanh(s^2)/(1 + s^4) >= 0, bounded, -> 0
     # at oo (F -> pi/2: P3 fails).  The first term's tail is 0 times oo in t = 1/s; beyond R it is
-    # (2 s sech(s^2)^2) atan(s^2) <= (its first factor's value at R) pi/2, the first factor shown
-    # non-increasing by the sign rules (`bounded_factors`, `sign_below_product`).  kf was unknown.
-    report, v = verify(tmp_path, "f = sp.tanh(rho)*atan(rho)\n")
-    assert v["P1"] == "proved" and v["P3"] == "refuted" and {"P1", "kf"} <= set(report.kernel["checked"])
-    dF = lambda s: 2 * s * mpmath.atan(s ** 2) / mpmath.cosh(s ** 2) ** 2 + 2 * s * mpmath.tanh(s ** 2) / (1 + s ** 4)  # noqa: E731
+    # (2 s sech(s^2)^2) atan(s^2) <= (its first factor's value at R) 2, the first factor shown
+    # non-increasing by the sign rules and atan < 2 (`bounded_factors`, `sign_below_product`).
+    ("f = sp.tanh(rho)*atan(rho)\n",
+     lambda s: 2 * s * mpmath.atan(s ** 2) / mpmath.cosh(s ** 2) ** 2 + 2 * s * mpmath.tanh(s ** 2) / (1 + s ** 4)),
+    # F = log cosh tanh(s^2) + tanh(s^2)/2: F' = 2 s sech(s^2)^2 (tanh(tanh(s^2)) + 1/2) >= 0, -> 0 at oo
+    # (F is bounded: P3 fails); SymPy writes tanh(tanh(s^2)) as sinh/cosh, bounded by 1 (not by its
+    # sup tanh(1) = 0.76159..., which leaves the kernel no room)
+    ("f = log(sp.cosh(sp.tanh(rho))) + sp.tanh(rho)/2\n",
+     lambda s: 2 * s / mpmath.cosh(s ** 2) ** 2 * (mpmath.tanh(mpmath.tanh(s ** 2)) + mpmath.mpf(1) / 2)),
+])
+def test_a_product_of_bounded_functions_gets_its_kf_from_the_kernel(tmp_path, body, dF):
+    # kf was unknown for both
+    report, v = verify(tmp_path, body)
+    assert v["P1"] == "proved" and v["P3"] != "proved" and {"P1", "P6", "kf"} <= set(report.kernel["checked"])
     s_max = max((mpmath.mpf(i) / 200 for i in range(1, 200 * 12)), key=dF)
     s_max = mpmath.findroot(lambda s: mpmath.diff(dF, s), s_max)
     assert report.kf.lower <= Fraction(str(mpmath.nstr(dF(s_max), 30))) <= report.kf.upper
+
+
+def test_p6_falls_back_to_a_looser_k_when_the_exact_sup_is_out_of_reach(tmp_path):
+    # F = erf(s^4) + atan(s^2): F'/s = 4 exp(-s^4)/sqrt(pi) + 2/(1 + s^4), both terms falling, so
+    # sup F'/s = 2 + 4/sqrt(pi), approached as s -> 0 only.  The kernel's lemma for that exact k (no room
+    # at s = 0) spent the design's whole budget and left none to the looser k tried after it: P6 rested
+    # on the search.  Now the exact try gets a quarter of a lemma's work, and kf - F' is shared term by term.
+    report, v = verify(tmp_path, "f = sp.erf(rho) + atan(rho)\n")
+    assert v["P6"] == "proved" and "P6" in report.kernel["checked"]
+    assert sp.simplify(sp.sympify(report.properties["P6"].details["k"]) - (2 + 4 / sp.sqrt(sp.pi))) == 0
+    assert {"P1", "kf"} <= set(report.kernel["checked"])

@@ -566,7 +566,8 @@ class Prover:
 
     def _constant_shared(self, e, var, I, strict, depth):
         """e on I = <lo, oo) where its tail form in t = 1/s has no interval
-        cover at t = 0 and e = c - (a_1 + ... + a_k), c > 0: the head <lo, R]
+        cover at t = 0, or one only the search's intervals give (exp(-1/t^4):
+        `_essential_at_zero`), and e = c - (a_1 + ... + a_k), c > 0: the head <lo, R]
         as any finite interval, and on [R, oo) each c_i - a_i >= 0, c_i just
         above sup a_i there as the search sees it (`univariate.
         term_bound_on_tail`), the c_i adding up to at most c (`sign_of_sum`):
@@ -578,13 +579,16 @@ class Prover:
         R = tail_start(lo)
         c, rest = e.as_independent(var, as_Add=True)
         terms = split_terms(rest)              # (k - F'/s: the 1/s multiplied in)
-        if not (c.is_Rational and c > 0 and len(terms) > 1) or tail_box(e, var, R) is not None:
+        if not (c.is_Rational and c > 0 and len(terms) > 1) or \
+                tail_box(e, var, R) is not None and not _essential_at_zero(_tail_form(e, var)):
             raise NoProof("{} is not c - (a_1 + ... + a_k), c > 0, with a blind tail", e)
-        bounds = []
+        bounds, hows = [], []
         for t in terms:                         # each a_i >= 0 somewhere on the tail (none growing to oo)
-            bounds.append(term_bound_on_tail(-t, var, R))
-            if bounds[-1] is None or bounds[-1] < 0:
+            found = term_bound_on_tail(-t, var, R)
+            if found is None or found[0] < 0:
                 raise NoProof("a term of {} is not seen bounded, >= 0 somewhere, beyond {}", e, R)
+            bounds.append(found[0])
+            hows.append(found[1])
         if sum(bounds) >= c:
             raise NoProof("the terms of {} are not seen below its constant", e)
         room = (Fraction(c.p, c.q) - sum(bounds)) / (2 * len(terms))
@@ -592,28 +596,34 @@ class Prover:
         shares = [sp.Rational(math.floor(b / step) + 1, 1) * sp.Rational(step.numerator, step.denominator)
                   for b in bounds]
         J, form = (R, OO, False, True), c + sp.Add(*terms)
-        tail = _rule(K.sign_of_sum, *[self._share_above(share, -t, var, J, depth) for share, t in zip(shares, terms)],
-                     expr=form, want=1)
+        tail = _rule(K.sign_of_sum, *[self._share_above(share, -t, how, var, J, depth)
+                                      for share, t, how in zip(shares, terms, hows)], expr=form, want=1)
         tail = tail if form == e else self._rewritten_by(e, form, tail, var, J)
         head = self.prove(e, var, (lo, R, lo_open, False), 1, strict, depth)
         return _rule(K.join, head, self._weaken(tail, J, strict))
 
-    def _share_above(self, c, a, var, J, depth):
-        """c - a >= 0 on the tail J = [R, oo) (`_constant_shared`), for a
-        product a = A B with 0 <= B <= b (`univariate.bounded_factors`) by
-        c/b - A >= 0, B >= 0 and b - B >= 0 (`sign_below_product`), else as
-        any claim."""
-        from .univariate import bounded_factors
-        split = bounded_factors(a, var, J[0])
-        if split is not None:
-            A, B, b = split
-            sub = lambda x: self.prove(x, var, J, 1, False, depth)    # noqa: E731
-            try:
-                return _rule(K.sign_below_product, sub(c / b - A), sub(B), sub(b - B), expr=c - a, a=c / b, b=b)
-            except NoProof as exc:
-                if exc is self.spent:
-                    raise
-        return self.prove(c - a, var, J, 1, False, depth)
+    def _share_above(self, c, a, how, var, J, depth):
+        """c - a >= 0 on the tail J = [R, oo) (`_constant_shared`), first as
+        the search bounded a (`how`, see `univariate.term_bound_on_tail`):
+        for "product", a = A B with 0 <= B <= b (`bounded_factors`), by
+        c/b - A >= 0 (as the search bounded A), B >= 0 and b - B >= 0
+        (`sign_below_product`); for
+        "falls", from c - a(R) > 0 and a' <= 0 on J (`sign_by_monotone`);
+        then as any claim."""
+        from .univariate import bounded_factors, term_bound_on_tail
+        sub = lambda x, d=depth: self.prove(x, var, J, 1, False, d)    # noqa: E731
+        try:
+            if how == "product":
+                A, B, b = bounded_factors(a, var, J[0])
+                below = self._share_above(c / b, A, term_bound_on_tail(A, var, J[0])[1], var, J, depth)
+                return _rule(K.sign_below_product, below, sub(B), sub(b - B), expr=c - a, a=c / b, b=b)
+            if how == "falls":
+                falls = sub(derivative(c - a, var), depth + 1)
+                return self._weaken(_rule(K.sign_by_monotone, falls, expr=c - a, var=var, R=J[0]), J, False)
+        except NoProof as exc:
+            if exc is self.spent:
+                raise
+        return sub(c - a)
 
     def _below_product(self, e, var, I, depth, near):
         """c - A B >= 0 (`sign_below_product`, see `_product_split`) from
@@ -1093,6 +1103,15 @@ def _ends(th):
 def _tail_form(e, var):
     from .univariate import tail_form
     return tail_form(e, var)
+
+
+def _essential_at_zero(et) -> bool:
+    """The tail form et has exp, erf, cosh, sinh or tanh of an argument with
+    a negative power of t: no Taylor expansion at t = 0, and the kernel's
+    Arb has no value there (the search's intervals take limits)."""
+    from .univariate import T
+    return any(a.has(T) and any(p.base.has(T) and p.exp.is_negative for p in a.atoms(sp.Pow))
+               for g in et.atoms(sp.exp, sp.erf, sp.cosh, sp.sinh, sp.tanh) for a in g.args)
 
 
 def _derivative_order(e, var, c):

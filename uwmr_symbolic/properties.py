@@ -30,7 +30,7 @@ from . import e1 as E1, e2 as E2
 from .design import Design
 from .design_certificate import _JUMPS, SMOOTH_ONLY, axis_split, e1_sides, e2_sides, half_axes
 from .interval import Interval, IntervalFunction, Undefined
-from .certify import (REDUCTION, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
+from .certify import (REDUCTION, WORK, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
                       origin_value_theorems, piecewise_sign_theorem, plane_theorems, radial_theorems,
                       refutation_theorems, separable_theorems, sign_theorems, smoothness_theorems,
                       sup_upper_theorem)
@@ -556,7 +556,7 @@ def verify_p6(a: Analysis) -> Verdict:
         return refuted("F'(s)/s -> oo as s -> 0+, so no constant k bounds h = F'(s)/(k s) by 1",
                        {"e1": "h -> 0+", "e2": "0", "limit": "oo"})
     sup = certify_sup(a, G, "F'(s)/s", near_zero=a.derivative(a.profile.pieces[0].expr, 2),
-                      bound_by=lambda c: bool(_p6_theorems(a, c)))
+                      bound_by=lambda c: bool(_p6_theorems(a, c, exact=True)))
     if sup.unbounded_witness is not None:
         return refuted(f"no constant k bounds h = F'(s)/(k s) by 1: {sup.reason}", sup.unbounded_witness)
     if sup.upper is None:
@@ -575,21 +575,26 @@ def verify_p6(a: Analysis) -> Verdict:
                k=str(k), k_float=float_of(k), h=str(h))
     # the kernel needs some k: the exact sup, else (or when that bound has no room) one about 1/8 above it
     loose = decimal_beyond(Fraction(sup.upper if sup.exact is not None else k) * Fraction(9, 8), 1, 2)
-    tries = [k, loose] if sup.exact is not None else [loose]
+    tries = [(k, True), (loose, False)] if sup.exact is not None else [(loose, False)]
     return _lemmas(v, v, "0 <= h <= 1 (the bound of F'(s)/s is the search's)",
-                   lambda: next((th for c in tries for th in [_p6_theorems(a, c)] if th), []))
+                   lambda: next((th for c, exact in tries for th in [_p6_theorems(a, c, exact)] if th), []))
 
 
-def _p6_theorems(a: Analysis, k) -> list:
+def _p6_theorems(a: Analysis, k, exact=False) -> list:
     """F' >= 0 (so h >= 0) and F'(s)/s <= k (so h <= 1), both on (0, oo).
     P6 asks for some constant k: when the search only encloses sup F'(s)/s,
     the kernel is asked for a k about 1/8 above it (a bound with no room
-    would need a cover of ever finer boxes near the maximum)."""
+    would need a cover of ever finer boxes near the maximum).  `exact`: k is
+    the sup itself, a bound with no room that a looser k can replace, so its
+    lemma gets a quarter of a lemma's work (k = 4/sqrt(pi) + 2, reached only
+    as s -> 0 in erf(rho) + atan(rho), spent the whole budget of the design
+    and left none to the looser k)."""
     F = _single_formula(a)
     if F is None:
         return _piecewise_p6(a, k)
     positive = a.slope_sign         # h >= 0
-    return [positive, upper] if positive and (upper := sup_upper_theorem(derivative(F, S) / S, k, S)) else []
+    work = WORK // 4 if exact else WORK
+    return [positive, upper] if positive and (upper := sup_upper_theorem(derivative(F, S) / S, k, S, work=work)) else []
 
 
 

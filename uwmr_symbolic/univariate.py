@@ -988,7 +988,7 @@ def _termwise_tail(expr, var, lo, R):
             bound = term_bound_on_tail(term, var, r)
             if bound is None:
                 break
-            total += bound
+            total += bound[0]
         else:
             if total < reached:
                 return r, total
@@ -1019,8 +1019,10 @@ def bounded_factors(term, var, R):
     """(A, B, b) with term = A B on [R, oo), B the product of term's factors
     whose tail forms have interval covers there with lower ends > 0 (atan(s^2)
     in 2 s sech(s^2)^2 atan(s^2): bounded, and not what makes the product
-    fall), 0 <= B <= b, b a short dyadic, and A the others, among them a
-    factor in s; None where there is no such split."""
+    fall), 0 <= B <= b, b the power of 2 at or above B's bound (room for the
+    kernel: 1 - tanh(tanh(s^2)) > 0 is one rule, 0.76160 - tanh(tanh(s^2))
+    no proof at all), and A the others, among them a factor in s; None where
+    there is no such split."""
     if not term.is_Mul:
         return None
     inside, rest = [], []
@@ -1033,36 +1035,37 @@ def bounded_factors(term, var, R):
     box = tail_box(B, var, R)
     if box is None or _lo(box) < 0 or _hi(box) <= 0:
         return None
-    return sp.Mul(*rest), B, decimal_beyond(_hi(box), 1, 6)
+    return sp.Mul(*rest), B, sp.Integer(2) ** math.ceil(math.log2(_hi(box)))
 
 
-def term_bound_on_tail(term, var, R) -> Fraction | None:
-    """A c >= term on [R, oo): the upper end of an interval cover of its
-    tail form in t = 1/s; else a A's such bound times b where term = A B
-    with 0 <= B <= b (`bounded_factors`) and the sign rules show A >= 0;
-    else its value at R where the kernel's sign rules show it non-increasing
-    (2 s sech(s^2)^2), else 0 where they show it <= 0; None if neither."""
+def term_bound_on_tail(term, var, R) -> tuple[Fraction, str] | None:
+    """(c, how) with c >= term on [R, oo), `how` saying by what: "box", the
+    upper end of an interval cover of its tail form in t = 1/s; "product",
+    A's bound times b where term = A B with 0 <= B <= b (`bounded_factors`)
+    and the sign rules show A >= 0; "falls", its value at R where the
+    kernel's sign rules show it non-increasing (2 s sech(s^2)^2); "below",
+    0 where they show it <= 0.  None if neither."""
     from .certify import exploring, sign_theorems
     box = tail_box(term, var, R)
     if box is not None:
-        return _hi(box)
+        return _hi(box), "box"
     split = bounded_factors(term, var, R)
     if split is not None:
         A, _, b = split
         a = term_bound_on_tail(A, var, R)
         with exploring():
-            if a is not None and a >= 0 and \
+            if a is not None and a[0] >= 0 and \
                     sign_theorems(A, var, R, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None:
-                return a * Fraction(b.p, b.q)
+                return a[0] * Fraction(b.p, b.q), "product"
     with exploring():
         if sign_theorems(-sp.diff(term, var), var, R, sp.oo, lo_open=False, strict=False,
                          work=TAIL_WORK)[0] is not None:
             try:
-                return _hi(value_at(term, var, R, prec=64))
+                return _hi(value_at(term, var, R, prec=64)), "falls"
             except Undefined:
                 pass
         if sign_theorems(-term, var, R, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None:
-            return Fraction(0)
+            return Fraction(0), "below"
     return None
 
 
