@@ -688,3 +688,13 @@ def test_p6_falls_back_to_a_looser_k_when_the_exact_sup_is_out_of_reach(tmp_path
     assert v["P6"] == "proved" and "P6" in report.kernel["checked"]
     assert sp.simplify(sp.sympify(report.properties["P6"].details["k"]) - (2 + 4 / sp.sqrt(sp.pi))) == 0
     assert {"P1", "kf"} <= set(report.kernel["checked"])
+
+
+def test_divergence_by_comparison_skips_a_floor_seen_above_f(tmp_path):
+    # F = 3 (1 - exp(-s^2)) log cosh(s^2) > 0 for s > 0, and F >= 3 (1 - exp(-16)) log cosh(s^2) -> oo for
+    # s >= 4: P3 holds.  The comparison first tried G = 3 log cosh(s^2), the sum's leading term, above F
+    # everywhere: proving F - G >= 0 spent the whole budget, and P3 rested on the search.  Now a floor G
+    # with F - G seen negative at R, 4R, 64R or 10^6 R (the form to be proved, not F - G, which cancels
+    # to nothing in 128 bits at R = 16) is skipped.
+    report, v = verify(tmp_path, "f = 3*(1 - sp.exp(-rho))*log(sp.cosh(rho))\n")
+    assert v["P3"] == "proved" and "P3" in report.kernel["checked"]

@@ -1445,10 +1445,13 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
     for G in floors + [sp.Add(*ts) for ts in (algebraic, leading, transcendental) if ts and len(ts) < len(terms)] + [*gaps]:
         nest = _outer(G, var) is not None
         for R in starts if nest or _plausible(G - 2 * G.subs(var, starts[0]) - 1, var, 10 ** 6, 1) else ():
+            gap = F - G if spread == F and G not in gaps else gaps.get(G, spread - G)
+            if not _plausible(gap, var, R, 1):     # (F >= G seen false: its proof would spend the budget)
+                continue
             try:                        # (a nest of logs grows too slowly for the plausibility filter)
                 I = (R, OO, False, True)
-                lower = prover.prove(F - G, var, I, 1, False) if spread == F and G not in gaps else \
-                    prover._rewritten(F - G, gaps.get(G, spread - G), var, I, 1, False, 0, False)
+                lower = prover.prove(gap, var, I, 1, False) if gap == F - G else \
+                    prover._rewritten(F - G, gap, var, I, 1, False, 0, False)
                 div = _diverges(G, var, (R,)) or _diverges_inside(G, var)
                 if div:
                     return [_rule(K.diverges_by_comparison, lower, div[0], expr=F)]
