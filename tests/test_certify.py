@@ -329,3 +329,18 @@ def test_growth_of_a_product_and_of_a_nest_beside_a_bounded_term():
         (th,) = growth_theorems(F, h)
         assert th.rule == "diverges_by_comparison" and th.claim.kind == "diverges" and th.claim.expr == sp.srepr(F)
     assert growth_theorems(-sp.log(1 + h ** 2) * sp.atan(h ** 2), h) == []
+
+
+def test_an_interval_beyond_the_doubles_is_no_proof_not_a_crash():
+    # a chain design of the fixed-seed fuzz profile led the proposer to an interval (lo, oo) with lo beyond
+    # the doubles (through a substitution), where the shared-constant tail route took float(lo) = inf and
+    # int() raised OverflowError out of the verifier; such a step is now no proof
+    from uwmr_symbolic import certify
+    s = sp.Symbol("s", positive=True)
+    e = 1 - sp.exp(-s) - 1 / (1 + s)
+    prover = certify.Prover(certify.WORK)
+    try:
+        th = prover.prove(e, s, (sp.Integer(10) ** 400, sp.oo, False, True), 1, False)
+    except certify.NoProof:
+        return
+    assert th.claim.want == 1 and th.claim.lo == sp.srepr(sp.Integer(10) ** 400)

@@ -342,8 +342,8 @@ class Prover:
                 self.memo[key] = exc
             except (K.KernelError, Undefined) as exc:     # a sign the kernel cannot decide (a constant's): no proof
                 self.memo[key] = NoProof("{}", exc)
-            except (TypeError, ValueError, ZeroDivisionError) as exc:   # SymPy could not evaluate a step
-                self.memo[key] = NoProof("SymPy: {}", exc)             # (say, a comparison with nan): no proof
+            except (TypeError, ValueError, ZeroDivisionError, OverflowError) as exc:   # SymPy could not evaluate a
+                self.memo[key] = NoProof("SymPy: {}", exc)     # step (a comparison with nan, a float of 10^400): no proof
         out = self.memo[key]
         if isinstance(out, NoProof):
             raise out
@@ -576,11 +576,12 @@ class Prover:
         not sign within a budget."""
         from .univariate import split_terms, tail_box, tail_start, term_bound_on_tail
         lo, _, lo_open, _ = I
-        R = tail_start(lo)
         c, rest = e.as_independent(var, as_Add=True)
         terms = split_terms(rest)              # (k - F'/s: the 1/s multiplied in)
-        if not (c.is_Rational and c > 0 and len(terms) > 1) or \
-                tail_box(e, var, R) is not None and not _essential_at_zero(_tail_form(e, var)):
+        if not (c.is_Rational and c > 0 and len(terms) > 1):
+            raise NoProof("{} is not c - (a_1 + ... + a_k), c > 0", e)
+        R = tail_start(lo)                      # (OverflowError where lo is beyond the doubles: no proof)
+        if tail_box(e, var, R) is not None and not _essential_at_zero(_tail_form(e, var)):
             raise NoProof("{} is not c - (a_1 + ... + a_k), c > 0, with a blind tail", e)
         bounds, hows = [], []
         for t in terms:                         # each a_i >= 0 somewhere on the tail (none growing to oo)
