@@ -342,8 +342,8 @@ class Prover:
                 self.memo[key] = exc
             except (K.KernelError, Undefined) as exc:     # a sign the kernel cannot decide (a constant's): no proof
                 self.memo[key] = NoProof("{}", exc)
-            except (TypeError, ValueError, ZeroDivisionError, OverflowError) as exc:   # SymPy could not evaluate a
-                self.memo[key] = NoProof("SymPy: {}", exc)     # step (a comparison with nan, a float of 10^400): no proof
+            except (TypeError, ValueError, ZeroDivisionError, OverflowError) as exc:   # a step could not be
+                self.memo[key] = NoProof("SymPy: {}", exc)     # evaluated (nan compared, 10^400 in a float): no proof
         out = self.memo[key]
         if isinstance(out, NoProof):
             raise out
@@ -567,13 +567,13 @@ class Prover:
     def _constant_shared(self, e, var, I, strict, depth):
         """e on I = <lo, oo) where its tail form in t = 1/s has no interval
         cover at t = 0, or one only the search's intervals give (exp(-1/t^4):
-        `_essential_at_zero`), and e = c - (a_1 + ... + a_k), c > 0: the head <lo, R]
-        as any finite interval, and on [R, oo) each c_i - a_i >= 0, c_i just
-        above sup a_i there as the search sees it (`univariate.
-        term_bound_on_tail`), the c_i adding up to at most c (`sign_of_sum`):
-        kf - F' for F = tanh(s^2) + log(1 + s^2), whose F' = 2 s sech(s^2)^2
-        + 2 s/(s^2 + 1) has no such cover, and whose F'' the sign rules do
-        not sign within a budget."""
+        `_essential_at_zero`), and e = c - (a_1 + ... + a_k), c > 0: the
+        head <lo, R] as any finite interval, and on [R, oo) each c_i - a_i
+        >= 0, c_i just above sup a_i there as the search sees it
+        (`univariate.term_bound_on_tail`), the c_i adding up to at most c
+        (`sign_of_sum`): kf - F' for F = tanh(s^2) + log(1 + s^2), whose F' =
+        2 s sech(s^2)^2 + 2 s/(s^2 + 1) has no such cover, and whose F'' the
+        sign rules do not sign within a budget."""
         from .univariate import split_terms, tail_box, tail_start, term_bound_on_tail
         lo, _, lo_open, _ = I
         c, rest = e.as_independent(var, as_Add=True)
@@ -608,9 +608,8 @@ class Prover:
         the search bounded a (`how`, see `univariate.term_bound_on_tail`):
         for "product", a = A B with 0 <= B <= b (`bounded_factors`), by
         c/b - A >= 0 (as the search bounded A), B >= 0 and b - B >= 0
-        (`sign_below_product`); for
-        "falls", from c - a(R) > 0 and a' <= 0 on J (`sign_by_monotone`);
-        then as any claim."""
+        (`sign_below_product`); for "falls", from c - a(R) > 0 and a' <= 0
+        on J (`sign_by_monotone`); then as any claim."""
         from .univariate import bounded_factors, term_bound_on_tail
         sub = lambda x, d=depth: self.prove(x, var, J, 1, False, d)    # noqa: E731
         try:

@@ -971,12 +971,11 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
 
 def _termwise_tail(expr, var, lo, R):
     """(R', c) with expr <= c on [R', oo), R' one of R, 4R, 16R, 64R, c the
-    sum of bounds of expr's terms there -- a term's own tail form enclosed
-    in t = 1/s, else its value at R' where the kernel's sign rules show it
-    non-increasing (2 s sech(s^2)^2 beside 2 s/(s^2 + 1): F' of tanh(s^2) +
-    log(1 + s^2), whose tail form no interval cover encloses at t = 0) --
-    taken only when c is below a value expr reaches on [lo, R'] (then the
-    sup is not in the tail); (None, None) if there is none."""
+    sum of its terms' bounds there (`term_bound_on_tail`: 2 s sech(s^2)^2
+    beside 2 s/(s^2 + 1) in F' of tanh(s^2) + log(1 + s^2), whose tail form
+    no interval cover encloses at t = 0), taken only when c is below a value
+    expr reaches on [lo, R'] (then the sup is not in the tail); (None, None)
+    if there is none."""
     for r in (R, 4 * R, 16 * R, 64 * R):
         try:
             reached = max(v for v in (_lo(value_at(expr, var, lo + (r - lo) * sp.Rational(k, 16), prec=64))
