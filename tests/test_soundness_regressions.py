@@ -652,8 +652,8 @@ def test_exploring_lemmas_do_not_spend_the_designs_budget():
         bound, how = term_bound_on_tail(term, s, sp.Integer(4))
         assert 0 < bound <= Fraction(1, 10 ** 9) and how == "falls"
         assert certify._design.limit - certify._work() == before
-        assert certify._pool[0] < certify.EXPLORE_WORK
-        certify._pool[0] = 0
+        assert certify._pools["tails"] < certify.EXPLORE_WORK
+        certify._pools["tails"] = 0
         assert term_bound_on_tail(term, s, sp.Integer(7)) is None
 
 
@@ -683,7 +683,7 @@ def test_p6_falls_back_to_a_looser_k_when_the_exact_sup_is_out_of_reach(tmp_path
     # F = erf(s^4) + atan(s^2): F'/s = 4 exp(-s^4)/sqrt(pi) + 2/(1 + s^4), both terms falling, so
     # sup F'/s = 2 + 4/sqrt(pi), approached as s -> 0 only.  The kernel's lemma for that exact k (no room
     # at s = 0) spent the design's whole budget and left none to the looser k tried after it: P6 rested
-    # on the search.  Now the exact try gets a quarter of a lemma's work, and kf - F' is shared term by term.
+    # on the search.  Now the exact try spends a pool of its own, and kf - F' is shared term by term.
     report, v = verify(tmp_path, "f = sp.erf(rho) + atan(rho)\n")
     assert v["P6"] == "proved" and "P6" in report.kernel["checked"]
     assert sp.simplify(sp.sympify(report.properties["P6"].details["k"]) - (2 + 4 / sp.sqrt(sp.pi))) == 0

@@ -67,7 +67,7 @@ IDENTITY_UNITS = 30
 CHEAP_RATIONAL = 30     # larger rational functions try the sign rules of their parts first
 WORK = 60_000           # for one lemma (about 0.5 s here); the verdict does not depend on it
 DESIGN_WORK = 300_000   # for all the lemmas of one design (see `design_budget`)
-EXPLORE_WORK = 120_000  # for the search's exploratory lemmas of one design (see `exploring`)
+EXPLORE_WORK = 120_000  # for each pool of lemmas one design may do without (see `exploring`)
 LEMMA_SIZE = 50         # a lemma about an expression of n > LEMMA_SIZE ops gets n/LEMMA_SIZE times the work
 CPU_CAP = 8.0           # a budget also ends after CPU_CAP times its nominal CPU seconds (backstop)
 WALL_CAP = 4.0          # and a sign lemma after WALL_CAP times its nominal seconds on the clock, inside SymPy too
@@ -180,34 +180,38 @@ def design_budget(f=None):
     size = sp.count_ops(sp.diff(f, sorted(f.free_symbols, key=str)[0])) if isinstance(f, sp.Basic) and \
         f.free_symbols else 0
     old, _design = _design, Budget(DESIGN_WORK * max(branches(f), size // LEMMA_SIZE))
-    old_pool, _pool[0] = _pool[0], EXPLORE_WORK
+    old_pools = dict(_pools)
+    _pools.update(dict.fromkeys(_pools, EXPLORE_WORK))
     _FAILED.clear()
     try:
         yield
     finally:
-        _design, _pool[0] = old, old_pool
+        _design = old
+        _pools.update(old_pools)
 
 
-_pool = [EXPLORE_WORK]      # what is left of the design's pool for `exploring`
+_pools = {"tails": EXPLORE_WORK, "exact": EXPLORE_WORK}     # what is left of the design's pools (`exploring`)
 _explored = [0, 0.0]        # the work and CPU seconds spent in `exploring`, which no budget outside it sees
 
 
 @contextmanager
-def exploring():
-    """Lemmas the search asks for only to find where a proof may start (the
-    sign rules on a tail it cannot enclose: `univariate.enclose_sup`,
-    `univariate.term_bound_on_tail`) spend a pool of their own, EXPLORE_WORK
+def exploring(pool="tails"):
+    """Lemmas a design can do without spend a pool of their own, EXPLORE_WORK
     per design, and not the design's budget: their failures do not starve
     the properties' own lemmas, nor those of a proof under way that asked
-    for them.  Outside a design, the pool alone bounds them."""
+    for them.  "tails": those the search asks for only to find where a proof
+    may start (the sign rules on a tail it cannot enclose: `univariate.
+    enclose_sup`, `univariate.term_bound_on_tail`); "exact": P6's bound by
+    the exact sup, which a looser k can replace.  Outside a design, the
+    pool alone bounds them."""
     global _design
     outer, start, cpu = _design, _work(), _cpu()
-    _design = Budget(_pool[0])
+    _design = Budget(_pools[pool])
     try:
         yield
     finally:
         spent = _work() - start
-        _pool[0] = max(0, _pool[0] - spent)
+        _pools[pool] = max(0, _pools[pool] - spent)
         _explored[0] += spent
         _explored[1] += _cpu() - cpu
         _design = outer

@@ -30,7 +30,7 @@ from . import e1 as E1, e2 as E2
 from .design import Design
 from .design_certificate import _JUMPS, SMOOTH_ONLY, axis_split, e1_sides, e2_sides, half_axes
 from .interval import Interval, IntervalFunction, Undefined
-from .certify import (REDUCTION, WORK, NoProof, continuity_pair, growth_theorems, one_branch_theorems, origin_theorems,
+from .certify import (REDUCTION, NoProof, continuity_pair, exploring, growth_theorems, one_branch_theorems, origin_theorems,
                       origin_value_theorems, piecewise_sign_theorem, plane_theorems, radial_theorems,
                       refutation_theorems, separable_theorems, sign_theorems, smoothness_theorems,
                       sup_upper_theorem)
@@ -586,15 +586,17 @@ def _p6_theorems(a: Analysis, k, exact=False) -> list:
     the kernel is asked for a k about 1/8 above it (a bound with no room
     would need a cover of ever finer boxes near the maximum).  `exact`: k is
     the sup itself, a bound with no room that a looser k can replace, so its
-    lemma gets a quarter of a lemma's work (k = 4/sqrt(pi) + 2, reached only
-    as s -> 0 in erf(rho) + atan(rho), spent the whole budget of the design
-    and left none to the looser k)."""
+    lemmas spend a pool of their own (`certify.exploring`; k = 4/sqrt(pi) +
+    2, reached only as s -> 0 in erf(rho) + atan(rho), spent the whole budget
+    of the design and left none to the looser k)."""
+    if exact:
+        with exploring("exact"):
+            return _p6_theorems(a, k)
     F = _single_formula(a)
     if F is None:
         return _piecewise_p6(a, k)
     positive = a.slope_sign         # h >= 0
-    work = WORK // 4 if exact else WORK
-    return [positive, upper] if positive and (upper := sup_upper_theorem(derivative(F, S) / S, k, S, work=work)) else []
+    return [positive, upper] if positive and (upper := sup_upper_theorem(derivative(F, S) / S, k, S)) else []
 
 
 
