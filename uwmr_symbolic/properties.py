@@ -30,8 +30,8 @@ from . import e1 as E1, e2 as E2
 from .design import Design
 from .design_certificate import _JUMPS, SMOOTH_ONLY, axis_split, e1_sides, e2_sides, half_axes
 from .interval import Interval, IntervalFunction, Undefined
-from .certify import (REDUCTION, NoProof, continuity_pair, exploring, growth_theorems, one_branch_theorems, origin_theorems,
-                      origin_value_theorems, piecewise_sign_theorem, plane_theorems, radial_theorems,
+from .certify import (REDUCTION, NoProof, continuity_pair, exploring, growth_theorems, one_branch_theorems,
+                      origin_theorems, origin_value_theorems, piecewise_sign_theorem, plane_theorems, radial_theorems,
                       refutation_theorems, separable_theorems, sign_theorems, smoothness_theorems,
                       sup_upper_theorem)
 from .kernel.core import derivative

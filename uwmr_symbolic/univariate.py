@@ -881,7 +881,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
         tail_bound = _bound_on_tail(expr, var, R, floor)
     if hi == sp.oo and tail_bound is None:
         tail = tail_form(expr, var)
-        blind = tail_box(expr, var, R, tail) is None
+        blind = tail_box(expr, var, R) is None
         # expr non-increasing on [R', oo): sup there is expr(R'), in the first part, now [lo, R']
         # (a peak beyond R, as of s exp(-s^4/10^4) at s = 7.07: a later R')
         later = R if blind and prove_sign(sp.diff(expr, var), var, R, sp.oo, want=-1, lo_open=False,
@@ -994,12 +994,12 @@ def _termwise_tail(expr, var, lo, R):
     return None, None
 
 
-def tail_box(expr, var, R, tail=None) -> Interval | None:
+def tail_box(expr, var, R) -> Interval | None:
     """An interval cover of expr on [R, oo), through its tail form in t =
-    1/s on [0, 1/R]; None where that is not bounded (2/(t cosh(t^-2)^2): 0
-    times oo at t = 0, or an upper end of oo)."""
+    1/s on [0, 1/R] (`tail_form` is memoised); None where that is not
+    bounded (2/(t cosh(t^-2)^2): 0 times oo at t = 0, or an end of oo)."""
     try:
-        box = _compiled(tail_form(expr, var) if tail is None else tail, T, "range")(Interval.of(0, 1 / R))
+        box = _compiled(tail_form(expr, var), T, "range")(Interval.of(0, 1 / R))
     except Undefined:
         return None
     return box if _hi(box) is not None and _lo(box) is not None else None     # (to doubles: exp(-10^30/t^2))
