@@ -453,6 +453,25 @@ def test_bounded_ray_witness_of_a_piecewise_f():
     assert sup_upper_theorem(DC.along_ray(f, (1, 0)), sp.Rational(199, 100), DC.H) is None
 
 
+def test_bounded_ray_witness_through_a_transcendental_condition():
+    """f = Max(rho/(1 + rho), atan(rho)), which the loader writes as a
+    Piecewise on atan(rho) >= rho/(1 + rho).  By hand, d/dx (atan x - x/(1 + x))
+    = 1/(1 + x^2) - 1/(1 + x)^2 >= 0 and the difference is 0 at x = 0, so the
+    condition holds for every rho >= 0, f = atan(rho) < pi/2 < 2, and P3 fails
+    (f -> pi/2; the bound proposed is 1 + pi/2).  The condition has no polynomial root to cut at: the kernel
+    signs it on all of (0, oo).  For g = Max(rho/(1 + rho), 3 rho e^-rho) the
+    condition changes sign (3x e^-x vs x/(1 + x): 3x > x near 0, below 1 for
+    large x), and g(1, 0) = 3/e > 21/20: no proof of g <= 21/20."""
+    from uwmr_symbolic.certify import sup_upper_theorem
+    rho = e1 ** 2 + e2 ** 2
+    f = sp.piecewise_fold(sp.Max(rho / (1 + rho), sp.atan(rho)).rewrite(sp.Piecewise))
+    assert isinstance(f, sp.Piecewise)
+    data = proposed("P3", f, {"direction": "every", "limit": "pi/2"})
+    assert checked(data).witness == "f(h, 0) <= 1 + pi/2 for all h > 0"
+    g = sp.piecewise_fold(sp.Max(rho / (1 + rho), 3 * rho * sp.exp(-rho)).rewrite(sp.Piecewise))
+    assert sup_upper_theorem(DC.along_ray(g, (1, 0)), sp.Rational(21, 20), DC.H) is None
+
+
 def test_unbounded_slope_of_the_last_branch_of_a_piecewise_f():
     """f = rho/2 for rho <= 1, rho - 1/2 beyond (continuous at rho = 1): on the
     e2 axis beyond t = 1 f(0, t) = t^2 - 1/2, whose derivative 2t -> oo, so kf

@@ -1756,8 +1756,7 @@ def sup_upper_theorem(e, bound, var, gap=None, work=WORK):
     theorem `gap` or one proved here with `work`; for a Piecewise E piece by
     piece between the roots of its conditions), or None."""
     if gap is None and e.has(sp.Piecewise):
-        ends = _condition_roots(e, var)
-        gap = None if ends is None else piecewise_sign_theorem(sp.sympify(bound) - e, ends, var, strict=False)[0]
+        gap = piecewise_sign_theorem(sp.sympify(bound) - e, _condition_roots(e, var), var, strict=False)[0]
         if gap is None:
             return None
     parts = [gap] if gap is not None else sign_theorems(sp.sympify(bound) - e, var, 0, OO, strict=False,
@@ -1782,21 +1781,16 @@ def sup_lower_theorem(e, bound, point, var):
 # ---------------------------------------------------------------- refutations
 
 def _condition_roots(P, var):
-    """[0, the positive roots of the relations of P's conditions, oo] when
-    each relation is a polynomial in var with roots in radicals, else None."""
+    """[0, the positive roots in radicals of the polynomial relations of P's
+    conditions, oo].  A relation of another kind (atan(s^2) >= s^2/(1 + s^2),
+    from a Max) adds no boundary: the kernel signs each relation on each
+    piece, so where one changes sign there, the proof fails."""
     roots = set()
     for _, c in K._folded(P).args:
         for r in _relationals(c):
             d = r.rhs - r.lhs
-            if not d.has(var):
-                continue
-            if not d.is_polynomial(var):
-                return None
-            for x in sp.Poly(d, var).real_roots():
-                if x.has(sp.CRootOf):
-                    return None
-                if x.is_positive:
-                    roots.add(x)
+            if d.has(var) and d.is_polynomial(var):
+                roots |= {x for x in sp.Poly(d, var).real_roots() if not x.has(sp.CRootOf) and x.is_positive}
     return [sp.Integer(0), *sorted(roots, key=float), OO]
 
 
@@ -1927,8 +1921,6 @@ def _tail_branch_theorems(f, v, record):
     from .design_certificate import E1, E2, CertificateError, H, branch_conditions, growing
     axis = f.subs({v: H, (E2 if v == E1 else E1): 0}, simultaneous=True)
     ends = _condition_roots(axis, H)
-    if ends is None:
-        raise NoProof("the conditions' roots along the axis are not found")
     R = sp.ceiling(ends[-2]) if len(ends) > 2 else sp.Integer(0)
     for i in range(len(f.args)):
         try:
