@@ -639,6 +639,25 @@ def test_a_sum_with_a_blind_tail_gets_its_kf_from_the_kernel_term_by_term(tmp_pa
     assert report.kf.upper - report.kf.lower < Fraction(1, 10 ** 6)
 
 
+def test_kf_of_a_slope_that_changes_sign_is_enclosed_by_the_kernel(tmp_path):
+    # F = -9/10 tanh(s^2) + tanh(erf(s^2)): F' = -9/5 s sech(s^2)^2 + 4 s exp(-s^4) sech(erf(s^2))^2/sqrt(pi).
+    # By hand F' = s (4/sqrt(pi) - 9/5 + O(s^4)) > 0 near 0 (4/sqrt(pi) = 2.257), and at s = 3/2 the first
+    # term is -0.114, the second +0.009: F' changes sign, and kf = sup |F'| is the sup of -F', about 0.3247
+    # near s = 1.05 (mpmath below).  The search's enclosure of -F' had found no bound (F' had spent the
+    # pool of tail lemmas), and the kernel had no route for an enclosure (not an exact value) of sup |F'|:
+    # now |F'| <= U (F' <= U and -F' <= U) and -F'(point) >= L.
+    report, v = verify(tmp_path, "f = -Rational(9, 10)*sp.tanh(rho) + sp.tanh(sp.erf(rho))\n")
+    assert v["P1"] == "proved" and {"P1", "kf"} <= set(report.kernel["checked"])
+    dF = lambda s: -mpmath.mpf(9) / 5 * s / mpmath.cosh(s ** 2) ** 2 + \
+        4 * s * mpmath.exp(-s ** 4) / (mpmath.sqrt(mpmath.pi) * mpmath.cosh(mpmath.erf(s ** 2)) ** 2)
+    assert dF(mpmath.mpf(1) / 10) > 0 > dF(mpmath.mpf(3) / 2)
+    neg = lambda s: -dF(s)
+    s_max = mpmath.findroot(lambda s: mpmath.diff(neg, s), max((mpmath.mpf(i) / 200 for i in range(1, 800)), key=neg))
+    top = max(neg(s_max), max(dF(mpmath.mpf(i) / 200) for i in range(1, 800)))
+    assert report.kf.lower <= Fraction(str(mpmath.nstr(top, 30))) <= report.kf.upper
+    assert report.kf.upper - report.kf.lower < Fraction(1, 10 ** 6)
+
+
 def test_exploring_lemmas_do_not_spend_the_designs_budget():
     # the search's tail lemmas (`exploring`) draw on a pool of their own: after them the design's
     # budget has as much left as before, and a spent pool stops them at once

@@ -217,6 +217,14 @@ def exploring(pool="tails"):
         _design = outer
 
 
+def renew_pool(pool="tails"):
+    """Each supremum the search encloses (`kf.certify_sup`: kf's F' and -F',
+    P6's F'/s), and the kernel's proof of kf (`kf._with_kernel`), starts
+    with a full pool: the terms of -F' are not those of F', and what F'
+    spent would leave -F' without its tail bound."""
+    _pools[pool] = EXPLORE_WORK
+
+
 def branches(f) -> int:
     """How many branches the Piecewise in f have together (1 without any):
     each lemma about a Piecewise is one lemma per piece."""
@@ -1767,6 +1775,14 @@ def sup_upper_theorem(e, bound, var, gap=None, work=WORK):
         return _rule(K.sup_upper_by_sign, parts[0], expr=e, bound=bound)
     except NoProof:
         return None
+
+
+def abs_upper_theorem(e, bound, var, work=WORK):
+    """|E| <= bound on (0, oo) (`sup_upper_of_abs` over E <= bound and -E <=
+    bound), or None."""
+    up = sup_upper_theorem(e, bound, var, work=work)
+    down = up and sup_upper_theorem(-e, bound, var, work=work)
+    return _rule(K.sup_upper_of_abs, up, down) if down else None
 
 
 def sup_lower_theorem(e, bound, point, var):

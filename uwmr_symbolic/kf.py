@@ -21,8 +21,8 @@ from .kernel.core import derivative
 from .limits import NoLimit, rational_parts
 from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
-from .certify import (WORK, piecewise_sup_theorems, sign_theorems, sup_abs_theorems, sup_lower_theorem, sup_theorems,
-                      sup_upper_theorem)
+from .certify import (WORK, abs_upper_theorem, piecewise_sup_theorems, renew_pool, sign_theorems, sup_abs_theorems,
+                      sup_lower_theorem, sup_theorems, sup_upper_theorem)
 from .univariate import (certified_inside, decimal_beyond, enclose_sup, exact_sign, exact_value, far_out_trend,
                          limit_at_infinity, prepare, prove_sign, small_rates, solveset_hopeless, tail_start, value_at)
 
@@ -249,6 +249,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
     ``near_zero``: for E = F'/s, whose formula is 0/0 at s = 0, the caller
     passes F''; by the mean value theorem (F'(0) = 0) E(s) = F''(xi) with
     0 < xi < s, so sup F'' over [0, 1/8] bounds E there from above."""
+    renew_pool()
     pieces = analysis.profile.pieces
     exprs = [prepare(e) for e in exprs]
     if any(e.has(sp.nan, sp.zoo, sp.oo, -sp.oo) for e in exprs):
@@ -322,9 +323,10 @@ def _with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
     F' <= kf, sup F' >= kf; for a Piecewise F also F and F' continuous), or,
     when F' changes sign (`side` = +-1: kf = sup side*F'), of |F'| <= kf and
     sup side*F' >= kf; or the reason it has none."""
+    renew_pool()
     pieces = analysis.profile.pieces
-    if cert.exact is None and side is None and cert.point is not None:
-        return _enclosure_with_kernel(cert, analysis)
+    if cert.exact is None and cert.point is not None:
+        return _enclosure_with_kernel(cert, analysis, side)
     if cert.exact is None or cert.attained is None:
         cert.unchecked = ["kf: " + ("no exact value" if cert.exact is None else "attainment undecided")]
         return cert
@@ -346,16 +348,20 @@ def _with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
     return cert
 
 
-def _enclosure_with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
+def _enclosure_with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
     """cert, when kf = sup F' (F' >= 0) is only enclosed, with the kernel's
     theorems F' >= 0, F' <= U and sup F' >= L (its value at cert.point),
     where L <= lower and U >= upper are short decimals (U about 1/8 above
     when the tight one is not shown within its budget): `kernel_bounds`; for a
-    Piecewise F, `_piecewise_enclosure`."""
+    Piecewise F, `_piecewise_enclosure`.  When F' changes sign (`side` = +-1:
+    kf = sup side*F'), |F'| <= U and sup side*F' >= L instead."""
     L = decimal_beyond(cert.lower, -1)
     tiers = ((decimal_beyond(cert.upper, 1), WORK), (decimal_beyond(cert.upper * Fraction(9, 8), 1, 2), WORK))
-    enclose = _piecewise_enclosure if len(analysis.profile.pieces) > 1 else _formula_enclosure
-    U, theorems, why = enclose(cert, analysis, L, tiers)
+    if len(analysis.profile.pieces) > 1:
+        U, theorems, why = (None, None, "F' of a Piecewise F changes sign") if side else \
+            _piecewise_enclosure(cert, analysis, L, tiers)
+    else:
+        U, theorems, why = _formula_enclosure(cert, analysis, L, tiers, side)
     if theorems is None:
         cert.unchecked = [f"kf in [{show(cert.lower)}, {show(cert.upper)}] (kernel: {why})"]
         return cert
@@ -364,23 +370,25 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis) -> SupCertificate:
     return cert
 
 
-def _formula_enclosure(cert: SupCertificate, analysis, L, tiers):
+def _formula_enclosure(cert: SupCertificate, analysis, L, tiers, side=None):
     """(U, [F' >= 0, F' <= U, sup F' >= L], "") for an F of one formula, the
-    first U of `tiers` (with its budget) that the kernel takes; or (None,
-    None, why)."""
+    first U of `tiers` (with its budget) that the kernel takes; with `side`,
+    (U, [|F'| <= U, sup side*F' >= L], ""); or (None, None, why)."""
     dF = derivative(analysis.kernel_F, S)
     positive = analysis.slope_sign
     upper = None
     for U, work in tiers:
-        upper = sup_upper_theorem(dF, U, S, work=work) if positive is not None and L > 0 else None
+        if L <= 0 or side is None and positive is None:
+            break
+        upper = sup_upper_theorem(dF, U, S, work=work) if side is None else abs_upper_theorem(dF, U, S, work=work)
         if upper is not None:
             break
     if upper is None:
-        return None, None, f"F' >= 0 and F' <= {U} not shown"
-    lower = sup_lower_theorem(dF, L, cert.point, S)
+        return None, None, f"F' >= 0 and F' <= {U} not shown" if side is None else f"|F'| <= {U} not shown"
+    lower = sup_lower_theorem((side or 1) * dF, L, cert.point, S)
     if lower is None:
         return None, None, f"F'({cert.point}) >= {L} not shown"
-    return U, [positive, upper, lower], ""
+    return U, [upper, lower] if side else [positive, upper, lower], ""
 
 
 def _piecewise_enclosure(cert: SupCertificate, analysis, L, tiers):
