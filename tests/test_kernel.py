@@ -165,6 +165,38 @@ def test_sign_by_taylor():
     rejects(K.sign_by_taylor, expr=s * sp.log(s) + s, var=s, c=ZERO, side=1, width=Q(1, 4), order=1)
 
 
+def test_limit_by_taylor():
+    # by hand: sinh(u) = u + u^3/6 + ..., so sinh(s^2)/s^2 - 1 = (sinh(s^2) - s^2)/s^2 -> 0; D = s^2 has a
+    # zero of order 2 at 0 (D'' = 2); (1 - cos s)/s^2 -> 1/2; log(1 + s)^2/s -> 0 with D = s of order 1
+    w = Q(1, 2)
+    E = sp.sinh(s ** 2) / s ** 2 - 1
+    thm = K.limit_by_taylor(expr=E, num=sp.sinh(s ** 2) - s ** 2, den=s ** 2, var=s, order=2, width=w)
+    assert (thm.claim.kind, thm.claim.lo, thm.claim.other) == ("limit", "Integer(0)", "Integer(0)")
+    assert {"sympy-diff", "sympy-polys"} <= thm.assumptions
+    half = K.limit_by_taylor(expr=(1 - sp.cos(s)) / s ** 2, num=1 - sp.cos(s), den=s ** 2, var=s, order=2, width=w)
+    assert parse(half.claim.other) == Q(1, 2)
+    K.limit_by_taylor(expr=sp.log(1 + s) ** 2 / s, num=sp.log(1 + s) ** 2, den=s, var=s, order=1, width=w)
+    # order 1: D' = 2s is 0 at 0, no strict sign on [0, w]; order 0 is continuity (continuous_at_end)
+    for order in (0, 1, 13):
+        rejects(K.limit_by_taylor, expr=E, num=sp.sinh(s ** 2) - s ** 2, den=s ** 2, var=s, order=order, width=w)
+    # N/D is not E (the 1 of E left out); E defined at 0 (cos s = s cos s / s is no 0/0)
+    rejects(K.limit_by_taylor, expr=E, num=sp.sinh(s ** 2), den=s ** 2, var=s, order=2, width=w)
+    rejects(K.limit_by_taylor, expr=sp.cos(s), num=s * sp.cos(s), den=s, var=s, order=1, width=w)
+    # N does not vanish to order 2 (sinh(s)/s^2 -> oo); for D = s^2 - s^3, D'' = 2 - 6s has no strict sign
+    # on [0, 1/2] (D vanishes at s = 1 only, but the rule asks D'' signed on all of [0, w]); on [0, 1/4] it has
+    rejects(K.limit_by_taylor, expr=sp.sinh(s) / s ** 2, num=sp.sinh(s), den=s ** 2, var=s, order=2, width=w)
+    rejects(K.limit_by_taylor, expr=(1 - sp.cos(s)) / (s ** 2 - s ** 3), num=1 - sp.cos(s), den=s ** 2 - s ** 3,
+            var=s, order=2, width=w)
+    K.limit_by_taylor(expr=(1 - sp.cos(s)) / (s ** 2 - s ** 3), num=1 - sp.cos(s), den=s ** 2 - s ** 3,
+                      var=s, order=2, width=Q(1, 4))
+    # a tampered limit: the claim moved from 1/2 by 10^-30
+    cert = json.loads(json.dumps(to_certificate([half])))
+    check_certificate(cert)
+    cert["theorems"][0]["claim"]["other"] = sp.srepr(Q(1, 2) + Q(1, 10 ** 30))
+    with pytest.raises(CertificateError, match="claims"):
+        check_certificate(cert)
+
+
 def test_sign_by_sturm():
     assert sturm(x ** 2 - 2, x, Q(3, 2), sp.oo, hi_open=True).claim.want == 1
     sturm(x ** 2 - 2, x, -1, 1, want=-1)

@@ -86,6 +86,38 @@ def test_value_at_the_origin_is_compared_with_the_limit(tmp_path):
     assert report.kernel == {"checked": ["P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8"], "search": ["kf"]}
 
 
+@pytest.mark.parametrize("body, checked", [
+    # sinh(x)/x - 1 = x^2/6 + x^4/120 + ... (x = rho): the value 0 given at the origin is the limit, and
+    # F(s) = sinh(s^2)/s^2 - 1 is a power series in s^2 -- C^2 with F'(0+) = 0 (P7, P8).  F' and F'' are 0/0
+    # at s = 0 too; the kernel takes their limits by Taylor (`limit_by_taylor`): F'(0+) = 0, F''(0+) = 0.
+    ("f = Piecewise((0, Eq(rho, 0)), (sp.sinh(rho)/rho - 1, True))\n", {"P2", "P7", "P8"}),
+    # 2 - 2 log(1 + x)/x = x - 2x^2/3 + ...: also F' > 0 (P5: x/(1 + x) < log(1 + x) after the derivative)
+    ("f = Piecewise((2 - 2*log(1 + rho)/rho, rho > 0), (0, True))\n", {"P2", "P5", "P7", "P8"}),
+    # log(1 + x)^2/x = x - x^2 + ...: C^2 at the origin (P7, P8); F' < 0 at s = 2 (P5 fails)
+    ("f = Piecewise((0, Eq(rho, 0)), (log(1 + rho)**2/rho, True))\n", {"P2", "P7", "P8"}),
+])
+def test_a_removable_zero_over_zero_at_the_origin(tmp_path, body, checked):
+    # the value at the origin was compared with no limit F(0+) (0/0 had no rule): P1, P5, P7, P8 unknown
+    report, v = verify(tmp_path, body)
+    assert checked <= set(report.kernel["checked"]), (v, report.kernel)
+    assert all(v[p] == "proved" for p in checked)
+    assert v["P1"] != "refuted" and v["P7"] == "proved"
+
+
+def test_a_certificate_of_an_f_undefined_at_the_origin_is_refused(tmp_path):
+    # the links read a kernel limit F(0+) as the value F(0): for an f undefined at the origin (sinh(rho)/rho
+    # - 1, which the loader refuses) a certificate must be refused whole, whatever its steps
+    import json
+    from uwmr_symbolic import design_certificate as DC
+    report, _ = verify(tmp_path, "f = Piecewise((0, Eq(rho, 0)), (sp.sinh(rho)/rho - 1, True))\n")
+    data = DC.build(report)
+    DC.check(json.dumps(data))
+    e1, e2 = sp.symbols("e1 e2", real=True)
+    data["design"]["f"] = sp.srepr(sp.sinh(e1 ** 2 + e2 ** 2) / (e1 ** 2 + e2 ** 2) - 1)
+    with pytest.raises(DC.CertificateError, match="undefined at the origin"):
+        DC.check(json.dumps(data))
+
+
 @pytest.mark.parametrize("body", [
     "f = Piecewise((0, Eq(rho, 0)), (log(1 + rho), True))\n",
     "f = Piecewise((log(1 + rho), rho > 0), (0, True))\n",

@@ -1343,9 +1343,11 @@ def continuity_theorem(P, ends, var, rule=K.continuous_piecewise):
 def one_branch_theorems(F, var):
     """(G, [F = G on (0, oo), F(0) - G(0) = 0]) when the Piecewise profile F
     follows one branch G at every s > 0 (its conditions signed there,
-    `on_branch`) and takes G's value at 0: then the kernel's lemmas may be
-    about G (`design_certificate._one_branch`); (G, [F = G on (0, oo)]) when
-    F(0) is another value (enough for P3 and P8); else (F, [])."""
+    `on_branch`) and takes G's value at 0, or (G, [F = G on (0, oo), G(0+) =
+    L, F(0) - L = 0]) when G is 0/0 at 0 (Piecewise((0, Eq(s, 0)),
+    (sinh(s^2)/s^2 - 1, True))): then the kernel's lemmas may be about G
+    (`design_certificate._one_branch`); (G, [F = G on (0, oo)]) when F(0) is
+    another value (enough for P3 and P8); else (F, [])."""
     if not F.has(sp.Piecewise):
         return F, []
     prover = Prover(WORK)
@@ -1353,8 +1355,12 @@ def one_branch_theorems(F, var):
         th = on_branch(F, var, (sp.Integer(0), OO, True, True), prover,
                        lambda g: _rule(K.identity, lhs=g, rhs=g, var=var, lo=0, hi=OO, lo_open=True, hi_open=True))
         G = K.parse(th.claim.other)
-        at_zero = _rule(K.value_sign, value=F.subs(var, 0) - G.subs(var, 0))
-        return (F, []) if G.has(sp.Piecewise) else (G, [th, at_zero] if at_zero.claim.want == 0 else [th])
+        if G.subs(var, 0).has(sp.nan, sp.zoo):       # 0/0 at 0: F(0) against the limit G(0+) (`taylor_limit`)
+            lim = taylor_limit(G, var, sp.Rational(1, 16))
+            at_zero = [lim, _rule(K.value_sign, value=F.subs(var, 0) - K.parse(lim.claim.other))]
+        else:
+            at_zero = [_rule(K.value_sign, value=F.subs(var, 0) - G.subs(var, 0))]
+        return (F, []) if G.has(sp.Piecewise) else (G, [th, *at_zero] if at_zero[-1].claim.want == 0 else [th])
     except (NoProof, K.KernelError, Undefined, IndexError):
         return F, []
 
@@ -1657,15 +1663,36 @@ def branches_pair(F, var, ends) -> list:
 
 
 def _limit_at_zero(e, var, w):
-    """E(0+) = E(0) (`continuous_at_end` on [0, w]; for a Piecewise, of the
-    branch that applies there)."""
+    """E(0+): E(0) (`continuous_at_end` on [0, w]), or for 0/0 by Taylor
+    (`taylor_limit`); for a Piecewise, that of the branch that applies there."""
     if not isinstance(e, sp.Piecewise):
-        return _rule(K.continuous_at_end, expr=e, var=var, c=0, width=w)
+        try:
+            return _rule(K.continuous_at_end, expr=e, var=var, c=0, width=w)
+        except NoProof:
+            return taylor_limit(e, var, w)
     try:
         return on_branch(e, var, (sp.Integer(0), w, False, False), Prover(WORK),
-                         lambda g: _rule(K.continuous_at_end, expr=g, var=var, c=0, width=w))
+                         lambda g: _limit_at_zero(g, var, w))
     except (K.KernelError, Undefined) as exc:
         raise NoProof(str(exc)) from None
+
+
+def taylor_limit(e, var, w, orders=8):
+    """E(0+) for E = N/D over one denominator (`sympy.together`) with D(0) =
+    0 (`limit_by_taylor`), m the order of D's zero at 0 (the first derivative
+    of D with a nonzero value there, up to `orders`); NoProof if none."""
+    n, d = map(sp.sympify, sp.fraction(sp.together(e)))
+    if not d.has(var):
+        raise NoProof("{} is no quotient with a zero at 0", e)
+    dd = d
+    for m in range(orders + 1):
+        dd = derivative(dd, var) if m else d
+        at0 = dd.xreplace({var: sp.Integer(0)})
+        if at0.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+            break
+        if m and at0 != 0:
+            return _rule(K.limit_by_taylor, expr=e, num=n, den=d, var=var, order=m, width=w)
+    raise NoProof("no order of the zero of {} at 0 found", d)
 
 
 def origin_value_theorems(value) -> list:

@@ -367,7 +367,10 @@ def _one_branch(F, claims, open_only=False):
     """(the other claims, G) when F is a Piecewise and the claims begin with
     F = G on (0, oo) (an `identity` through `select_branch`) and F(0) - G(0)
     = 0 (`value_sign`), G free of Piecewise: then F and G agree at every
-    s >= 0, and every property reduces to G; else (claims, F).  (An origin
+    s >= 0, and every property reduces to G; or, G being 0/0 at 0, G(0+) = L
+    (a `limit` claim) and F(0) - L = 0: then F is G continued to 0, and the
+    properties (which read G at 0 through its limits only) reduce to G too;
+    else (claims, F).  (An origin
     given its own value, f = Piecewise((0, Eq(rho, 0)), (log(1 + rho),
     True)), or a Max whose first argument is the larger everywhere.)
     `open_only` (P3, P8: about s > 0 only): F = G on (0, oo) is enough."""
@@ -380,6 +383,10 @@ def _one_branch(F, claims, open_only=False):
     if len(claims) >= 2 and claims[1].kind == "value_sign" and claims[1].want == 0 and \
             claims[1].expr == _srepr(F.subs(S, 0) - G.subs(S, 0)):
         return claims[2:], G
+    if len(claims) >= 3 and (claims[1].kind, claims[1].expr, claims[1].var, claims[1].lo) == (
+            "limit", _srepr(G), _srepr(S), "Integer(0)") and claims[2].kind == "value_sign" and \
+            claims[2].want == 0 and claims[2].expr == _srepr(F.subs(S, 0) - parse(claims[1].other)):
+        return claims[3:], G            # G(0+) = F(0): F is G continued to 0
     return (claims[1:], G) if open_only else (claims, F)
 
 
@@ -852,6 +859,8 @@ def check(data) -> list[PropertyCheck]:
             raise CertificateError(f"the checker cannot read the design's f ({exc}): nothing can be re-checked; "
                                    f"the kernel reads exp, log, sqrt and powers, trigonometric and hyperbolic "
                                    f"functions and their inverses, erf, Abs, Max, Min, Piecewise") from None
+        if _at(f, (0, 0)).has(sp.nan, sp.zoo):      # the links read F(0+) as F(0) (`kernel.limit_by_taylor`)
+            raise CertificateError("the design's f is undefined at the origin")
         props = data["properties"]
         names = set(props) if isinstance(props, dict) else set()
         if not names or not names <= {*PROPERTIES, "kf"}:

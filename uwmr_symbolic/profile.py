@@ -399,9 +399,17 @@ def one_sided_value(expr, c, side: int):
         lim = limit_right(substitute(prepare(expr), S, c + side * X), X)
         return None if lim.value.has(sp.nan, sp.zoo) else lim.value
     except NoLimit:
-        return None
+        pass
     except (ZeroDivisionError, TypeError, ValueError):
         return None
+    if (c, side) == (0, 1):     # 0/0 at the origin: the kernel's Taylor quotient (sinh(s^2)/s^2 - 1 -> 0)
+        from .certify import NoProof, taylor_limit
+        from .kernel.parse import parse
+        try:
+            return parse(taylor_limit(expr, S, NEAR).claim.other)
+        except NoProof:
+            return None
+    return None
 
 
 def same_value(a, b) -> bool | None:

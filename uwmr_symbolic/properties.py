@@ -250,7 +250,7 @@ class Analysis:
         """`open_branch` when F(0) = G(0) too: then F = G on [0, oo) and every
         property's lemmas are about G; else (F, [])."""
         G, theorems = self.open_branch
-        return (G, theorems) if len(theorems) == 2 else (self.F, [])
+        return (G, theorems) if len(theorems) > 1 else (self.F, [])
 
     @property
     def kernel_F(self):

@@ -427,21 +427,57 @@ def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
     cuts = _cuts(var, cuts if cuts is not None else [a, b])
     _need(cuts[0] == a and cuts[-1] == b, "the cuts must run from one end of the box to the other")
     e = _expr(expr, var)
-    for k in range(order + 1):
-        d = derivative(d, var) if k else e
-        try:
-            boxes = [evaluate(d, var, u, v) for u, v in zip(cuts, cuts[1:])] if k == order \
-                else [evaluate(d, var, a, b)]
-        except Undefined as exc:
-            raise KernelError(f"derivative {k} not defined on [{a}, {b}]: {exc}") from None
-        if k < order:
-            at_c = d.xreplace({var: c})
-            _need(at_c == 0 or _const_sign(at_c, zero=True) == 0, lambda: f"derivative {k} at {c} is {at_c}, not exactly 0")
-            _need(evaluate(d, var, c, c, bits=256).hull().contains(0), "Arb disagrees with exact 0")
-    sigma = 1 if all(v.positive() for v in boxes) else -1 if all(v.negative() for v in boxes) else 0
+    sigma = _strict_sign(_vanishing_to_order(e, var, c, cuts, order)[1])
     _need(sigma != 0, lambda: f"derivative {order} has no strict sign on [{a}, {b}]")
     return _sign_claim(e, var, a, b, side > 0, side < 0, sigma * side ** order, True)
 sign_by_taylor = rule("arb", "sympy-core", "sympy-diff")(sign_by_taylor)
+
+
+def _vanishing_to_order(e, var, c, cuts, m):
+    """(E^(m), its Arb boxes on the closed boxes between the `cuts`) once E,
+    ..., E^(m) (`sympy.diff` applied k times) are shown defined, hence
+    continuous, on [cuts[0], cuts[-1]] and E(c) = ... = E^(m-1)(c) = 0
+    exactly (`_const_sign`, confirmed by an Arb enclosure containing 0)."""
+    a, b = cuts[0], cuts[-1]
+    for k in range(m + 1):
+        d = derivative(d, var) if k else e
+        try:
+            boxes = [evaluate(d, var, u, v) for u, v in zip(cuts, cuts[1:])] if k == m else [evaluate(d, var, a, b)]
+        except Undefined as exc:
+            raise KernelError(f"derivative {k} not defined on [{a}, {b}]: {exc}") from None
+        if k < m:
+            at_c = d.xreplace({var: c})
+            _need(at_c == 0 or _const_sign(at_c, zero=True) == 0, lambda: f"derivative {k} at {c} is {at_c}, not exactly 0")
+            _need(evaluate(d, var, c, c, bits=256).hull().contains(0), "Arb disagrees with exact 0")
+    return d, boxes
+
+
+def _strict_sign(boxes) -> int:
+    return 1 if all(v.positive() for v in boxes) else -1 if all(v.negative() for v in boxes) else 0
+
+
+def limit_by_taylor(*, expr, num, den, var, order, width):
+    """E(x) -> L as x -> 0+, for 0/0: E(0) is undefined (SymPy's value has
+    nan or zoo: else `continuous_at_end`), E D = N exactly where defined
+    (`_exact_zero`: E over one denominator), E defined on (0, w]
+    (`_defined`); N and D vanish at 0 to order m >= 1 (`_vanishing_to_order`
+    on [0, w]) and D^(m) has one strict sign on [0, w].  By Taylor with the
+    Lagrange remainder N(x) = N^(m)(xi) x^m/m!, D(x) = D^(m)(eta) x^m/m!
+    with xi, eta in (0, x): D != 0 on (0, w], and E(x) = N^(m)(xi)/D^(m)(eta)
+    -> N^(m)(0)/D^(m)(0) = L (exact, SymPy's value; Arb agrees).  Claim kind
+    "limit" on [0, w] with other = L."""
+    w = _number(width)
+    _need(isinstance(order, int) and 1 <= order <= 12 and _lt(0, w) and w != OO, "order 1..12 and a finite w > 0")
+    _interval(var, 0, w, False, False, at_zero=True)
+    e, n, d = (_expr(x, var) for x in (expr, num, den))
+    _need(e.xreplace({var: sp.Integer(0)}).has(sp.nan, sp.zoo) and _exact_zero(e * d, n, (var,)), "E(0) defined, or E D - N not 0")
+    extra = _defined(e, var, 0, w, lo_open=True, hi_open=False)
+    (dn, _), (dd, boxes) = (_vanishing_to_order(p, var, 0, [sp.Integer(0), w], order) for p in (n, d))
+    _need(_strict_sign(boxes) != 0, lambda: f"derivative {order} of D has no strict sign on [0, {w}]")
+    L = _number(dn.xreplace({var: sp.Integer(0)}) / dd.xreplace({var: sp.Integer(0)}))
+    _need(evaluate(dn / dd - L, var, 0, 0, bits=256).hull().contains(0), "Arb disagrees with L")
+    return Claim("limit", _s(e), _s(var), _s(0), _s(w), other=_s(L)), extra
+limit_by_taylor = rule("arb", "sympy-core", "sympy-diff", "sympy-polys")(limit_by_taylor)
 
 
 def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
