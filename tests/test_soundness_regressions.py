@@ -104,6 +104,19 @@ def test_a_removable_zero_over_zero_at_the_origin(tmp_path, body, checked):
     assert v["P1"] != "refuted" and v["P7"] == "proved"
 
 
+def test_kf_of_a_removable_zero_over_zero_at_the_origin(tmp_path):
+    # F = 1 - atan(s^2)/s^2 = s^4/3 - ... (F(0) = 0 given apart): F' = 2 atan(s^2)/s^3 - 2/(s (1 + s^4)) is
+    # 0/0 at s = 0 (-> 0), positive (x/(1 + x^2) < atan(x) for x > 0), and tends to 0 at infinity: kf is its
+    # maximum, about 0.5847 (mpmath below).  Near 0 the search bounds F' by Taylor on its numerator and
+    # denominator (`quotient_near_zero`), and the kernel signs kf - F' there after one denominator.
+    report, v = verify(tmp_path, "f = Piecewise((0, Eq(rho, 0)), (1 - atan(rho)/rho, True))\n")
+    assert {"P1", "P5", "P7", "P8", "kf"} <= set(report.kernel["checked"]) and v["P3"] == "refuted"
+    dF = lambda s: 2 * mpmath.atan(s ** 2) / s ** 3 - 2 / (s * (1 + s ** 4))
+    s_max = mpmath.findroot(lambda s: mpmath.diff(dF, s), max((mpmath.mpf(i) / 100 for i in range(1, 500)), key=dF))
+    assert report.kf.lower <= Fraction(str(mpmath.nstr(dF(s_max), 30))) <= report.kf.upper
+    assert report.kf.upper - report.kf.lower < Fraction(1, 10 ** 6)
+
+
 def test_a_certificate_of_an_f_undefined_at_the_origin_is_refused(tmp_path):
     # the links read a kernel limit F(0+) as the value F(0): for an f undefined at the origin (sinh(rho)/rho
     # - 1, which the loader refuses) a certificate must be refused whole, whatever its steps

@@ -251,6 +251,7 @@ def _brief(x, limit=160) -> str:
 
 
 _CYCLE = NoProof("a claim that needs itself")
+SPENT = "the proposer's budget is spent"
 STOPPED = (None, "the lemma's time backstop (WALL_CAP times its nominal seconds) ran out")
 _U, _U_REAL = sp.Symbol("u", nonnegative=True), sp.Symbol("u", real=True)     # `Prover._substituted`
 
@@ -339,7 +340,7 @@ class Prover:
     def __init__(self, work=WORK):
         self.memo, self.factored, self.identities, self.together = {}, {}, {}, {}
         self.budget = Budget(work, _design)
-        self.spent = NoProof("the proposer's budget is spent")
+        self.spent = NoProof(SPENT)
 
     def prove(self, e, var, I, want, strict=True, depth=0, near=False):
         """`near`: I is a one-sided neighbourhood of its open end; no further
@@ -775,13 +776,15 @@ class Prover:
 
     def _one_sided(self, e, var, c, side, want, room, depth):
         """A one-sided lemma at c, trying shrinking widths; where e is not
-        defined at c (no Taylor, no cover touching c) only the widest."""
+        defined at c (no Taylor, no cover touching c) only the widest, or
+        the widest four for a 0/0 whose numerator and denominator are
+        (Taylor after one denominator: `_prove`)."""
         last = None
         try:
             evaluate(e, var, c, c)
             widths = WIDTHS
         except Undefined:
-            widths = [w for w in WIDTHS if K._lt(2 * w, room)][:1]
+            widths = [w for w in WIDTHS if K._lt(2 * w, room)][:4 if self._quotient_at(e, var, c) else 1]
         for w in widths:
             if K._lt(2 * w, room):
                 try:
@@ -791,6 +794,18 @@ class Prover:
                         raise
                     last = exc
         raise NoProof("no one-sided lemma at {}: {}", c, last)
+
+    def _quotient_at(self, e, var, c) -> bool:
+        """e is a sum with a negative power whose numerator and denominator
+        over one denominator are defined at c."""
+        if not (e.is_Add and any(a.exp.is_negative for a in e.atoms(sp.Pow))):
+            return False
+        try:
+            for part in sp.fraction(self._together(e)):
+                evaluate(sp.sympify(part), var, c, c)
+        except Undefined:
+            return False
+        return True
 
     def _split(self, e, var, I, want, strict, depth):
         """One-sided lemmas at the open ends, a cover in between, joined."""
@@ -2051,7 +2066,7 @@ def refutation_theorems(name, verdict, f):
     budget = Budget(WORK)
     for record in _witness_candidates(name, verdict.witness):
         if budget.spent():
-            why = "the proposer's budget is spent"
+            why = SPENT
             break
         try:
             key = (f, repr(sorted(record.items())))

@@ -24,7 +24,8 @@ from .timeouts import attempt
 from .certify import (WORK, abs_upper_theorem, piecewise_sup_theorems, renew_pool, sign_theorems, sup_abs_theorems,
                       sup_lower_theorem, sup_theorems, sup_upper_theorem)
 from .univariate import (certified_inside, decimal_beyond, enclose_sup, exact_sign, exact_value, far_out_trend,
-                         limit_at_infinity, prepare, prove_sign, small_rates, solveset_hopeless, tail_start, value_at)
+                         limit_at_infinity, prepare, prove_sign, quotient_near_zero, small_rates, solveset_hopeless,
+                         tail_start, value_at)
 
 REL_WIDTH = 1e-7          # target relative width of enclosures (issue: <= 1e-6)
 
@@ -248,7 +249,8 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
 
     ``near_zero``: for E = F'/s, whose formula is 0/0 at s = 0, the caller
     passes F''; by the mean value theorem (F'(0) = 0) E(s) = F''(xi) with
-    0 < xi < s, so sup F'' over [0, 1/8] bounds E there from above."""
+    0 < xi < s, so sup F'' over [0, 1/8] bounds E there from above.  An E
+    that is 0/0 at 0 otherwise is bounded there by `quotient_near_zero`."""
     renew_pool()
     pieces = analysis.profile.pieces
     exprs = [prepare(e) for e in exprs]
@@ -268,18 +270,22 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
     early = far_out_trend(exprs[-1], S) >= 0     # else the limit at oo only if no bound is found (it is slow)
     if early and (unbounded := _unbounded_at_infinity(exprs[-1], name)):
         return unbounded
-    lower, upper, top = None, Fraction(0), None
+    lower, upper, top, quotient = None, Fraction(0), None, False
     floor = _quick_lower(exprs, pieces) if len(pieces) > 2 else None   # pieces below it need no tight sup
     for i, (E, piece) in enumerate(zip(exprs, pieces)):
         lo = piece.lo
-        if i == 0 and near_zero is not None and exact_value(E, S, 0) is None \
-                and (piece.hi == sp.oo or piece.hi > NEAR_ZERO):
-            near = enclose_sup(prepare(near_zero), S, 0, sp.Rational(NEAR_ZERO), rel_tol=REL_WIDTH)
-            if near.upper is None:
+        if i == 0 and exact_value(E, S, 0) is None and (piece.hi == sp.oo or piece.hi > NEAR_ZERO):
+            if near_zero is not None:
+                near = enclose_sup(prepare(near_zero), S, 0, sp.Rational(NEAR_ZERO), rel_tol=REL_WIDTH).upper
+            else:       # E itself 0/0 at 0 (F' of sinh(s^2)/s^2 - 1): Taylor on its numerator and denominator
+                box = quotient_near_zero(E, S, sp.Rational(NEAR_ZERO))
+                near = None if box is None else box.upper_fraction()
+            if near is None:
                 upper = None
             elif upper is not None:
-                upper = max(upper, near.upper)      # an upper bound only (see above)
+                upper = max(upper, near)      # an upper bound only (see above)
             lo = sp.Rational(NEAR_ZERO)
+            quotient = near_zero is None and near is not None
         known = [x for x in (floor, lower) if x is not None]
         enc = enclose_sup(E, S, lo, piece.hi, rel_tol=REL_WIDTH, floor=max(known) if known else None)
         if enc.lower is not None and (lower is None or enc.lower > lower):
@@ -288,6 +294,8 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
             upper = None
         elif upper is not None:
             upper = max(upper, enc.upper)
+    if quotient and upper is not None and lower is not None and upper > lower and upper == near:
+        upper = _narrower_near_zero(exprs[0], lower, upper)
     if upper is None or lower is None:
         return (not early and _unbounded_at_infinity(exprs[-1], name)) or \
             SupCertificate(lower, None, None, None, f"branch and bound found no finite bound for {name}")
@@ -316,6 +324,25 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
     return SupCertificate(lower, upper, None, None,
                           f"interval branch and bound: sup {name} in [{show(lower)}, {show(upper)}]",
                           point=enc.point)
+
+
+def _narrower_near_zero(E, lower, upper):
+    """The sup bound `upper` of E over (0, oo) when the Taylor quotient bound
+    on (0, NEAR_ZERO] (`quotient_near_zero`) set it above the sup `lower`
+    seen: that bound on (0, w] for w = NEAR_ZERO/8, /64, /512 with the branch
+    and bound between w and NEAR_ZERO, the first at or below `lower`; else
+    the smallest found."""
+    top, w = Fraction(NEAR_ZERO), Fraction(NEAR_ZERO)
+    for _ in range(3):
+        w /= 8
+        box = quotient_near_zero(E, S, sp.Rational(w))
+        mid = enclose_sup(E, S, sp.Rational(w), sp.Rational(top), rel_tol=REL_WIDTH, floor=lower)
+        if box is None or mid.upper is None:
+            break
+        upper = min(upper, max(box.upper_fraction(), mid.upper, lower))
+        if upper <= lower:
+            break
+    return upper
 
 
 def _with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
@@ -356,7 +383,7 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis, side=None) -> SupCert
     Piecewise F, `_piecewise_enclosure`.  When F' changes sign (`side` = +-1:
     kf = sup side*F'), |F'| <= U and sup side*F' >= L instead."""
     L = decimal_beyond(cert.lower, -1)
-    tiers = ((decimal_beyond(cert.upper, 1), WORK), (decimal_beyond(cert.upper * Fraction(9, 8), 1, 2), WORK))
+    tiers = ((decimal_beyond(cert.upper, 1), 2 * WORK), (decimal_beyond(cert.upper * Fraction(9, 8), 1, 2), WORK))
     if len(analysis.profile.pieces) > 1:
         U, theorems, why = (None, None, "F' of a Piecewise F changes sign") if side else \
             _piecewise_enclosure(cert, analysis, L, tiers)
@@ -380,6 +407,7 @@ def _formula_enclosure(cert: SupCertificate, analysis, L, tiers, side=None):
     for U, work in tiers:
         if L <= 0 or side is None and positive is None:
             break
+        renew_pool()        # (what a tighter U spent exploring tails is no loss to a looser one)
         upper = sup_upper_theorem(dF, U, S, work=work) if side is None else abs_upper_theorem(dF, U, S, work=work)
         if upper is not None:
             break

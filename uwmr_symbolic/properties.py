@@ -30,10 +30,10 @@ from . import e1 as E1, e2 as E2
 from .design import Design
 from .design_certificate import _JUMPS, SMOOTH_ONLY, axis_split, e1_sides, e2_sides, half_axes
 from .interval import Interval, IntervalFunction, Undefined
-from .certify import (REDUCTION, NoProof, continuity_pair, exploring, growth_theorems, one_branch_theorems,
-                      origin_theorems, origin_value_theorems, piecewise_sign_theorem, plane_theorems, radial_theorems,
-                      refutation_theorems, separable_theorems, sign_theorems, smoothness_theorems,
-                      sup_upper_theorem)
+from .certify import (REDUCTION, SPENT, WORK, NoProof, continuity_pair, exploring, growth_theorems,
+                      one_branch_theorems, origin_theorems, origin_value_theorems, piecewise_sign_theorem,
+                      plane_theorems, radial_theorems, refutation_theorems, separable_theorems, sign_theorems,
+                      smoothness_theorems, sup_upper_theorem)
 from .kernel.core import derivative
 from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, scale, show
 from .limits import NoLimit, limit_right
@@ -221,9 +221,14 @@ class Analysis:
     @cached_property
     def slope_sign(self):
         """F' > 0 on (0, oo) as a kernel theorem, else F' >= 0 (zeros on
-        circles: enough for P1 and P6), else None; for an F of one formula."""
+        circles: enough for P1 and P6), else None; for an F of one formula.
+        F' > 0 (P5's lemma, which P1, P6 and kf use too) gets twice a lemma's
+        work when a lemma's runs out (2 - 2 log(1 + s^2)/s^2: 0/0 at 0)."""
         dF = derivative(self.kernel_F, S)
-        return (sign_theorems(dF, S, 0, sp.oo)[0] or sign_theorems(dF, S, 0, sp.oo, strict=False)[0] or [None])[0]
+        positive, why = sign_theorems(dF, S, 0, sp.oo)
+        if positive is None and why == SPENT:
+            positive = sign_theorems(dF, S, 0, sp.oo, work=2 * WORK)[0]
+        return (positive or sign_theorems(dF, S, 0, sp.oo, strict=False)[0] or [None])[0]
 
     @cached_property
     def slope_theorem(self):

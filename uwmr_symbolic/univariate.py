@@ -410,6 +410,11 @@ def _sign_near(expr, var, c, side: int, want: int, width: Fraction) -> bool:
         if form != expr and (_sum_sign_near(form, var, lo, hi, c, side, want, width) if isinstance(form, sp.Add)
                              else _sign_near(form, var, c, side, want, width)):
             return True
+    if isinstance(expr, sp.Add) and sp.count_ops(expr) <= REGROUP_MAX_OPS and \
+            any(isinstance(a, sp.Pow) and a.exp.is_negative for a in expr.atoms(sp.Pow)):
+        form = sp.together(expr)        # 0/0 at c: sinh(s^2)/s^2 - 1 as (sinh(s^2) - s^2)/s^2, signed factor by factor
+        if isinstance(form, sp.Mul) and _sign_near(form, var, c, side, want, width):
+            return True
     if _composed_sign_near(expr, var, lo, hi, c, side, want):
         return True
     # Taylor with Lagrange remainder at c
@@ -526,6 +531,28 @@ def sign_near(expr, var, c, side, want) -> Fraction | None:
         except Undefined:
             continue
     return None
+
+
+def quotient_near_zero(expr, var, width) -> Interval | None:
+    """An enclosure of expr on (0, width] where it is 0/0 at 0: expr = N/D
+    over one denominator, N(0) = ... = N^(m-1)(0) = D(0) = ... = D^(m-1)(0)
+    = 0 with D^(m)(0) != 0 (`_derivative_values`): by Taylor with the
+    Lagrange remainder expr(x) = N^(m)(xi)/D^(m)(eta), xi, eta in (0, x), so
+    N^(m)([0, w]) / D^(m)([0, w]) encloses it (the quotient written so that
+    SymPy cancels nothing: each side is enclosed on its own).  None if not so."""
+    num, den = map(sp.sympify, sp.fraction(sp.together(expr)))
+    dsigns, dm = _derivative_values(den, var, 0, TAYLOR_ORDER)
+    if dm is None or len(dsigns) < 2:
+        return None
+    nm = num
+    for _ in range(len(dsigns) - 1):
+        if exact_value(nm, var, 0) != 0:
+            return None
+        nm = sp.diff(nm, var)
+    try:
+        return enclose(sp.Mul(nm, sp.Pow(dm, -1, evaluate=False), evaluate=False), var, 0, width, mode="continuous")
+    except Undefined:
+        return None
 
 
 # --------------------------------------------------------------------------
