@@ -1931,7 +1931,8 @@ def _witness_theorems(f, record):
     """Kernel theorems for one witness record (NoProof if the kernel refuses)."""
     from .design_certificate import H, along_ray, axis_derivative, growing, witness_values
     if record["kind"] == "bounded":
-        th = sup_upper_theorem(along_ray(f, record["direction"]), record["bound"], H)
+        # twice a lemma's work: a tail such as that of log(1 + h^2)^2/h^2 <= 1 costs more than one
+        th = sup_upper_theorem(along_ray(f, record["direction"]), record["bound"], H, work=2 * WORK)
         if th is None:
             raise NoProof("f <= {} along the ray not shown", record['bound'])
         return [th]

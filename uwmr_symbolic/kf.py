@@ -270,22 +270,23 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
     early = far_out_trend(exprs[-1], S) >= 0     # else the limit at oo only if no bound is found (it is slow)
     if early and (unbounded := _unbounded_at_infinity(exprs[-1], name)):
         return unbounded
-    lower, upper, top, quotient = None, Fraction(0), None, False
+    lower, upper, top, quotient, box = None, Fraction(0), None, False, None
     floor = _quick_lower(exprs, pieces) if len(pieces) > 2 else None   # pieces below it need no tight sup
     for i, (E, piece) in enumerate(zip(exprs, pieces)):
         lo = piece.lo
         if i == 0 and exact_value(E, S, 0) is None and (piece.hi == sp.oo or piece.hi > NEAR_ZERO):
             if near_zero is not None:
                 near = enclose_sup(prepare(near_zero), S, 0, sp.Rational(NEAR_ZERO), rel_tol=REL_WIDTH).upper
-            else:       # E itself 0/0 at 0 (F' of sinh(s^2)/s^2 - 1): Taylor on its numerator and denominator
-                box = quotient_near_zero(E, S, sp.Rational(NEAR_ZERO))
+            if near_zero is None or near is None:     # E (or F'') itself 0/0 at 0 (F' of sinh(s^2)/s^2 - 1):
+                box = quotient_near_zero(prepare(near_zero if near_zero is not None else E), S,   # by Taylor
+                                         sp.Rational(NEAR_ZERO))
                 near = None if box is None else box.upper_fraction()
             if near is None:
                 upper = None
             elif upper is not None:
                 upper = max(upper, near)      # an upper bound only (see above)
             lo = sp.Rational(NEAR_ZERO)
-            quotient = near_zero is None and near is not None
+            quotient = near is not None and box is not None
         known = [x for x in (floor, lower) if x is not None]
         enc = enclose_sup(E, S, lo, piece.hi, rel_tol=REL_WIDTH, floor=max(known) if known else None)
         if enc.lower is not None and (lower is None or enc.lower > lower):
@@ -294,7 +295,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
             upper = None
         elif upper is not None:
             upper = max(upper, enc.upper)
-    if quotient and upper is not None and lower is not None and upper > lower and upper == near:
+    if quotient and near_zero is None and upper is not None and lower is not None and lower < upper == near:
         upper = _narrower_near_zero(exprs[0], lower, upper)
     if upper is None or lower is None:
         return (not early and _unbounded_at_infinity(exprs[-1], name)) or \
@@ -330,14 +331,16 @@ def _narrower_near_zero(E, lower, upper):
     """The sup bound `upper` of E over (0, oo) when the Taylor quotient bound
     on (0, NEAR_ZERO] (`quotient_near_zero`) set it above the sup `lower`
     seen: that bound on (0, w] for w = NEAR_ZERO/8, /64, /512 with the branch
-    and bound between w and NEAR_ZERO, the first at or below `lower`; else
-    the smallest found."""
+    and bound between w and NEAR_ZERO (a short one: the cancellation near 0
+    makes it slow), the first at or below `lower`; else the smallest found."""
     top, w = Fraction(NEAR_ZERO), Fraction(NEAR_ZERO)
     for _ in range(3):
         w /= 8
         box = quotient_near_zero(E, S, sp.Rational(w))
-        mid = enclose_sup(E, S, sp.Rational(w), sp.Rational(top), rel_tol=REL_WIDTH, floor=lower)
-        if box is None or mid.upper is None:
+        if box is None or box.upper_fraction() >= upper:
+            break
+        mid = enclose_sup(E, S, sp.Rational(w), sp.Rational(top), rel_tol=REL_WIDTH, floor=lower, budget=1500)
+        if mid.upper is None:
             break
         upper = min(upper, max(box.upper_fraction(), mid.upper, lower))
         if upper <= lower:
