@@ -707,6 +707,21 @@ def test_kf_of_a_slope_that_changes_sign_is_enclosed_by_the_kernel(tmp_path):
     assert report.kf.upper - report.kf.lower < Fraction(1, 10 ** 6)
 
 
+def test_kf_when_a_term_falls_only_far_out(tmp_path):
+    # F = log(1 + s^2/4) erf(s^2/100)/1000 + 5 log(1 + s^2)/3.  By hand F' = 10 s/(3 (1 + s^2)) (at most 5/3, at
+    # s = 1) plus two small positive terms; one of them, s exp(-s^4/10^4) log(1 + s^2/4)/(25000 sqrt(pi)), rises
+    # up to s = 8 or so and falls only beyond: the tail is bounded term by term from R = 16, where the whole
+    # sum's tail form has no cover (exp(-1/t^4)).  Before, the whole F' was tried falling first and spent the
+    # pool, and the kernel's share of that term was looked for from R = 4 only.
+    report, v = verify(tmp_path, "f = log(rho/4 + 1)*sp.erf(rho/100)/1000 + 5*log(rho + 1)/3\n")
+    assert v["P1"] == "proved" and {"P1", "kf"} <= set(report.kernel["checked"])
+    dF = lambda s: (s * mpmath.erf(s ** 2 / 100) / (500 * (s ** 2 + 4)) + s * mpmath.exp(-s ** 4 / 10 ** 4)
+                    * mpmath.log(s ** 2 / 4 + 1) / (25000 * mpmath.sqrt(mpmath.pi)) + 10 * s / (3 * (s ** 2 + 1)))
+    s_max = mpmath.findroot(lambda s: mpmath.diff(dF, s), max((mpmath.mpf(i) / 100 for i in range(1, 2000)), key=dF))
+    assert report.kf.lower <= Fraction(str(mpmath.nstr(dF(s_max), 30))) <= report.kf.upper
+    assert report.kf.upper - report.kf.lower < Fraction(1, 10 ** 6)
+
+
 def test_exploring_lemmas_do_not_spend_the_designs_budget():
     # the search's tail lemmas (`exploring`) draw on a pool of their own: after them the design's
     # budget has as much left as before, and a spent pool stops them at once

@@ -415,6 +415,12 @@ class Prover:
                 return self._weaken(_cover(e, var, lo, hi, want, strict), I, strict)
             except NoProof as exc:
                 last = exc
+        elif e.is_Add and (shared := _shared_exp(e, var)) is not None:
+            try:                                # exp(-s^4/10^4) (s^4 L - ...): the tail form of the sum has no
+                return self._rewritten(e, shared, var, I, want, strict, depth, near)       # cover at t = 0
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
         elif want > 0 and e.is_Add:
             try:                                # before the sum's other forms spend the budget
                 return self._constant_shared(e, var, I, strict, depth)
@@ -584,7 +590,8 @@ class Prover:
         head <lo, R] as any finite interval, and on [R, oo) each c_i - a_i
         >= 0, c_i just above sup a_i there as the search sees it
         (`univariate.term_bound_on_tail`), the c_i adding up to at most c
-        (`sign_of_sum`): kf - F' for F = tanh(s^2) + log(1 + s^2), whose F' =
+        (`sign_of_sum`), R the first of R0, 4 R0, 16 R0, 64 R0 where they do
+        (R0 = `tail_start`): kf - F' for F = tanh(s^2) + log(1 + s^2), whose F' =
         2 s sech(s^2)^2 + 2 s/(s^2 + 1) has no such cover, and whose F'' the
         sign rules do not sign within a budget."""
         from .univariate import split_terms, tail_box, tail_start, term_bound_on_tail
@@ -596,15 +603,13 @@ class Prover:
         R = tail_start(lo)                      # (OverflowError where lo is beyond the doubles: no proof)
         if tail_box(e, var, R) is not None and not _essential_at_zero(_tail_form(e, var)):
             raise NoProof("{} is not c - (a_1 + ... + a_k), c > 0, with a blind tail", e)
-        bounds, hows = [], []
-        for t in terms:                         # each a_i >= 0 somewhere on the tail (none growing to oo)
-            found = term_bound_on_tail(-t, var, R)
-            if found is None or found[0] < 0:
-                raise NoProof("a term of {} is not seen bounded, >= 0 somewhere, beyond {}", e, R)
-            bounds.append(found[0])
-            hows.append(found[1])
-        if sum(bounds) >= c:
-            raise NoProof("the terms of {} are not seen below its constant", e)
+        for R in (R, 4 * R, 16 * R, 64 * R):   # (s exp(-s^4/10^4) log(1 + s^2/4) falls beyond 16 only)
+            found = [term_bound_on_tail(-t, var, R) for t in terms]    # each a_i >= 0 somewhere on the tail
+            if all(b is not None and b[0] >= 0 for b in found) and sum(b[0] for b in found) < c:
+                break
+        else:
+            raise NoProof("the terms of {} are not seen bounded below its constant beyond {}", e, R)
+        bounds, hows = zip(*found)
         room = (Fraction(c.p, c.q) - sum(bounds)) / (2 * len(terms))
         step = Fraction(1, 2 ** max(0, math.ceil(-math.log2(room))))      # a short dyadic in (b, b + room]
         shares = [sp.Rational(math.floor(b / step) + 1, 1) * sp.Rational(step.numerator, step.denominator)
@@ -630,9 +635,11 @@ class Prover:
                 A, B, b = bounded_factors(a, var, J[0])
                 below = self._share_above(c / b, A, term_bound_on_tail(A, var, J[0])[1], var, J, depth)
                 return _rule(K.sign_below_product, below, sub(B), sub(b - B), expr=c - a, a=c / b, b=b)
-            if how == "falls":
-                falls = sub(derivative(c - a, var), depth + 1)
-                return self._weaken(_rule(K.sign_by_monotone, falls, expr=c - a, var=var, R=J[0]), J, False)
+            if how == "falls":          # the search's own lemma (`term_bound_on_tail`), remembered, else anew
+                falls = sign_theorems(derivative(c - a, var), var, J[0], OO, lo_open=False, strict=False,
+                                      work=max(0, self.budget.limit - _work()))[0] or \
+                    [sub(derivative(c - a, var), depth + 1)]
+                return self._weaken(_rule(K.sign_by_monotone, falls[0], expr=c - a, var=var, R=J[0]), J, False)
         except NoProof as exc:
             if exc is self.spent:
                 raise
@@ -984,6 +991,13 @@ def _factored(e):
         factors = factors[:i] + (-factors[i],) + factors[i + 1:]
         coeff = -coeff
     return sp.Mul(*([coeff] if coeff != 1 else []), *factors, evaluate=False) if f.is_Mul else e
+
+
+def _shared_exp(e, var):
+    """e with the factors common to its terms taken out (`factor_terms`) when
+    they hold an exponential of var, else None."""
+    f = sp.factor_terms(e)
+    return f if f.is_Mul and any(isinstance(a, sp.exp) and a.has(var) for a in f.args) else None
 
 
 def _common_factors(e):

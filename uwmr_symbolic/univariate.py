@@ -919,8 +919,8 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
             from .certify import exploring, sign_theorems
             with exploring():
                 later = next((r for r in (R, 4 * R, 16 * R, 64 * R) if sign_theorems(
-                    -sp.diff(expr, var), var, r, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None),
-                    None)
+                    -sp.diff(expr, var), var, r, sp.oo, lo_open=False, strict=False, work=TAIL_WORK // 2)[0]
+                    is not None), None)
         if blind and later is None and len(split_terms(expr)) > 1:
             later, tail_bound = _termwise_tail(expr, var, lo, R)
         if later is not None:
@@ -1083,14 +1083,17 @@ def term_bound_on_tail(term, var, R) -> tuple[Fraction, str] | None:
             if a is not None and a[0] >= 0 and \
                     sign_theorems(A, var, R, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None:
                 return a[0] * Fraction(b.p, b.q), "product"
+    try:        # (only what the values at R and 2R allow is tried: a hopeless lemma spends the pool all the same)
+        at_r, at_2r = (value_at(term, var, x, prec=64) for x in (R, 2 * R))
+    except Undefined:
+        return None
     with exploring():
-        if sign_theorems(-sp.diff(term, var), var, R, sp.oo, lo_open=False, strict=False,
-                         work=TAIL_WORK)[0] is not None:
-            try:
-                return _hi(value_at(term, var, R, prec=64)), "falls"
-            except Undefined:
-                pass
-        if sign_theorems(-term, var, R, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None:
+        if at_2r.lower_float() <= at_r.upper_float() and sign_theorems(
+                -sp.diff(term, var), var, R, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None \
+                and _hi(at_r) is not None:
+            return _hi(at_r), "falls"
+        if at_r.lower_float() <= 0 and sign_theorems(-term, var, R, sp.oo, lo_open=False, strict=False,
+                                                     work=TAIL_WORK)[0] is not None:
             return Fraction(0), "below"
     return None
 
@@ -1099,9 +1102,12 @@ TAIL_DEGREE = 400      # `_bound_on_tail` leaves larger rational functions to th
 
 
 #: the work (`certify` units) of each sign lemma `enclose_sup` asks the kernel's
-#: rules for on a tail it cannot enclose: a sixth of a lemma's, so that a
-#: design's budget is left to its properties' own lemmas
-TAIL_WORK = 10_000
+#: rules for on a tail it cannot enclose, from a pool of their own
+#: (`certify.exploring`), so that a design's budget is left to its properties'
+#: own lemmas: a third of a lemma's for one term of a sum (s exp(-s^4/10^4)
+#: log(1 + s^2/4) falling beyond 16: 16k units), half that for the whole sum,
+#: which is tried first at four starts
+TAIL_WORK = 20_000
 
 
 def _bound_on_tail(expr, var, R, floor) -> Fraction | None:
