@@ -416,8 +416,8 @@ class Prover:
             except NoProof as exc:
                 last = exc
         elif e.is_Add and (shared := _shared_exp(e, var)) is not None:
-            try:                                # exp(-s^4/10^4) (s^4 L - ...): the tail form of the sum has no
-                return self._rewritten(e, shared, var, I, want, strict, depth, near)       # cover at t = 0
+            try:                                # exp(-s^4/10^4) (s^4 L - ...), cosh(4 s^2)^-2 (16 s^2 tanh(4 s^2) - 1):
+                return self._rewritten(e, shared, var, I, want, strict, depth, near)       # no cover at t = 0
             except NoProof as exc:
                 if exc is self.spent:
                     raise
@@ -995,9 +995,10 @@ def _factored(e):
 
 def _shared_exp(e, var):
     """e with the factors common to its terms taken out (`factor_terms`) when
-    they hold an exponential of var, else None."""
+    they hold an exp, cosh or sinh of var (or a power of one), else None."""
     f = sp.factor_terms(e)
-    return f if f.is_Mul and any(isinstance(a, sp.exp) and a.has(var) for a in f.args) else None
+    return f if f.is_Mul and any(isinstance(a.base if a.is_Pow else a, (sp.exp, sp.cosh, sp.sinh)) and a.has(var)
+                                 for a in f.args) else None
 
 
 def _common_factors(e):
