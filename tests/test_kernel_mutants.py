@@ -1851,3 +1851,29 @@ def test_logarithms_of_rationals_are_read_through_their_primes():
     r = sp.Rational(sp.floor(sp.sqrt(3) * 10 ** 90), 10 ** 90)
     c = (sp.log(3) - sp.log(2)) * (sp.sqrt(3) - r)
     assert why(V, value=c) == f"sign of {c} not decided"
+
+
+def test_limit_by_taylor_claim_and_refusals():
+    # (1 - cos s)/s^2 -> 1/2 (cos s = 1 - s^2/2 + ...): the claim on [0, w] closed, other = 1/2 exactly
+    e, w = (1 - sp.cos(s)) / s ** 2, Q(1, 2)
+    base = dict(expr=e, num=1 - sp.cos(s), den=s ** 2, var=s, order=2, width=w)
+    th = K.limit_by_taylor(**base)
+    assert th.claim == Claim("limit", R(e), R(s), R(I0), R(w), False, False, 0, False, R(Q(1, 2)))
+    assert th.assumptions == {"arb", "sympy-core", "sympy-diff", "sympy-polys"}
+    # the ends of the order range: 1 (log(1 + s)^2/s -> 0) and 12 (the same quotient over s^12)
+    assert K.limit_by_taylor(expr=sp.log(1 + s) ** 2 / s, num=sp.log(1 + s) ** 2, den=s, var=s, order=1,
+                             width=w).claim.other == R(I0)
+    assert K.limit_by_taylor(**{**base, "num": (1 - sp.cos(s)) * s ** 10, "den": s ** 12,
+                                "order": 12}).claim.other == R(Q(1, 2))
+    for bad in ({"order": 0}, {"order": 13}, {"width": I0}, {"width": oo}):
+        assert why(K.limit_by_taylor, **{**base, **bad}) == "order 1..12 and a finite w > 0"
+    # cos s = s cos s/s is defined at 0: continuity, not this rule
+    assert why(K.limit_by_taylor, **{**base, "expr": sp.cos(s), "num": s * sp.cos(s), "den": s, "order": 1}) \
+        == "E(0) defined, or E D - N not 0"
+    assert why(K.limit_by_taylor, **{**base, "num": 1 - sp.cos(s) + s ** 3}) == "the rational functions differ"
+    # D = s^2 - s^3: D'' = 2 - 6s is not signed on [0, 1/2]; sinh(s) does not vanish at 0 to order 2
+    assert why(K.limit_by_taylor, **{**base, "expr": (1 - sp.cos(s)) / (s ** 2 - s ** 3), "den": s ** 2 - s ** 3}) \
+        == "derivative 2 of D has no strict sign on [0, 1/2]"
+    assert why(K.limit_by_taylor, **{**base, "expr": sp.sinh(s) / s ** 2, "num": sp.sinh(s)}) \
+        == "derivative 1 at 0 is 1, not exactly 0"
+    assert why(K.limit_by_taylor, **{**base, "order": 1}) == "derivative 1 of D has no strict sign on [0, 1/2]"

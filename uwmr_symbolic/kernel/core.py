@@ -427,17 +427,17 @@ def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
     cuts = _cuts(var, cuts if cuts is not None else [a, b])
     _need(cuts[0] == a and cuts[-1] == b, "the cuts must run from one end of the box to the other")
     e = _expr(expr, var)
-    sigma = _strict_sign(_vanishing_to_order(e, var, c, cuts, order)[1])
+    sigma = _vanishing_to_order(e, var, c, cuts, order)[1]
     _need(sigma != 0, lambda: f"derivative {order} has no strict sign on [{a}, {b}]")
     return _sign_claim(e, var, a, b, side > 0, side < 0, sigma * side ** order, True)
 sign_by_taylor = rule("arb", "sympy-core", "sympy-diff")(sign_by_taylor)
 
 
 def _vanishing_to_order(e, var, c, cuts, m):
-    """(E^(m), its Arb boxes on the closed boxes between the `cuts`) once E,
-    ..., E^(m) (`sympy.diff` applied k times) are shown defined, hence
-    continuous, on [cuts[0], cuts[-1]] and E(c) = ... = E^(m-1)(c) = 0
-    exactly (`_const_sign`, confirmed by an Arb enclosure containing 0)."""
+    """(E^(m), its strict sign on every closed box between the `cuts`, or 0)
+    once E, ..., E^(m) (`sympy.diff` applied k times) are shown defined,
+    hence continuous, on [cuts[0], cuts[-1]] and E(c) = ... = E^(m-1)(c) =
+    0 exactly (`_const_sign`, confirmed by an Arb enclosure containing 0)."""
     a, b = cuts[0], cuts[-1]
     for k in range(m + 1):
         d = derivative(d, var) if k else e
@@ -449,11 +449,7 @@ def _vanishing_to_order(e, var, c, cuts, m):
             at_c = d.xreplace({var: c})
             _need(at_c == 0 or _const_sign(at_c, zero=True) == 0, lambda: f"derivative {k} at {c} is {at_c}, not exactly 0")
             _need(evaluate(d, var, c, c, bits=256).hull().contains(0), "Arb disagrees with exact 0")
-    return d, boxes
-
-
-def _strict_sign(boxes) -> int:
-    return 1 if all(v.positive() for v in boxes) else -1 if all(v.negative() for v in boxes) else 0
+    return d, 1 if all(v.positive() for v in boxes) else -1 if all(v.negative() for v in boxes) else 0
 
 
 def limit_by_taylor(*, expr, num, den, var, order, width):
@@ -472,8 +468,8 @@ def limit_by_taylor(*, expr, num, den, var, order, width):
     e, n, d = (_expr(x, var) for x in (expr, num, den))
     _need(e.xreplace({var: sp.Integer(0)}).has(sp.nan, sp.zoo) and _exact_zero(e * d, n, (var,)), "E(0) defined, or E D - N not 0")
     extra = _defined(e, var, 0, w, lo_open=True, hi_open=False)
-    (dn, _), (dd, boxes) = (_vanishing_to_order(p, var, 0, [sp.Integer(0), w], order) for p in (n, d))
-    _need(_strict_sign(boxes) != 0, lambda: f"derivative {order} of D has no strict sign on [0, {w}]")
+    (dn, _), (dd, sigma) = (_vanishing_to_order(p, var, 0, [sp.Integer(0), w], order) for p in (n, d))
+    _need(sigma != 0, lambda: f"derivative {order} of D has no strict sign on [0, {w}]")
     L = _number(dn.xreplace({var: sp.Integer(0)}) / dd.xreplace({var: sp.Integer(0)}))
     _need(evaluate(dn / dd - L, var, 0, 0, bits=256).hull().contains(0), "Arb disagrees with L")
     return Claim("limit", _s(e), _s(var), _s(0), _s(w), other=_s(L)), extra
