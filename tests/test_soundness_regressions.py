@@ -722,6 +722,28 @@ def test_kf_when_a_term_falls_only_far_out(tmp_path):
     assert report.kf.upper - report.kf.lower < Fraction(1, 10 ** 6)
 
 
+def test_kf_of_a_chain_whose_last_piece_has_a_term_falling_far_out(tmp_path):
+    # F = tanh(s^4/10^4)/7 for s^2 <= 3/10, plus u^3/(u^3 + 1) beyond, u = s^2 - 3/10 (C^1 at the join: the
+    # added term's slope 6 s u^2/(u^3 + 1)^2 is 0 at u = 0).  By hand F' is bounded, sup about 1.786 at the
+    # peak of 6 s u^2/(u^3 + 1)^2 (mpmath below).  On the last piece the term 4 s^3 sech(s^4/10^4)^2/(7 10^4)
+    # rises up to s = 10 or so and falls beyond: its bound holds from R = 20, where the peak of F' near
+    # s = 1.3 was missed by the evenly spaced values of F' before R (now also values closer and closer to
+    # the piece's start), and the whole F' was tried falling at 5, 20, 80, 320 (now only where F'(2R) is not
+    # seen above F'(R)), which spent the pool.
+    body = ("u = rho - Rational(3, 10)\n"
+            "f = Piecewise((sp.tanh((rho/100)**2)/7, rho <= Rational(3, 10)),"
+            " (sp.tanh((rho/100)**2)/7 + u**3/(u**3 + 1), True))\n")
+    report, v = verify(tmp_path, body)
+    assert v["P1"] == "proved" and {"P1", "kf"} <= set(report.kernel["checked"])
+
+    def dF(s):
+        u = s ** 2 - mpmath.mpf(3) / 10
+        return 4 * s ** 3 / (7 * 10 ** 4 * mpmath.cosh(s ** 4 / 10 ** 4) ** 2) + 6 * s * u ** 2 / (u ** 3 + 1) ** 2
+    s_max = mpmath.findroot(lambda s: mpmath.diff(dF, s), max((mpmath.mpf(i) / 100 for i in range(60, 1000)), key=dF))
+    assert report.kf.lower <= Fraction(str(mpmath.nstr(dF(s_max), 30))) <= report.kf.upper
+    assert report.kf.upper - report.kf.lower < Fraction(1, 10 ** 6)
+
+
 def test_exploring_lemmas_do_not_spend_the_designs_budget():
     # the search's tail lemmas (`exploring`) draw on a pool of their own: after them the design's
     # budget has as much left as before, and a spent pool stops them at once

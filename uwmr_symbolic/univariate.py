@@ -918,7 +918,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
             # exp(-s^2) factor that interval covers of the tail in t = 1/s cannot enclose at t = 0
             from .certify import exploring, sign_theorems
             with exploring():
-                later = next((r for r in (R, 4 * R, 16 * R, 64 * R) if sign_theorems(
+                later = next((r for r in (R, 4 * R, 16 * R, 64 * R) if _seen_falling(expr, var, r) and sign_theorems(
                     -sp.diff(expr, var), var, r, sp.oo, lo_open=False, strict=False, work=TAIL_WORK // 2)[0]
                     is not None), None)
         if blind and later is None and len(split_terms(expr)) > 1:
@@ -1004,9 +1004,10 @@ def _termwise_tail(expr, var, lo, R):
     expr reaches on [lo, R'] (then the sup is not in the tail); (None, None)
     if there is none."""
     for r in (R, 4 * R, 16 * R, 64 * R):
-        try:
-            reached = max(v for v in (_lo(value_at(expr, var, lo + (r - lo) * sp.Rational(k, 16), prec=64))
-                                      for k in range(1, 16)) if v is not None)
+        steps = [sp.Rational(k, 16) for k in range(1, 16)] + [sp.Rational(1, 2 ** k) for k in range(5, 12)]
+        try:        # (evenly, and closer and closer to lo, where a peak of F' often is)
+            reached = max(v for v in (_lo(value_at(expr, var, lo + (r - lo) * x, prec=64)) for x in steps)
+                          if v is not None)
         except (Undefined, ValueError):
             return None, None
         total = Fraction(0)
@@ -1083,12 +1084,12 @@ def term_bound_on_tail(term, var, R) -> tuple[Fraction, str] | None:
             if a is not None and a[0] >= 0 and \
                     sign_theorems(A, var, R, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None:
                 return a[0] * Fraction(b.p, b.q), "product"
-    try:        # (only what the values at R and 2R allow is tried: a hopeless lemma spends the pool all the same)
-        at_r, at_2r = (value_at(term, var, x, prec=64) for x in (R, 2 * R))
+    try:
+        at_r = value_at(term, var, R, prec=64)
     except Undefined:
         return None
-    with exploring():
-        if at_2r.lower_float() <= at_r.upper_float() and sign_theorems(
+    with exploring():       # (only what its values allow is tried: a hopeless lemma spends the pool all the same)
+        if _seen_falling(term, var, R) and sign_theorems(
                 -sp.diff(term, var), var, R, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None \
                 and _hi(at_r) is not None:
             return _hi(at_r), "falls"
@@ -1096,6 +1097,15 @@ def term_bound_on_tail(term, var, R) -> tuple[Fraction, str] | None:
                                                      work=TAIL_WORK)[0] is not None:
             return Fraction(0), "below"
     return None
+
+
+def _seen_falling(e, var, R) -> bool:
+    """e(2R) is not seen above e(R) (Arb at both points): a proof that e
+    falls on [R, oo) is worth trying."""
+    try:
+        return value_at(e, var, 2 * R, prec=64).lower_float() <= value_at(e, var, R, prec=64).upper_float()
+    except Undefined:
+        return False
 
 
 TAIL_DEGREE = 400      # `_bound_on_tail` leaves larger rational functions to the tail form (root isolation slows)
