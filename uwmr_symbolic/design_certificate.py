@@ -370,9 +370,9 @@ def _one_branch(F, claims, open_only=False):
     s >= 0, and every property reduces to G; or, G being 0/0 at 0, G(0+) = L
     (a `limit` claim) and F(0) - L = 0: then F is G continued to 0, and the
     properties (which read G at 0 through its limits only) reduce to G too;
-    else (claims, F).  (An origin
-    given its own value, f = Piecewise((0, Eq(rho, 0)), (log(1 + rho),
-    True)), or a Max whose first argument is the larger everywhere.)
+    else (claims, F).  (An origin given its own value, f = Piecewise((0,
+    Eq(rho, 0)), (log(1 + rho), True)), or a Max whose first argument is
+    the larger everywhere.)
     `open_only` (P3, P8: about s > 0 only): F = G on (0, oo) is enough."""
     if not (F.has(sp.Piecewise) and claims and claims[0].kind == "identity"):
         return claims, F

@@ -407,7 +407,7 @@ def one_sided_value(expr, c, side: int):
         from .kernel.parse import parse
         try:
             return parse(taylor_limit(expr, S, NEAR).claim.other)
-        except NoProof:
+        except (NoProof, ZeroDivisionError, TypeError, ValueError):
             return None
     return None
 
