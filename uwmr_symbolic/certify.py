@@ -995,7 +995,10 @@ def _factored(e):
 
 def _shared_exp(e, var):
     """e with the factors common to its terms taken out (`factor_terms`) when
-    they hold an exp, cosh or sinh of var (or a power of one), else None."""
+    they hold an exp, cosh or sinh of var (or a power of one), else None
+    (at once when e has none: `factor_terms` of a large sum takes long)."""
+    if not any(g.has(var) for g in e.atoms(sp.exp, sp.cosh, sp.sinh)):
+        return None
     f = sp.factor_terms(e)
     return f if f.is_Mul and any(isinstance(a.base if a.is_Pow else a, (sp.exp, sp.cosh, sp.sinh)) and a.has(var)
                                  for a in f.args) else None
