@@ -466,7 +466,8 @@ def limit_by_taylor(*, expr, num, den, var, order, width):
     _need(isinstance(order, int) and 1 <= order <= 12 and _lt(0, w) and w != OO, "order 1..12 and a finite w > 0")
     _interval(var, 0, w, False, False, at_zero=True)
     e, n, d = (_expr(x, var) for x in (expr, num, den))
-    _need(e.xreplace({var: sp.Integer(0)}).has(sp.nan, sp.zoo) and _exact_zero(e * d, n, (var,)), "E(0) defined, or E D - N not 0")
+    _need(e.xreplace({var: sp.Integer(0)}).has(sp.nan, sp.zoo) and _exact_zero(e * d, n, (var,)),
+          "E(0) defined, or E D - N not 0")
     extra = _defined(e, var, 0, w, lo_open=True, hi_open=False)
     (dn, _), (dd, sigma) = (_vanishing_to_order(p, var, 0, [sp.Integer(0), w], order) for p in (n, d))
     _need(sigma != 0, lambda: f"derivative {order} of D has no strict sign on [0, {w}]")
