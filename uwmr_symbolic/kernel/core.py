@@ -438,13 +438,12 @@ def _vanishing_to_order(e, var, c, cuts, m):
     once E, ..., E^(m) (`sympy.diff` applied k times) are shown defined,
     hence continuous, on [cuts[0], cuts[-1]] and E(c) = ... = E^(m-1)(c) =
     0 exactly (`_const_sign`, confirmed by an Arb enclosure containing 0)."""
-    a, b = cuts[0], cuts[-1]
     for k in range(m + 1):
         d = derivative(d, var) if k else e
-        try:
-            boxes = [evaluate(d, var, u, v) for u, v in zip(cuts, cuts[1:])] if k == m else [evaluate(d, var, a, b)]
+        try:                # (defined on each closed box of a tiling: defined on all of it)
+            boxes = [evaluate(d, var, u, v) for u, v in zip(cuts, cuts[1:])]
         except Undefined as exc:
-            raise KernelError(f"derivative {k} not defined on [{a}, {b}]: {exc}") from None
+            raise KernelError(f"derivative {k} not defined on [{cuts[0]}, {cuts[-1]}]: {exc}") from None
         if k < m:
             at_c = d.xreplace({var: c})
             _need(at_c == 0 or _const_sign(at_c, zero=True) == 0, lambda: f"derivative {k} at {c} is {at_c}, not exactly 0")
