@@ -1712,20 +1712,14 @@ def _limit_at_zero(e, var, w):
 
 def taylor_limit(e, var, w, orders=8):
     """E(0+) for E = N/D over one denominator (`sympy.together`) with D(0) =
-    0 (`limit_by_taylor`), m the order of D's zero at 0 (the first derivative
-    of D with a nonzero value there, up to `orders`); NoProof if none."""
-    n, d = map(sp.sympify, sp.fraction(sp.together(e)))
-    if not d.has(var):
-        raise NoProof("{} is no quotient with a zero at 0", e)
-    dd = d
-    for m in range(orders + 1):
-        dd = derivative(dd, var) if m else d
-        at0 = dd.xreplace({var: sp.Integer(0)})
-        if at0.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
-            break
-        if m and at0 != 0:
-            return _rule(K.limit_by_taylor, expr=e, num=n, den=d, var=var, order=m, width=w)
-    raise NoProof("no order of the zero of {} at 0 found", d)
+    0 (`limit_by_taylor`), m the order of D's zero at 0, up to `orders`
+    (`univariate.zero_of_denominator`); NoProof if none."""
+    from .univariate import zero_of_denominator
+    found = zero_of_denominator(e, var, orders)
+    if found is None:
+        raise NoProof("{} is no quotient whose denominator has a zero of known order at 0", e)
+    n, d, _, m = found
+    return _rule(K.limit_by_taylor, expr=e, num=n, den=d, var=var, order=m, width=w)
 
 
 def origin_value_theorems(value) -> list:

@@ -270,7 +270,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
     early = far_out_trend(exprs[-1], S) >= 0     # else the limit at oo only if no bound is found (it is slow)
     if early and (unbounded := _unbounded_at_infinity(exprs[-1], name)):
         return unbounded
-    lower, upper, top, quotient, box = None, Fraction(0), None, False, None
+    lower, upper, top, box = None, Fraction(0), None, None
     floor = _quick_lower(exprs, pieces) if len(pieces) > 2 else None   # pieces below it need no tight sup
     for i, (E, piece) in enumerate(zip(exprs, pieces)):
         lo = piece.lo
@@ -286,7 +286,6 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
             elif upper is not None:
                 upper = max(upper, near)      # an upper bound only (see above)
             lo = sp.Rational(NEAR_ZERO)
-            quotient = near is not None and box is not None
         known = [x for x in (floor, lower) if x is not None]
         enc = enclose_sup(E, S, lo, piece.hi, rel_tol=REL_WIDTH, floor=max(known) if known else None)
         if enc.lower is not None and (lower is None or enc.lower > lower):
@@ -295,7 +294,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
             upper = None
         elif upper is not None:
             upper = max(upper, enc.upper)
-    if quotient and near_zero is None and upper is not None and lower is not None and lower < upper == near:
+    if box is not None and near_zero is None and upper is not None and lower is not None and lower < upper == near:
         upper = _narrower_near_zero(exprs[0], lower, upper)
     if upper is None or lower is None:
         return (not early and _unbounded_at_infinity(exprs[-1], name)) or \

@@ -533,19 +533,27 @@ def sign_near(expr, var, c, side, want) -> Fraction | None:
     return None
 
 
+def zero_of_denominator(expr, var, order=TAYLOR_ORDER):
+    """(N, D, D^(m), m) for expr = N/D over one denominator (`sympy.together`)
+    whose D vanishes at 0 to order m, 1 <= m <= `order` (`_derivative_values`:
+    D^(m)(0) the first value not 0), or None."""
+    num, den = map(sp.sympify, sp.fraction(sp.together(expr)))
+    dsigns, dm = _derivative_values(den, var, 0, order)
+    return None if dm is None or len(dsigns) < 2 else (num, den, dm, len(dsigns) - 1)
+
+
 def quotient_near_zero(expr, var, width) -> Interval | None:
     """An enclosure of expr on (0, width] where it is 0/0 at 0: expr = N/D
     over one denominator, N(0) = ... = N^(m-1)(0) = D(0) = ... = D^(m-1)(0)
-    = 0 with D^(m)(0) != 0 (`_derivative_values`): by Taylor with the
+    = 0 with D^(m)(0) != 0 (`zero_of_denominator`): by Taylor with the
     Lagrange remainder expr(x) = N^(m)(xi)/D^(m)(eta), xi, eta in (0, x), so
     N^(m)([0, w]) / D^(m)([0, w]) encloses it (the quotient written so that
     SymPy cancels nothing: each side is enclosed on its own).  None if not so."""
-    num, den = map(sp.sympify, sp.fraction(sp.together(expr)))
-    dsigns, dm = _derivative_values(den, var, 0, TAYLOR_ORDER)
-    if dm is None or len(dsigns) < 2:
+    found = zero_of_denominator(expr, var)
+    if found is None:
         return None
-    nm = num
-    for _ in range(len(dsigns) - 1):
+    nm, _, dm, m = found
+    for _ in range(m):
         if exact_value(nm, var, 0) != 0:
             return None
         nm = sp.diff(nm, var)
