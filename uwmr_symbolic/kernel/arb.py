@@ -27,6 +27,8 @@ rewritten t-form (see docs/kernel.md).
 """
 from __future__ import annotations
 
+import functools
+
 import flint
 import sympy as sp
 from flint import arb, fmpq
@@ -81,10 +83,7 @@ def _mul(x: Iv, y: Iv) -> Iv:
     if x.lo >= 0 and y.lo >= 0:     # both sets >= 0: the products of the lower ends and of the upper ends
         return Iv(x.lo * y.lo, x.hi * y.hi)
     p = [x.lo * y.lo, x.lo * y.hi, x.hi * y.lo, x.hi * y.hi]
-    lo, hi = p[0], p[0]
-    for q in p[1:]:
-        lo, hi = lo.min(q), hi.max(q)
-    return Iv(lo, hi)
+    return Iv(functools.reduce(arb.min, p), functools.reduce(arb.max, p))
 
 
 def _inv(x: Iv) -> Iv:
@@ -194,16 +193,8 @@ def _node(e: sp.Expr, env: dict) -> Iv:
         if isinstance(e, sp.Float) or not e.is_real or not e.is_finite:
             raise Undefined(f"not an exact real constant: {e}")
         return _point(_constant(e))
-    if e.is_Add:
-        acc = _eval(e.args[0], env)
-        for a in e.args[1:]:
-            acc = _add(acc, _eval(a, env))
-        return acc
-    if e.is_Mul:
-        acc = _eval(e.args[0], env)
-        for a in e.args[1:]:
-            acc = _mul(acc, _eval(a, env))
-        return acc
+    if e.is_Add or e.is_Mul:
+        return functools.reduce(_add if e.is_Add else _mul, [_eval(a, env) for a in e.args])
     if e.is_Pow:
         if not e.exp.is_Rational:
             if e.base is sp.E:

@@ -836,11 +836,8 @@ def sign_below_product(bound_a, sign_b, bound_b, *, expr, a, b):
     B >= 0 and b - B >= 0 on I (exact a >= 0, b), A B <= a B <= a b, so
     E >= c - a b; E >= 0 if c - a b >= 0, > 0 if c - a b > 0 (exact / Arb).
     A and B are read off the premises (A = a - the first's E)."""
-    for t in (bound_a, sign_b, bound_b):
-        _is_sign(t)
-        _same_interval(t.claim, bound_a.claim)
-        _need(t.claim.want == 1, "premises must be >= 0 claims")
-    c0 = bound_a.claim
+    c0 = _signs_on_one_interval([bound_a, sign_b, bound_b])
+    _need(all(t.claim.want == 1 for t in (bound_a, sign_b, bound_b)), "premises must be >= 0 claims")
     var = c0.x()
     e, a, b = _expr(expr, var), _number(a), _number(b)
     A, B = a - bound_a.claim.e(), sign_b.claim.e()
@@ -1249,9 +1246,7 @@ def sign_on_tail(tail, ident, *, expr, var, R):
           "the tail theorem must be about (0, 1/R]")
     et = e.xreplace({var: 1 / t})
     _need(ic.var == tc.var and ic.expr == tc.expr and ic.other == _s(et), "the identity must read E_t(t) = E(1/t)")
-    ia, ib = ic.ends()
-    _need((ia == 0 or _lt(ia, 0)) and (_lt(1 / R, ib) or (ib == 1 / R and not ic.hi_open)),
-          "the identity must hold on (0, 1/R]")
+    _need(_within(ic, 0, 1 / R, True, False), "the identity must hold on (0, 1/R]")
     extra = _defined(e, var, R, lo_open=False)
     at_t = _defined(et, t, 0, 1 / R)       # E(1/t) defined for t in (0, 1/R)
     _interval(var, R, OO, False, True)
@@ -1728,9 +1723,7 @@ def _tail_limit(ident, expr, var, width):
     e, w = _expr(expr, var), _number(width)
     _need(_lt(0, w) and w != OO, "finite w > 0")
     _need(ic.other == _s(e.xreplace({var: 1 / t})), "the identity must read E_t(t) = E(1/t)")
-    ia, ib = ic.ends()
-    _need((ia == 0 or _lt(ia, 0)) and (_lt(w, ib) or (ib == w and not ic.hi_open)),
-          "the identity must hold on (0, w]")
+    _need(_within(ic, 0, w, True, False), "the identity must hold on (0, w]")
     et = ic.e()
     try:
         evaluate(et, t, 0, w)
