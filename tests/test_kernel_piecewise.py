@@ -291,6 +291,24 @@ def test_piecewise_identities_branch_by_branch():
         "the Piecewise sides differ in a condition or a branch"
 
 
+def test_a_condition_scaled_by_a_positive_rational_is_the_same_condition():
+    """Min(r/2, log(1 + r)) as the design's Piecewise reads log(1 + r) <= r/2,
+    while its profile F(s) = f(s, 0), through SymPy's subs, reads s^2 >=
+    2 log(1 + s^2): the same condition times 2.  Scaled by -2 (the inequality
+    turned round) or made strict, it is another condition."""
+    X, Y = sp.symbols("x y", real=True)
+    rho = X ** 2 + Y ** 2
+    L = sp.log(1 + rho)
+    f = sp.Piecewise((L, L <= rho / 2), (rho / 2, True))
+    assert K.identity_plane(lhs=f, rhs=sp.Piecewise((L, rho >= 2 * L), (rho / 2, True)), x=X, y=Y).claim.kind \
+        == "identity_plane"
+    assert K.identity_plane(lhs=f, rhs=sp.Piecewise((L, 3 * L - 3 * rho / 2 <= 0), (rho / 2, True)),
+                            x=X, y=Y).claim.kind == "identity_plane"
+    for cond in (rho <= 2 * L, rho > 2 * L, -2 * L + rho <= 1):
+        assert why(K.identity_plane, lhs=f, rhs=sp.Piecewise((L, cond), (rho / 2, True)), x=X, y=Y) == \
+            "the Piecewise sides differ in a condition or a branch"
+
+
 def test_continuous_piecewise_cuts_are_finite_positive_and_increasing():
     facts = [sturm(1 - s ** 2, s, 0, 1, lo_open=True, hi_open=True), sturm(1 - s ** 2, s, 1, sp.oo, True, True, -1)]
     for cuts, msg in (([sp.oo], "cut points are finite"), ([ZERO], "cut points not increasing: 0, 0"),

@@ -1519,7 +1519,9 @@ def _same_branches(l, r, variables) -> bool:
 def _condition(c, variables):
     """A condition in a form where equivalent conditions of these kinds
     coincide: a relation of real a, b as a - b against 0 (a >= b as
-    b - a <= 0, a = b as a - b = 0 or b - a = 0, whichever sorts first);
+    b - a <= 0, a = b as a - b = 0 or b - a = 0, whichever sorts first),
+    an inequality's a - b divided by its positive rational content
+    (`as_content_primitive`: 2 log y <= x as log y - x/2 <= 0 does);
     sqrt(E) = 0 (or != 0) holds exactly where E = 0 (or != 0); and for real
     x, y, (x = 0 and y = 0) exactly where x^2 + y^2 = 0 (its negation
     (x != 0 or y != 0) where x^2 + y^2 != 0)."""
@@ -1527,10 +1529,9 @@ def _condition(c, variables):
     if both and len(variables) == 2 and set(c.args) == {both(v, 0) for v in variables}:
         c = both(sp.Add(*[v ** 2 for v in variables]), 0)
     flip = {sp.Gt: sp.Lt, sp.Ge: sp.Le}
-    if type(c) in flip:
-        return flip[type(c)](c.rhs - c.lhs, 0)
-    if isinstance(c, (sp.Lt, sp.Le)):
-        return c.func(c.lhs - c.rhs, 0)
+    if type(c) in (*flip, sp.Lt, sp.Le):        # (a - b)/k for the positive rational content k of a - b
+        d = c.rhs - c.lhs if type(c) in flip else c.lhs - c.rhs
+        return flip.get(type(c), c.func)(d.as_content_primitive()[1], 0)
     if isinstance(c, (sp.Eq, sp.Ne)):
         d = next((e.base for e in (c.lhs - c.rhs, c.rhs - c.lhs) if e.is_Pow and e.exp == sp.Rational(1, 2)),
                  c.lhs - c.rhs)
