@@ -176,6 +176,21 @@ def test_numeric_evidence_never_contradicts_a_truth_the_grammar_claims(case):
             assert best is None or best[0] <= oracle._mp_of(case.kf) * (1 + 1e-30), (case.f, case.kf, best)
 
 
+def test_an_iterated_log_is_unbounded_growth():
+    """(sqrt(1 + rho) - 1) log(1 + log(1 + rho)): F(s) ~ s log(2 log s), so F'
+    -> oo (about 2.0 at s = 1e12, 2.7 at 1e50) and kf is infinite.  The
+    grammar read log log rho as a constant and called P1 true; the verifier's
+    refutation (F' -> oo) was reported as wrong (seed 20261210)."""
+    g = grammar.RHO_GROWTH
+    loglog = grammar._log_growth(grammar._log_growth(g))
+    assert loglog == (0, 0, 1)
+    assert grammar.kf_finite(tuple(x / 2 for x in g))                      # sqrt(rho): F' -> 1
+    assert not grammar.kf_finite(grammar.g_mul(tuple(x / 2 for x in g), loglog))
+    assert grammar.kf_finite(loglog) and grammar.dG_bounded(g)
+    assert not grammar.dG_bounded(grammar.g_mul(g, loglog))
+    assert grammar.g_max(loglog, grammar._log_growth(g)) == (0, 1, 0)
+
+
 def test_truth_values_are_python_bools_even_from_sympy_comparisons():
     a = sp.Rational(2)
     case = Case("dip", RHO, {"P5": a ** 2 / 8 + sp.Rational(1, 10 ** 12) > a ** 2 / 8, "P6": a < 1, "P7": None})

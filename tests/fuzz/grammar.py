@@ -83,22 +83,35 @@ def placeholders(expr, read):
 
 
 # ---------------------------------------------------------------- radial blocks
+# A growth (a, b, c, ...) is rho^a log(rho)^b log(log(rho))^c ... as rho -> oo, compared
+# lexicographically (missing exponents are 0); None: bounded.
 # name -> (G(u), growth map, sup over s of d/ds G(s^2) when known exactly)
 def _log_growth(g):
-    return None if g is None else ((Fraction(0), Fraction(1)) if g[0] > 0 else (Fraction(0), Fraction(0)))
+    """log of a growth whose first nonzero exponent is positive: the next iterated log
+    (log rho^a = a log rho; log (log rho)^b = b log log rho, which is unbounded: before,
+    it was read as a constant, and sqrt(rho) log(log(rho)) as having a finite kf)."""
+    if g is None:
+        return None
+    i = next(i for i, x in enumerate(g) if x != 0)
+    return tuple(Fraction(int(k == i + 1)) for k in range(i + 2))
+
+
+def _padded(*gs):
+    n = max(len(g) for g in gs)
+    return [tuple(g) + (Fraction(0),) * (n - len(g)) for g in gs]
 
 
 BLOCKS = {
     "log1p":   (lambda u: sp.log(1 + u), _log_growth, sp.Integer(1)),
     "asinh":   (sp.asinh, _log_growth, sp.sqrt(2)),
-    "sqrt1p":  (lambda u: sp.sqrt(1 + u) - 1, lambda g: None if g is None else (g[0] / 2, g[1] / 2), sp.Integer(1)),
+    "sqrt1p":  (lambda u: sp.sqrt(1 + u) - 1, lambda g: None if g is None else tuple(x / 2 for x in g), sp.Integer(1)),
     "logcosh": (lambda u: sp.log(sp.cosh(u)), lambda g: g, None),
     "atan":    (sp.atan, lambda g: None, R(3, 2) * 3 ** R(-1, 4)),
     "tanh":    (sp.tanh, lambda g: None, None),
     "erf":     (sp.erf, lambda g: None, 2 * sp.sqrt(2) * sp.exp(R(-1, 4)) / sp.sqrt(sp.pi)),
     "ratio":   (lambda u: u / (1 + u), lambda g: None, 3 * sp.sqrt(3) / 8),
     "expm":    (lambda u: 1 - sp.exp(-u), lambda g: None, sp.sqrt(2) * sp.exp(R(-1, 2))),
-    "pow2":    (lambda u: u ** 2, lambda g: None if g is None else (2 * g[0], 2 * g[1]), sp.oo),
+    "pow2":    (lambda u: u ** 2, lambda g: None if g is None else tuple(2 * x for x in g), sp.oo),
     "id":      (lambda u: u, lambda g: g, sp.oo),
 }
 SAFE_BLOCKS = [b for b in BLOCKS if b not in ("pow2", "id")]
@@ -114,11 +127,19 @@ class Atom:
 
 
 def kf_finite(g):
-    return g is None or g[0] < Fraction(1, 2) or (g[0] == Fraction(1, 2) and g[1] <= 0)
+    """F(s) = G(s^2) has a bounded F' iff G grows at most like rho^(1/2)."""
+    if g is None:
+        return True
+    a, b = _padded(g, (Fraction(1, 2),))
+    return a <= b
 
 
 def dG_bounded(g):
-    return g is None or g[0] < 1 or (g[0] == 1 and g[1] <= 0)
+    """G' is bounded iff G grows at most like rho."""
+    if g is None:
+        return True
+    a, b = _padded(g, (Fraction(1),))
+    return a <= b
 
 
 def g_max(a, b):
@@ -126,7 +147,7 @@ def g_max(a, b):
         return b
     if b is None:
         return a
-    return max(a, b)
+    return max(_padded(a, b))
 
 
 def g_mul(a, b):
@@ -134,7 +155,7 @@ def g_mul(a, b):
         return b
     if b is None:
         return a
-    return (a[0] + b[0], a[1] + b[1])
+    return tuple(x + y for x, y in zip(*_padded(a, b)))
 
 
 RHO_GROWTH = (Fraction(1), Fraction(0))
