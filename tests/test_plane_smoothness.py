@@ -36,6 +36,21 @@ P1 where df/de2 = psi(e2) does not depend on e1, f analytic on the plane:
 * e1^2 + log(cosh(e2)): psi = tanh(e2), |psi| < 1: P1 holds.
 * exp(e1) - 1 - e1 + log(1 + e2^2): psi = 2 e2/(1 + e2^2): P1 holds (df/de1 = exp(e1) - 1 is continuous).
 * cosh(e1) - 1 + e2^4: psi = 4 e2^3 is unbounded: P1 fails.
+P3 of a Piecewise f whose every branch is radial, G(|e|), with G > 0 on (0, oo) and G -> oo:
+* Min(rho/2, log(1 + rho)): rho/2 and log(1 + rho) are both > 0 for rho > 0 and -> oo, and f is
+  one of them at each point: P3 holds (the branches cross at a transcendental radius, where F
+  has a kink: P1 fails there).
+* log(1 + rho) where e1 > 0, 2 log(1 + rho) elsewhere: P3 holds (f jumps across e1 = 0).
+* log(1 + rho) where e1 > 0, rho/(1 + rho) elsewhere: f < 1 on the half-plane e1 <= 0: P3 fails.
+* log(1 + rho) where e1 > 0, rho - 1 elsewhere: f(-1/2, 0) = -3/4 < 0: P3 fails.
+kf = sup |psi| over the real line, psi continuous (bound (10)):
+* 3 e1^2/(1 + e1^2) + 3 e2^2/(1 + e2^2): psi = 6 e2/(1 + e2^2)^2, psi' = 6 (1 - 3 e2^2)/(1 + e2^2)^3
+  vanishes at e2^2 = 1/3: kf = 6 (1/sqrt 3)/(4/3)^2 = 9 sqrt(3)/8 = 1.94855...
+* log(1 + e1^2) + e2^2/(1 + e2^2) + e2/4: psi = 2 e2/(1 + e2^2)^2 + 1/4, and 2 s/(1 + s^2)^2
+  peaks at s = 1/sqrt 3 with 3 sqrt(3)/8: sup psi = 1/4 + 3 sqrt(3)/8 = 0.89951... (e2 > 0),
+  sup -psi = 3 sqrt(3)/8 - 1/4 (e2 < 0): kf = 1/4 + 3 sqrt(3)/8.
+* e1^2 + erf(e2^2)/2: psi = 2 e2 exp(-e2^4)/sqrt(pi), peak at e2^4 = 1/4:
+  kf = 2^(1/2) exp(-1/4)/sqrt(pi) = 0.62139...; -psi(s) < 0 has sup 0, approached only at 0 and oo.
 """
 import pytest
 import sympy as sp
@@ -197,3 +212,79 @@ def test_p1_p3_of_a_separable_f(tmp_path, body, name, verdict):
     check = {c.name: c for c in DC.check(DC.build(report))}[name]
     assert check.kernel_checked if verdict == "proved" else check.refutation_checked
     assert name != "P3" or verdict != "proved" or check.theorems == 10
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("body, kf", [
+    ("f = 3*e1**2/(1 + e1**2) + 3*e2**2/(1 + e2**2)\n", 9 * sp.sqrt(3) / 8),
+    ("f = log(1 + e1**2) + e2**2/(1 + e2**2) + e2/4\n", sp.Rational(1, 4) + 3 * sp.sqrt(3) / 8),
+    ("f = e1**2 + sp.erf(e2**2)/2\n", sp.sqrt(2) * sp.exp(-sp.Rational(1, 4)) / sp.sqrt(sp.pi)),
+])
+def test_kf_where_df_de2_depends_on_e2_only(tmp_path, body, kf):
+    """The kernel's enclosure of kf holds the value worked out by hand, within 1e-6."""
+    report, _ = verify(tmp_path, body)
+    assert report.kf is not None and report.kf.kernel_bounds is not None, report.kf
+    lower, upper = report.kf.lower, report.kf.upper
+    assert lower < kf < upper and upper - lower < 1e-6 * kf
+    assert {c.name: c for c in DC.check(DC.build(report))}["kf"].kernel_checked
+
+
+def test_kf_link_needs_the_four_bounds_a_side_and_its_enclosure():
+    f = x ** 2 + sp.sqrt(1 + y ** 2) - 1                # psi = e2/sqrt(1 + e2^2): kf = 1, approached only
+    uppers = [sup_upper_theorem(e, 1, S) for e in DC.e2_sides(f)]
+    half = sp.Rational(1, 2)
+    lower = K.sup_lower_by_point(expr=DC.e2_sides(f)[0], var=S, point=sp.Integer(1), bound=half, lo=0, hi=sp.oo,
+                                 lo_open=True, hi_open=True)     # psi(1) = 1/sqrt 2 >= 1/2
+    good = _plane(f) + uppers + [lower]
+    assert DC._link("kf", f, good, (half, sp.Integer(1))) == []
+    assert DC._link("kf", f, good, (sp.Rational(1, 3), sp.Integer(2))) == []
+    for bounds in ((sp.Rational(2, 3), sp.Integer(1)), (half, sp.Rational(99, 100))):     # [L, U] not inside
+        with pytest.raises(CertificateError):
+            DC._link("kf", f, good, bounds)
+    with pytest.raises(CertificateError):               # a bound of three sides only
+        DC._link("kf", f, good[:4] + good[5:], (half, sp.Integer(1)))
+    other = K.sup_lower_by_point(expr=2 * DC.e2_sides(f)[0], var=S, point=sp.Integer(1), bound=half, lo=0, hi=sp.oo,
+                                 lo_open=True, hi_open=True)     # about 2 psi, which is no side
+    with pytest.raises(CertificateError):
+        DC._link("kf", f, good[:5] + [other], (half, sp.Integer(1)))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("body, verdict", [
+    ("f = sp.Min(rho/2, log(1 + rho))\n", "proved"),
+    ("f = sp.Piecewise((log(1 + rho), e1 > 0), (2*log(1 + rho), True))\n", "proved"),
+    ("f = sp.Piecewise((log(1 + rho), e1 > 0), (rho/(1 + rho), True))\n", "not proved"),
+    ("f = sp.Piecewise((log(1 + rho), e1 > 0), (rho - 1, True))\n", "not proved"),
+])
+def test_p3_of_a_piecewise_f_whose_every_branch_is_radial(tmp_path, body, verdict):
+    report, v = verify(tmp_path, body)
+    if verdict == "proved":
+        assert v["P3"] == "proved", report.properties["P3"]
+        assert {c.name: c for c in DC.check(DC.build(report))}["P3"].kernel_checked
+    else:
+        assert v["P3"] != "proved", report.properties["P3"]
+
+
+def _branch_claims(f):
+    """The theorems the P3 link of a Piecewise f with radial branches expects, in order."""
+    out = []
+    for g, _ in sp.piecewise_fold(f).args:
+        G = DC.branch_profile(g)
+        out += _plane(g) + [K.identity_plane(lhs=g, rhs=G.xreplace({S: sp.sqrt(rho)}), x=x, y=y),
+                            sign_theorems(G, S, 0, sp.oo)[0][0], growth_theorems(G, S)[0]]
+    return out
+
+
+def test_p3_link_of_radial_branches_needs_every_branch_and_defined_conditions():
+    L = sp.log(1 + rho)
+    f = sp.Piecewise((L, x > 0), (2 * L, True))
+    good = _branch_claims(f)
+    assert len(good) == 8 and DC._link("P3", f, good) == []
+    with pytest.raises(CertificateError):               # the second branch's divergence left out
+        DC._link("P3", f, good[:-1])
+    with pytest.raises(CertificateError):               # the first branch's claims twice, the second's left out
+        DC._link("P3", f, good[:4] + good[:4])
+    for other in (sp.Piecewise((L, sp.sqrt(x) > 1), (2 * L, True)),     # sqrt(e1) is not real for e1 < 0
+                  sp.Piecewise((L, x > 0), (2 * L, y > 0))):             # no branch where x <= 0, y <= 0
+        with pytest.raises(CertificateError):
+            DC._link("P3", other, _plane(L) + good[1:4] + _plane(2 * L) + good[5:])

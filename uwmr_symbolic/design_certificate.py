@@ -38,7 +38,7 @@ import sympy as sp
 from . import e1 as E1, e2 as E2
 from .certify import REDUCTION
 from .kernel.certificate import CertificateError, check_certificate, to_certificate  # noqa: F401 (re-exported)
-from .kernel.core import _TRUE_WHEN, _srepr, derivative    # when a relation l < r (<=, >, >=) holds: the sign of r - l; srepr, cached
+from .kernel.core import _TRUE_WHEN, _lt, _srepr, derivative    # when a relation l < r (<=, >, >=) holds: the sign of r - l; srepr, cached
 from .kernel.parse import ParseError, parse
 from .profile import S
 from .verdict import PROPERTIES
@@ -127,6 +127,9 @@ def _profile(f):
     return sp.piecewise_fold(f.xreplace({E1: S, E2: sp.Integer(0)}))
 
 
+branch_profile = _profile       # (the proposer's name for it: a branch's G(s) = g(s, 0))
+
+
 def _link_kf(dF, bounds, claims, k=1, cuts=None) -> list[str]:
     """kf = k c with k = sqrt(r) (1 for a radial f) and c = sup |F'| on
     (0, oo), by F' >= 0, F' <= c and sup F' >= c, or, when F' changes sign,
@@ -155,14 +158,13 @@ def _link_kf(dF, bounds, claims, k=1, cuts=None) -> list[str]:
     else:
         want = [[("sup_upper", _srepr(sp.Abs(dF)), *sup)],
                 [("sup_lower", _srepr(dF), *sup), ("sup_lower", _srepr(-dF), *sup)]]
-    from .kernel.core import _lt
     lower, upper = bounds
     if lower == upper:
         ok = len(claims) >= 2 and claims[-2].other == claims[-1].other and _srepr(k * parse(claims[-1].other)) \
             == _srepr(lower)
     else:
         L, U = (sp.sympify(k * parse(c.other)) for c in claims[-1:-3:-1]) if len(claims) >= 2 else (None, None)
-        ok = L is not None and (lower == L or _lt(lower, L)) and (U == upper or _lt(U, upper))     # certified <=
+        ok = L is not None and _within_bounds(L, U, bounds)
     if not (ok and len(got) == len(want) and all(g in w for g, w in zip(got, want))):
         raise CertificateError(f"kf: the kernel's conclusions are not F' >= 0, F' <= U, sup F' >= L nor "
                                f"|F'| <= U, sup (+-F') >= L with sqrt(r) [L, U] inside [{lower}, {upper}]"
@@ -170,10 +172,15 @@ def _link_kf(dF, bounds, claims, k=1, cuts=None) -> list[str]:
     return []
 
 
+def _within_bounds(L, U, bounds) -> bool:
+    """lower <= L and U <= upper for bounds = (lower, upper), certified."""
+    lower, upper = bounds
+    return (lower == L or _lt(lower, L)) and (U == upper or _lt(U, upper))
+
+
 def _off_cuts(claim, cuts) -> bool:
     """The claim's interval J lies in (0, oo), has inner points, and no cut
     lies inside it or at a closed end."""
-    from .kernel.core import _lt
     lo, hi = parse(claim.lo), parse(claim.hi)
     return claim.var == _srepr(S) and (lo == 0 or _lt(0, lo)) and _lt(lo, hi) and all(
         _lt(b, lo) or _lt(hi, b) or (b == lo and claim.lo_open) or (b == hi and claim.hi_open) for b in cuts)
@@ -252,9 +259,9 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
         return []
     if name not in ("P1", "P3", "P5", "P6", "P7", "P8", "kf"):
         return []
-    if name in ("P1", "P3", "P5", "P6", "P7", "P8") and claims and (claims[0].kind, claims[0].var) == (
+    if name in ("P1", "P3", "P5", "P6", "P7", "P8", "kf") and claims and (claims[0].kind, claims[0].var) == (
             "continuous", _srepr(sp.Tuple(E1, E2))):
-        return _link_plane(name, f, claims)
+        return _link_plane(name, f, claims, bounds)
     F = _profile(f)
     claims, k = _reduction(f, F, claims)
     claims, F = _one_branch(F, claims, open_only=name in ("P3", "P8"))
@@ -267,7 +274,7 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
     return reduction + _link_reduced(name, F, dF, claims, k or 1, bounds)
 
 
-def _link_plane(name, f, claims) -> list[str]:
+def _link_plane(name, f, claims, bounds=None) -> list[str]:
     """P5-P8 of any f (radial or not) from `continuous_on_plane`.  An f
     without Abs, Piecewise, Max, Min or sign whose formula is defined at
     every point of the plane is analytic there: each construct the kernel
@@ -291,7 +298,11 @@ def _link_plane(name, f, claims) -> list[str]:
     radially unbounded: f >= each term, and max(|e1|, |e2|) >= |e|/sqrt(2).
     P1: f analytic, so C^1; df/de2's formula is psi(e2), free of e1, and
     +-psi(s), +-psi(-s) <= U on (0, oo), one U: |df/de2| <= U off e2 = 0,
-    and at e2 = 0 by continuity, so kf <= U is finite."""
+    and at e2 = 0 by continuity, so kf <= U is finite.  kf in [lower,
+    upper]: those five claims with U <= upper, and sup E >= L on (0, oo) for
+    one E of +-psi(+-s), L >= lower: |df/de2| >= E(s) at (0, +-s), so kf >= L."""
+    if name == "P3" and claims[0].expr != _srepr(f):
+        return _link_branches(f, claims)
     g, phi = derivative(f, E2), derivative(f, E1)
     plane = (_srepr(sp.Tuple(E1, E2)), "-oo", "oo", True, True, 0, False)
     on = (_srepr(S), "Integer(0)", "oo", True, True)
@@ -299,9 +310,13 @@ def _link_plane(name, f, claims) -> list[str]:
     want = [("continuous", _srepr(e), *plane) for e in ([f, g] if name == "P8" else [f])]
     ok = not f.has(*SMOOTH_ONLY, *([] if name == "P3" else [sp.Abs])) and (name not in ("P5", "P6")
                                                                           or not phi.has(E2))
-    if name == "P1":
+    if name in ("P1", "kf"):
         want += [("sup_upper", _srepr(e), *on, 0, False) for e in e2_sides(f)]
-        ok = ok and not g.has(E1) and len(claims) == 5 and len({c.other for c in claims[1:]}) == 1
+        ok = ok and not g.has(E1) and len(claims) == 5 + (name == "kf") and len({c.other for c in claims[1:5]}) == 1
+    if name == "kf" and ok:         # sup E >= L for one E of the four sides, and [L, U] inside the bounds
+        want += [("sup_lower", claims[5].expr, *on, 0, False)]
+        L, U = (parse(c.other) for c in (claims[5], claims[1]))
+        ok = claims[5].expr in {w[1] for w in want[1:5]} and _within_bounds(L, U, bounds)
     if name == "P3":
         want += [("identity_plane", _srepr(f), plane[0], "", "", False, False, 0, False)]
         want += [("sign", _srepr(u), *on, 1, True) for u in half_axes(f)]
@@ -322,6 +337,39 @@ def _link_plane(name, f, claims) -> list[str]:
                                "(P8: df/de2 = 0 at e2 = 0; P5, P6: df/de1 = phi(e1) signed, and bounded by k e1; "
                                "P3: f = f(e1, 0) + f(0, e2), each half-axis function > 0 and -> oo; "
                                "P1: df/de2 = psi(e2) bounded by one U)")
+    return []
+
+
+def _link_branches(f, claims) -> list[str]:
+    """P3 of a Piecewise f (SymPy's `piecewise_fold` of the design's f),
+    whatever its conditions, provided the last is True and the two sides of
+    every relation in them are defined on the plane (`defined_for_positive`
+    with two real variables), so that at every point some branch is taken:
+    four claims for each branch g in order, g defined, hence continuous, on
+    the plane; g(e1, e2) = G(sqrt(e1^2 + e2^2)) where both are defined, G =
+    g(s, 0); G > 0 on (0, oo); G -> oo.  At e != 0, f(e) = g(e) for the
+    branch taken there, and g(e) = G(|e|) > 0 (g is defined on the plane, G
+    on (0, oo)); so f(e) >= min over the branches of G(|e|), which tends to oo
+    with |e| (finitely many branches, each G -> oo): f is positive off the
+    origin and radially unbounded."""
+    from .kernel.core import defined_for_positive
+    pw, xy = sp.piecewise_fold(f), sp.Tuple(E1, E2)
+    plane, on = (_srepr(xy), "-oo", "oo", True, True, 0, False), (_srepr(S), "Integer(0)", "oo", True, True)
+    sides = [side for _, c in getattr(pw, "args", ()) for r in c.atoms(sp.Rel) for side in (r.lhs, r.rhs)]
+    ok = isinstance(pw, sp.Piecewise) and pw.args[-1].cond == sp.true and len(claims) == 4 * len(pw.args) \
+        and all(defined_for_positive(side, xy) is not None for side in sides)
+    want = []
+    for i, (g, _) in enumerate(pw.args if ok else ()):
+        G = _profile(g)
+        radial = G.xreplace({S: sp.sqrt(E1 ** 2 + E2 ** 2)})
+        ok = ok and not g.has(*SMOOTH_ONLY) and claims[4 * i + 1].other == _srepr(radial)
+        want += [("continuous", _srepr(g), *plane), ("identity_plane", _srepr(g), *plane[:1], "", "", False, False, 0,
+                                                     False), ("sign", _srepr(G), *on, 1, True),
+                 ("diverges", _srepr(G), _srepr(S), claims[4 * i + 3].lo, "oo", False, True, 0, False)]
+    got = [(c.kind, c.expr, c.var, c.lo, c.hi, c.lo_open, c.hi_open, c.want, c.strict) for c in claims]
+    if not ok or got != want:
+        raise CertificateError("P3: the kernel's conclusions are not, for each branch of f (its last condition True, "
+                               "its relations defined on the plane), g defined on the plane, g = G(|e|), G > 0, G -> oo")
     return []
 
 
@@ -794,7 +842,6 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         what = f"df/de1{p} has sign {want}"
     else:
         q = points[1]
-        from .kernel.core import _lt
         side = 1 if _lt(0, p[0]) else (-1 if _lt(q[0], 0) else 0)
         ok = (p[1] == q[1] and _lt(p[0], q[0]) and side != 0
               and (want * side <= 0 if name == "P5" else want * side < 0))

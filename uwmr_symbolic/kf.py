@@ -21,8 +21,8 @@ from .kernel.core import derivative
 from .limits import NoLimit, rational_parts
 from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
-from .certify import (WORK, abs_upper_theorem, piecewise_sup_theorems, renew_pool, sign_theorems, sup_abs_theorems,
-                      sup_lower_theorem, sup_theorems, sup_upper_theorem)
+from .certify import (WORK, abs_upper_theorem, piecewise_sup_theorems, plane_theorems, renew_pool, sign_theorems,
+                      sup_abs_theorems, sup_lower_theorem, sup_theorems, sup_upper_theorem)
 from .univariate import (certified_inside, decimal_beyond, enclose_sup, exact_sign, exact_value, far_out_trend,
                          limit_at_infinity, prepare, prove_sign, quotient_near_zero, small_rates, solveset_hopeless,
                          tail_start, value_at)
@@ -384,8 +384,7 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis, side=None) -> SupCert
     when the tight one is not shown within its budget): `kernel_bounds`; for a
     Piecewise F, `_piecewise_enclosure`.  When F' changes sign (`side` = +-1:
     kf = sup side*F'), |F'| <= U and sup side*F' >= L instead."""
-    L = decimal_beyond(cert.lower, -1)
-    tiers = ((decimal_beyond(cert.upper, 1), 2 * WORK), (decimal_beyond(cert.upper * Fraction(9, 8), 1, 2), WORK))
+    L, tiers = decimal_beyond(cert.lower, -1), _tiers(cert.upper)
     if len(analysis.profile.pieces) > 1:
         U, theorems, why = (None, None, "F' of a Piecewise F changes sign") if side else \
             _piecewise_enclosure(cert, analysis, L, tiers)
@@ -397,6 +396,13 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis, side=None) -> SupCert
     cert.kernel_bounds = (Fraction(L.p, L.q), Fraction(U.p, U.q))
     cert.kernel, cert.unchecked = theorems, []
     return cert
+
+
+def _tiers(upper):
+    """The upper bounds U the kernel is asked for, with their budgets: a
+    short decimal just above `upper` (twice a lemma's work), then one about
+    1/8 above it."""
+    return (decimal_beyond(upper, 1), 2 * WORK), (decimal_beyond(upper * Fraction(9, 8), 1, 2), WORK)
 
 
 def _formula_enclosure(cert: SupCertificate, analysis, L, tiers, side=None):
@@ -469,3 +475,46 @@ def certify_kf(analysis) -> SupCertificate:
         return _with_kernel(neg, analysis, side=-1)
     return SupCertificate(max(pos.lower, neg.lower), max(pos.upper, neg.upper), None, None,
                           "sup |F'| from both signs of F'")
+
+
+def certify_kf_along_e2(f) -> SupCertificate | None:
+    """kf = sup over R of |psi(e2)| (bound (10)) for an f analytic on the plane
+    whose df/de2 = psi(e2) is free of e1 (a separable g(e1) + h(e2), radial
+    or not): the largest sup over s > 0 of psi(s), -psi(s), psi(-s),
+    -psi(-s) (psi is continuous at 0), each enclosed by branch and bound.
+    The kernel's theorems (`design_certificate._link_plane`): f analytic on
+    the plane, the four <= U and sup >= L of the side that reaches it, for
+    short decimals L <= lower, U >= upper (`kernel_bounds`).  None when f is
+    not of this kind or a side has no finite bound found."""
+    from .design_certificate import E1, E2, SMOOTH_ONLY, e2_sides
+    sides = e2_sides(f)
+    if f.has(*SMOOTH_ONLY, sp.Abs) or any(e.has(E1) for e in sides) or not sides[0].has(S):
+        return None
+    encs = [enclose_sup(e, S, 0, sp.oo, rel_tol=REL_WIDTH) for e in sides]
+    found = [(e, enc) for e, enc in zip(sides, encs) if enc.upper is not None and enc.lower is not None]
+    if not found:
+        return None
+    side, best = max(found, key=lambda p: p[1].lower)
+    cert = SupCertificate(best.lower, max(enc.upper for _, enc in found), None, None, "", point=best.point)
+    blind = len(found) < len(sides)     # (-psi when psi > 0 decays: sup 0, approached at 0 and oo)
+    cert.reason = (f"df/de2 = psi(e2) does not depend on e1 (f analytic on the plane): kf = sup |psi| in "
+                   f"[{show(cert.lower)}, {show(cert.upper)}] (interval branch and bound on both half-axes)")
+    L = decimal_beyond(cert.lower, -1)
+    plane = plane_theorems(f, E1, E2, []) if L > 0 and best.point is not None else []
+    lower = plane and sup_lower_theorem(side, L, best.point, S)
+    for U, work in _tiers(cert.upper):
+        if not lower:
+            break
+        renew_pool()
+        uppers = [sup_upper_theorem(e, U, S, work=work) for e in sides]
+        if None not in uppers:
+            cert.kernel, cert.unchecked = plane + uppers + [lower], []
+            cert.kernel_bounds = (Fraction(L.p, L.q), Fraction(U.p, U.q))
+            cert.upper = max(cert.upper, cert.kernel_bounds[1]) if blind else cert.upper
+            return cert
+    if blind:          # a side the search did not bound: only the kernel's bound U makes [lower, upper] an enclosure
+        return None
+    cert.unchecked = [f"kf in [{show(cert.lower)}, {show(cert.upper)}] (kernel: "
+                      + ("f not shown analytic on the plane, or sup psi >= L not shown)" if not lower else
+                         "|psi| <= U not shown)")]
+    return cert

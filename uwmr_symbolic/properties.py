@@ -28,16 +28,17 @@ import sympy as sp
 
 from . import e1 as E1, e2 as E2
 from .design import Design
-from .design_certificate import _JUMPS, SMOOTH_ONLY, axis_split, e1_sides, e2_sides, half_axes
+from .design_certificate import _JUMPS, SMOOTH_ONLY, axis_split, branch_profile, e1_sides, e2_sides, half_axes
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, SPENT, WORK, NoProof, continuity_pair, exploring, growth_theorems,
                       one_branch_theorems, origin_theorems, origin_value_theorems, piecewise_sign_theorem,
                       plane_theorems, radial_theorems, refutation_theorems, separable_theorems, sign_theorems,
                       smoothness_theorems, sup_upper_theorem)
+from .kernel import core as K
 from .kernel.core import derivative
 from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, scale, show
 from .limits import NoLimit, limit_right
-from .profile import (S, continuous_on, elliptic_ratio, float_of, one_sided_value,
+from .profile import (RHO, S, continuous_on, elliptic_ratio, float_of, one_sided_value,
                       radial_profile,
                       same_value, split_profile, verify_radial)
 from .univariate import (MAX_BOXES, T, X, enclose, exact_sign, exact_value, far_out_trend, limit_at_infinity, prepare,
@@ -949,14 +950,43 @@ def _p3_separable(f) -> Verdict | None:
                   kernel=split + [t for ts in signs + growth for t in ts], unchecked=[])
 
 
-def _or_on_plane(verify, name: str):
+def _p3_each_branch(f) -> Verdict | None:
+    """P3 of a Piecewise f (folded; its last condition True, each condition's
+    relations defined on the plane) whose every branch g is defined on the
+    plane and radial, g = G(|e|) with G = g(s, 0) > 0 on (0, oo) and G -> oo,
+    kernel theorems (`design_certificate._link_branches`): whatever the
+    conditions, f(e) is some G(|e|), so f > 0 off the origin and f -> oo
+    (Min(r/2, log(1 + r)), whose profile's crossing no piece can follow, or
+    a branch chosen by the sign of e1)."""
+    pw = sp.piecewise_fold(f)
+    if not isinstance(pw, sp.Piecewise) or pw.args[-1].cond != sp.true or any(g.has(*SMOOTH_ONLY) for g, _ in pw.args):
+        return None
+    theorems = []
+    for g, _ in pw.args:
+        G = branch_profile(g)
+        try:
+            parts = plane_theorems(g, E1, E2, []) + [K.identity_plane(lhs=g, rhs=G.xreplace({S: RHO}),
+                                                                      x=E1, y=E2)]
+        except (K.KernelError, Undefined):
+            return None
+        sign = sign_theorems(G, S, 0, sp.oo)[0] if len(parts) == 2 else None
+        growth = growth_theorems(G, S) if sign is not None and len(sign) == 1 else []
+        if len(growth) != 1:
+            return None
+        theorems += parts + sign + growth
+    return proved("every branch of f is defined on the plane and radial, G(|e|) with G > 0 on (0, oo) and G -> oo "
+                  "(the kernel's rules): f(e) is one of them, so f > 0 off the origin and f -> oo",
+                  kernel=theorems, unchecked=[])
+
+
+def _or_else(verify, fallback):
     """`verify`, or where it leaves the property undecided or without kernel
-    theorems, `_smooth_on_plane`."""
+    theorems, `fallback(f)` when that decides it."""
     def run(a: Analysis) -> Verdict:
         v = verify(a)
         if v.refuted or (v.proved and v.details.get("kernel")):
             return v
-        return _smooth_on_plane(a.f, name) or v
+        return fallback(a.f) or v
     run.__doc__ = verify.__doc__
     return run
 
@@ -983,7 +1013,8 @@ def _through_reduction(verify, open_only=False):
     return run
 
 
-VERIFIERS = {"P1": _through_reduction(verify_p1), "P2": verify_p2, "P3": _through_reduction(verify_p3, True),
+VERIFIERS = {"P1": _through_reduction(verify_p1), "P2": verify_p2,
+             "P3": _or_else(_through_reduction(verify_p3, True), _p3_each_branch),
              "P4": verify_p4, "P5": _through_reduction(lambda a: a.p5), "P6": _through_reduction(verify_p6),
-             "P7": _or_on_plane(_through_reduction(verify_p7), "P7"),
-             "P8": _or_on_plane(_through_reduction(verify_p8, True), "P8")}
+             "P7": _or_else(_through_reduction(verify_p7), lambda f: _smooth_on_plane(f, "P7")),
+             "P8": _or_else(_through_reduction(verify_p8, True), lambda f: _smooth_on_plane(f, "P8"))}

@@ -20,7 +20,7 @@ import sympy as sp
 from .certify import design_budget
 from .design import Design, DesignError, load_design
 from .gains import GainCheck, check_gains
-from .kf import SupCertificate, show
+from .kf import SupCertificate, certify_kf_along_e2, show
 from .properties import PROPERTIES, VERIFIERS, Analysis
 from .replay import replay
 from . import timeouts
@@ -233,6 +233,8 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Tr
         with time_limit(stage_seconds(deadline, 1.0, time.monotonic())):
             if analysis.reduced and analysis.profile is not None:
                 kf = analysis.kf    # sup |F'| over the pieces, also when P1 fails
+            elif props["P1"].proved:
+                kf = certify_kf_along_e2(design.f)      # df/de2 = psi(e2): sup |psi|
     except TimeLimit:
         kf = None
         timed_out = True
