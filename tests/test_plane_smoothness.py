@@ -43,6 +43,14 @@ P3 of a Piecewise f whose every branch is radial, G(|e|), with G > 0 on (0, oo) 
 * log(1 + rho) where e1 > 0, 2 log(1 + rho) elsewhere: P3 holds (f jumps across e1 = 0).
 * log(1 + rho) where e1 > 0, rho/(1 + rho) elsewhere: f < 1 on the half-plane e1 <= 0: P3 fails.
 * log(1 + rho) where e1 > 0, rho - 1 elsewhere: f(-1/2, 0) = -3/4 < 0: P3 fails.
+P5, P6 of a Piecewise f whose conditions read e2 only and whose every branch is radial, G(|e|):
+along e1 the branch does not change, so df/de1 = G'(|e|) e1/|e| of the branch taken.
+* erf(rho) where e2 > 0, 2 erf(rho) elsewhere: G' = 2 s G_u(s^2) (2/sqrt(pi)) exp(-s^4) > 0 (P5);
+  G'/s = (4 or 8) exp(-s^4)/sqrt(pi) <= 8/sqrt(pi) (P6).
+* rho where e2 > 0, rho^2 elsewhere: G' = 2 s or 4 s^3 > 0 (P5 holds); G'/s = 4 s^2 is unbounded
+  on the branch taken at e2 = 0: P6 fails.
+* rho where e2 > 0, rho^2 - rho elsewhere: at (1/2, 0), df/de1 = (4 s^3 - 2 s)(1/2)/s = -1/2 < 0
+  with e1 > 0: P5 and P6 fail.
 kf = sup |psi| over the real line, psi continuous (bound (10)):
 * 3 e1^2/(1 + e1^2) + 3 e2^2/(1 + e2^2): psi = 6 e2/(1 + e2^2)^2, psi' = 6 (1 - 3 e2^2)/(1 + e2^2)^3
   vanishes at e2^2 = 1/3: kf = 6 (1/sqrt 3)/(4/3)^2 = 9 sqrt(3)/8 = 1.94855...
@@ -288,3 +296,42 @@ def test_p3_link_of_radial_branches_needs_every_branch_and_defined_conditions():
                   sp.Piecewise((L, x > 0), (2 * L, y > 0))):             # no branch where x <= 0, y <= 0
         with pytest.raises(CertificateError):
             DC._link("P3", other, _plane(L) + good[1:4] + _plane(2 * L) + good[5:])
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("body, p5, p6", [
+    ("f = sp.Piecewise((sp.erf(rho), e2 > 0), (2*sp.erf(rho), True))\n", "proved", "proved"),
+    ("f = sp.Piecewise((rho, e2 > 0), (rho**2, True))\n", "proved", "not proved"),
+    ("f = sp.Piecewise((rho, e2 > 0), (rho**2 - rho, True))\n", "not proved", "not proved"),
+])
+def test_p5_p6_of_a_piecewise_f_chosen_by_e2(tmp_path, body, p5, p6):
+    report, v = verify(tmp_path, body)
+    checks = {c.name: c for c in DC.check(DC.build(report))}
+    for name, verdict in (("P5", p5), ("P6", p6)):
+        if verdict == "proved":
+            assert v[name] == "proved" and checks[name].kernel_checked, report.properties[name]
+        else:
+            assert v[name] != "proved", report.properties[name]
+    if p6 == "proved":
+        k = sp.Rational(report.properties["P6"].details["k"])
+        assert k >= 8 / sp.sqrt(sp.pi)                  # sup G'/s over both branches
+
+
+def test_p5_p6_links_of_branches_need_conditions_free_of_e1_and_one_k():
+    f = sp.Piecewise((sp.log(1 + rho), y > 0), (2 * sp.log(1 + rho), True))
+    claims = {"P5": [], "P6": []}
+    for (g, _), k in zip(f.args, (2, 3)):
+        G = DC.branch_profile(g)
+        dG = derivative(G, S)
+        head = _plane(g) + [K.identity_plane(lhs=g, rhs=G.xreplace({S: sp.sqrt(rho)}), x=x, y=y),
+                            sign_theorems(dG, S, 0, sp.oo)[0][0]]
+        claims["P5"] += head
+        claims["P6"] += head + [sup_upper_theorem(dG / S, 4, S)]
+    assert DC._link("P5", f, claims["P5"]) == [] and DC._link("P6", f, claims["P6"]) == []
+    with pytest.raises(CertificateError):               # two different k
+        G = DC.branch_profile(f.args[1][0])
+        DC._link("P6", f, claims["P6"][:-1] + [sup_upper_theorem(derivative(G, S) / S, 5, S)])
+    jump = sp.Piecewise((sp.log(1 + rho), x > 0), (2 * sp.log(1 + rho), True))   # P5 fails across e1 = 0
+    for name in ("P5", "P6"):
+        with pytest.raises(CertificateError):
+            DC._link(name, jump, claims[name])

@@ -301,8 +301,8 @@ def _link_plane(name, f, claims, bounds=None) -> list[str]:
     and at e2 = 0 by continuity, so kf <= U is finite.  kf in [lower,
     upper]: those five claims with U <= upper, and sup E >= L on (0, oo) for
     one E of +-psi(+-s), L >= lower: |df/de2| >= E(s) at (0, +-s), so kf >= L."""
-    if name == "P3" and claims[0].expr != _srepr(f):
-        return _link_branches(f, claims)
+    if claims[0].expr != _srepr(f):        # claims about the branches of a Piecewise f
+        return _link_branches(name, f, claims)
     g, phi = derivative(f, E2), derivative(f, E1)
     plane = (_srepr(sp.Tuple(E1, E2)), "-oo", "oo", True, True, 0, False)
     on = (_srepr(S), "Integer(0)", "oo", True, True)
@@ -340,36 +340,53 @@ def _link_plane(name, f, claims, bounds=None) -> list[str]:
     return []
 
 
-def _link_branches(f, claims) -> list[str]:
-    """P3 of a Piecewise f (SymPy's `piecewise_fold` of the design's f),
-    whatever its conditions, provided the last is True and the two sides of
-    every relation in them are defined on the plane (`defined_for_positive`
-    with two real variables), so that at every point some branch is taken:
-    four claims for each branch g in order, g defined, hence continuous, on
-    the plane; g(e1, e2) = G(sqrt(e1^2 + e2^2)) where both are defined, G =
-    g(s, 0); G > 0 on (0, oo); G -> oo.  At e != 0, f(e) = g(e) for the
-    branch taken there, and g(e) = G(|e|) > 0 (g is defined on the plane, G
-    on (0, oo)); so f(e) >= min over the branches of G(|e|), which tends to oo
-    with |e| (finitely many branches, each G -> oo): f is positive off the
-    origin and radially unbounded."""
+def _link_branches(name, f, claims) -> list[str]:
+    """P3, P5, P6 of a Piecewise f (SymPy's `piecewise_fold` of the design's
+    f) whose last condition is True and the two sides of every relation in
+    whose conditions are defined on the plane (`defined_for_positive` with two
+    real variables), so that at every point some branch is taken.  For each
+    branch g in order: g defined, hence analytic, on the plane; g(e1, e2) =
+    G(sqrt(e1^2 + e2^2)) where both are defined, G = g(s, 0) (so g(e) =
+    G(|e|) at e != 0, and dg/de1 = G'(|e|) e1/|e| there); then, on (0, oo):
+    P3: G > 0 and G -> oo.  At e != 0, f(e) = G(|e|) > 0 for the branch
+    taken there, and f(e) >= min over the branches of G(|e|), which tends to
+    oo with |e| (finitely many branches): f is positive off the origin and
+    radially unbounded.  The conditions are never read.
+    P5, P6, and every condition free of e1: f is one branch g along each line
+    e2 = c, so df/de1 = dg/de1 = G'(|e|) e1/|e| there (0 at the origin, g(e1, 0)
+    being even and differentiable).  P5: G' > 0, so df/de1 has the sign of e1.
+    P6: G' >= 0 and G'(s)/s <= k, one k > 0 for all branches: h = G'(|e|)/(k |e|)
+    lies in [0, 1] (h = 0 at the origin)."""
     from .kernel.core import defined_for_positive
     pw, xy = sp.piecewise_fold(f), sp.Tuple(E1, E2)
     plane, on = (_srepr(xy), "-oo", "oo", True, True, 0, False), (_srepr(S), "Integer(0)", "oo", True, True)
+    n = {"P3": 4, "P5": 3, "P6": 4}.get(name, 0)
     sides = [side for _, c in getattr(pw, "args", ()) for r in c.atoms(sp.Rel) for side in (r.lhs, r.rhs)]
-    ok = isinstance(pw, sp.Piecewise) and pw.args[-1].cond == sp.true and len(claims) == 4 * len(pw.args) \
-        and all(defined_for_positive(side, xy) is not None for side in sides)
-    want = []
+    ok = isinstance(pw, sp.Piecewise) and pw.args[-1].cond == sp.true and n and len(claims) == n * len(pw.args) \
+        and all(defined_for_positive(side, xy) is not None for side in sides) \
+        and (name == "P3" or all(c.free_symbols <= {E2} for _, c in pw.args))
+    want, bounds = [], set()
     for i, (g, _) in enumerate(pw.args if ok else ()):
-        G = _profile(g)
-        radial = G.xreplace({S: sp.sqrt(E1 ** 2 + E2 ** 2)})
-        ok = ok and not g.has(*SMOOTH_ONLY) and claims[4 * i + 1].other == _srepr(radial)
+        G, mine = _profile(g), claims[n * i:n * i + n]
+        radial, dG = G.xreplace({S: sp.sqrt(E1 ** 2 + E2 ** 2)}), derivative(G, S)
+        ok = ok and not g.has(*SMOOTH_ONLY) and mine[1].other == _srepr(radial)
         want += [("continuous", _srepr(g), *plane), ("identity_plane", _srepr(g), *plane[:1], "", "", False, False, 0,
-                                                     False), ("sign", _srepr(G), *on, 1, True),
-                 ("diverges", _srepr(G), _srepr(S), claims[4 * i + 3].lo, "oo", False, True, 0, False)]
+                                                     False)]
+        if name == "P3":
+            want += [("sign", _srepr(G), *on, 1, True), ("diverges", _srepr(G), _srepr(S), mine[3].lo, "oo", False,
+                                                          True, 0, False)]
+        else:
+            want += [("sign", _srepr(dG), *on, 1, name == "P5" or mine[2].strict)]
+        if name == "P6":
+            want += [("sup_upper", _srepr(dG / S), *on, 0, False)]
+            bounds.add(mine[3].other)
     got = [(c.kind, c.expr, c.var, c.lo, c.hi, c.lo_open, c.hi_open, c.want, c.strict) for c in claims]
+    if name == "P6" and ok:             # one k > 0 for all branches
+        ok = len(bounds) == 1 and parse(bounds.pop()).is_positive
     if not ok or got != want:
-        raise CertificateError("P3: the kernel's conclusions are not, for each branch of f (its last condition True, "
-                               "its relations defined on the plane), g defined on the plane, g = G(|e|), G > 0, G -> oo")
+        raise CertificateError(f"{name}: the kernel's conclusions are not, for each branch of f (its last condition "
+                               "True, its relations defined on the plane; P5, P6: free of e1), g defined on the plane, "
+                               "g = G(|e|), and G > 0, G -> oo (P3), G' > 0 (P5), G' >= 0, G'/s <= k (P6)")
     return []
 
 

@@ -950,33 +950,51 @@ def _p3_separable(f) -> Verdict | None:
                   kernel=split + [t for ts in signs + growth for t in ts], unchecked=[])
 
 
-def _p3_each_branch(f) -> Verdict | None:
-    """P3 of a Piecewise f (folded; its last condition True, each condition's
-    relations defined on the plane) whose every branch g is defined on the
-    plane and radial, g = G(|e|) with G = g(s, 0) > 0 on (0, oo) and G -> oo,
-    kernel theorems (`design_certificate._link_branches`): whatever the
-    conditions, f(e) is some G(|e|), so f > 0 off the origin and f -> oo
-    (Min(r/2, log(1 + r)), whose profile's crossing no piece can follow, or
-    a branch chosen by the sign of e1)."""
+def _each_branch(f, name: str) -> Verdict | None:
+    """P3, P5 or P6 of a Piecewise f (folded; its last condition True) whose
+    every branch g is defined on the plane, hence analytic there, and radial,
+    g = G(|e|) with G = g(s, 0), kernel theorems per branch (the argument is
+    `design_certificate._link_branches`).  P3 whatever the conditions: G > 0
+    on (0, oo) and G -> oo, so f(e), some G(|e|), is > 0 off the origin and
+    f >= min G(|e|) -> oo (Min(r/2, log(1 + r)), whose profile's crossing no
+    piece can follow).  P5, P6 when the conditions read e2 only (a branch
+    chosen by the sign of e2): the branch does not change along e1, so df/de1
+    = G'(|e|) e1/|e| of the branch taken; P5: G' > 0; P6: G' >= 0 and G'/s <= k,
+    one k proposed about 1/8 above the sampled largest G'/s."""
     pw = sp.piecewise_fold(f)
-    if not isinstance(pw, sp.Piecewise) or pw.args[-1].cond != sp.true or any(g.has(*SMOOTH_ONLY) for g, _ in pw.args):
+    if not isinstance(pw, sp.Piecewise) or pw.args[-1].cond != sp.true or any(g.has(*SMOOTH_ONLY) for g, _ in pw.args) \
+            or name != "P3" and any(c.free_symbols - {E2} for _, c in pw.args):
+        return None
+    profiles = [branch_profile(g) for g, _ in pw.args]
+    k = _proposed_bound([derivative(G, S) / S for G in profiles]) if name == "P6" else None
+    if name == "P6" and k is None:
         return None
     theorems = []
-    for g, _ in pw.args:
-        G = branch_profile(g)
+    for (g, _), G in zip(pw.args, profiles):
         try:
-            parts = plane_theorems(g, E1, E2, []) + [K.identity_plane(lhs=g, rhs=G.xreplace({S: RHO}),
-                                                                      x=E1, y=E2)]
+            parts = plane_theorems(g, E1, E2, []) + [K.identity_plane(lhs=g, rhs=G.xreplace({S: RHO}), x=E1, y=E2)]
         except (K.KernelError, Undefined):
             return None
-        sign = sign_theorems(G, S, 0, sp.oo)[0] if len(parts) == 2 else None
-        growth = growth_theorems(G, S) if sign is not None and len(sign) == 1 else []
-        if len(growth) != 1:
+        dG = derivative(G, S)
+        sign = sign_theorems(G if name == "P3" else dG, S, 0, sp.oo, strict=name != "P6")[0] \
+            if len(parts) == 2 else None
+        more = growth_theorems(G, S) if name == "P3" else [sup_upper_theorem(dG / S, k, S)] if name == "P6" else []
+        if sign is None or len(sign) != 1 or None in more or len(more) != (name != "P5"):
             return None
-        theorems += parts + sign + growth
-    return proved("every branch of f is defined on the plane and radial, G(|e|) with G > 0 on (0, oo) and G -> oo "
-                  "(the kernel's rules): f(e) is one of them, so f > 0 off the origin and f -> oo",
-                  kernel=theorems, unchecked=[])
+        theorems += parts + sign + more
+    if name == "P3":
+        return proved("every branch of f is defined on the plane and radial, G(|e|) with G > 0 on (0, oo) and G -> oo "
+                      "(the kernel's rules): f(e) is one of them, so f > 0 off the origin and f -> oo",
+                      kernel=theorems, unchecked=[])
+    why = ("the conditions read e2 only, so along e1 f is one branch G(|e|), each defined on the plane, and df/de1 = "
+           "G'(|e|) e1/|e| with ")
+    if name == "P5":
+        return proved(why + "G' > 0 on (0, oo) (the kernel's sign rules): df/de1 tanh(e1) > 0 for e1 != 0",
+                      kernel=theorems, unchecked=[])
+    h = sp.Piecewise(*[(derivative(G, S).xreplace({S: RHO}) / (k * RHO), c) for G, (_, c) in zip(profiles, pw.args)])
+    return proved(why + f"G' >= 0 and G'(s)/s <= k = {k} on (0, oo) (the kernel's rules): h = G'(|e|)/(k |e|) in "
+                  "[0, 1], and h = 0 at the origin", kernel=theorems, unchecked=[], k=str(k), k_float=float_of(k),
+                  h=str(h))
 
 
 def _or_else(verify, fallback):
@@ -1014,7 +1032,8 @@ def _through_reduction(verify, open_only=False):
 
 
 VERIFIERS = {"P1": _through_reduction(verify_p1), "P2": verify_p2,
-             "P3": _or_else(_through_reduction(verify_p3, True), _p3_each_branch),
-             "P4": verify_p4, "P5": _through_reduction(lambda a: a.p5), "P6": _through_reduction(verify_p6),
+             "P3": _or_else(_through_reduction(verify_p3, True), lambda f: _each_branch(f, "P3")),
+             "P4": verify_p4, "P5": _or_else(_through_reduction(lambda a: a.p5), lambda f: _each_branch(f, "P5")),
+             "P6": _or_else(_through_reduction(verify_p6), lambda f: _each_branch(f, "P6")),
              "P7": _or_else(_through_reduction(verify_p7), lambda f: _smooth_on_plane(f, "P7")),
              "P8": _or_else(_through_reduction(verify_p8, True), lambda f: _smooth_on_plane(f, "P8"))}
