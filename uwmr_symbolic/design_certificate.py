@@ -345,7 +345,8 @@ def _link_branches(name, f, claims) -> list[str]:
     f) whose last condition is True and the two sides of every relation in
     whose conditions are defined on the plane (`defined_for_positive` with two
     real variables), so that at every point some branch is taken.  For each
-    branch g in order: g defined, hence analytic, on the plane; g(e1, e2) =
+    branch g in order: g defined, hence continuous, on the plane (and, without
+    Abs, which P5 and P6 refuse, analytic); g(e1, e2) =
     G(sqrt(e1^2 + e2^2)) where both are defined, G = g(s, 0) (so g(e) =
     G(|e|) at e != 0, and dg/de1 = G'(|e|) e1/|e| there); then, on (0, oo):
     P3: G > 0 and G -> oo.  At e != 0, f(e) = G(|e|) > 0 for the branch
@@ -361,15 +362,16 @@ def _link_branches(name, f, claims) -> list[str]:
     pw, xy = sp.piecewise_fold(f), sp.Tuple(E1, E2)
     plane, on = (_srepr(xy), "-oo", "oo", True, True, 0, False), (_srepr(S), "Integer(0)", "oo", True, True)
     n = {"P3": 4, "P5": 3, "P6": 4}.get(name, 0)
-    sides = [side for _, c in getattr(pw, "args", ()) for r in c.atoms(sp.Rel) for side in (r.lhs, r.rhs)]
-    ok = isinstance(pw, sp.Piecewise) and pw.args[-1].cond == sp.true and n and len(claims) == n * len(pw.args) \
+    branches = pw.args if isinstance(pw, sp.Piecewise) else ()
+    sides = [side for _, c in branches for r in c.atoms(sp.Rel) for side in (r.lhs, r.rhs)]
+    ok = branches and pw.args[-1].cond == sp.true and n and len(claims) == n * len(pw.args) \
         and all(defined_for_positive(side, xy) is not None for side in sides) \
-        and (name == "P3" or all(c.free_symbols <= {E2} for _, c in pw.args))
+        and (name == "P3" or all(c.free_symbols <= {E2} for _, c in branches))
     want, bounds = [], set()
-    for i, (g, _) in enumerate(pw.args if ok else ()):
+    for i, (g, _) in enumerate(branches if ok else ()):
         G, mine = _profile(g), claims[n * i:n * i + n]
         radial, dG = G.xreplace({S: sp.sqrt(E1 ** 2 + E2 ** 2)}), derivative(G, S)
-        ok = ok and not g.has(*SMOOTH_ONLY) and mine[1].other == _srepr(radial)
+        ok = ok and not g.has(*SMOOTH_ONLY, *([] if name == "P3" else [sp.Abs])) and mine[1].other == _srepr(radial)
         want += [("continuous", _srepr(g), *plane), ("identity_plane", _srepr(g), *plane[:1], "", "", False, False, 0,
                                                      False)]
         if name == "P3":

@@ -477,6 +477,17 @@ def certify_kf(analysis) -> SupCertificate:
                           "sup |F'| from both signs of F'")
 
 
+def psi_sides(f) -> list | None:
+    """psi(s), -psi(s), psi(-s), -psi(-s) for an f without Abs, Piecewise,
+    Max, Min or sign whose df/de2 = psi(e2) is free of e1 and not constant;
+    else None."""
+    from .design_certificate import E1, SMOOTH_ONLY, e2_sides
+    sides = e2_sides(f)
+    if f.has(*SMOOTH_ONLY, sp.Abs) or any(e.has(E1) for e in sides) or not sides[0].has(S):
+        return None
+    return sides
+
+
 def certify_kf_along_e2(f) -> SupCertificate | None:
     """kf = sup over R of |psi(e2)| (bound (10)) for an f analytic on the plane
     whose df/de2 = psi(e2) is free of e1 (a separable g(e1) + h(e2), radial
@@ -486,9 +497,9 @@ def certify_kf_along_e2(f) -> SupCertificate | None:
     the plane, the four <= U and sup >= L of the side that reaches it, for
     short decimals L <= lower, U >= upper (`kernel_bounds`).  None when f is
     not of this kind or a side has no finite bound found."""
-    from .design_certificate import E1, E2, SMOOTH_ONLY, e2_sides
-    sides = e2_sides(f)
-    if f.has(*SMOOTH_ONLY, sp.Abs) or any(e.has(E1) for e in sides) or not sides[0].has(S):
+    from .design_certificate import E1, E2
+    sides = psi_sides(f)
+    if sides is None:
         return None
     encs = [enclose_sup(e, S, 0, sp.oo, rel_tol=REL_WIDTH) for e in sides]
     found = [(e, enc) for e, enc in zip(sides, encs) if enc.upper is not None and enc.lower is not None]

@@ -28,7 +28,7 @@ import sympy as sp
 
 from . import e1 as E1, e2 as E2
 from .design import Design
-from .design_certificate import _JUMPS, SMOOTH_ONLY, axis_split, branch_profile, e1_sides, e2_sides, half_axes
+from .design_certificate import _JUMPS, SMOOTH_ONLY, axis_split, branch_profile, e1_sides, half_axes
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, SPENT, WORK, NoProof, continuity_pair, exploring, growth_theorems,
                       one_branch_theorems, origin_theorems, origin_value_theorems, piecewise_sign_theorem,
@@ -36,7 +36,7 @@ from .certify import (REDUCTION, SPENT, WORK, NoProof, continuity_pair, explorin
                       smoothness_theorems, sup_upper_theorem)
 from .kernel import core as K
 from .kernel.core import derivative
-from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, scale, show
+from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, psi_sides, scale, show
 from .limits import NoLimit, limit_right
 from .profile import (RHO, S, continuous_on, elliptic_ratio, float_of, one_sided_value,
                       radial_profile,
@@ -913,8 +913,8 @@ def _p1_along_e2(f) -> Verdict | None:
     whose df/de2 = psi(e2) does not depend on e1 (f = g(e1) + h(e2), for
     instance): +-psi(s), +-psi(-s) <= U on (0, oo), kernel theorems, for a
     U proposed about 1/8 above sampled values.  kf itself stays the search's."""
-    sides = e2_sides(f)
-    if f.has(*SMOOTH_ONLY, sp.Abs) or any(e.has(E1) for e in sides) or not sides[0].has(S):
+    sides = psi_sides(f)
+    if sides is None:
         return None
     U = _proposed_bound(sides)
     plane = plane_theorems(f, E1, E2, []) if U is not None else []
