@@ -803,3 +803,21 @@ def test_divergence_by_comparison_skips_a_floor_seen_above_f(tmp_path):
     # to nothing in 128 bits at R = 16) is skipped.
     report, v = verify(tmp_path, "f = 3*(1 - sp.exp(-rho))*log(sp.cosh(rho))\n")
     assert v["P3"] == "proved" and "P3" in report.kernel["checked"]
+
+
+def test_an_unbounded_slope_through_log_cosh_is_refuted_by_the_kernel(tmp_path):
+    # F = (sqrt(atan(s^2) + 1) - 1) log(cosh(s^2))/2 + atan(s^2)/2: log cosh(s^2) = s^2 - log 2 + o(1)
+    # and sqrt(atan(s^2) + 1) - 1 -> sqrt(pi/2 + 1) - 1 = 0.60..., so F'(s) ~ 0.60 s -> oo: kf is
+    # infinite and P1 fails.  The limit calculus cannot take the limit of F' (its log cosh over 1 + s^4),
+    # and the kernel's divergence rules failed on F''s sinh(s^2)/cosh(s^2); P1 was unknown.  Now the
+    # leading term is read with tanh(s^2), whose tail the rules bound, and F' >= it -> oo.
+    from uwmr_symbolic.certify import _as_tanh
+    s = S
+    assert _as_tanh(3 * s * sp.sinh(s ** 2) / sp.cosh(s ** 2)) == 3 * s * sp.tanh(s ** 2)
+    assert _as_tanh(sp.sinh(s) / sp.cosh(s ** 2)) == sp.sinh(s) / sp.cosh(s ** 2)      # not one u
+    report, v = verify(tmp_path, "f = (sqrt(atan(rho) + 1) - 1)*log(sp.cosh(rho))/2 + atan(rho)/2\n")
+    assert v["P1"] == "refuted" and "P1" in report.kernel["checked"]
+    assert report.kf.upper is None and report.kf.unbounded_witness == {"s": "oo", "limit": "oo"}
+    F = lambda x: (mpmath.sqrt(mpmath.atan(x ** 2) + 1) - 1) * mpmath.log(mpmath.cosh(x ** 2)) / 2   # noqa: E731
+    with mpmath.workdps(40):
+        assert mpmath.diff(F, 1000) > 600 and mpmath.diff(F, 10 ** 4) > 6000

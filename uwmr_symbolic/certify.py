@@ -1493,10 +1493,11 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
         if len(factors) > 1 else {}             # G = A B(R0): F - G = A (B - B(R0))
     leading = _leading_terms(terms, var)
     prover = Prover(_scaled(WORK, F))
-    for G in floors + [sp.Add(*ts) for ts in (algebraic, leading, transcendental) if ts and len(ts) < len(terms)] + [*gaps]:
+    for G0 in floors + [sp.Add(*ts) for ts in (algebraic, leading, transcendental) if ts and len(ts) < len(terms)] + [*gaps]:
+        G = _as_tanh(G0)
         nest = _outer(G, var) is not None
         for R in starts if nest or _plausible(G - 2 * G.subs(var, starts[0]) - 1, var, 10 ** 6, 1) else ():
-            gap = F - G if spread == F and G not in gaps else gaps.get(G, spread - G)
+            gap = F - G0 if spread == F and G0 not in gaps else gaps.get(G0, spread - G0)
             if not _plausible(gap, var, R, 1):     # (F >= G seen false: its proof would spend the budget)
                 continue
             try:                        # (a nest of logs grows too slowly for the plausibility filter)
@@ -1511,6 +1512,20 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
                 if exc is prover.spent:
                     return []
     return []
+
+
+def _as_tanh(e):
+    """e with each product's factors sinh(u) and 1/cosh(u) read as tanh(u)
+    (the derivative of log cosh u: the divergence rules bound tanh's tail,
+    not the quotient of two functions that overflow there)."""
+    def fix(m):
+        fs = sp.Mul.make_args(m)
+        us = {f.args[0] for f in fs if isinstance(f, sp.sinh)} & \
+            {f.base.args[0] for f in fs if f.is_Pow and f.exp == -1 and isinstance(f.base, sp.cosh)}
+        pair = lambda f: isinstance(f, sp.sinh) and f.args[0] in us or \
+            f.is_Pow and f.exp == -1 and isinstance(f.base, sp.cosh) and f.base.args[0] in us     # noqa: E731
+        return sp.Mul(*[f for f in fs if not pair(f)], *map(sp.tanh, us)) if us else m
+    return e.replace(lambda n: n.is_Mul, fix) if e.has(sp.sinh) else e
 
 
 def _leading_terms(terms, var):

@@ -21,8 +21,8 @@ from .kernel.core import derivative
 from .limits import NoLimit, rational_parts
 from .profile import S, float_of, one_sided_value
 from .timeouts import attempt
-from .certify import (WORK, abs_upper_theorem, piecewise_sup_theorems, plane_theorems, renew_pool, sign_theorems,
-                      sup_abs_theorems, sup_lower_theorem, sup_theorems, sup_upper_theorem)
+from .certify import (WORK, abs_upper_theorem, growth_theorems, piecewise_sup_theorems, plane_theorems, renew_pool,
+                      sign_theorems, sup_abs_theorems, sup_lower_theorem, sup_theorems, sup_upper_theorem)
 from .univariate import (certified_inside, decimal_beyond, enclose_sup, exact_sign, exact_value, far_out_trend,
                          limit_at_infinity, prepare, prove_sign, quotient_near_zero, small_rates, solveset_hopeless,
                          tail_start, value_at)
@@ -230,14 +230,19 @@ def _quick_lower(exprs, pieces):
     return best
 
 
-def _unbounded_at_infinity(E, name: str) -> SupCertificate | None:
+def _unbounded_at_infinity(E, name: str, limit=True, growth=False) -> SupCertificate | None:
     """The certificate that E, the formula of the last piece, tends to +oo as
-    s -> oo (limit calculus), or None."""
+    s -> oo (`limit`: by the limit calculus; `growth`: else by the kernel's
+    divergence rules, as of s (sqrt(atan(s^2) + 1) - 1) tanh(s^2) + ..., the
+    F' of a log cosh whose limit the calculus cannot take), or None."""
     try:
-        if limit_at_infinity(E, S) == sp.oo:
+        if limit and limit_at_infinity(E, S) == sp.oo:
             return SupCertificate(None, None, None, None, f"{name} -> oo as s -> oo", {"s": "oo", "limit": "oo"})
     except NoLimit:
         pass
+    if growth and far_out_trend(E, S) > 0 and growth_theorems(E, S):
+        return SupCertificate(None, None, None, None, f"{name} -> oo as s -> oo (the kernel's divergence rules)",
+                              {"s": "oo", "limit": "oo"})
     return None
 
 
@@ -297,7 +302,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
     if box is not None and near_zero is None and upper is not None and lower is not None and lower < upper == near:
         upper = _narrower_near_zero(exprs[0], lower, upper)
     if upper is None or lower is None:
-        return (not early and _unbounded_at_infinity(exprs[-1], name)) or \
+        return _unbounded_at_infinity(exprs[-1], name, limit=not early, growth=True) or \
             SupCertificate(lower, None, None, None, f"branch and bound found no finite bound for {name}")
     # exact candidates from the piece holding the supremum
     E, piece, enc = top
