@@ -821,3 +821,14 @@ def test_an_unbounded_slope_through_log_cosh_is_refuted_by_the_kernel(tmp_path):
     F = lambda x: (mpmath.sqrt(mpmath.atan(x ** 2) + 1) - 1) * mpmath.log(mpmath.cosh(x ** 2)) / 2   # noqa: E731
     with mpmath.workdps(40):
         assert mpmath.diff(F, 1000) > 600 and mpmath.diff(F, 10 ** 4) > 6000
+
+
+def test_p3_of_a_radial_f_the_profile_cannot_follow_is_refuted_at_a_grid_point(tmp_path):
+    # 0**rho + log(1 + rho) - 1: 0**rho = 1 at the origin only, so f(0, 0) = 0 and f = log(1 + rho) - 1 < 0
+    # for 0 < rho < e - 1: P3 fails.  The profile search stops at 0**(s^2) (no interval enclosure of 0**x),
+    # and the grid of points was tried for non-radial f only: P3 was unknown.  SymPy's exact value at a
+    # grid point (0**(5/4) = 0) decides it; the kernel re-checks the witness.
+    report, v = verify(tmp_path, "f = 0**rho + log(1 + rho) - 1\n")
+    assert v["P3"] == "refuted" and "P3" in report.kernel["checked"]
+    x, y = (sp.Rational(report.properties["P3"].witness[k]) for k in ("e1", "e2"))
+    assert 0 < x ** 2 + y ** 2 < math.e - 1

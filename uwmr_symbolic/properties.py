@@ -706,23 +706,7 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
         found = _e2_limit_not_zero(f)
         if found is not None:
             return found
-    checks = {"P3": f, "P5": sp.diff(f, E1) * sp.tanh(E1)}
-    expr = checks.get(name)
-    if expr is not None:
-        fn = IntervalFunction(expr, [E1, E2], mode="range", prec=200)
-        grid = [sp.Rational(k, 4) for k in (-12, -7, -4, -2, -1, 1, 2, 4, 7, 12)]
-        for x in grid:
-            for y in grid + [0]:
-                try:
-                    val = fn(Interval.point(x), Interval.point(y))
-                except Undefined:
-                    continue
-                if val.is_nonpositive() and (x, y) != (0, 0):
-                    v = refuted(f"fails at (e1, e2) = ({x}, {y}): value in "
-                                f"[{val.lower_float():.6g}, {val.upper_float():.6g}]", {"e1": str(x), "e2": str(y)})
-                    if _stands(name, v, f):
-                        return v
-    found = _jump_across_a_line(f, name) or {"P1": _p1_along_e2, "P3": _p3_separable, "P5": _p5_along_e1,
+    found = _fails_on_a_grid(f, name) or _jump_across_a_line(f, name) or {"P1": _p1_along_e2, "P3": _p3_separable, "P5": _p5_along_e1,
                                              "P6": _p6_along_e1}.get(name, lambda f: None)(f)
     if found is not None:
         return found
@@ -732,6 +716,32 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
 
 
 _LINES_TRIED = 4
+
+
+def _fails_on_a_grid(f, name: str) -> Verdict | None:
+    """A point of a fixed grid (quarters up to 3 on each axis) where P3 (f >
+    0) or P5 (df/de1 tanh(e1) > 0) fails in interval arithmetic; the kernel
+    re-checks the witness (`value`, `slope`).  Also tried for a radial f whose
+    profile the search cannot follow (0**rho + log(1 + rho) - 1, < 0 at
+    (1/4, 0))."""
+    expr = {"P3": f, "P5": sp.diff(f, E1) * sp.tanh(E1)}.get(name)
+    if expr is None:
+        return None
+    fn = IntervalFunction(expr, [E1, E2], mode="range", prec=200)
+    grid = [sp.Rational(k, 4) for k in (-12, -7, -4, -2, -1, 1, 2, 4, 7, 12)]
+    for x in grid:
+        for y in grid + [0]:
+            try:
+                val = fn(Interval.point(x), Interval.point(y))
+                nonpositive, shown = val.is_nonpositive(), f"[{val.lower_float():.6g}, {val.upper_float():.6g}]"
+            except Undefined:         # (0**rho: SymPy's value at the point, an exact constant)
+                at = expr.xreplace({E1: x, E2: y})
+                nonpositive, shown = not at.has(sp.nan, sp.zoo) and exact_sign(at) in (0, -1), str(at)
+            if nonpositive and (x, y) != (0, 0):
+                v = refuted(f"fails at (e1, e2) = ({x}, {y}): value {shown}", {"e1": str(x), "e2": str(y)})
+                if _stands(name, v, f):
+                    return v
+    return None
 
 
 def _jump_across_a_line(f, name: str) -> Verdict | None:
@@ -1032,8 +1042,10 @@ def _through_reduction(verify, open_only=False):
 
 
 VERIFIERS = {"P1": _through_reduction(verify_p1), "P2": verify_p2,
-             "P3": _or_else(_through_reduction(verify_p3, True), lambda f: _each_branch(f, "P3")),
-             "P4": verify_p4, "P5": _or_else(_through_reduction(lambda a: a.p5), lambda f: _each_branch(f, "P5")),
+             "P3": _or_else(_through_reduction(verify_p3, True),
+                            lambda f: _each_branch(f, "P3") or _fails_on_a_grid(f, "P3")),
+             "P4": verify_p4, "P5": _or_else(_through_reduction(lambda a: a.p5),
+                                             lambda f: _each_branch(f, "P5") or _fails_on_a_grid(f, "P5")),
              "P6": _or_else(_through_reduction(verify_p6), lambda f: _each_branch(f, "P6")),
              "P7": _or_else(_through_reduction(verify_p7), lambda f: _smooth_on_plane(f, "P7")),
              "P8": _or_else(_through_reduction(verify_p8, True), lambda f: _smooth_on_plane(f, "P8"))}
