@@ -832,3 +832,17 @@ def test_p3_of_a_radial_f_the_profile_cannot_follow_is_refuted_at_a_grid_point(t
     assert v["P3"] == "refuted" and "P3" in report.kernel["checked"]
     x, y = (sp.Rational(report.properties["P3"].witness[k]) for k in ("e1", "e2"))
     assert 0 < x ** 2 + y ** 2 < math.e - 1
+
+
+def test_p6_bound_whose_quotient_by_s_is_zero_over_zero_at_the_origin(tmp_path):
+    # F = (1 - exp(-s^2))^2/3 + s^2/(1 + s^2): F'(s)/s = (4/3) exp(-s^2)(1 - exp(-s^2)) + 2/(1 + s^2)^2,
+    # 2 at s = 0 and below it elsewhere (2 + (8/3 - 8) s^2 + ... near 0; at most 1/3 + 2/(1 + log 2)^2
+    # where the first term peaks): P6 holds with k = 2.  The kernel's lemma k - F'/s >= 0 read F' over s
+    # as one quotient, 0/0 at s = 0, which no cover there can evaluate: P6 rested on the search.  Now the
+    # quotient is spread term by term (the powers of s cancel) when that makes it defined at 0.
+    report, v = verify(tmp_path, "f = (1 - sp.exp(-rho))**2/3 + rho/(1 + rho)\n")
+    assert v["P6"] == "proved" and "P6" in report.kernel["checked"]
+    assert sp.sympify(report.properties["P6"].details["k"]) >= 2
+    from uwmr_symbolic.certify import _spread
+    s = S
+    assert _spread(1 - (s + s ** 3) / s, s) == 1 - (1 + s ** 2) and _spread(1 - (s + 1) / s, s) is None

@@ -427,6 +427,12 @@ class Prover:
             except NoProof as exc:
                 if exc is self.spent:
                     raise
+        if lo == 0 and (spread := _spread(e, var)) is not None:
+            try:                                # (A + B)/s^k, 0/0 at 0 (F'(s)/s of P6), as A/s^k + B/s^k
+                return self._rewritten(e, spread, var, I, want, strict, depth, near)
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
         try:
             return self._structure(e, var, I, want, strict, depth, near)
         except NoProof as exc:
@@ -1512,6 +1518,19 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
                 if exc is prover.spent:
                     return []
     return []
+
+
+def _spread(e, var):
+    """e with each quotient (A + B + ...)/s^k among its terms spread into
+    A/s^k + B/s^k + ... (SymPy cancels the powers of s term by term: F'(s)/s
+    of 1/3 (1 - exp(-s^2))^2 + s^2/(1 + s^2) is defined at 0 so), or None
+    unless that makes an e undefined at 0 (as SymPy evaluates it) defined there."""
+    if not any(t.is_Mul and any(f.is_Add for f in t.args) and any(f.is_Pow and f.base == var and f.exp.is_negative
+                                                                    for f in t.args) for t in sp.Add.make_args(e)):
+        return None
+    out = sp.Add(*[sp.expand_mul(t, deep=False) for t in sp.Add.make_args(e)])
+    undefined = [u.xreplace({var: sp.Integer(0)}).has(sp.nan, sp.zoo) for u in (e, out)]
+    return out if undefined == [True, False] else None
 
 
 def _as_tanh(e):
