@@ -1499,7 +1499,8 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
         if len(factors) > 1 else {}             # G = A B(R0): F - G = A (B - B(R0))
     leading = _leading_terms(terms, var)
     prover = Prover(_scaled(WORK, F))
-    for G0 in floors + [sp.Add(*ts) for ts in (algebraic, leading, transcendental) if ts and len(ts) < len(terms)] + [*gaps]:
+    subsets = [sp.Add(*ts) for ts in (algebraic, leading, transcendental) if ts and len(ts) < len(terms)]
+    for G0 in floors + subsets + [*gaps]:
         G = _as_tanh(G0)
         nest = _outer(G, var) is not None
         for R in starts if nest or _plausible(G - 2 * G.subs(var, starts[0]) - 1, var, 10 ** 6, 1) else ():

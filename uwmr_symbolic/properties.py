@@ -706,8 +706,8 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
         found = _e2_limit_not_zero(f)
         if found is not None:
             return found
-    found = _fails_on_a_grid(f, name) or _jump_across_a_line(f, name) or {"P1": _p1_along_e2, "P3": _p3_separable, "P5": _p5_along_e1,
-                                             "P6": _p6_along_e1}.get(name, lambda f: None)(f)
+    found = _fails_on_a_grid(f, name) or _jump_across_a_line(f, name) or \
+        {"P1": _p1_along_e2, "P3": _p3_separable, "P5": _p5_along_e1, "P6": _p6_along_e1}.get(name, lambda f: None)(f)
     if found is not None:
         return found
     return unknown("f is not radial; this verifier proves properties of radial f only "
@@ -722,8 +722,8 @@ def _fails_on_a_grid(f, name: str) -> Verdict | None:
     """A point of a fixed grid (quarters up to 3 on each axis) where P3 (f >
     0) or P5 (df/de1 tanh(e1) > 0) fails in interval arithmetic; the kernel
     re-checks the witness (`value`, `slope`).  Also tried for a radial f whose
-    profile the search cannot follow (0**rho + log(1 + rho) - 1, < 0 at
-    (1/4, 0))."""
+    profile the search cannot follow (0**rho + log(1 + rho) - 1, which is
+    log(1 + rho) - 1 < 0 near the origin, and 0 there)."""
     expr = {"P3": f, "P5": sp.diff(f, E1) * sp.tanh(E1)}.get(name)
     if expr is None:
         return None
@@ -733,10 +733,10 @@ def _fails_on_a_grid(f, name: str) -> Verdict | None:
         for y in grid + [0]:
             try:
                 val = fn(Interval.point(x), Interval.point(y))
-                nonpositive, shown = val.is_nonpositive(), f"[{val.lower_float():.6g}, {val.upper_float():.6g}]"
+                nonpositive, shown = val.is_nonpositive(), f"in [{val.lower_float():.6g}, {val.upper_float():.6g}]"
             except Undefined:         # (0**rho: SymPy's value at the point, an exact constant)
                 at = expr.xreplace({E1: x, E2: y})
-                nonpositive, shown = not at.has(sp.nan, sp.zoo) and exact_sign(at) in (0, -1), str(at)
+                nonpositive, shown = not at.has(sp.nan, sp.zoo) and exact_sign(at) in (0, -1), f"{at}"
             if nonpositive and (x, y) != (0, 0):
                 v = refuted(f"fails at (e1, e2) = ({x}, {y}): value {shown}", {"e1": str(x), "e2": str(y)})
                 if _stands(name, v, f):
@@ -922,7 +922,7 @@ def _p1_along_e2(f) -> Verdict | None:
     """P1 of an f analytic on the plane (`continuous_on_plane`, no Abs)
     whose df/de2 = psi(e2) does not depend on e1 (f = g(e1) + h(e2), for
     instance): +-psi(s), +-psi(-s) <= U on (0, oo), kernel theorems, for a
-    U proposed about 1/8 above sampled values.  kf itself stays the search's."""
+    U proposed about 1/8 above sampled values (kf itself: `kf.certify_kf_along_e2`)."""
     sides = psi_sides(f)
     if sides is None:
         return None
@@ -962,7 +962,7 @@ def _p3_separable(f) -> Verdict | None:
 
 def _each_branch(f, name: str) -> Verdict | None:
     """P3, P5 or P6 of a Piecewise f (folded; its last condition True) whose
-    every branch g is defined on the plane, hence analytic there, and radial,
+    every branch g is defined on the plane (for P5, P6 without Abs: analytic there) and radial,
     g = G(|e|) with G = g(s, 0), kernel theorems per branch (the argument is
     `design_certificate._link_branches`).  P3 whatever the conditions: G > 0
     on (0, oo) and G -> oo, so f(e), some G(|e|), is > 0 off the origin and
@@ -973,7 +973,7 @@ def _each_branch(f, name: str) -> Verdict | None:
     one k proposed about 1/8 above the sampled largest G'/s."""
     pw = sp.piecewise_fold(f)
     if not isinstance(pw, sp.Piecewise) or pw.args[-1].cond != sp.true or any(g.has(*SMOOTH_ONLY) for g, _ in pw.args) \
-            or name != "P3" and any(c.free_symbols - {E2} for _, c in pw.args):
+            or name != "P3" and any(g.has(sp.Abs) or c.free_symbols - {E2} for g, c in pw.args):
         return None
     profiles = [branch_profile(g) for g, _ in pw.args]
     k = _proposed_bound([derivative(G, S) / S for G in profiles]) if name == "P6" else None
