@@ -35,7 +35,7 @@ from . import timeouts
 from .kernel import arb, core as K
 from .kernel.arb import Undefined, centered, evaluate
 from .kernel.core import derivative
-from .univariate import replaced
+from .univariate import replaced, zero_of_denominator
 from .profile import _relationals
 
 OO = sp.oo
@@ -1749,7 +1749,6 @@ def taylor_limit(e, var, w, orders=8):
     """E(0+) for E = N/D over one denominator (`sympy.together`) with D(0) =
     0 (`limit_by_taylor`), m the order of D's zero at 0, up to `orders`
     (`univariate.zero_of_denominator`); NoProof if none."""
-    from .univariate import zero_of_denominator
     found = zero_of_denominator(e, var, orders)
     if found is None:
         raise NoProof("{} is no quotient whose denominator has a zero of known order at 0", e)

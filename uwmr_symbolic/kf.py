@@ -15,6 +15,8 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
+from . import e1 as E1, e2 as E2
+from .design_certificate import SMOOTH_ONLY, e2_sides
 from .interval import Interval, Undefined
 from .kernel import core as K
 from .kernel.core import derivative
@@ -486,7 +488,6 @@ def psi_sides(f) -> list | None:
     """psi(s), -psi(s), psi(-s), -psi(-s) for an f without Abs, Piecewise,
     Max, Min or sign whose df/de2 = psi(e2) is free of e1 and not constant;
     else None."""
-    from .design_certificate import E1, SMOOTH_ONLY, e2_sides
     sides = e2_sides(f)
     if f.has(*SMOOTH_ONLY, sp.Abs) or any(e.has(E1) for e in sides) or not sides[0].has(S):
         return None
@@ -502,7 +503,6 @@ def certify_kf_along_e2(f) -> SupCertificate | None:
     the plane, the four <= U and sup >= L of the side that reaches it, for
     short decimals L <= lower, U >= upper (`kernel_bounds`).  None when f is
     not of this kind or a side has no finite bound found."""
-    from .design_certificate import E1, E2
     sides = psi_sides(f)
     if sides is None:
         return None
@@ -517,16 +517,15 @@ def certify_kf_along_e2(f) -> SupCertificate | None:
                    f"[{show(cert.lower)}, {show(cert.upper)}] (interval branch and bound on both half-axes)")
     L = decimal_beyond(cert.lower, -1)
     plane = plane_theorems(f, E1, E2, []) if L > 0 and best.point is not None else []
-    lower = plane and sup_lower_theorem(side, L, best.point, S)
-    for U, work in _tiers(cert.upper):
-        if not lower:
-            break
+    lower = sup_lower_theorem(side, L, best.point, S) if plane else None
+    for U, work in _tiers(cert.upper) if lower else ():
         renew_pool()
         uppers = [sup_upper_theorem(e, U, S, work=work) for e in sides]
         if None not in uppers:
             cert.kernel, cert.unchecked = plane + uppers + [lower], []
             cert.kernel_bounds = (Fraction(L.p, L.q), Fraction(U.p, U.q))
-            cert.upper = max(cert.upper, cert.kernel_bounds[1]) if blind else cert.upper
+            if blind:
+                cert.upper = max(cert.upper, cert.kernel_bounds[1])
             return cert
     if blind:          # a side the search did not bound: only the kernel's bound U makes [lower, upper] an enclosure
         return None
