@@ -9,13 +9,11 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 
-#: f in rho = e1^2 + e2^2 that the search proves P1-P8 for and the kernel does not yet
-#: re-check in full (P1, P6, kf): F = log(1 + L^2), L = log(1 + s^2), F' = 4 s L/((1 + s^2)(1 + L^2)).
-#: The bound of F' on the tail is not found: F'(1/t) is not defined at t = 0 (log of 1/t), and
-#: as a product A B (`sign_below_product`) the factor L/(1 + L^2) <= 1/2 is not bounded by 1 the
-#: way the proposer splits it (1 - L >= 0 fails).  (Four nested logs served here until the kernel
-#: proved them, through that rule.)
-SEARCH_ONLY = "log(1 + log(1 + rho)**2)"
+#: f in rho = e1^2 + e2^2 whose P1 the search proves and the kernel does not yet re-check:
+#: F = sqrt(s^2 + eps^2) - eps, eps = 10^-20, F' = s/sqrt(s^2 + eps^2) < 1 -> 1 (kf = 1, not
+#: attained).  The proposer's cover of 1 - F' near s = 0 would need boxes of width about eps.
+#: (log(1 + log(1 + rho)^2) and four nested logs served here until the kernel proved them.)
+SEARCH_ONLY = "sqrt(rho + Rational(1, 10**40)) - Rational(1, 10**20)"
 
 #: Seconds one verifier run may take in the verdict tests (override with UWMR_TEST_TIMEOUT).
 DESIGN_TIMEOUT = float(os.environ.get("UWMR_TEST_TIMEOUT", "900"))

@@ -62,8 +62,8 @@ def test_verify_in_a_worker_process_gives_the_same_report():
 
 
 def test_kernel_only_is_the_default_and_its_opposite_reaches_the_worker():
-    """log(1 + log(1 + rho)^2) (tests/_cli.py) has P1 proved by the search
-    only (no kernel bound of F' on the tail).  By default (kernel_only=True) P1
+    """sqrt(rho + 10^-40) - 10^-20 (tests/_cli.py) has P1 proved by the
+    search only (no kernel bound of F' near 0).  By default (kernel_only=True) P1
     is unknown and the report inconclusive, P2 stays proved;
     kernel_only=False, in a worker process as here, counts the search's
     proof.  The kernel summary is the same either way."""

@@ -422,8 +422,8 @@ def test_the_kernel_line_says_what_the_certificate_rechecks(tmp_path):
 
 def test_kernel_only_by_default_and_trust_search(tmp_path):
     """By default only the kernel's verdicts count (--kernel-only says it
-    again): log(1 + log(1 + rho)^2) (tests/_cli.py) is proved throughout by
-    the search; P1 needs a bound of F' on the tail that the proposer does not
+    again): sqrt(rho + 10^-40) - 10^-20 (tests/_cli.py) has P1 proved by
+    the search; it needs a bound of F' near 0 that the proposer does not
     find for the kernel.  P1 then becomes unknown, bound
     (10) is not checked (no
     kernel-checked kf: W undecided) and the exit status is 3, while P2, P4
@@ -433,8 +433,8 @@ def test_kernel_only_by_default_and_trust_search(tmp_path):
     every proof kernel-checked: exit 1 either way.  Design 1 is
     kernel-checked throughout and keeps exit 0.  The two modes have cache
     entries of their own."""
-    nested = tmp_path / "nested_logs.py"
-    nested.write_text("import sympy as sp\nfrom sympy import log\n"
+    nested = tmp_path / "search_only.py"
+    nested.write_text("import sympy as sp\nfrom sympy import Rational, sqrt\n"
                       "e1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
                       f"f = {SEARCH_ONLY}\n"
                       "gains = {'easy': dict(k1=0.1, k2=0.1, lam=0.1, Vmax=1.0, Wmax=2.0, Vr_max=0.5, Wr_max=0.5)}\n")

@@ -731,3 +731,27 @@ def test_kernel_only_checks_bound_10_on_the_kernels_kf_enclosure():
     assert report.gains["loose"].W_ok is True and report.gains["loose"].W_bound == sp.Rational(7, 4)
     searched = verify_design(ROOT / "tests" / "designs" / "r09_slope_zero.py", kernel_only=False)
     assert searched.kf.upper == 2 and Fraction(19999993, 10**7) < searched.kf.lower < 2
+
+
+def test_an_exp_tail_with_terms_of_both_signs_is_kernel_checked(tmp_path):
+    """f = c rho exp(-rho) + log(1 + rho), x = s^2: F'(s) = 2s g(x),
+    g = c e^-x (1 - x) + 1/(1 + x).  c = 1: g > 0 (for x > 1,
+    (x - 1) e^-x < 1/(1 + x) as x^2 - 1 < 1 + x + x^2/2 + x^3/6 <= e^x), g
+    decreasing from g(0) = 2 (g' = e^-x (x - 2) - 1/(1 + x)^2 < 0), so P1-P8
+    hold, P6 with k = 4, and kf = max F' = 1.4184252491514987... at
+    s = 0.59181177... (50-digit mpmath).  The tail of F' in t = 1/s is not
+    defined at t = 0 (exp(-1/t^2)/t^3): its terms in exp(-s^2) are bounded by
+    exp(-x) <= 1/(1 + x + ... + x^4/24) (`sign_by_log_bound`).  c = 3:
+    g(2) = 1/3 - 3/e^2 < 0, so P5 is refuted."""
+    path = tmp_path / "exp_bump.py"
+    head = "import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+    path.write_text(head + "f = rho*sp.exp(-rho) + sp.log(1 + rho)\n")
+    report = verify_design(path)
+    assert all(report.properties[p].proved for p in PROPS)
+    assert report.kernel == {"checked": [*PROPS, "kf"], "search": []}
+    true_kf = 1.4184252491514987
+    assert report.kf.lower <= true_kf <= report.kf.upper and report.kf.upper - report.kf.lower < 1e-6
+    assert sp.sympify(report.properties["P6"].details["k"]) == 4
+    path.write_text(head + "f = 3*rho*sp.exp(-rho) + sp.log(1 + rho)\n")
+    worse = verify_design(path)
+    assert worse.properties["P5"].refuted and "P5" in worse.kernel["checked"]

@@ -1749,15 +1749,15 @@ def test_sign_by_log_bound_claims_and_messages():
     assert why(L, low, sturm(I1, s, 1, 4), pos, expr=1 + sp.log(s), term=sp.log(s), p=I1) == \
         "premise must be the sign -1 of 1"
     for p in (I0, I2, -I2, sp.sqrt(2) / 2):
-        assert why(L, B, neg, pos, expr=E, term=T, p=p) == "p is rational, 0 < |p| <= 1"
+        assert why(L, B, neg, pos, expr=E, term=T, p=p) == "p is rational, 0 < |p| <= 1 (log), an integer 1 <= p <= 16 (exp)"
     assert why(L, B, neg, pos, expr=E, term=T, p=Q(1, 2)) == "premise must be about 5 - 2*sqrt(s)"
     assert why(L, B, pos, pos, expr=E, term=T, p=I1) == "premise must be the sign -1 of -1"
     assert why(L, B, neg, sturm(s + 1, s, 1, 4), expr=E, term=T, p=I1) == "premise must be s > 0"
     assert why(L, B, neg, sturm(s, s, 1, 4, strict=False), expr=E, term=T, p=I1) == "premise must be s > 0"
-    assert why(L, B, neg, pos, expr=E, term=sp.log(s), p=I1) == f"log(s) is not a term M log(Y) of {E}"
-    assert why(L, B, neg, pos, expr=-sp.log(s), term=T, p=I1) == "-log(s) is not a term M log(Y) of -log(s)"
+    assert why(L, B, neg, pos, expr=E, term=sp.log(s), p=I1) == f"log(s) is not a term M log(Y) or M exp(Y) of {E}"
+    assert why(L, B, neg, pos, expr=-sp.log(s), term=T, p=I1) == "-log(s) is not a term M log(Y) or M exp(Y) of -log(s)"
     two = 3 - sp.log(s) * sp.log(s + 1)
-    assert why(L, B, neg, pos, expr=two, term=two - 3, p=I1).endswith("is not a term M log(Y) of " + str(two))
+    assert why(L, B, neg, pos, expr=two, term=two - 3, p=I1).endswith("is not a term M log(Y) or M exp(Y) of " + str(two))
     assert why(L, B, neg, sturm(s, s, 1, 2), expr=E, term=T, p=I1) == "premises on different intervals"
 
 
@@ -1776,7 +1776,41 @@ def test_sign_by_log_bound_reads_asinh_as_a_log():
     assert why(K.sign_by_cover, expr=3 - s - sp.sqrt(s ** 2 + 1), var=s, cuts=[I1, sp.Integer(4)], want=1,
                strict=False).startswith("sign not shown")
     assert why(L, cover(2 - 1 / W), sturm(I1, s, 1, 4), cover(W), expr=1 + sp.sinh(s), term=sp.sinh(s),
-               p=-I1) == "sinh(s) is not a term M log(Y) of sinh(s) + 1"
+               p=-I1) == "sinh(s) is not a term M log(Y) or M exp(Y) of sinh(s) + 1"
+
+
+def test_sign_by_log_bound_bounds_exp_by_its_taylor_polynomial():
+    """exp(Y) <= 1/T(-Y) for -Y >= 0, T(z) = 1 + z + ... + z^p/p! (e^z >= T(z)
+    >= 1 for z >= 0).  1 - s exp(-s) on [1, 4]: M = -s <= 0, p = 1 gives
+    B = 1 - s/(1 + s) = 1/(1 + s) > 0, so E > 0.  1 - s^2 exp(-s) on [1, 8]
+    (max 4/e^2 at s = 2): p = 4 gives B = (T - s^2)/T > 0 with
+    T - s^2 = 1 + s - s^2/2 + s^3/6 + s^4/24 (> 2 there), while p = 2 gives
+    B = (1 + s - s^2/2)/T, negative beyond s = 1 + sqrt(3): no theorem."""
+    L, X = K.sign_by_log_bound, sp.exp(-s)
+    cover = lambda e, hi: K.sign_by_cover(expr=e, var=s, cuts=[1 + Q(k, 8) for k in range(8 * hi - 7)], want=1,
+                                          strict=True)
+    E, B = 1 - s * X, 1 - s / (1 + s)
+    pos, neg = sturm(s, s, 1, 4), sturm(-s, s, 1, 4, want=-1)
+    th = L(cover(B, 4), neg, pos, expr=E, term=-s * X, p=I1)
+    assert th.claim == Claim("sign", R(E), R(s), R(I1), R(sp.Integer(4)), False, False, 1, True)
+    assert L(cover(B, 4), neg, sturm(s, s, 1, 4, strict=False), expr=E, term=-s * X, p=I1).claim == th.claim  # -Y >= 0
+    T4 = sum(s ** k / sp.factorial(k) for k in range(5))
+    far = L(cover(1 - s ** 2 / T4, 8), sturm(-s ** 2, s, 1, 8, want=-1, strict=False), sturm(s, s, 1, 8),
+            expr=1 - s ** 2 * X, term=-s ** 2 * X, p=sp.Integer(4))
+    assert (far.claim.expr, far.claim.hi, far.claim.want) == (R(1 - s ** 2 * X), R(sp.Integer(8)), 1)
+    assert why(cover, 1 - s ** 2 / (1 + s + s ** 2 / 2), 8).startswith("sign not shown")
+    T16 = sum(s ** k / sp.factorial(k) for k in range(17))
+    assert L(cover(1 - s / T16, 4), neg, pos, expr=E, term=-s * X, p=sp.Integer(16)).claim == th.claim   # p <= 16
+    for p in (I0, sp.Integer(17), Q(1, 2), -I1):
+        assert why(L, cover(B, 4), neg, pos, expr=E, term=-s * X, p=p).startswith("p is rational")
+    assert why(L, cover(B, 4), neg, sturm(-s, s, 1, 4, want=-1), expr=E, term=-s * X, p=I1) == \
+        "premise must be s > 0 (or >= 0)"                       # about -Y, not Y
+    assert why(L, cover(B, 4), pos, pos, expr=E, term=-s * X, p=I1) == "premise must be the sign -1 of -s"
+    assert why(L, cover(B, 4), neg, pos, expr=E, term=-s * X, p=I2).startswith("premise must be about")
+    # exp(s) with -Y = -s < 0: no premise -Y >= 0 exists (T(-s) = 1 - s would bound nothing)
+    G = 3 - s * sp.exp(s)
+    assert why(L, cover(B, 4), neg, pos, expr=G, term=-s * sp.exp(s), p=I1) == \
+        "premise must be -s > 0 (or >= 0)"
 
 
 def test_rule_data_read_from_a_certificate_has_the_encoded_shape():

@@ -868,26 +868,30 @@ class Prover:
         """e on the tail I = [R, oo) by `sign_by_log_bound`: one term M log(Y)
         (or M asinh(X), a log of X + sqrt(X^2 + 1)) of the sum e replaced by
         M (Y^p - 1)/p, p > 0 where M has the sign -want, p = -1 (1 - 1/Y)
-        where it has the sign want (an algebraic tail where log's is not)."""
+        where it has the sign want; or one term M exp(Y), Y <= 0 on I and M
+        with the sign -want, by M/T(-Y), T(z) = 1 + z + ... + z^p/p!, p = 4
+        or 8 (an algebraic tail where log's or exp's is not)."""
         for term in e.args:
             split = K._log_term(term)
             if split is None:
                 continue
-            m, y = split
+            m, y, g = split
             rest = [a for a in e.args if a != term]
-            for p in (sp.Rational(1, 4), sp.Rational(1, 16), -sp.Integer(1)):
-                b, m_sign = sp.Add(*rest, m * (y ** p - 1) / p), -want * (1 if p > 0 else -1)
+            for p in (4, 8) if g is sp.exp else (sp.Rational(1, 4), sp.Rational(1, 16), -sp.Integer(1)):
+                bound = 1 / sum((-y) ** k / sp.factorial(k) for k in range(p + 1)) if g is sp.exp \
+                    else (y ** p - 1) / p       # (as the kernel writes it)
+                b, m_sign = sp.Add(*rest, m * bound), -want * (1 if p > 0 else -1)
                 if not (_plausible(b, var, I[0], want) and _plausible(m, var, I[0], m_sign)):
                     continue                    # false somewhere: do not spend the budget on it
                 try:
-                    positive = self.prove(y, var, I, 1, True, depth)
+                    positive = self.prove(-y if g is sp.exp else y, var, I, 1, g is not sp.exp, depth)
                     coeff = self.prove(m, var, I, m_sign, False, depth)
                     bound = _tail_first(self, b, var, I[0], want, strict, depth)
                     return _rule(K.sign_by_log_bound, bound, coeff, positive, expr=e, term=term, p=p)
                 except NoProof as exc:
                     if exc is self.spent:
                         raise
-        raise NoProof("no term M log(Y) of {} to bound", e)
+        raise NoProof("no term M log(Y) or M exp(Y) of {} to bound", e)
 
     def _unbounded(self, e, var, I, want, strict, depth):
         """[lo, R] as a finite interval, [R, oo) by c - A B in s (R, 4R or
@@ -922,19 +926,23 @@ class Prover:
         if tail is None and depth < 1:
             try:
                 d = derivative(e, var)
+                if not _plausible(d, var, R, want):     # (e -> 0 from the side want, as an exp tail does)
+                    raise NoProof("{} is seen to have the sign {} beyond {}", d, -want, R)
                 dth = self.prove(d, var, (R, OO, False, True), want, False, depth + 1)
                 tail = self._weaken(_rule(K.sign_by_monotone, dth, expr=e, var=var, R=R), (R, OO, False, True), strict)
             except NoProof as exc:
                 if exc is self.spent:
                     raise
-        if tail is None and e.is_Add and e.has(sp.log, sp.asinh):
+        if tail is None and e.is_Add and e.has(sp.log, sp.asinh, sp.exp):
+            logs = e.has(sp.log, sp.asinh)
             for start in (16 * R, 256 * R):         # the bound (Y^p - 1)/p of log Y is loose: start late
-                try:                                # a log in a denominator: over one denominator first
-                    tail, R = _first_of([lambda: self._log_bound(e, var, (start, OO, False, True), want, strict,
-                                                                 depth),
-                                         lambda: self._rewritten(e, _over_one_denominator(e), var,
-                                                                 (start, OO, False, True), want, strict, depth,
-                                                                 False)], self), start
+                J = (start, OO, False, True)        # a log in a denominator: over one denominator first;
+                try:                                # the terms of one exp(Y) as one M exp(Y)
+                    tail, R = _first_of([
+                        lambda: self._log_bound(e, var, J, want, strict, depth),
+                        (lambda: self._rewritten(e, _over_one_denominator(e), var, J, want, strict, depth, False))
+                        if logs else (lambda: self._rewritten_by(e, _exp_collected(e), self._log_bound(
+                            _exp_collected(e), var, J, want, strict, depth), var, J))], self), start
                     break
                 except NoProof as exc:
                     if exc is self.spent:
@@ -1580,6 +1588,15 @@ def _over_one_denominator(e):
         raise NoProof("too large to put over one denominator")
     n, d = sp.fraction(sp.together(e))
     return sp.collect(sp.expand(n), sorted(n.atoms(sp.log, sp.asinh), key=sp.default_sort_key)) / d
+
+
+def _exp_collected(e):
+    """e with its terms M_i exp(Y) collected into one (M_1 + M_2 + ...) exp(Y)
+    for `Prover._log_bound` (NoProof when no two terms share an exp)."""
+    out = sp.collect(e, sorted(e.atoms(sp.exp), key=sp.default_sort_key))
+    if out == e or not out.is_Add:
+        raise NoProof("no two terms of {} share an exp", e)
+    return out
 
 
 def _first_of(attempts, prover):

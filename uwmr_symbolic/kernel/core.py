@@ -776,27 +776,33 @@ sign_below_sup = rule("arb", "sympy-core")(sign_below_sup)
 
 
 def sign_by_log_bound(bound, coeff, positive, *, expr, term, p):
-    """E = A + M log(Y) with T = M log(Y) one term of the sum E (`term`), A
-    the others.  For Y > 0 and rational p, 0 < |p| <= 1, l(Y) = (Y^p - 1)/p
-    bounds log Y = log(Y^p)/p: from above for p > 0, from below for p < 0
-    (log z <= z - 1).  Premises on one interval I: `positive` Y > 0; `coeff`
-    M with the sign -w sign(p) (weak); `bound` B = A + M l(Y) with the sign
-    w.  Then M log Y - M l(Y) has the sign w, so E does too, strict as
-    `bound` is.  (E is defined on I: A's terms are B's, M and log Y are.)
-    A log tail such as s log(1 + s^2)/(1 + s^2), whose form in t = 1/s is not
-    defined at t = 0, becomes algebraic.  M asinh(X) is M log(Y) with
-    Y = X + sqrt(X^2 + 1) (asinh's definition, for every real X)."""
+    """E = A + M G(Y) with T = M G(Y) one term of the sum E (`term`), A the
+    others, G = log or exp.  For Y > 0 and rational p, 0 < |p| <= 1,
+    l(Y) = (Y^p - 1)/p bounds log Y = log(Y^p)/p: from above for p > 0,
+    from below for p < 0 (log z <= z - 1).  For -Y >= 0 and an integer p,
+    1 <= p <= 16, l(Y) = 1/T(-Y), T(z) = sum z^k/k! (k <= p), bounds exp(Y)
+    from above (exp(z) >= T(z) >= 1 for z >= 0), as for p > 0.  Premises on
+    one interval I: `positive` Y > 0 (log), -Y >= 0 (exp); `coeff` M with
+    the sign -w sign(p) (weak); `bound` B = A + M l(Y) with the sign w.
+    Then M G(Y) - M l(Y) has the sign w, so E does too, strict as `bound`
+    is.  (E is defined on I: A's terms are B's, M and G(Y) are.)  A log
+    tail such as s log(1 + s^2)/(1 + s^2), or an exp tail such as
+    (s - s^3) exp(-s^2), whose form in t = 1/s is not defined at t = 0,
+    becomes algebraic.  M asinh(X) is M log(Y) with Y = X + sqrt(X^2 + 1)
+    (asinh's definition, for every real X)."""
     c = _signs_on_one_interval([bound, coeff, positive])
     var = c.x()
     e, t, p = _expr(expr, var), _expr(term, var), _number(p)
-    _need(p.is_Rational and p != 0 and -1 <= p <= 1, "p is rational, 0 < |p| <= 1")
     split = _log_term(t)
-    _need(e.is_Add and t in e.args and split is not None, lambda: f"{t} is not a term M log(Y) of {e}")
-    m, y = split
-    b = sp.Add(*[a for a in e.args if a != t], m * (y ** p - 1) / p)
+    _need(e.is_Add and t in e.args and split is not None, lambda: f"{t} is not a term M log(Y) or M exp(Y) of {e}")
+    m, y, g = split
+    ok = p.is_Integer and 1 <= p <= 16 if g is sp.exp else p.is_Rational and p != 0 and -1 <= p <= 1
+    _need(ok, "p is rational, 0 < |p| <= 1 (log), an integer 1 <= p <= 16 (exp)")
+    z, l = (-y, 1 / sum((-y) ** k / sp.factorial(k) for k in range(p + 1))) if g is sp.exp else (y, (y ** p - 1) / p)
+    b = sp.Add(*[a for a in e.args if a != t], m * l)
     w = c.want
-    _need(positive.claim.expr == _s(y) and positive.claim.want == 1 and positive.claim.strict,
-          lambda: f"premise must be {y} > 0")
+    _need(positive.claim.expr == _s(z) and positive.claim.want == 1 and (positive.claim.strict or g is sp.exp),
+          lambda: f"premise must be {z} > 0" + (" (or >= 0)" if g is sp.exp else ""))
     _need(coeff.claim.expr == _s(m) and coeff.claim.want == -w * _const_sign(p),
           lambda: f"premise must be the sign {-w * _const_sign(p)} of {m}")
     _need(c.expr == _s(b), lambda: f"premise must be about {b}")
@@ -805,15 +811,15 @@ sign_by_log_bound = rule("sympy-core")(sign_by_log_bound)
 
 
 def _log_term(t):
-    """(M, Y) for a product t = M log(Y) with one log among its factors,
-    M asinh(X) read as M log(X + sqrt(X^2 + 1)) (asinh's definition, for
-    every real X); None for any other t."""
-    logs = [a for a in sp.Mul.make_args(t) if isinstance(a, (sp.log, sp.asinh))]
+    """(M, Y, G) for a product t = M G(Y) with one log or exp among its
+    factors (G = log, exp), M asinh(X) read as M log(X + sqrt(X^2 + 1))
+    (asinh's definition, for every real X); None for any other t."""
+    logs = [a for a in sp.Mul.make_args(t) if isinstance(a, (sp.log, sp.asinh, sp.exp))]
     if len(logs) != 1:
         return None
     g, x = logs[0], logs[0].args[0]
     m = sp.Mul(*[a for a in sp.Mul.make_args(t) if a != g])
-    return m, x if isinstance(g, sp.log) else x + sp.sqrt(x ** 2 + 1)
+    return m, x + sp.sqrt(x ** 2 + 1) if isinstance(g, sp.asinh) else x, sp.exp if isinstance(g, sp.exp) else sp.log
 
 
 def sign_of_increasing_difference(arg, *, expr, inner, c):
