@@ -4,6 +4,7 @@ the wrong claim and the independent evidence).  Each test asserts the right
 behaviour; all of them pass since issue 9's fixes.  A new finding gets a
 strict xfail here until it is fixed.  Floats are read as the verifier
 documents (README): a double as its shortest round-trip decimal, `repr`."""
+import json
 import math
 from pathlib import Path
 
@@ -200,3 +201,27 @@ def test_a_weak_sign_theorem_is_left_to_the_search_not_written_as_a_proof(verify
     assert r["certificate_error"] is None, r["certificate_error"]
     assert {"P2", "P3", "P4", "P8"} <= set(r["kernel_checked"])
     assert [p for p in r["properties"] if status(r, p) == "refuted"] == []
+
+
+def test_gathering_exp_terms_does_not_let_sympy_evaluate(tmp_path):
+    """The proposer gathers the terms M_i exp(Y) of a tail into one M exp(Y)
+    (for the kernel's exp bound).  Through `sympy.collect` it did so by
+    rebuilding powers of exp, and on this design, in a process whose string
+    hashes put SymPy's sets in an unlucky order (PYTHONHASHSEED 2, 5 or 7
+    here), SymPy then evaluated a constant to thousands of digits until
+    --timeout 10 ran out: every verdict unknown, nothing kernel-checked.  The
+    terms are now gathered by their exp factors as they stand."""
+    import os
+    import subprocess
+    import sys
+    from uwmr_symbolic.certify import _exp_collected
+    s = sp.Symbol("s", positive=True)
+    e = 2 * s / (1 + s ** 2) + s * sp.exp(-s ** 2) - s ** 3 * sp.exp(-s ** 2) + sp.exp(-s)
+    assert _exp_collected(e) == 2 * s / (1 + s ** 2) + sp.Mul(s - s ** 3, sp.exp(-s ** 2)) + sp.exp(-s)
+    with pytest.raises(Exception, match="share an exp"):
+        _exp_collected(2 * s / (1 + s ** 2) + s * sp.exp(-s ** 2))
+    out = subprocess.run([sys.executable, "-m", "uwmr_symbolic.cli", str(HERE / "tanh_erf_tail_crash.py"), "--no-cache",
+                          "--timeout", "10", "--format", "json"], capture_output=True, text=True, timeout=120,
+                         env={**os.environ, "PYTHONHASHSEED": "2"}, cwd=HERE.parents[2])
+    report = json.loads(out.stdout)
+    assert {"P1", "P2", "P3", "P4", "P5"} <= set(report["kernel"]["checked"]), report["kernel"]

@@ -1591,12 +1591,17 @@ def _over_one_denominator(e):
 
 
 def _exp_collected(e):
-    """e with its terms M_i exp(Y) collected into one (M_1 + M_2 + ...) exp(Y)
-    for `Prover._log_bound` (NoProof when no two terms share an exp)."""
-    out = sp.collect(e, sorted(e.atoms(sp.exp), key=sp.default_sort_key))
-    if out == e or not out.is_Add:
+    """e with its terms M_i exp(Y) (one exp factor each) gathered into one
+    (M_1 + M_2 + ...) exp(Y) per exp, for `Prover._log_bound`; by the factors
+    as they stand (`sympy.collect` rebuilds powers of exp, and SymPy may then
+    evaluate e to thousands of digits).  NoProof when no two terms share one."""
+    groups: dict = {}
+    for term in e.args:
+        exps = [a for a in sp.Mul.make_args(term) if isinstance(a, sp.exp)]
+        groups.setdefault(exps[0] if len(exps) == 1 else term, []).append(term)
+    if all(len(ts) == 1 for ts in groups.values()):
         raise NoProof("no two terms of {} share an exp", e)
-    return out
+    return sp.Add(*[ts[0] if len(ts) == 1 else sp.Mul(sp.Add(*[t / g for t in ts]), g) for g, ts in groups.items()])
 
 
 def _first_of(attempts, prover):
