@@ -33,6 +33,7 @@ from flint import arb
 from .interval import Interval, IntervalFunction, Undefined, mean_value_form
 from .kernel import core as K
 from .limits import NoLimit, exact_sign, limit_right, rational_parts, rational_poly
+from .timeouts import attempt
 from .verdict import Verdict, proved, refuted, unknown
 
 T = sp.Symbol("t", positive=True)       # t = 1/s on the unbounded part
@@ -624,9 +625,10 @@ def exact_zeros_in(expr, var, lo, hi) -> list:
     `small_rates` or `solveset_hopeless`)."""
     if sp.count_ops(expr) > ZERO_SEARCH_OPS or not small_rates(expr) or solveset_hopeless(expr, var):
         return []
-    try:
-        sols = sp.solveset(sp.Eq(expr, 0), var, sp.Interval.open(lo, hi))
-    except Exception:  # noqa: BLE001
+    # within 3 s: solveset may factor a polynomial for the whole --timeout (Wang's algorithm, in an
+    # order that depends on string hashes: a design took 10 s or 30 s by PYTHONHASHSEED)
+    sols = attempt(lambda: sp.solveset(sp.Eq(expr, 0), var, sp.Interval.open(lo, hi)), 3.0)
+    if sols is None:
         return []
     out = []
     for root in sorted(set(_set_candidates(sols)), key=sp.default_sort_key):
