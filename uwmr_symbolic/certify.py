@@ -878,13 +878,12 @@ class Prover:
             m, y, g = split
             rest = [a for a in e.args if a != term]
             for p in (4, 8) if g is sp.exp else (sp.Rational(1, 4), sp.Rational(1, 16), -sp.Integer(1)):
-                bound = 1 / sum((-y) ** k / sp.factorial(k) for k in range(p + 1)) if g is sp.exp \
-                    else (y ** p - 1) / p       # (as the kernel writes it)
+                z, bound = K._log_bound_of(y, g, p)
                 b, m_sign = sp.Add(*rest, m * bound), -want * (1 if p > 0 else -1)
                 if not (_plausible(b, var, I[0], want) and _plausible(m, var, I[0], m_sign)):
                     continue                    # false somewhere: do not spend the budget on it
                 try:
-                    positive = self.prove(-y if g is sp.exp else y, var, I, 1, g is not sp.exp, depth)
+                    positive = self.prove(z, var, I, 1, g is not sp.exp, depth)
                     coeff = self.prove(m, var, I, m_sign, False, depth)
                     bound = _tail_first(self, b, var, I[0], want, strict, depth)
                     return _rule(K.sign_by_log_bound, bound, coeff, positive, expr=e, term=term, p=p)

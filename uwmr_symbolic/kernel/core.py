@@ -798,16 +798,21 @@ def sign_by_log_bound(bound, coeff, positive, *, expr, term, p):
     m, y, g = split
     ok = p.is_Integer and 1 <= p <= 16 if g is sp.exp else p.is_Rational and p != 0 and -1 <= p <= 1
     _need(ok, "p is rational, 0 < |p| <= 1 (log), an integer 1 <= p <= 16 (exp)")
-    z, l = (-y, 1 / sum((-y) ** k / sp.factorial(k) for k in range(p + 1))) if g is sp.exp else (y, (y ** p - 1) / p)
+    z, l = _log_bound_of(y, g, p)
     b = sp.Add(*[a for a in e.args if a != t], m * l)
-    w = c.want
     _need(positive.claim.expr == _s(z) and positive.claim.want == 1 and (positive.claim.strict or g is sp.exp),
           lambda: f"premise must be {z} > 0" + (" (or >= 0)" if g is sp.exp else ""))
-    _need(coeff.claim.expr == _s(m) and coeff.claim.want == -w * _const_sign(p),
-          lambda: f"premise must be the sign {-w * _const_sign(p)} of {m}")
+    _need(coeff.claim.expr == _s(m) and coeff.claim.want == -c.want * _const_sign(p),
+          lambda: f"premise must be the sign {-c.want * _const_sign(p)} of {m}")
     _need(c.expr == _s(b), lambda: f"premise must be about {b}")
-    return _sign_on(c, e, w, c.strict)
+    return _sign_on(c, e, c.want, c.strict)
 sign_by_log_bound = rule("sympy-core")(sign_by_log_bound)
+
+
+def _log_bound_of(y, g, p):
+    """(Z, l(Y)) of `sign_by_log_bound`: the premise's Z (Y for log, -Y for
+    exp) and the bound l(Y) of G(Y) (the prover builds its premise with it)."""
+    return (-y, 1 / sum((-y) ** k / sp.factorial(k) for k in range(p + 1))) if g is sp.exp else (y, (y ** p - 1) / p)
 
 
 def _log_term(t):
