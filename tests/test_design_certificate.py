@@ -755,3 +755,43 @@ def test_an_exp_tail_with_terms_of_both_signs_is_kernel_checked(tmp_path):
     path.write_text(head + "f = 3*rho*sp.exp(-rho) + sp.log(1 + rho)\n")
     worse = verify_design(path)
     assert worse.properties["P5"].refuted and "P5" in worse.kernel["checked"]
+
+
+@pytest.mark.parametrize("formula, refuted", [
+    # F = log(1 + atan(s^2)) < log(1 + pi/2): log Y <= Y - 1 bounds F by atan(s^2) < pi/2
+    ("sp.log(1 + sp.atan(rho))", ["P3"]),
+    # F = log(2 - exp(-s^2)) < log 2: log Y <= Y - 1 bounds F by 1 - exp(-s^2) < 1
+    ("sp.log(2 - sp.exp(-rho))", ["P3"]),
+    # f(h, 0) = atan(h)^2 -> pi^2/4 (a product of two limits pi/2); not radial: P4 too
+    ("sp.atan(e1)**2 + sp.atan(e2)**2", ["P3", "P4"]),
+    # F' = 2s (1 + s^2)^(-1/4) - s^3 (1 + s^2)^(-5/4)/2 ~ 3 sqrt(s)/2: s^(1/2) F'' -> 3/4 > 0
+    ("rho/(1 + rho)**sp.Rational(1, 4)", ["P1"]),
+])
+def test_bounded_profiles_and_power_growth_are_refuted_by_the_kernel(tmp_path, formula, refuted):
+    """Refutations the search found and the kernel once could not check:
+    a bound of F by log Y <= Y - 1 (p = 1 of `sign_by_log_bound`), a finite
+    limit along a ray of a power of a bounded function (`limit_of_product`
+    of repeated factors; the link "bounded" takes a limit at oo), and growth
+    F' ~ c s^(1/2) by the rate p = 1/2 tried first (s^(1/2) F'' tends to a
+    constant, a t-form defined at t = 0, where p = 1/4 gives one that is not)."""
+    path = tmp_path / "design.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    f"f = {formula}\n")
+    report = verify_design(path)
+    assert [n for n, v in report.properties.items() if v.refuted] == refuted
+    assert set(refuted) <= set(report.kernel["checked"])
+
+
+def test_kf_attained_inside_a_piece_is_kernel_checked(tmp_path):
+    """F = s^2/2 - s^4/16 for s^2 <= 2, 3/4 + log(s^2/2)/2 beyond: C^2 at
+    s = sqrt(2) (values 3/4, slopes sqrt(2)/2, F'' = -1/2 on both sides).  F' =
+    s - s^3/4 peaks at s = 2/sqrt(3) < sqrt(2) with kf = 4 sqrt(3)/9, and 1/s
+    <= 1/sqrt(2) beyond.  kf - F' touches 0 inside the first piece: the
+    piece is cut there (Taylor at the zero), not covered through it."""
+    path = tmp_path / "design.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    "f = sp.Piecewise((rho/2 - rho**2/16, rho <= 2), (sp.Rational(3, 4) + sp.log(rho/2)/2, True))\n")
+    report = verify_design(path)
+    assert all(report.properties[p].proved for p in PROPS)
+    assert report.kernel == {"checked": [*PROPS, "kf"], "search": []}
+    assert sp.sympify(report.kf.exact) == 4 * sp.sqrt(3) / 9

@@ -877,7 +877,7 @@ class Prover:
                 continue
             m, y, g = split
             rest = [a for a in e.args if a != term]
-            for p in (4, 8) if g is sp.exp else (sp.Rational(1, 4), sp.Rational(1, 16), -sp.Integer(1)):
+            for p in (4, 8) if g is sp.exp else (sp.Integer(1), sp.Rational(1, 4), sp.Rational(1, 16), -sp.Integer(1)):
                 z, bound = K._log_bound_of(y, g, p)
                 b, m_sign = sp.Add(*rest, m * bound), -want * (1 if p > 0 else -1)
                 if not (_plausible(b, var, I[0], want) and _plausible(m, var, I[0], m_sign)):
@@ -1243,24 +1243,26 @@ def _sign_theorems(e, var, lo, hi, want, lo_open, hi_open, zeros, strict, work):
         return None, str(exc)
 
 
-def piecewise_sign_theorem(P, ends, var, want=1, strict=True, work=2 * WORK):
+def piecewise_sign_theorem(P, ends, var, want=1, strict=True, work=2 * WORK, zeros=()):
     """want*P > 0 (>= 0 if not strict) on (0, oo) for P a Piecewise or an
     expression of one, as one kernel theorem, or (None, why).  `ends`: the
-    search's boundaries 0 < b1 < ... < oo.  On each open piece the branch
-    that applies is signed (`on_branch`); `join_at_point` joins the pieces
-    through P's value at each boundary.  Each piece is a lemma of its own,
-    with its own budget `work` (its relations' signs included), scaled to
-    the largest branch (`_scaled`)."""
+    search's boundaries 0 < b1 < ... < oo; `zeros`: exact points inside the
+    pieces where P touches 0 (weak claims only), cut there too.  On each
+    open piece the branch that applies is signed (`on_branch`);
+    `join_at_point` joins the pieces through P's value at each cut.  Each
+    piece is a lemma of its own, with its own budget `work` (its relations'
+    signs included), scaled to the largest branch (`_scaled`)."""
     folded = sp.piecewise_fold(P)
     if not isinstance(folded, sp.Piecewise):
         return None, f"{P} is not a Piecewise"
-    key = ("piecewise", P, tuple(ends), var, want, strict)
+    key = ("piecewise", P, tuple(ends), var, want, strict, tuple(zeros))
     if key in _FOUND:
         return _FOUND[key], ""
     work = _scaled(work, max((g for g, _ in folded.args), key=sp.count_ops))
+    cuts = sorted({*ends[:-1], *zeros}, key=float) + [ends[-1]]
     try:
         whole = None
-        for lo, hi in zip(ends, ends[1:]):
+        for lo, hi in zip(cuts, cuts[1:]):
             I, prover = (lo, hi, True, True), Prover(work)
             th = on_branch(P, var, I, prover, lambda g: prover.prove(g, var, I, want, strict))
             whole = th if whole is None else _rule(K.join_at_point, whole, th)
@@ -1331,7 +1333,8 @@ def piecewise_sup_theorems(F, c, point, var, ends, lower=None, work=2 * WORK):
                 raise NoProof(why)
             return [*theorems, *whole], ""
         positive, why = piecewise_sign_theorem(dF, ends, var, strict=not jumps)     # (whatever c: its own budget)
-        upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False, work=work)
+        inside = [point] if point is not None and lower is None and point not in ends else []
+        upper, why = (piecewise_sign_theorem(sp.sympify(c) - dF, ends, var, strict=False, work=work, zeros=inside)
                       if positive else (None, why))
         if upper is None:
             raise NoProof(why)
@@ -1646,9 +1649,10 @@ def _diverges(F, var, starts) -> list:
     prover = Prover(_scaled(WORK, d))        # one budget for every attempt
     rates = [("linear", d), ("log", var * d), *((p, var ** (1 - p) * d) for p in _POWER_RATES)]
     grow = _growth_exponent(F, var, starts[-1])
-    if grow is not None:     # the likeliest rate first (s^(2/3) + ...: 1/2, not log, whose proof spent the budget)
-        rates.sort(key=lambda r: 0 if r[0] == "linear" and grow > 0.95 else
-                   1 if r[0] not in ("linear", "log") and r[0] < grow - 0.05 else 2 if r[0] == "log" else 3)
+    if grow is not None:     # the likeliest rate first (s^(2/3) + ...: 1/2, not log, whose proof spent the budget);
+        power = lambda r: r[0] not in ("linear", "log")     # noqa: E731   (F ~ s^p itself first: s^(1-p) F'
+        rates.sort(key=lambda r: 0 if (r[0] == "linear" and grow > 0.95) or (power(r) and abs(r[0] - grow) < 0.05)
+                   else 1 if power(r) and r[0] < grow - 0.05 else 2 if r[0] == "log" else 3)   # has a limit in t)
     for R in starts:
         for rate, g in rates:
             try:
@@ -1849,7 +1853,9 @@ def limit_at_infinity(e, var, w=sp.Rational(1, 4)):
     limits and that of the rest (`limit_of_bounded`, `limit_of_product`)."""
     from .univariate import T
     form = _with_tanh(e)
-    bounded = [a for a in sp.Mul.make_args(form) if type(a) in K._SUP]
+    power = lambda a: a.exp if a.is_Pow and type(a.base) in K._SUP and a.exp.is_Integer and a.exp > 0 else 0  # noqa: E731
+    bounded = [a for a in sp.Mul.make_args(form) if type(a) in K._SUP] + \
+        [a.base for a in sp.Mul.make_args(form) for _ in range(power(a))]      # G(Y)^n: n times G(Y)
     if not bounded:
         ident = _rule(K.identity, lhs=_tail_form(e, var), rhs=e.xreplace({var: 1 / T}), var=T, lo=0, hi=w,
                       lo_open=True, hi_open=False)
@@ -1861,7 +1867,7 @@ def limit_at_infinity(e, var, w=sp.Rational(1, 4)):
             if not div:
                 raise NoProof("{} not shown to diverge", g.args[0])
             premises.append(_rule(K.limit_of_bounded, div[0], expr=g))
-        rest = sp.Mul(*[a for a in sp.Mul.make_args(form) if type(a) not in K._SUP])
+        rest = sp.Mul(*[a for a in sp.Mul.make_args(form) if type(a) not in K._SUP and not power(a)])
         if rest.has(var):
             premises.append(limit_at_infinity(rest, var, w))
         lim = _rule(K.limit_of_product, *premises, expr=e)
@@ -2000,8 +2006,8 @@ def _witness_theorems(f, record):
     if record["kind"] == "bounded":
         # twice a lemma's work: a tail such as that of log(1 + h^2)^2/h^2 <= 1 costs more than one
         th = sup_upper_theorem(along_ray(f, record["direction"]), record["bound"], H, work=2 * WORK)
-        if th is None:
-            raise NoProof("f <= {} along the ray not shown", record['bound'])
+        if th is None:          # or its limit along the ray (atan(h)^2 -> pi^2/4)
+            th = limit_at_infinity(along_ray(f, record["direction"]), H)
         return [th]
     if record["kind"] == "unbounded":
         v = sp.Symbol(record["var"], real=True)

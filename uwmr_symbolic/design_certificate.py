@@ -541,8 +541,9 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
 #        one-sided limit L != 0 as e2 -> 0+, so not the limit 0 that P8 asks
 #        for at e1 = x (where df/de2 does not exist near (x, 0), P8 fails
 #        anyway).  Like slope, refused for f with Piecewise, Max, Min or sign.
-# bounded  f(h dx, h dy) <= M for all h > 0 (`sup_upper`, M finite), (dx, dy)
-#        != (0, 0): f does not tend to oo along that ray, so P3 fails.
+# bounded  f(h dx, h dy) <= M for all h > 0 (`sup_upper`, M finite), or
+#        f(h dx, h dy) -> M as h -> oo (`limit_oo`, M finite), (dx, dy) !=
+#        (0, 0): f does not tend to oo along that ray, so P3 fails.
 # unbounded  E(h) -> +oo as h -> oo (at "oo": `diverges_by_growth` of E) or
 #        as h -> 0+ (at "0": `diverges_by_growth` of E(1/h)), for E = df/de2 at
 #        (0, h) (var e2): |df/de2| has no finite bound kf, P1 fails; at "0"
@@ -815,11 +816,12 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         d = tuple(parse(c, design=True) for c in witness.get("direction", ()))
         if len(d) != 2 or (_sign(d[0]) == 0 and _sign(d[1]) == 0):
             raise bad
-        if not (len(claims) == 1 and claims[0].kind == "sup_upper" and claims[0].expr == _srepr(along_ray(f, d))
-                and (claims[0].var, claims[0].lo, claims[0].hi, claims[0].lo_open) == on_h
-                and parse(claims[0].other) not in (sp.oo, -sp.oo)):
+        c = claims[0] if len(claims) == 1 else None
+        if not (c is not None and c.expr == _srepr(along_ray(f, d)) and parse(c.other) not in (sp.oo, -sp.oo)
+                and ((c.kind, c.var, c.lo, c.hi, c.lo_open) in (("sup_upper", *on_h), ("limit_oo", _srepr(H), "", "oo", False)))):
             raise bad
-        return f"f({d[0] * H}, {d[1] * H}) <= {parse(claims[0].other)} for all h > 0", False
+        return f"f({d[0] * H}, {d[1] * H}) {'<=' if c.kind == 'sup_upper' else '->'} {parse(c.other)} " \
+               f"{'for all h > 0' if c.kind == 'sup_upper' else 'as h -> oo'}", False
     if kind == "unbounded":
         divided = witness.get("divided", True) is not False
         how = (name, witness.get("var"), witness.get("order", 1), witness.get("at", "oo")) + (() if divided else
