@@ -766,10 +766,14 @@ def test_an_exp_tail_with_terms_of_both_signs_is_kernel_checked(tmp_path):
     ("sp.atan(e1)**2 + sp.atan(e2)**2", ["P3", "P4"]),
     # F' = 2s (1 + s^2)^(-1/4) - s^3 (1 + s^2)^(-5/4)/2 ~ 3 sqrt(s)/2: s^(1/2) F'' -> 3/4 > 0
     ("rho/(1 + rho)**sp.Rational(1, 4)", ["P1"]),
+    # F = L/(1 + L) < 1, L = log(1 + s^2): a limit the limit calculus does not find (0 * oo), so
+    # the search asks the kernel for F <= 1 (1 - F = 1/(1 + L) > 0), the integer above F(2^60)
+    ("sp.log(1 + rho)/(1 + sp.log(1 + rho))", ["P3"]),
 ])
 def test_bounded_profiles_and_power_growth_are_refuted_by_the_kernel(tmp_path, formula, refuted):
     """Refutations the search found and the kernel once could not check:
-    a bound of F by log Y <= Y - 1 (p = 1 of `sign_by_log_bound`), a finite
+    a bound of F by log Y <= Y - 1 (p = 1 of `sign_by_log_bound`) or by
+    an integer above its values (`properties._bounded_above`), a finite
     limit along a ray of a power of a bounded function (`limit_of_product`
     of repeated factors; the link "bounded" takes a limit at oo), and growth
     F' ~ c s^(1/2) by the rate p = 1/2 tried first (s^(1/2) F'' tends to a
@@ -795,3 +799,19 @@ def test_kf_attained_inside_a_piece_is_kernel_checked(tmp_path):
     assert all(report.properties[p].proved for p in PROPS)
     assert report.kernel == {"checked": [*PROPS, "kf"], "search": []}
     assert sp.sympify(report.kf.exact) == 4 * sp.sqrt(3) / 9
+
+
+def test_kf_approached_through_atan_of_a_reciprocal_is_kernel_checked(tmp_path):
+    """F = s atan(s): F' = atan(s) + s/(1 + s^2) rises (F'' = 2/(1 + s^2)^2)
+    to kf = pi/2, approached; F'(s)/s = atan(s)/s + 1/(1 + s^2) falls from 2
+    (P6, k = 2).  Both bounds touch at s -> oo: the tail forms hold
+    pi/2 - atan(t), which the kernel's identity now matches with atan(1/t)
+    exactly (t > 0)."""
+    path = tmp_path / "design.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    "f = sp.sqrt(rho)*sp.atan(sp.sqrt(rho))\n")
+    report = verify_design(path)
+    assert all(report.properties[p].proved for p in PROPS)
+    assert report.kernel == {"checked": [*PROPS, "kf"], "search": []}
+    assert report.kf.exact == sp.pi / 2 and not report.kf.attained
+    assert sp.sympify(report.properties["P6"].details["k"]) == 2

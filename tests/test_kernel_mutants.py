@@ -946,6 +946,23 @@ def test_identity_claims_and_messages():
     assert why(exact_identity, x, x, s, 1, 2) == "x has symbols other than s"
 
 
+def test_identity_reads_atan_of_a_reciprocal_only_where_its_argument_is_positive():
+    """atan(u) + atan(1/u) = pi/2 where u > 0 (and -pi/2 where u < 0): with
+    one positive variable, atan(u) for u > 0 at every t > 0 is read as
+    pi/2 - atan(1/u), so a tail form's pi/2 - atan(t) meets atan(1/t) -- exact."""
+    tail = sp.atan(t) - t / (t ** 2 + 1)                   # (atan(s) + s/(1 + s^2) at s = 1/t) read off pi/2
+    at_s = sp.pi / 2 - sp.atan(1 / t) - (1 / t) / (1 + 1 / t ** 2)
+    for l, r in ((tail, at_s), (sp.atan(t ** 2) + sp.atan(t ** -2), sp.pi / 2), (sp.atan(2 / (t + 1)),
+                                                                                  sp.pi / 2 - sp.atan((t + 1) / 2))):
+        assert exact_identity(l, r, t, 0, Q(1, 4), True).assumptions == {"sympy-core", "sympy-polys"}, l
+    # not for a real x (on (-2, -1), atan(x) = -pi/2 - atan(1/x)): cross-checked, and false
+    assert why(exact_identity, sp.atan(x), sp.pi / 2 - sp.atan(1 / x), x, -2, -1).startswith(
+        "the identity fails at x = -19/10")
+    # nor where u is not shown positive at every t > 0: atan(t - 1) on (1/4, 1/2), where t - 1 < 0
+    assert why(exact_identity, sp.atan(t - 1), sp.pi / 2 - sp.atan(1 / (t - 1)), t, Q(1, 4), Q(1, 2)).startswith(
+        "the identity fails at t = 11/40")
+
+
 def test_identity_plane_claims_and_messages():
     y = sp.Symbol("y", real=True)
     P = K.identity_plane

@@ -1969,6 +1969,8 @@ def _witness_candidates(name, witness):
         if d is not None and lim is not None and lim.is_real and lim.is_finite and not lim.has(sp.Float):
             for m in (lim + 1, lim):
                 yield {"kind": "bounded", "direction": d, "bound": m}
+    if name == "P3" and w.get("direction") == "every" and "bound" in w:     # a bound the kernel has shown
+        yield {"kind": "bounded", "direction": (sp.Integer(1), sp.Integer(0)), "bound": sp.Integer(w["bound"])}
     if name in ("P1", "P6", "P7") and str(w.get("limit")) == "oo":   # kf, F'(s)/s or F'' unbounded
         near_zero = "0+" in str(w.get("e1")) + str(w.get("e2"))
         for at in (("0", "oo") if near_zero else ("oo", "0")):

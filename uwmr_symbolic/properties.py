@@ -19,6 +19,7 @@ limit of df/de2; limits along rays via the limit calculus) and says
 "unknown" for the rest."""
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 from fractions import Fraction
 from functools import cached_property
@@ -28,7 +29,7 @@ import sympy as sp
 
 from . import e1 as E1, e2 as E2
 from .design import Design
-from .design_certificate import _JUMPS, SMOOTH_ONLY, axis_split, branch_profile, e1_sides, half_axes
+from .design_certificate import _JUMPS, SMOOTH_ONLY, H, along_ray, axis_split, branch_profile, e1_sides, half_axes
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, SPENT, WORK, NoProof, continuity_pair, exploring, growth_theorems,
                       one_branch_theorems, origin_theorems, origin_value_theorems, piecewise_sign_theorem,
@@ -480,6 +481,9 @@ def verify_p3(a: Analysis) -> Verdict:
         lim = limit_at_infinity(last.expr, S)
     except NoLimit as exc:
         growth = _grows_without_bound(a.derivative(last.expr, 1), last.lo)
+        if growth is None and (bound := _bounded_above(a.f)) is not None:
+            return refuted(f"f is not radially unbounded: f(h, 0) <= {bound} for all h > 0 (the kernel's sign "
+                           "rules)", {"direction": "every", "bound": str(bound)})
         if growth is None:
             return unknown(f"{pos.reason}; cannot decide whether f -> oo ({exc})")
         if not pos.proved:
@@ -494,6 +498,23 @@ def verify_p3(a: Analysis) -> Verdict:
         return pos
     return _lemmas(proved(f"{pos.reason}; F(s) -> oo as s -> oo (limit calculus on F(1/t))"), pos,
                    "F(s) -> oo as s -> oo (limit calculus)", lambda: _growth(a))
+
+
+def _bounded_above(f):
+    """M with f(h, 0) <= M for every h > 0 as a kernel theorem (the witness
+    "bounded" of P3's refutation proves it again, from the lemma cache), M
+    the integer above f's largest value at h = 1, 16, ..., 2^60 (f's limit
+    at oo may be beyond the limit calculus: log(1 + s^2)/(1 + log(1 + s^2)));
+    None when not shown."""
+    ray = along_ray(f, (1, 0))
+    try:
+        top = max(value_at(ray, H, 2 ** k, prec=64).upper_float() for k in range(0, 64, 4))
+    except (Undefined, ValueError, OverflowError):
+        return None
+    if not math.isfinite(top) or top > 1e6:
+        return None
+    bound = sp.Integer(math.floor(top)) + 1
+    return bound if sup_upper_theorem(ray, bound, H, work=2 * WORK) is not None else None
 
 
 def _growth(a: Analysis) -> list:

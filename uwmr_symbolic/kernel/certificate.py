@@ -31,14 +31,11 @@ def to_certificate(theorems) -> dict:
         order.append(t)
     for t in theorems:
         visit(t)
-    return {
-        "format": FORMAT,
-        "version": VERSION,
-        "theorems": [{"id": ids[id(t)], "rule": t.rule, "premises": [ids[id(p)] for p in t.premises],
-                      "data": json.loads(t.data), "claim": t.claim.to_json()} for t in order],
-        "conclusions": [ids[id(t)] for t in theorems],
-        "assumptions": sorted(set().union(*[t.assumptions for t in theorems])),
-    }
+    return {"format": FORMAT, "version": VERSION,
+            "theorems": [{"id": ids[id(t)], "rule": t.rule, "premises": [ids[id(p)] for p in t.premises],
+                          "data": json.loads(t.data), "claim": t.claim.to_json()} for t in order],
+            "conclusions": [ids[id(t)] for t in theorems],
+            "assumptions": sorted(set().union(*[t.assumptions for t in theorems]))}
 
 
 def _shape(data):

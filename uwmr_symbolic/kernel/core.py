@@ -1388,7 +1388,10 @@ def _generalized(d, variables):
     value of those subterms, in particular for their true values, wherever d
     is defined.  The roots of one base b share one symbol b^(1/L), L the
     lcm of their orders (sqrt(t) and t^(-1/4) as powers of t^(1/4)): a
-    second pass when a base has roots of several orders."""
+    second pass when a base has roots of several orders.  With one positive
+    variable x, atan(u) with u > 0 for every x > 0 (`defined_for_positive`
+    of log u) is read as pi/2 - atan(1/u) when 1/u sorts before u, so that
+    atan(1/t) and atan(t) share one symbol (the tail forms hold both)."""
     orders: dict = {}
     for _ in range(2):
         fresh, roots, asked = {}, {}, {}
@@ -1435,6 +1438,9 @@ def _generalized_pass(d, variables, fresh, roots, asked, orders):
                             for b, k in sp.factorrat(e.args[0]).items()])
         if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
             return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
+        if isinstance(e, sp.atan) and len(variables) == 1 and variables[0].is_positive and sp.default_sort_key(
+                1 / e.args[0]) < sp.default_sort_key(e.args[0]) and defined_for_positive(sp.log(e.args[0]), variables[0]) is not None:
+            return walk(sp.pi / 2 - sp.atan(1 / e.args[0]))     # atan u = pi/2 - atan(1/u) where u > 0 (for all x > 0)
         if isinstance(e, _UNARY) and len(e.args) == 1:  # G(u): one symbol per canonical generalised u
             u = _cancel(walk(e.args[0], True))
             v = _cancel(-u)
@@ -1753,8 +1759,7 @@ def sup_lower_by_limit(ident, *, expr, var, width, bound, lo, lo_open):
     <lo, oo) for small t, where E(1/t) = E_t(t) -> c."""
     e, c, extra = _tail_limit(ident, expr, var, width)
     _need(c - _number(bound) == 0, lambda: f"E_t(0) is not exactly {bound}")
-    lo = _number(lo)
-    _interval(var, lo, OO, lo_open, True)
+    lo = _interval(var, lo, OO, lo_open, True)[0]
     _need(lo == 0 or _lt(0, lo), "lo >= 0")
     return Claim("sup_lower", _s(e), _s(var), _s(lo), "oo", lo_open, True, other=_s(c)), extra
 sup_lower_by_limit = rule("arb", "sympy-core")(sup_lower_by_limit)
