@@ -1649,10 +1649,10 @@ def _diverges(F, var, starts) -> list:
     prover = Prover(_scaled(WORK, d))        # one budget for every attempt
     rates = [("linear", d), ("log", var * d), *((p, var ** (1 - p) * d) for p in _POWER_RATES)]
     grow = _growth_exponent(F, var, starts[-1])
-    if grow is not None:     # the likeliest rate first (s^(2/3) + ...: 1/2, not log, whose proof spent the budget);
-        power = lambda r: r[0] not in ("linear", "log")     # noqa: E731   (F ~ s^p itself first: s^(1-p) F'
+    if grow is not None:     # the likeliest rate first (s^(2/3) + ...: 1/2, not log, whose proof spent the budget),
+        power = lambda r: r[0] not in ("linear", "log")     # noqa: E731   and F ~ s^p's own p before it: then
         rates.sort(key=lambda r: 0 if (r[0] == "linear" and grow > 0.95) or (power(r) and abs(r[0] - grow) < 0.05)
-                   else 1 if power(r) and r[0] < grow - 0.05 else 2 if r[0] == "log" else 3)   # has a limit in t)
+                   else 1 if power(r) and r[0] < grow - 0.05 else 2 if r[0] == "log" else 3)  # s^(1-p) F' -> c > 0
     for R in starts:
         for rate, g in rates:
             try:
@@ -1853,7 +1853,7 @@ def limit_at_infinity(e, var, w=sp.Rational(1, 4)):
     limits and that of the rest (`limit_of_bounded`, `limit_of_product`)."""
     from .univariate import T
     form = _with_tanh(e)
-    power = lambda a: a.exp if a.is_Pow and type(a.base) in K._SUP and a.exp.is_Integer and a.exp > 0 else 0  # noqa: E731
+    power = lambda a: a.exp if a.is_Pow and type(a.base) in K._SUP and a.exp.is_Integer and a.exp > 0 else 0  # noqa
     bounded = [a for a in sp.Mul.make_args(form) if type(a) in K._SUP] + \
         [a.base for a in sp.Mul.make_args(form) for _ in range(power(a))]      # G(Y)^n: n times G(Y)
     if not bounded:

@@ -817,8 +817,8 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         if len(d) != 2 or (_sign(d[0]) == 0 and _sign(d[1]) == 0):
             raise bad
         c = claims[0] if len(claims) == 1 else None
-        if not (c is not None and c.expr == _srepr(along_ray(f, d)) and parse(c.other) not in (sp.oo, -sp.oo)
-                and ((c.kind, c.var, c.lo, c.hi, c.lo_open) in (("sup_upper", *on_h), ("limit_oo", _srepr(H), "", "oo", False)))):
+        if not (c is not None and c.expr == _srepr(along_ray(f, d)) and parse(c.other) not in (sp.oo, -sp.oo) and
+                (c.kind, c.var, c.lo, c.hi, c.lo_open) in (("sup_upper", *on_h), ("limit_oo", _srepr(H), "", "oo", False))):
             raise bad
         return f"f({d[0] * H}, {d[1] * H}) {'<=' if c.kind == 'sup_upper' else '->'} {parse(c.other)} " \
                f"{'for all h > 0' if c.kind == 'sup_upper' else 'as h -> oo'}", False

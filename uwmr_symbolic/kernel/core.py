@@ -1438,9 +1438,10 @@ def _generalized_pass(d, variables, fresh, roots, asked, orders):
                             for b, k in sp.factorrat(e.args[0]).items()])
         if isinstance(e, sp.tanh):      # tanh y = sinh y / cosh y for every real y (cosh y >= 1)
             return walk(sp.sinh(e.args[0])) / walk(sp.cosh(e.args[0]))
-        if isinstance(e, sp.atan) and len(variables) == 1 and variables[0].is_positive and sp.default_sort_key(
-                1 / e.args[0]) < sp.default_sort_key(e.args[0]) and defined_for_positive(sp.log(e.args[0]), variables[0]) is not None:
-            return walk(sp.pi / 2 - sp.atan(1 / e.args[0]))     # atan u = pi/2 - atan(1/u) where u > 0 (for all x > 0)
+        if isinstance(e, sp.atan) and len(variables) == 1 and variables[0].is_positive and \
+                sp.default_sort_key(1 / e.args[0]) < sp.default_sort_key(e.args[0]) and \
+                defined_for_positive(sp.log(e.args[0]), variables[0]) is not None:      # u > 0 for all x > 0
+            return walk(sp.pi / 2 - sp.atan(1 / e.args[0]))     # atan u = pi/2 - atan(1/u) where u > 0
         if isinstance(e, _UNARY) and len(e.args) == 1:  # G(u): one symbol per canonical generalised u
             u = _cancel(walk(e.args[0], True))
             v = _cancel(-u)
