@@ -282,3 +282,39 @@ def test_a_result_just_beyond_the_largest_number_rounds_to_it_not_to_inf(tmp_pat
     row = np.array([[0.5, -big, 0.0, 1.0, -1.0, 0.25, 0.7, big]])
     v, w, st = lib.run(row)
     assert st[0] == 0 and abs(w[0] + big) <= 1e-12 * big      # (within an ulp of -DBL_MAX: the validation)
+
+
+def test_a_nan_term_is_not_clamped_into_a_value(tmp_path):
+    """f = sqrt(1 + rho) - exp(-rho), generated without validation: at
+    e2 = 1e308 the printed tail 2 st exp(-st st) is inf * 0, a NaN term.
+    The C clamp to bound (10) once used fmin/fmax, which drop a NaN: w came
+    out as -lam |vr| KF with status 0 (the exact w is 0.9588510772...).  The
+    clamp now keeps the NaN, so the result is refused (UWMR_ERR_RANGE), as
+    Python's numpy.clip already did.  Wherever the term is finite the clamp
+    is unchanged: at e2 = 1 the exact law."""
+    path = tmp_path / "nan_tail.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    "f = sp.sqrt(1 + rho) - sp.exp(-rho)\n")
+    generate(path, tmp_path / "out", validate=False)
+    lib = build_library(tmp_path / "out", "nan_tail", tmp_path)
+    rows = np.array([[0.0, 1e308, 0.5, 1.0, 0.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.5, 1.0, 0.0, 0.0, 0.0, 1.0]])
+    v, w, st = lib.run(rows)
+    assert st[0] == 4 and w[0] == 0.0          # refused: outputs zeroed, never the clamp -lam |vr| KF
+    # w = g(0, 1) sin(1/2)/(1/2): g = df/de2 at (0, 1) = 1/sqrt(2) + 2/e
+    exact = (1 / np.sqrt(2) + 2 * np.exp(-1)) * np.sin(0.5) / 0.5
+    assert st[1] == 0 and abs(w[1] - exact) <= 1e-12 * abs(exact)
+
+
+def test_one_minus_exp_is_printed_with_expm1(tmp_path):
+    """f = s + exp(-s) - 1 (s = |e|): F' = 1 - exp(-s), g = F'(s) e2/s.
+    Printed as (1 - exp(-s))/s, g lost every digit for small s (1 - exp(-s)
+    rounds to 0 below s ~ 1e-16: w = wr, status 0, where the exact w
+    overflows), so validation refused the design and nothing was written.
+    1 - exp(X) is now -expm1(X), as c exp(X) - c was c expm1(X)."""
+    path = tmp_path / "s_exp.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\n"
+                    "s = sp.sqrt(e1**2 + e2**2)\nf = s + sp.exp(-s) - 1\n")
+    pairs = [(2.0953e-83, 1.7798e-52), (0.0, 1e-20), (1e-9, -3e-9), (0.3, 0.4), (0.0, 50.0)]
+    rows = np.concatenate([_law_rows(pairs), _law_rows(pairs, lam=5.77e221, vr=1.99e293)])
+    _check_all(path, tmp_path, rows, _law_rows([(1e-30, 2e-30), (0.0, 1e-7), (0.3, 0.4)]))
+    assert "expm1(-" in (tmp_path / "s_exp/s_exp.c").read_text()

@@ -503,12 +503,12 @@ def verify_p3(a: Analysis) -> Verdict:
 def _bounded_above(f):
     """M with f(h, 0) <= M for every h > 0 as a kernel theorem (the witness
     "bounded" of P3's refutation proves it again, from the lemma cache), M
-    the integer above f's largest value at h = 1, 16, ..., 2^60 (f's limit
-    at oo may be beyond the limit calculus: log(1 + s^2)/(1 + log(1 + s^2)));
-    None when not shown."""
+    the integer above f's largest value at h = 1, 16, ..., 2^60 (256-bit
+    Arb; f's limit at oo may be beyond the limit calculus: log(1 + s^2)/(1 +
+    log(1 + s^2))); None when not shown."""
     ray = along_ray(f, (1, 0))
     try:
-        top = max(value_at(ray, H, 2 ** k, prec=64).upper_float() for k in range(0, 64, 4))
+        top = max(value_at(ray, H, 2 ** k, prec=256).upper_float() for k in range(0, 64, 4))
     except (Undefined, ValueError, OverflowError):
         return None
     if not math.isfinite(top) or top > 1e6:

@@ -108,6 +108,13 @@ static double gterm_law(double e1, double e2, double lam, double vr, double sinc
     }
 }
 
+/* x clamped to [-c, c]; a NaN x stays NaN (fmin and fmax would return the
+ * other argument), so the status checks still see it. */
+static double clamp(double x, double c)
+{
+    return x < -c ? -c : (x > c ? c : x);
+}
+
 /* The term clamped to lam |vr| KF, which holds the exact term (|g| <= kf <=
  * KF, |sinc| <= 1): the clamp only moves a rounded value towards it, and
  * bound (10) then holds within the rounding of the final sums.  Where lam vr
@@ -116,7 +123,7 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc, in
 {
     const double x = gterm_law(e1, e2, lam, vr, sinc, shift);
     const double lv = fabs(lam * vr);
-    return lv >= DBL_MIN ? fmin(fmax(x, -lv * UWMR_DESIGN1_JIANG_KF), lv * UWMR_DESIGN1_JIANG_KF) : x;
+    return lv >= DBL_MIN ? clamp(x, lv * UWMR_DESIGN1_JIANG_KF) : x;
 }
 
 /* tanh(x) for the fast path: -t/(t + 2) with t = expm1(-2|x|), and the sign
@@ -210,7 +217,7 @@ int uwmr_design1_jiang_control(double e1, double e2, double e3, double vr, doubl
                 const double sinc = sin(e3) / e3;
                 const double cap = fabs(lv) * UWMR_DESIGN1_JIANG_KF;
                 *v = vr * cos(e3) + k1 * tanh_fast(e1);
-                *w = wr + fmin(fmax((q * sinc) * e2, -cap), cap) + k2 * tanh_fast(e3);
+                *w = wr + clamp((q * sinc) * e2, cap) + k2 * tanh_fast(e3);
                 return UWMR_OK;
             }
         }
@@ -446,6 +453,13 @@ static float gterm_law_f32(float e1, float e2, float lam, float vr, float sinc, 
     }
 }
 
+/* x clamped to [-c, c]; a NaN x stays NaN (fmin and fmax would return the
+ * other argument), so the status checks still see it. */
+static float clamp_f32(float x, float c)
+{
+    return x < -c ? -c : (x > c ? c : x);
+}
+
 /* The term clamped to lam |vr| KF, which holds the exact term (|g| <= kf <=
  * KF, |sinc| <= 1): the clamp only moves a rounded value towards it, and
  * bound (10) then holds within the rounding of the final sums.  Where lam vr
@@ -454,7 +468,7 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc, int 
 {
     const float x = gterm_law_f32(e1, e2, lam, vr, sinc, shift);
     const float lv = fabsf(lam * vr);
-    return lv >= FLT_MIN ? fminf(fmaxf(x, -lv * UWMR_DESIGN1_JIANG_KF_F32), lv * UWMR_DESIGN1_JIANG_KF_F32) : x;
+    return lv >= FLT_MIN ? clamp_f32(x, lv * UWMR_DESIGN1_JIANG_KF_F32) : x;
 }
 
 /* tanh(x) for the fast path: -t/(t + 2) with t = expm1(-2|x|), and the sign
@@ -548,7 +562,7 @@ int uwmr_design1_jiang_control_f32(float e1, float e2, float e3, float vr, float
                 const float sinc = sinf(e3) / e3;
                 const float cap = fabsf(lv) * UWMR_DESIGN1_JIANG_KF_F32;
                 *v = vr * cosf(e3) + k1 * tanh_fast_f32(e1);
-                *w = wr + fminf(fmaxf((q * sinc) * e2, -cap), cap) + k2 * tanh_fast_f32(e3);
+                *w = wr + clamp_f32((q * sinc) * e2, cap) + k2 * tanh_fast_f32(e3);
                 return UWMR_OK;
             }
         }

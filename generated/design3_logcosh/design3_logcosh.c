@@ -114,6 +114,13 @@ static double gterm_law(double e1, double e2, double lam, double vr, double sinc
     }
 }
 
+/* x clamped to [-c, c]; a NaN x stays NaN (fmin and fmax would return the
+ * other argument), so the status checks still see it. */
+static double clamp(double x, double c)
+{
+    return x < -c ? -c : (x > c ? c : x);
+}
+
 /* The term clamped to lam |vr| KF, which holds the exact term (|g| <= kf <=
  * KF, |sinc| <= 1): the clamp only moves a rounded value towards it, and
  * bound (10) then holds within the rounding of the final sums.  Where lam vr
@@ -122,7 +129,7 @@ static double gterm(double e1, double e2, double lam, double vr, double sinc, in
 {
     const double x = gterm_law(e1, e2, lam, vr, sinc, shift);
     const double lv = fabs(lam * vr);
-    return lv >= DBL_MIN ? fmin(fmax(x, -lv * UWMR_DESIGN3_LOGCOSH_KF), lv * UWMR_DESIGN3_LOGCOSH_KF) : x;
+    return lv >= DBL_MIN ? clamp(x, lv * UWMR_DESIGN3_LOGCOSH_KF) : x;
 }
 
 /* tanh(x) for the fast path: -t/(t + 2) with t = expm1(-2|x|), and the sign
@@ -218,7 +225,7 @@ int uwmr_design3_logcosh_control(double e1, double e2, double e3, double vr, dou
                 const double sinc = sin(e3) / e3;
                 const double cap = fabs(lv) * UWMR_DESIGN3_LOGCOSH_KF;
                 *v = vr * cos(e3) + k1 * tanh_fast(e1);
-                *w = wr + fmin(fmax((q * sinc) * e2, -cap), cap) + k2 * tanh_fast(e3);
+                *w = wr + clamp((q * sinc) * e2, cap) + k2 * tanh_fast(e3);
                 return UWMR_OK;
             }
         }
@@ -460,6 +467,13 @@ static float gterm_law_f32(float e1, float e2, float lam, float vr, float sinc, 
     }
 }
 
+/* x clamped to [-c, c]; a NaN x stays NaN (fmin and fmax would return the
+ * other argument), so the status checks still see it. */
+static float clamp_f32(float x, float c)
+{
+    return x < -c ? -c : (x > c ? c : x);
+}
+
 /* The term clamped to lam |vr| KF, which holds the exact term (|g| <= kf <=
  * KF, |sinc| <= 1): the clamp only moves a rounded value towards it, and
  * bound (10) then holds within the rounding of the final sums.  Where lam vr
@@ -468,7 +482,7 @@ static float gterm_f32(float e1, float e2, float lam, float vr, float sinc, int 
 {
     const float x = gterm_law_f32(e1, e2, lam, vr, sinc, shift);
     const float lv = fabsf(lam * vr);
-    return lv >= FLT_MIN ? fminf(fmaxf(x, -lv * UWMR_DESIGN3_LOGCOSH_KF_F32), lv * UWMR_DESIGN3_LOGCOSH_KF_F32) : x;
+    return lv >= FLT_MIN ? clamp_f32(x, lv * UWMR_DESIGN3_LOGCOSH_KF_F32) : x;
 }
 
 /* tanh(x) for the fast path: -t/(t + 2) with t = expm1(-2|x|), and the sign
@@ -565,7 +579,7 @@ int uwmr_design3_logcosh_control_f32(float e1, float e2, float e3, float vr, flo
                     const float sinc = sinf(e3) / e3;
                     const float cap = fabsf(lv) * UWMR_DESIGN3_LOGCOSH_KF_F32;
                     *v = vr * cosf(e3) + k1 * tanh_fast_f32(e1);
-                    *w = wr + fminf(fmaxf((q * sinc) * e2, -cap), cap) + k2 * tanh_fast_f32(e3);
+                    *w = wr + clamp_f32((q * sinc) * e2, cap) + k2 * tanh_fast_f32(e3);
                     return UWMR_OK;
                 }
             }

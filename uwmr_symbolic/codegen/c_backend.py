@@ -288,7 +288,7 @@ def fast_lines(model: LawModel, cfg: CConfig, names) -> list[str] | None:
     body += _chain(model.mid, "rho", cfg, h_body)
     cap = kf_cap(model, cfg)
     term = "(q * sinc) * e2" if cap is None else \
-        f"fmin{fn}(fmax{fn}((q * sinc) * e2, -cap), cap)"    # bound (10): see gterm in the template
+        f"clamp{cfg.suffix}((q * sinc) * e2, cap)"    # bound (10): see gterm in the template
     law = [f"const {t} sinc = sin{fn}(e3) / e3;",
            *([] if cap is None else [f"const {t} cap = fabs{fn}(lv) * {cap};"]),
            f"*v = vr * cos{fn}(e3) + k1 * tanh_fast{cfg.suffix}(e1);",

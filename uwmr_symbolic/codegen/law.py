@@ -155,7 +155,8 @@ def _cancels_at_zero(a, total) -> bool:
 
 
 def use_log1p(expr: sp.Expr) -> sp.Expr:
-    """log(1 + X) -> log1p(X) and c exp(X) - c -> c expm1(X): the same
+    """log(1 + X) -> log1p(X) and c exp(X) - c -> c expm1(X) (c of either
+    sign: 1 - exp(-x) is -expm1(-x)): the same
     function, accurate when X is small (log(1 + rho) loses every digit of rho
     below 1e-16).  (log(c + X) with c != 1 is left alone: it cancels only
     where c + X ~ 1, and log c + log1p(X/c) would cancel there too.)"""
@@ -168,7 +169,7 @@ def use_log1p(expr: sp.Expr) -> sp.Expr:
             c, rest = node.as_coeff_Add()
             if c == -1 and isinstance(rest, sp.exp):
                 return expm1(rest.args[0])
-            if c.is_negative and isinstance(rest, sp.Mul):
+            if c != 0 and isinstance(rest, sp.Mul):
                 k, ex = rest.as_coeff_Mul()
                 if isinstance(ex, sp.exp) and k == -c:
                     return k * expm1(ex.args[0])
