@@ -757,6 +757,19 @@ def test_an_exp_tail_with_terms_of_both_signs_is_kernel_checked(tmp_path):
     assert worse.properties["P5"].refuted and "P5" in worse.kernel["checked"]
 
 
+def _verified(tmp_path, formula):
+    """The report of the design f = formula (sp, e1, e2 and rho = e1^2 + e2^2 in scope)."""
+    path = tmp_path / "design.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    f"f = {formula}\n")
+    return verify_design(path)
+
+
+def _assert_all_kernel_checked(report):
+    assert all(report.properties[p].proved for p in PROPS)
+    assert report.kernel == {"checked": [*PROPS, "kf"], "search": []}
+
+
 @pytest.mark.parametrize("formula, refuted", [
     # F = log(1 + atan(s^2)) < log(1 + pi/2): log Y <= Y - 1 bounds F by atan(s^2) < pi/2
     ("sp.log(1 + sp.atan(rho))", ["P3"]),
@@ -778,10 +791,7 @@ def test_bounded_profiles_and_power_growth_are_refuted_by_the_kernel(tmp_path, f
     of repeated factors; the link "bounded" takes a limit at oo), and growth
     F' ~ c s^(1/2) by the rate p = 1/2 tried first (s^(1/2) F'' tends to a
     constant, a t-form defined at t = 0, where p = 1/4 gives one that is not)."""
-    path = tmp_path / "design.py"
-    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
-                    f"f = {formula}\n")
-    report = verify_design(path)
+    report = _verified(tmp_path, formula)
     assert [n for n, v in report.properties.items() if v.refuted] == refuted
     assert set(refuted) <= set(report.kernel["checked"])
 
@@ -792,12 +802,8 @@ def test_kf_attained_inside_a_piece_is_kernel_checked(tmp_path):
     s - s^3/4 peaks at s = 2/sqrt(3) < sqrt(2) with kf = 4 sqrt(3)/9, and 1/s
     <= 1/sqrt(2) beyond.  kf - F' touches 0 inside the first piece: the
     piece is cut there (Taylor at the zero), not covered through it."""
-    path = tmp_path / "design.py"
-    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
-                    "f = sp.Piecewise((rho/2 - rho**2/16, rho <= 2), (sp.Rational(3, 4) + sp.log(rho/2)/2, True))\n")
-    report = verify_design(path)
-    assert all(report.properties[p].proved for p in PROPS)
-    assert report.kernel == {"checked": [*PROPS, "kf"], "search": []}
+    report = _verified(tmp_path, "sp.Piecewise((rho/2 - rho**2/16, rho <= 2), (sp.Rational(3, 4) + sp.log(rho/2)/2, True))")
+    _assert_all_kernel_checked(report)
     assert sp.sympify(report.kf.exact) == 4 * sp.sqrt(3) / 9
 
 
@@ -807,11 +813,7 @@ def test_kf_approached_through_atan_of_a_reciprocal_is_kernel_checked(tmp_path):
     (P6, k = 2).  Both bounds touch at s -> oo: the tail forms hold
     pi/2 - atan(t), which the kernel's identity now matches with atan(1/t)
     exactly (t > 0)."""
-    path = tmp_path / "design.py"
-    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
-                    "f = sp.sqrt(rho)*sp.atan(sp.sqrt(rho))\n")
-    report = verify_design(path)
-    assert all(report.properties[p].proved for p in PROPS)
-    assert report.kernel == {"checked": [*PROPS, "kf"], "search": []}
+    report = _verified(tmp_path, "sp.sqrt(rho)*sp.atan(sp.sqrt(rho))")
+    _assert_all_kernel_checked(report)
     assert report.kf.exact == sp.pi / 2 and not report.kf.attained
     assert sp.sympify(report.properties["P6"].details["k"]) == 2
