@@ -167,12 +167,9 @@ def use_log1p(expr: sp.Expr) -> sp.Expr:
                 return log1p(rest)
         if isinstance(node, sp.Add):
             c, rest = node.as_coeff_Add()
-            if c == -1 and isinstance(rest, sp.exp):
-                return expm1(rest.args[0])
-            if c != 0 and isinstance(rest, sp.Mul):
-                k, ex = rest.as_coeff_Mul()
-                if isinstance(ex, sp.exp) and k == -c:
-                    return k * expm1(ex.args[0])
+            k, ex = rest.as_coeff_Mul()         # (1, exp(X)) for exp(X) itself
+            if c != 0 and isinstance(ex, sp.exp) and k == -c:
+                return k * expm1(ex.args[0])
         return node
     return sp.bottom_up(expr, fix)
 
