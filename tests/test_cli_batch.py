@@ -491,6 +491,8 @@ def test_a_long_exact_kf_shows_its_digits_in_the_summary():
     assert _kf_summary({**base, "exact": long, "exact_digits": "1.4285714285714285966e-31"}) == \
         "1.4285714285714286e-31..."
     assert _kf_summary({**base, "exact": None, "exact_digits": None}) == "~0.6496"
+    # an integer kf has no exact_digits (it is its own digits); 3 * 10**150 + 7 once raised a TypeError
+    assert _kf_summary({**base, "exact": str(3 * 10**150 + 7), "exact_digits": None}) == "3.0000000000000000e+150..."
 
 
 def test_unusable_options_end_before_anything_is_verified_or_written(tmp_path):

@@ -207,7 +207,7 @@ def _kf_summary(kf: dict) -> str:
     if kf["exact"] is not None and len(kf["exact"]) <= 20:
         return kf["exact"]
     if kf["exact"] is not None:     # exact, too long for the column: its leading 17 digits, as decimals
-        return f"{Decimal(kf['exact_digits']):.17g}..."
+        return f"{Decimal(kf['exact_digits'] or kf['exact']):.17g}..."  # (an integer has no exact_digits)
     return f"~{kf['upper']:.9g}"
 
 
