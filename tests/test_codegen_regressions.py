@@ -146,12 +146,14 @@ def test_exp_of_a_negative_power_of_t_does_not_divide_by_zero(tmp_path):
     """Found by a code-generation campaign: the tail form D(t) = s exp(-1/t^2)
     + 1/sqrt(t^2 + 1) printed exp(-1.0/x0) with x0 = tt*tt, which underflows
     to 0 for |e| > ~1e154 (float ~1e19): a division by zero for the sanitizer,
-    although exp(-inf) = 0 gave the right w.  Now exp(-(st*st)).  F'(s) =
+    although exp(-inf) = 0 gave the right w.  It was then printed exp(-(st*st));
+    now the term is left out of the far region, where it is below 2^-80 of
+    the rest (`law.split_vanishing`), and 1/t^2 is never formed.  F'(s) =
     s/sqrt(1 + s^2) + s exp(-s^2), so w = lam vr F'(s) e2/s -> 1 on e1 = 0."""
     from uwmr_symbolic.codegen.harness import build_executable, run_executable
     path = ROOT / "designs_codegen" / "c11_exp_of_rho_tail.py"
     generate(path, tmp_path / path.stem, force=True)
-    assert "exp(-(st*st))" in (tmp_path / path.stem / f"{path.stem}.c").read_text()
+    assert "exp(-1.0/" not in (tmp_path / path.stem / f"{path.stem}.c").read_text()
     exe = build_executable(tmp_path / path.stem, path.stem, tmp_path,
                            extra=("-O1", "-g", "-fsanitize=address,undefined,float-divide-by-zero",
                                   "-fno-sanitize-recover=all"))
@@ -285,23 +287,23 @@ def test_a_result_just_beyond_the_largest_number_rounds_to_it_not_to_inf(tmp_pat
 
 
 def test_a_nan_term_is_not_clamped_into_a_value(tmp_path):
-    """f = sqrt(1 + rho) - exp(-rho), generated without validation: at
-    e2 = 1e308 the printed tail 2 st exp(-st st) is inf * 0, a NaN term.
-    The C clamp to bound (10) once used fmin/fmax, which drop a NaN: w came
-    out as -lam |vr| KF with status 0 (the exact w is 0.9588510772...).  The
-    clamp now keeps the NaN, so the result is refused (UWMR_ERR_RANGE), as
-    Python's numpy.clip already did.  Wherever the term is finite the clamp
-    is unchanged: at e2 = 1 the exact law."""
+    """f = sqrt(1 + rho) - 1 + tanh(rho), generated without validation: at
+    e2 = 1e308 the printed tail 2 st / cosh(st st)^2 is inf / inf, a NaN
+    term.  The C clamp to bound (10) once used fmin/fmax, which drop a NaN: w
+    came out as -lam |vr| KF with status 0.  The clamp now keeps the NaN, so
+    the result is refused (UWMR_ERR_RANGE), as Python's numpy.clip already
+    did.  Wherever the term is finite the clamp is unchanged: at e2 = 1 the
+    exact law."""
     path = tmp_path / "nan_tail.py"
     path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
-                    "f = sp.sqrt(1 + rho) - sp.exp(-rho)\n")
+                    "f = sp.sqrt(1 + rho) - 1 + sp.tanh(rho)\n")
     generate(path, tmp_path / "out", validate=False)
     lib = build_library(tmp_path / "out", "nan_tail", tmp_path)
     rows = np.array([[0.0, 1e308, 0.5, 1.0, 0.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.5, 1.0, 0.0, 0.0, 0.0, 1.0]])
     v, w, st = lib.run(rows)
     assert st[0] == 4 and w[0] == 0.0          # refused: outputs zeroed, never the clamp -lam |vr| KF
-    # w = g(0, 1) sin(1/2)/(1/2): g = df/de2 at (0, 1) = 1/sqrt(2) + 2/e
-    exact = (1 / np.sqrt(2) + 2 * np.exp(-1)) * np.sin(0.5) / 0.5
+    # w = g(0, 1) sin(1/2)/(1/2): g = df/de2 at (0, 1) = 1/sqrt(2) + 2/cosh(1)^2
+    exact = (1 / np.sqrt(2) + 2 / np.cosh(1.0) ** 2) * np.sin(0.5) / 0.5
     assert st[1] == 0 and abs(w[1] - exact) <= 1e-12 * abs(exact)
 
 
@@ -318,3 +320,24 @@ def test_one_minus_exp_is_printed_with_expm1(tmp_path):
     rows = np.concatenate([_law_rows(pairs), _law_rows(pairs, lam=5.77e221, vr=1.99e293)])
     _check_all(path, tmp_path, rows, _law_rows([(1e-30, 2e-30), (0.0, 1e-7), (0.3, 0.4)]))
     assert "expm1(-" in (tmp_path / "s_exp/s_exp.c").read_text()
+
+
+@pytest.mark.parametrize("stem, f, g", [
+    ("sqrt_minus_exp", "sp.sqrt(1 + rho) - sp.exp(-rho)", lambda y: y / np.hypot(1.0, y)),
+    ("log_plus_rho_exp", "sp.log(1 + rho) + rho*sp.exp(-rho)", lambda y: 2 / (y + 1 / y))])
+def test_a_tail_term_that_vanishes_like_exp_is_left_out_not_printed_as_inf_times_0(tmp_path, stem, f, g):
+    """F'(1/t) holds a term such as 2 exp(-1/t^2)/t: printed, it is
+    2 st exp(-st st), inf * 0 = NaN as s nears the largest double, so the
+    validation refused both designs (status 4 at e2 = -1.8e308) and nothing
+    was written.  The term is now left out of the far region, where Arb shows
+    it below 2^-80 of the rest (the accuracy bound includes it).  Far out,
+    g(0, y) is y/sqrt(1 + y^2) and 2 y/(1 + y^2) up to that term."""
+    path = tmp_path / f"{stem}.py"
+    path.write_text(f"import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\nf = {f}\n")
+    big = np.finfo(float).max
+    pairs = [(0.0, -big), (0.0, big), (big, big), (3e307, -1e308), (0.0, 1e300), (1e154, 1e154), (0.0, 1e4),
+             (0.0, 1.0001e4), (7e3, 8e3), (0.0, 9e3), (0.3, 0.4), (1e-30, 2e-30)]
+    lib, mod, law = _check_all(path, tmp_path, _law_rows(pairs), _law_rows([(0.0, 3e38), (2e4, 1e5), (0.3, 0.4)]))
+    y = np.array([1e5, 1e300, big])
+    v, w, st = lib.run(_law_rows([(0.0, x) for x in y]))
+    assert (st == 0).all() and (np.abs(w - g(y)) <= 1e-12 * g(y)).all()

@@ -588,7 +588,7 @@ def _mismatch(branches, var, region_lo, region_hi, E_var, precision, bad: list) 
         env = {var: (_iv(lo_b, hi_b), arb(0), arb(0))}
         try:
             with arb_precision(256):
-                diff = Analysis(precision, env).value(plain(left.expr - right.expr))
+                diff = Analysis(precision, env).value(plain(left.expr + left.dropped - right.expr - right.dropped))
                 lo_left, lo_right = (_mag(Analysis(precision, env).value(plain(br.expr)))[0] for br in (left, right))
                 lo = lo_left.min(lo_right)
         except (Uncertified, Undefined) as exc:
@@ -649,6 +649,13 @@ def _far(model, prec, reg, far):
                    ST: (Iv(inv_b, inv_a), arb(0.3) if beyond else reg.E_st, arb(0)),
                    LT: (Iv(arb(a).log(), arb(b).log()), reg.E_lt, arb(0))}
             E_D = Analysis(prec, env).relative(br.expr)
+            if br.dropped != 0:                 # D = printed + dropped: (1 + E_D) / (1 - |dropped / D|)
+                exact = {x: (v[0], arb(0), arb(0)) for x, v in env.items()}
+                trunc = _mag(Analysis(prec, exact).value(plain(br.dropped)))[1] / \
+                    _mag(Analysis(prec, exact).value(plain(br.expr)))[0]
+                if not trunc < 2 ** -60:
+                    raise Uncertified(f"the terms left out of the tail form may reach {_up(trunc):.2g} of it")
+                E_D = (1 + E_D) / (1 - trunc) - 1
             k = abs(br.k)
             split = [reg.E_im, reg.E_ir] if br.k > 0 else [arb(0), reg.E_r]
             # e2 * im * ir * D * (im * ir)^k  (or (m * r)^k): 2k + 4 factors

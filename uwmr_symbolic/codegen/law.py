@@ -72,6 +72,7 @@ class Branch:
     hi_closed: bool
     expr: sp.Expr
     k: int = 0                 # far region: power of t split off the expression
+    dropped: sp.Expr = sp.S.Zero   # far region: terms of F'(1/t)/t**k left out (`split_vanishing`)
 
     @property
     def lo_float(self) -> float:
@@ -378,24 +379,75 @@ def build_model(design, analysis, report=None) -> LawModel:
             pieces, at_point, lambda b: sp.Integer(0) if b == sp.oo else (sp.oo if b == 0 else 1 / b), reverse=True):
         if float(lo) > 1 / far:
             continue
-        dF = prepare(sp.diff(p.expr, S))
-        D = tail_form(dF, S)
-        k = 0
-        lead = _leading(D, T)
-        if lead is not None and lead[1] != 0:
-            cand = sp.cancel(D / T ** lead[1]) if not D.has(sp.Function) else sp.simplify(D / T ** lead[1])
-            if not cand.has(sp.zoo, sp.nan) and cand.subs(T, 0).is_finite and cand.subs(T, 0) != 0:
-                D, k = cand, lead[1]
-        D = _polish_tail(D)
-        if k == 0:
-            # no series at t = 0 (log t in D): still split off a factor t**j of the
-            # numerator or denominator, so that D itself does not underflow with t
-            num, den = sp.fraction(sp.factor_terms(D))
-            j = _t_power(num) - _t_power(den)
-            if j != 0:
-                D, k = D / T ** j, j
-        model.far.append(Branch(lo, hi, closed, D, k))
+        D = tail_form(prepare(sp.diff(p.expr, S)), S)
+        cut = split_vanishing(D, min(float(hi), 1 / far)) if lo == 0 else None
+        if cut is None:
+            model.far.append(_far_branch(lo, hi, closed, D))
+        elif cut[0] >= min(hi, sp.Rational(1 / far)):
+            model.far.append(_far_branch(lo, hi, closed, *cut[1:]))
+        else:
+            model.far += [_far_branch(lo, cut[0], True, *cut[1:]), _far_branch(cut[0], hi, closed, D)]
     return model
+
+
+def _far_branch(lo, hi, closed, D, dropped=sp.S.Zero) -> Branch:
+    """The far-region branch F'(1/t) = t**k D(t) (+ the terms `dropped`) for lo < t < hi."""
+    k = 0
+    lead = _leading(D, T)
+    if lead is not None and lead[1] != 0:
+        cand = sp.cancel(D / T ** lead[1]) if not D.has(sp.Function) else sp.simplify(D / T ** lead[1])
+        if not cand.has(sp.zoo, sp.nan) and cand.subs(T, 0).is_finite and cand.subs(T, 0) != 0:
+            D, k = cand, lead[1]
+    D = _polish_tail(D)
+    if k == 0:
+        # no series at t = 0 (log t in D): still split off a factor t**j of the
+        # numerator or denominator, so that D itself does not underflow with t
+        num, den = sp.fraction(sp.factor_terms(D))
+        j = _t_power(num) - _t_power(den)
+        if j != 0:
+            D, k = D / T ** j, j
+    return Branch(lo, hi, closed, D, k, dropped / T ** k)
+
+
+def split_vanishing(D: sp.Expr, t_far: float):
+    """(t0, kept, dropped), D = kept + dropped, where the terms `dropped` of
+    the tail form D(t) (those with an exp, cosh or sinh that vanish faster
+    than t^40 as t -> 0+: exp(-1/t^2)/t^3, 1/(t cosh(1/t^2)^2)) are below
+    2^-80 of the others for 0 < t <= t0 by Arb on boxes [2^-(i+4), 2^-i]
+    down to 2^-1080 (below every t a double takes), t0 <= t_far as large as
+    that allows; None if there is no such t0.  Printed, such a term is
+    P exp(-X) with exp(-X) = 0 and P overflowing as s nears the largest
+    double: inf * 0 = NaN.  Left out, it is part of the error that
+    `accuracy` bounds box by box."""
+    from ..kernel.arb import Undefined, evaluate
+
+    def vanishing(term):
+        try:
+            return term.has(sp.exp, sp.cosh, sp.sinh) and sp.limit(term / T ** 40, T, 0, "+") == 0
+        except (NotImplementedError, ValueError, TypeError):
+            return False
+
+    def small(a, b):                            # |dropped| < 2^-80 |kept| on [a, b]
+        try:
+            d, k = (evaluate(e, T, a, b, bits=128) for e in (dropped, kept))
+        except (Undefined, ValueError, TypeError, ZeroDivisionError):
+            return False
+        k_min = k.lo if k.positive() else -k.hi if k.negative() else None
+        return k_min is not None and bool(abs(d.lo).max(abs(d.hi)) < k_min * 2 ** -80)
+    terms = sp.Add.make_args(sp.expand(D, deep=False, power_base=False, power_exp=False, log=False,
+                                       multinomial=False))
+    dropped = sp.Add(*[a for a in terms if vanishing(a)])
+    kept = sp.Add(*[a for a in terms if not vanishing(a)])
+    if dropped == 0 or kept == 0:
+        return None
+    for j in range(161):
+        t0 = sp.Rational(t_far * 2.0 ** (-j / 4))
+        if small(t0, t0):
+            i = math.ceil(-math.log2(t0))
+            boxes = [(sp.Rational(1, 2 ** i), t0)] + [(sp.Rational(1, 2 ** (n + 4)), sp.Rational(1, 2 ** n))
+                                                     for n in range(i, 1080, 4)]
+            return (t0, kept, dropped) if all(small(a, b) for a, b in boxes) else None
+    return None
 
 
 SERIES_REL = {"double": 2.0 ** -60, "float": 2.0 ** -30}
