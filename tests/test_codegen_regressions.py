@@ -287,24 +287,27 @@ def test_a_result_just_beyond_the_largest_number_rounds_to_it_not_to_inf(tmp_pat
 
 
 def test_a_nan_term_is_not_clamped_into_a_value(tmp_path):
-    """f = sqrt(1 + rho) - 1 + tanh(rho), generated without validation: at
-    e2 = 1e308 the printed tail 2 st / cosh(st st)^2 is inf / inf, a NaN
-    term.  The C clamp to bound (10) once used fmin/fmax, which drop a NaN: w
-    came out as -lam |vr| KF with status 0.  The clamp now keeps the NaN, so
-    the result is refused (UWMR_ERR_RANGE), as Python's numpy.clip already
-    did.  Wherever the term is finite the clamp is unchanged: at e2 = 1 the
-    exact law."""
-    path = tmp_path / "nan_tail.py"
-    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
-                    "f = sp.sqrt(1 + rho) - 1 + sp.tanh(rho)\n")
-    generate(path, tmp_path / "out", validate=False)
-    lib = build_library(tmp_path / "out", "nan_tail", tmp_path)
-    rows = np.array([[0.0, 1e308, 0.5, 1.0, 0.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.5, 1.0, 0.0, 0.0, 0.0, 1.0]])
-    v, w, st = lib.run(rows)
-    assert st[0] == 4 and w[0] == 0.0          # refused: outputs zeroed, never the clamp -lam |vr| KF
-    # w = g(0, 1) sin(1/2)/(1/2): g = df/de2 at (0, 1) = 1/sqrt(2) + 2/cosh(1)^2
-    exact = (1 / np.sqrt(2) + 2 / np.cosh(1.0) ** 2) * np.sin(0.5) / 0.5
-    assert st[1] == 0 and abs(w[1] - exact) <= 1e-12 * abs(exact)
+    """The C clamp of the term to bound (10), in the checked-in code of
+    design 1, called on its own (the .c file included in a test program).
+    It once used fmin/fmax, which drop a NaN: a NaN term (as tail forms
+    printing inf * 0 gave) came out as -lam |vr| KF with status 0.  It now
+    keeps the NaN, so the result is refused (UWMR_ERR_RANGE), as Python's
+    numpy.clip already did; finite values are clamped as before."""
+    import subprocess
+    from uwmr_symbolic.codegen.harness import STRICT
+    test = tmp_path / "clamp_test.c"
+    test.write_text('#include "design1_jiang.c"\n#include <stdio.h>\nint main(void) {\n'
+                    '    const double x[4] = {NAN, 3.0, -3.0, 1.5};\n    int i;\n'
+                    '    for (i = 0; i < 4; ++i)\n'
+                    '        printf("%g %g\\n", clamp(x[i], 2.0), (double)clamp_f32((float)x[i], 2.0F));\n'
+                    '    return 0;\n}\n')
+    src = Path(__file__).resolve().parent.parent / "generated" / "design1_jiang"
+    exe = tmp_path / "clamp_test"
+    subprocess.run(["gcc", *STRICT, "-Wno-unused-function", "-O2", f"-I{src}", str(test), "-o", str(exe), "-lm"],
+                   check=True, capture_output=True)
+    out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout.split()
+    assert [o.lstrip("-") for o in out[:2]] == ["nan", "nan"]
+    assert out[2:] == ["2", "2", "-2", "-2", "1.5", "1.5"]
 
 
 def test_one_minus_exp_is_printed_with_expm1(tmp_path):
@@ -324,12 +327,13 @@ def test_one_minus_exp_is_printed_with_expm1(tmp_path):
 
 @pytest.mark.parametrize("stem, f, g", [
     ("sqrt_minus_exp", "sp.sqrt(1 + rho) - sp.exp(-rho)", lambda y: y / np.hypot(1.0, y)),
+    ("sqrt_plus_tanh", "sp.sqrt(1 + rho) - 1 + sp.tanh(rho)", lambda y: y / np.hypot(1.0, y)),
     ("log_plus_rho_exp", "sp.log(1 + rho) + rho*sp.exp(-rho)", lambda y: 2 / (y + 1 / y))])
 def test_a_tail_term_that_vanishes_like_exp_is_left_out_not_printed_as_inf_times_0(tmp_path, stem, f, g):
-    """F'(1/t) holds a term such as 2 exp(-1/t^2)/t: printed, it is
-    2 st exp(-st st), inf * 0 = NaN as s nears the largest double, so the
-    validation refused both designs (status 4 at e2 = -1.8e308) and nothing
-    was written.  The term is now left out of the far region, where Arb shows
+    """F'(1/t) holds a term such as 2 exp(-1/t^2)/t or 2/(t cosh(1/t^2)^2):
+    printed, it is 2 st exp(-st st) or 2 st/cosh(st st)^2, inf * 0 or
+    inf / inf = NaN as s nears the largest double, so the validation refused
+    the three designs (status 4 at e2 = -1.8e308) and nothing was written.  The term is now left out of the far region, where Arb shows
     it below 2^-80 of the rest (the accuracy bound includes it).  Far out,
     g(0, y) is y/sqrt(1 + y^2) and 2 y/(1 + y^2) up to that term."""
     path = tmp_path / f"{stem}.py"

@@ -438,6 +438,12 @@ def split_vanishing(D: sp.Expr, t_far: float):
                                        multinomial=False))
     dropped = sp.Add(*[a for a in terms if vanishing(a)])
     kept = sp.Add(*[a for a in terms if not vanishing(a)])
+    # 1/cosh(X)^n = (2 exp(-X)/(1 + exp(-2X)))^n (sinh: 1 - exp(-2X)), so that Arb
+    # never forms exp(X) for X near 1/t^2 = 2^2000 (the same function: only bounded)
+    dropped = dropped.replace(lambda p: p.is_Pow and isinstance(p.base, (sp.cosh, sp.sinh)) and p.exp.is_negative,
+                              lambda p: (2 * sp.exp(-p.base.args[0]) / (
+                                  1 + (1 if isinstance(p.base, sp.cosh) else -1) * sp.exp(-2 * p.base.args[0])))
+                              ** -p.exp)
     if dropped == 0 or kept == 0:
         return None
     for j in range(161):
