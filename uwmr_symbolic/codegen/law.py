@@ -380,10 +380,11 @@ def build_model(design, analysis, report=None) -> LawModel:
         if float(lo) > 1 / far:
             continue
         D = tail_form(prepare(sp.diff(p.expr, S)), S)
-        cut = split_vanishing(D, min(float(hi), 1 / far)) if lo == 0 else None
+        t_far = min(float(hi), 1 / far)
+        cut = split_vanishing(D, t_far) if lo == 0 else None
         if cut is None:
             model.far.append(_far_branch(lo, hi, closed, D))
-        elif cut[0] >= min(hi, sp.Rational(1 / far)):
+        elif cut[0] == sp.Rational(t_far):         # left out on all of (0, t_far]
             model.far.append(_far_branch(lo, hi, closed, *cut[1:]))
         else:
             model.far += [_far_branch(lo, cut[0], True, *cut[1:]), _far_branch(cut[0], hi, closed, D)]
@@ -436,8 +437,9 @@ def split_vanishing(D: sp.Expr, t_far: float):
         return k_min is not None and bool(abs(d.lo).max(abs(d.hi)) < k_min * 2 ** -80)
     terms = sp.Add.make_args(sp.expand(D, deep=False, power_base=False, power_exp=False, log=False,
                                        multinomial=False))
-    dropped = sp.Add(*[a for a in terms if vanishing(a)])
-    kept = sp.Add(*[a for a in terms if not vanishing(a)])
+    gone = [vanishing(a) for a in terms]       # (one limit per term)
+    dropped = sp.Add(*[a for a, g in zip(terms, gone) if g])
+    kept = sp.Add(*[a for a, g in zip(terms, gone) if not g])
     # 1/cosh(X)^n = (2 exp(-X)/(1 + exp(-2X)))^n (sinh: 1 - exp(-2X)), so that Arb
     # never forms exp(X) for X near 1/t^2 = 2^2000 (the same function: only bounded)
     dropped = dropped.replace(lambda p: p.is_Pow and isinstance(p.base, (sp.cosh, sp.sinh)) and p.exp.is_negative,
