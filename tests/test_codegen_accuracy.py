@@ -73,6 +73,11 @@ def test_function_condition_number():
     assert 200e-12 < E < 1.2 * 200e-12 * math.exp(200 * 1e-12) + 16 * U
     # tanh saturates: far out its argument's error does not matter
     assert _bound(sp.tanh(X), (1e10, 1e12), E=0.1) < 30 * U
+    # cosh and sinh over [16, 25] with |dx| <= 1e-15 |x|: the condition number is |x tanh x|
+    # resp. |x / tanh x|, at most 25 (sinh(25)/cosh(16) = 8e3 bounds it only from each end apart)
+    for f in (sp.cosh, sp.sinh):
+        E = _bound(f(X), (16.0, 25.0), E=1e-15)
+        assert 25e-15 < E < 25e-15 * 1.01 + 10 * U
 
 
 def test_overflow_is_not_certified():
@@ -111,6 +116,24 @@ def test_vanishing_gradient_not_certified(models):
     bad = [r for r in acc.uncertified if r.region == "mid"]
     assert bad and any("4.02" in r.where for r in bad)
     assert any("NOT CERTIFIED" in line for line in acc.lines())
+
+
+def test_a_cosh_tail_and_its_branch_switch_are_certified(tmp_path):
+    """f = sqrt(1 + rho) - 1 + tanh(rho): FAR = 1 (sech(rho)^2 underflows in
+    the mid form), so for 1 < m < 5.66 the far branch prints 2 st/cosh(st st)^2
+    + 1/sqrt(t t + 1) and switches at t = 0.177 to the form without the cosh.
+    Both used to be NOT CERTIFIED: cosh's condition number was enclosed as
+    sinh(hi) hi/cosh(lo) (2.6e-5 on 2.59 <= m <= 5.66), and the branch
+    switch was compared without st (4 <= m <= 5.66: "unsupported operation")."""
+    path = tmp_path / "tanh_tail.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    "f = sp.sqrt(1 + rho) - 1 + sp.tanh(rho)\n")
+    rep = verify_design(path)
+    model = build_model(rep.design, DesignAnalysis(rep.design), rep)
+    assert [br.expr.has(sp.cosh) for br in model.far] == [False, True]
+    for cfg, goal in ((DOUBLE, 1e-12), (FLOAT, 4e-6)):
+        acc = certify(model, cfg.precision, cfg.sinc_cut)
+        assert acc.uncertified == [] and acc.g <= goal, (cfg.precision, acc.lines())
 
 
 def _measured_g(files, stem, rows, f32):

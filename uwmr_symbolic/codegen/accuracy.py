@@ -85,6 +85,9 @@ _DERIVATIVE = {sp.exp: sp.exp(_Z), sp.log: 1 / _Z, log1p: 1 / (1 + _Z), expm1: s
                sp.sinh: sp.cosh(_Z), sp.cosh: sp.sinh(_Z), sp.erf: 2 / sp.sqrt(sp.pi) * sp.exp(-_Z ** 2),
                sp.erfc: -2 / sp.sqrt(sp.pi) * sp.exp(-_Z ** 2), sp.sin: sp.cos(_Z), sp.cos: -sp.sin(_Z),
                sp.acosh: (_Z ** 2 - 1) ** sp.Rational(-1, 2), sp.atanh: 1 / (1 - _Z ** 2)}
+#: z phi'(z)/phi(z) with z in one place where the quotient would take it from
+#: two (cosh: z sinh(z)/cosh(z) over [16, 25] is 2e5 enclosed that way, 25 as z tanh z)
+_LOG_DERIVATIVE = {sp.exp: _Z, sp.cosh: _Z * sp.tanh(_Z), sp.sinh: _Z / sp.tanh(_Z)}
 
 
 class Uncertified(ArithmeticError):
@@ -412,7 +415,8 @@ class Analysis:
         if not (zlo > 0 and Ea < 1):
             return None
         try:
-            kappa = _mag(Analysis(self.p, {_Z: (wide, arb(0), arb(0))}).value(_Z * _DERIVATIVE[f] / f(_Z)))[1]
+            kappa = _mag(Analysis(self.p, {_Z: (wide, arb(0), arb(0))}).value(
+                _LOG_DERIVATIVE.get(f, _Z * _DERIVATIVE[f] / f(_Z))))[1]
         except (Uncertified, Undefined):
             return None
         if not kappa.is_finite():
@@ -586,6 +590,9 @@ def _mismatch(branches, var, region_lo, region_hi, E_var, precision, bad: list) 
             continue
         lo_b, hi_b = b * (1 - 4 * E_var), b * (1 + 4 * E_var)
         env = {var: (_iv(lo_b, hi_b), arb(0), arb(0))}
+        if var == T:                            # a far branch may hold st = 1/t and lt = log t
+            env |= {ST: (Iv(1 / arb(hi_b), 1 / arb(lo_b)), arb(0), arb(0)),
+                    LT: (Iv(arb(lo_b).log(), arb(hi_b).log()), arb(0), arb(0))}
         try:
             with arb_precision(256):
                 diff = Analysis(precision, env).value(plain(left.expr + left.dropped - right.expr - right.dropped))
