@@ -849,3 +849,27 @@ def test_p6_bound_whose_quotient_by_s_is_zero_over_zero_at_the_origin(tmp_path):
     from uwmr_symbolic.certify import _spread
     s = S
     assert _spread(1 - (s + s ** 3) / s, s) == 1 - (1 + s ** 2) and _spread(1 - (s + 1) / s, s) is None
+
+
+@pytest.mark.parametrize("body, dF", [
+    # F' = 2s/(1 + s^2)^2 + 2s/(1 + s^2): its maximum is at s^2 = (sqrt(17) - 3)/2, a nested radical
+    ("f = rho/(1 + rho) + log(1 + rho)", lambda s: 2 * s / (1 + s**2) ** 2 + 2 * s / (1 + s**2)),
+    # F' = 2s/(1 + s^2) - s/(1 + s^2)^2: maximum at s^2 = (3 + sqrt(17))/4
+    ("f = log(1 + rho) - rho/(2*(1 + rho))", lambda s: 2 * s / (1 + s**2) - s / (1 + s**2) ** 2)])
+def test_an_exact_kf_the_kernel_cannot_take_becomes_its_enclosure(tmp_path, body, dF):
+    """The search finds kf exactly, attained at an algebraic s, but the kernel
+    cannot show the gap kf - F' vanishes there (nested radicals), so kf was
+    left to the search and the generated code had KF = INFINITY and no clamp.
+    The kernel now checks the enclosure around it instead: F' <= U and
+    F'(p) >= L at a rational p next to the maximum."""
+    report, verdicts = verify(tmp_path, body)
+    assert set(verdicts.values()) == {"proved"}
+    assert "kf" in report.kernel["checked"] and "kf" not in report.kernel.get("search", [])
+    L, U = report.kf.kernel_bounds
+    with mpmath.workdps(50):
+        s_max = mpmath.findroot(lambda s: mpmath.diff(dF, s), 1.0)
+        true = dF(s_max)
+        assert mpmath.mpf(L.numerator) / L.denominator <= true <= mpmath.mpf(U.numerator) / U.denominator
+        assert U - L <= Fraction(1, 10 ** 6) * U
+    from uwmr_symbolic.codegen.law import _kf_fraction
+    assert _kf_fraction(report)[0] == U          # the generated code clamps to the kernel's U

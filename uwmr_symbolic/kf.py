@@ -381,7 +381,21 @@ def _with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
     else:
         theorems, why = piecewise_sup_theorems(analysis.F, cert.exact, point, S, analysis.profile.ends)
     cert.kernel, cert.unchecked = (theorems, []) if theorems else ([], [f"kf = {cert.exact} (kernel: {why})"])
+    if not theorems and point is not None and point != 0:
+        return _exact_as_enclosure(cert, analysis, side, point, why)
     return cert
+
+
+def _exact_as_enclosure(cert: SupCertificate, analysis, side, point, why) -> SupCertificate:
+    """An exact kf attained at `point` (an algebraic s, say) that the kernel
+    did not take, as the enclosure the kernel checks instead
+    (`_enclosure_with_kernel`: F' <= U and F'(p) >= L at a rational p within
+    10^-40 of `point`); cert unchanged when it does not take that either."""
+    near = sp.Rational(str(sp.N(point, 45)))
+    enc = SupCertificate(cert.lower, cert.upper, None, None,
+                         f"{cert.reason} (the search's; the kernel did not take the exact value: {why})", point=near)
+    enc = _enclosure_with_kernel(enc, analysis, side)
+    return enc if enc.kernel else cert
 
 
 def _enclosure_with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
