@@ -345,3 +345,25 @@ def test_a_tail_term_that_vanishes_like_exp_is_left_out_not_printed_as_inf_times
     y = np.array([1e5, 1e300, big])
     v, w, st = lib.run(_law_rows([(0.0, x) for x in y]))
     assert (st == 0).all() and (np.abs(w - g(y)) <= 1e-12 * g(y)).all()
+
+
+def test_a_series_that_needs_a_lower_tiny_gets_it(tmp_path):
+    """f = log(cosh(1e8 s))/1e8: F' = tanh(1e8 s) = 1e8 s (1 - 1e16 s^2/3 + ...).
+    At the float TINY 1e-12 the next term is 7e-9 of the first, above the
+    2^-30 the tiny region allows, so there was no series for either
+    precision and H = tanh(1e8 sqrt(rho))/sqrt(rho) was 0/0 once rho
+    underflowed: status 4 at e2 = -1e-300 and nothing written.  The float
+    TINY is now lowered to 1e-13, where the next term is 7e-11."""
+    path = tmp_path / "sharp_logcosh.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\ns = sp.sqrt(e1**2 + e2**2)\n"
+                    "f = sp.log(sp.cosh(10**8*s))/10**8\n")
+    pairs = [(0.0, -1e-300), (1e-310, 0.0), (3e-120, 4e-120), (0.0, 1e-101), (0.0, 1e-9), (0.3, 0.4), (0.0, 1e10)]
+    lib, mod, law = _check_all(path, tmp_path, _law_rows(pairs),
+                               _law_rows([(0.0, -1e-40), (1e-14, 2e-14), (0.0, 1e-13), (0.0, 3e-12), (0.3, 0.4)]))
+    from uwmr_symbolic.codegen import build
+    model, _ = build(path)
+    assert model.tiny == (10 ** 8, 1) and model.thresholds["float"][0] == 1e-13
+    assert model.thresholds["double"][0] == 1e-100          # enough there: the next term is 7e-185
+    # at m = 1e-300 g(0, y) = tanh(1e8 |y|) sign(y) = 1e8 y to the last digit
+    v, w, st = lib.run(_law_rows([(0.0, -1e-300)]))
+    assert st[0] == 0 and w[0] == pytest.approx(-1e-292, rel=1e-14)
