@@ -269,19 +269,20 @@ def _leading(expr: sp.Expr, var: sp.Symbol, at_zero=True):
     return a, int(j)
 
 
-def _next_ratio(expr, var, a, j, x):
-    """|next term / leading term| at var = x, from the series (0 if none)."""
+def _next_term(expr, var, a, j):
+    """(c, d) with |next term / leading term| = c var**d, from the series
+    ((0, 1) if there is none, None if it cannot be found)."""
     try:
         ser = sp.series(expr, var, 0, j + 4).removeO()
     except Exception:  # noqa: BLE001
-        return math.inf
+        return None
     rest = sp.expand(ser - a * var ** j)
     if rest == 0:
-        return 0.0
+        return 0.0, 1
     b, i = _leading(rest, var) or (None, None)
     if b is None or i <= j:
-        return math.inf
-    return abs(float(b / a)) * x ** (i - j)
+        return None
+    return abs(float(b / a)), i - j
 
 
 # --------------------------------------------------------------------------
@@ -366,10 +367,10 @@ def build_model(design, analysis, report=None) -> LawModel:
     if tiny_ok:
         a, j = lead
         # the next term of the series is below 2^-60 (double) / 2^-30 (float) of the leading one
-        model.thresholds = {prec: _series_tiny(dF0, a, j, prec, th, model.mid)
-                            for prec, th in model.thresholds.items()}
-        tiny_ok = j >= 0 and all(_next_ratio(dF0, S, a, j, math.sqrt(2) * th[0]) < SERIES_REL[prec]
-                                 for prec, th in model.thresholds.items())
+        nxt = _next_term(dF0, S, a, j) if j >= 0 else None
+        model.thresholds = {prec: _series_tiny(nxt, prec, th, model.mid) for prec, th in model.thresholds.items()}
+        tiny_ok = nxt is not None and all(nxt[0] * (math.sqrt(2) * th[0]) ** nxt[1] < SERIES_REL[prec]
+                                          for prec, th in model.thresholds.items())
     if tiny_ok:
         model.tiny, model.tiny_source = (a, j), dF0
     else:
@@ -461,26 +462,29 @@ def split_vanishing(D: sp.Expr, t_far: float):
 
 
 SERIES_REL = {"double": 2.0 ** -60, "float": 2.0 ** -30}
+FORMAT = {"double": (2.2250738585072014e-308, 1.7976931348623157e308, 53),
+          "float": (1.1754943508222875e-38, 3.4028234663852886e38, 24)}
 #: the lowest TINY `_series_tiny` takes: rho >= TINY**2 stays 2^60 (float 2^20) above the smallest normal number
 TINY_FLOOR = {"double": 1e-142, "float": 1e-15}
 
 
-def _series_tiny(dF, a, j, prec, thresholds, mid):
+def _series_tiny(next_term, prec, thresholds, mid):
     """(TINY, FAR) with TINY lowered by decades, to TINY_FLOOR at most, while
-    the series' next term is not below SERIES_REL of a s**j at sqrt(2) TINY
-    (F' = tanh(1e8 s): 7e-9 at the float default 1e-12) and interval
-    arithmetic shows the mid-region forms neither overflow nor underflow on
-    the range added (`_magnitude_risks`)."""
+    the series' next term (`next_term` = (c, d): c s**d of the leading one)
+    is not below SERIES_REL at sqrt(2) TINY (F' = tanh(1e8 s): 7e-9 at the
+    float default 1e-12) and interval arithmetic shows the mid-region forms
+    neither overflow nor underflow on the range added (`_magnitude_risks`)."""
     tiny, far = thresholds
-    while _next_ratio(dF, S, a, j, math.sqrt(2) * tiny) >= SERIES_REL[prec] and tiny / 10 >= TINY_FLOOR[prec]:
+    if next_term is None:
+        return tiny, far
+    c, d = next_term
+    while c * (math.sqrt(2) * tiny) ** d >= SERIES_REL[prec] and tiny / 10 >= TINY_FLOOR[prec]:
         lower = tiny / 10
         if any(any(_magnitude_risks(br.expr, max(lower ** 2, br.lo_float), min(tiny ** 2, br.hi_float), FORMAT[prec]))
                for br in mid if br.lo_float < tiny ** 2):
             break
         tiny = lower
     return tiny, far
-FORMAT = {"double": (2.2250738585072014e-308, 1.7976931348623157e308, 53),
-          "float": (1.1754943508222875e-38, 3.4028234663852886e38, 24)}
 
 
 def _magnitude_risks(expr, rho_lo, rho_hi, fmt):
