@@ -367,3 +367,27 @@ def test_a_series_that_needs_a_lower_tiny_gets_it(tmp_path):
     # at m = 1e-300 g(0, y) = tanh(1e8 |y|) sign(y) = 1e8 y to the last digit
     v, w, st = lib.run(_law_rows([(0.0, -1e-300)]))
     assert st[0] == 0 and w[0] == pytest.approx(-1e-292, rel=1e-14)
+
+
+def test_a_constant_beyond_the_float_range_leaves_out_the_float_variant_alone(tmp_path):
+    """f = 3e38 log(1 + rho): F'(s) = 6e38 s/(1 + s^2), a constant no float
+    holds.  The float printer refused it, and with it the whole design: no
+    file was written although double and Python hold every constant.  Now
+    the double variant and the Python module are written and validated,
+    the banner says why there is no float variant, the header declares no
+    _f32 function, and a build with UWMR_NO_DOUBLE stops with that reason."""
+    import subprocess
+    path = tmp_path / "huge_log.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    "f = 3*10**38*sp.log(1 + rho)\n")
+    pairs = [(0.0, 1e-300), (0.3, 0.4), (0.0, 1.0), (1e3, -2e3), (0.0, 1e300)]
+    lib, mod, law = _check_all(path, tmp_path, _law_rows(pairs, lam=1e-38))
+    header = (tmp_path / "huge_log" / "huge_log.h").read_text()
+    text = " ".join(header.replace("\n * ", " ").split())
+    assert "_f32(" not in header and "no float (_f32) variant: the constant 6e+38 is beyond the float range" in text
+    # g(0, 1) = 6e38/2 = 3e38 exactly in the law; lam = 1e-38, vr = 1: w = 3
+    v, w, st = lib.run(_law_rows([(0.0, 1.0)], lam=1e-38))
+    assert st[0] == 0 and w[0] == pytest.approx(3.0, rel=1e-14)
+    res = subprocess.run(["gcc", "-std=c99", "-DUWMR_NO_DOUBLE", "-c", str(tmp_path / "huge_log" / "huge_log.c"),
+                          "-o", str(tmp_path / "x.o")], capture_output=True, text=True)
+    assert res.returncode != 0 and "this controller has no float variant" in res.stderr

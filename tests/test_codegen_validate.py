@@ -243,3 +243,20 @@ def test_generate_refuses_when_only_the_casadi_function_disagrees(report, tmp_pa
     with pytest.raises(CodegenInvalid, match="design1_jiang: CasADi: error"):
         generate(D1, tmp_path / "d1", report=report)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_the_bound_10_check_forms_lam_vr_kf_without_underflow():
+    """lam |vr| KF with lam vr = 1e-359 (0 in double) and KF = 1e300 is
+    1e-59: formed left to right it was 0, so a w of 1.4e-59 that is the
+    exact law (the saturated term of 1e300 log cosh s) was called "above
+    bound (10)" and the design refused.  A w twice the bound still fails."""
+    from uwmr_symbolic.codegen.accuracy import lam_vr_kf
+    from uwmr_symbolic.codegen.validate import ValidationFailed, check
+    a = np.array([[0.0, 1e49, 0.0, 1e-254, 0.0, 0.0, 0.0, 1e-105]])
+    assert lam_vr_kf(a, 1e300)[0] == pytest.approx(1e-59, rel=1e-15)
+    ref = {k: np.zeros(1) for k in ("v_hi", "v_lo", "w_lo")} | {"w_hi": np.array([1e-59]),
+                                                                  "scale_v": np.ones(1), "scale_w": np.ones(1)}
+    check("d", "C double", a, ref, np.zeros(1), np.array([1e-59]), np.zeros(1, dtype=int), "double", 1e300)
+    with pytest.raises(ValidationFailed, match=r"\|w\| above bound \(10\)"):
+        check("d", "C double", a, ref | {"w_hi": np.array([2e-59])}, np.zeros(1), np.array([2e-59]),
+              np.zeros(1, dtype=int), "double", 1e300)

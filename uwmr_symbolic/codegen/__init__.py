@@ -147,12 +147,12 @@ def _context(design, model: LawModel) -> dict:
                 kf_text=model.kf_text, verified=model.verified, clamp=model.bound_kf is not None,
                 kf_status="certified upper bound" if model.kf_upper is not None else "no finite bound certified",
                 kf_double="INFINITY" if math.isinf(kf) else repr(kf),
-                kf_float="INFINITY" if math.isinf(kf) else _float_text(kf32),
+                kf_float="INFINITY" if math.isinf(kf) or not np.isfinite(kf32) else _float_text(kf32),
                 kf_python="float('inf')" if math.isinf(kf) else repr(kf),
                 c_banner=_banner(model, source, "c"), py_banner=_banner(model, source, "py"), example=example)
 
 
-def _model(design_path, force, report) -> tuple[LawModel, object]:
+def _model(design_path, force, report, precisions=("double", "float")) -> tuple[LawModel, object]:
     """(model, report) of one design, verifying it unless `report` is given;
     CodegenRefused unless P1-P8 are proved or force=True."""
     from ..verify import verify_design
@@ -161,7 +161,7 @@ def _model(design_path, force, report) -> tuple[LawModel, object]:
     reasons = not_verified_reasons(report)
     if reasons and (not force or report.design is None):
         raise CodegenRefused(reasons)
-    model = build_model(report.design, Analysis(report.design), report)
+    model = build_model(report.design, Analysis(report.design), report, precisions)
     model.reasons = reasons
     model.notes += _gain_notes(report.gains or {})
     return model, report
@@ -191,8 +191,16 @@ def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, st
     model, report = _model(design_path, force, report)
     design = report.design
     env = _env()
+    kf = _kf_upper_double(model.kf_upper)
+    no_float = c_backend.float_missing(model, not math.isfinite(kf) or bool(np.isfinite(_kf_upper_float(kf))))
+    if no_float:        # the model again without the float thresholds, which may have cost the double a series
+        model, report = _model(design_path, force, report, precisions=("double",))
+        model.no_float = no_float
+        model.notes.append(f"no float (_f32) variant: {model.no_float}; the double variant and the Python "
+                           f"module are written without it.")
     ctx = _context(design, model)
-    certified = [accuracy.certify(model, cfg.precision, cfg.sinc_cut) for cfg in (c_backend.DOUBLE, c_backend.FLOAT)]
+    certified = [accuracy.certify(model, cfg.precision, cfg.sinc_cut)
+                 for cfg in ((c_backend.DOUBLE,) if model.no_float else (c_backend.DOUBLE, c_backend.FLOAT))]
     model.accuracy = {acc.precision: acc for acc in certified}
     ctx["accuracy"] = accuracy.contract_lines(certified)
     ctx["accuracy_double"] = accuracy.contract_lines(certified[:1])

@@ -785,6 +785,16 @@ def certify(model: LawModel, precision: str, sinc_cut: float) -> Accuracy:
     return acc
 
 
+def lam_vr_kf(a, kf: float):
+    """lam |vr| KF for rows of |inputs| (lam = a[:, 7], vr = a[:, 3]) as
+    (largest * smallest) * middle, so no partial product underflows or
+    overflows where the result is a normal number (lam vr = 1e-359 is 0 in
+    double, with KF = 1e300); two roundings."""
+    import numpy as np
+    f = np.sort(np.stack([a[:, 7], a[:, 3], np.full(len(a), kf)]), axis=0)
+    return f[0] * f[2] * f[1]
+
+
 def first_violation(acc: Accuracy, x, ref: dict, v, w, st, kf: float):
     """The first row (index) where outputs with status 0 break the certified
     bounds on v or w, skipping rows whose m lies in a NOT CERTIFIED range
@@ -802,7 +812,7 @@ def first_violation(acc: Accuracy, x, ref: dict, v, w, st, kf: float):
     a = np.abs(x)
     with np.errstate(all="ignore"):
         bv = acc.v * (a[:, 3] + a[:, 5]) + acc.absolute
-        bw = acc.w * (a[:, 4] + a[:, 7] * a[:, 3] * kf + a[:, 6]) + acc.absolute
+        bw = acc.w * (a[:, 4] + lam_vr_kf(a, kf) + a[:, 6]) + acc.absolute
         ev = np.abs((np.asarray(v, dtype=float) - ref["v_hi"]) - ref["v_lo"])
         ew = np.abs((np.asarray(w, dtype=float) - ref["w_hi"]) - ref["w_lo"])
         # the reference is double-double: allow for its own rounding (2^-100 relative)

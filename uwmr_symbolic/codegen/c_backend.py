@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from .law import LT, RHO, SIN_MIN, SINC_SHIFT, ST, THRESHOLDS, LawModel, mid_h_bounds
-from .printers import CPrinter, cse_lines
+from .printers import CPrinter, Unsupported, cse_lines
 from .. import e1 as E1, e2 as E2
 from ..univariate import T
 
@@ -310,25 +310,45 @@ def fast_lines(model: LawModel, cfg: CConfig, names) -> list[str] | None:
     return out + _indent(body, 4) + ["}"]
 
 
+NAMES = {RHO: "rho", T: "tt", LT: "lt", ST: "st", E1: "e1", E2: "e2"}
+
+
+def _variant(model: LawModel, base: CConfig) -> dict:
+    """The template values of one precision (raises Unsupported)."""
+    cfg = dataclasses.replace(base, tiny=model.thresholds[base.precision][0], far=model.thresholds[base.precision][1])
+    return dict(cfg=cfg, body=gterm_lines(model, cfg, NAMES), fast=fast_lines(model, cfg, NAMES),
+                cap=kf_cap(model, cfg),
+                rho_cmp=model.radial and len(model.mid) > 1,
+                tiny=cfg.lit(cfg.tiny), far=cfg.lit(cfg.far), cut=cfg.lit(cfg.sinc_cut),
+                sinc_shift=SINC_SHIFT[base.precision], sinc_up=cfg.lit(2 ** SINC_SHIFT[base.precision]),
+                sin_min=SIN_MIN[base.precision],
+                zero=cfg.lit(0), one=cfg.lit(1), two=cfg.lit(2), half=cfg.lit(sp.Rational(1, 2)),
+                huge="HUGE_VALF" if cfg.precision == "float" else "HUGE_VAL", c6=cfg.lit(sp.Rational(1, 6)),
+                c120=cfg.lit(sp.Rational(1, 120)), pi=cfg.lit(sp.pi), two_pi=cfg.lit(2 * sp.pi),
+                heading_max="UWMR_HEADING_MAX" + cfg.suffix.upper(),
+                turns_max="UWMR_TURNS_MAX" + cfg.suffix.upper())
+
+
+def float_missing(model: LawModel, kf_float_finite: bool) -> str | None:
+    """Why the float variant cannot be written (a constant of the law, or KF,
+    beyond the float range), or None: the double variant and the Python
+    module are then written without it."""
+    if not kf_float_finite:
+        return "KF is beyond the float range (about 3.4e38)"
+    try:
+        _variant(model, FLOAT)
+    except Unsupported as exc:
+        return str(exc)
+    return None
+
+
 def render(env, model: LawModel, context: dict) -> dict[str, str]:
-    """{file name: text} for the C back-end."""
+    """{file name: text} for the C back-end (without the float variant when `model.no_float`)."""
     ident = c_identifier(model.stem)
-    names = {RHO: "rho", T: "tt", LT: "lt", ST: "st", E1: "e1", E2: "e2"}
-    variants = []
-    for base in (DOUBLE, FLOAT):
-        cfg = dataclasses.replace(base, tiny=model.thresholds[base.precision][0],
-                                  far=model.thresholds[base.precision][1])
-        variants.append(dict(cfg=cfg, body=gterm_lines(model, cfg, names), fast=fast_lines(model, cfg, names),
-                             cap=kf_cap(model, cfg),
-                             rho_cmp=model.radial and len(model.mid) > 1,
-                             tiny=cfg.lit(cfg.tiny), far=cfg.lit(cfg.far), cut=cfg.lit(cfg.sinc_cut),
-                             sinc_shift=SINC_SHIFT[base.precision], sinc_up=cfg.lit(2 ** SINC_SHIFT[base.precision]),
-                             sin_min=SIN_MIN[base.precision],
-                             zero=cfg.lit(0), one=cfg.lit(1), two=cfg.lit(2), half=cfg.lit(sp.Rational(1, 2)), huge="HUGE_VALF" if cfg.precision == "float" else "HUGE_VAL", c6=cfg.lit(sp.Rational(1, 6)),
-                             c120=cfg.lit(sp.Rational(1, 120)), pi=cfg.lit(sp.pi), two_pi=cfg.lit(2 * sp.pi),
-                             heading_max="UWMR_HEADING_MAX" + cfg.suffix.upper(),
-                             turns_max="UWMR_TURNS_MAX" + cfg.suffix.upper()))
-    ctx = dict(context, ident=ident, IDENT=ident.upper(), variants=variants, stem=model.stem)
+    variants = [_variant(model, base) for base in ((DOUBLE,) if model.no_float else (DOUBLE, FLOAT))]
+    ctx = dict(context, ident=ident, IDENT=ident.upper(), variants=variants, stem=model.stem,
+               no_float=model.no_float,
+               c_types=[("double", "")] + ([] if model.no_float else [("float", "_f32")]))
     return {f"{model.stem}.h": env.get_template("c_header.h.j2").render(ctx),
             f"{model.stem}.c": env.get_template("c_source.c.j2").render(ctx),
             "example_main.c": env.get_template("example_main.c.j2").render(ctx),

@@ -37,6 +37,7 @@ void uwmr_batch(long n, const double *x, double *out, int *st)
     }}
 }}
 
+#ifndef UWMR_HARNESS_NO_F32
 void uwmr_batch_f32(long n, const float *x, float *out, int *st)
 {{
     long i;
@@ -49,6 +50,7 @@ void uwmr_batch_f32(long n, const float *x, float *out, int *st)
         st[i] = uwmr_{ident}_control_f32(a[0], a[1], a[2], a[3], a[4], &g, out + 2 * i, out + 2 * i + 1);
     }}
 }}
+#endif
 
 /* Errors (7): rows of 6 (x, y, th, xr, yr, thr) -> 3 outputs and a status. */
 void uwmr_batch_errors(long n, const double *x, double *out, int *st)
@@ -60,6 +62,7 @@ void uwmr_batch_errors(long n, const double *x, double *out, int *st)
     }}
 }}
 
+#ifndef UWMR_HARNESS_NO_F32
 void uwmr_batch_errors_f32(long n, const float *x, float *out, int *st)
 {{
     long i;
@@ -68,6 +71,7 @@ void uwmr_batch_errors_f32(long n, const float *x, float *out, int *st)
         st[i] = uwmr_{ident}_errors_f32(a[0], a[1], a[2], a[3], a[4], a[5], out + 3 * i, out + 3 * i + 1, out + 3 * i + 2);
     }}
 }}
+#endif
 
 /* One tracker (reset first) along a sequence of rows of 6 (pose, ref). */
 void uwmr_batch_track(long n, const double *x, double *out, int *st)
@@ -84,6 +88,7 @@ void uwmr_batch_track(long n, const double *x, double *out, int *st)
     }}
 }}
 
+#ifndef UWMR_HARNESS_NO_F32
 void uwmr_batch_track_f32(long n, const float *x, float *out, int *st)
 {{
     long i;
@@ -97,6 +102,7 @@ void uwmr_batch_track_f32(long n, const float *x, float *out, int *st)
         st[i] = uwmr_{ident}_track_f32(&s, &p, &r, out + 3 * i, out + 3 * i + 1, out + 3 * i + 2);
     }}
 }}
+#endif
 
 /* _step along a sequence (one tracker): rows of 11 (pose, ref, vr, wr, k1, k2, lam) -> v, w, status. */
 void uwmr_batch_step(long n, const double *x, double *out, int *st)
@@ -129,6 +135,11 @@ int main(int argc, char **argv)
         return 2;
     }}
     f32 = argv[1][0] == 'f';
+#ifdef UWMR_HARNESS_NO_F32
+    if (f32) {{
+        return 2;
+    }}
+#endif
     n = atol(argv[2]);
     size = f32 ? sizeof(float) : sizeof(double);
     x = malloc((size_t)n * 8 * size);
@@ -139,9 +150,12 @@ int main(int argc, char **argv)
         return 2;
     }}
     fclose(fin);
+#ifndef UWMR_HARNESS_NO_F32
     if (f32) {{
         uwmr_batch_f32(n, (const float *)x, (float *)out, st);
-    }} else {{
+    }} else
+#endif
+    {{
         uwmr_batch(n, (const double *)x, (double *)out, st);
     }}
     fout = fopen(argv[4], "wb");
@@ -153,6 +167,7 @@ int main(int argc, char **argv)
     fclose(fout);
     /* the error functions and the tracker on the same numbers (the first 6 of
        every row as a pose pair), for the sanitizers: nothing is compared */
+#ifndef UWMR_HARNESS_NO_F32
     if (f32) {{
         float *e = (float *)malloc((size_t)n * 8 * sizeof(float));
         float *xs = (float *)malloc((size_t)n * 6 * sizeof(float));
@@ -166,7 +181,9 @@ int main(int argc, char **argv)
         }}
         free(e);
         free(xs);
-    }} else {{
+    }} else
+#endif
+    {{
         double *e = (double *)malloc((size_t)n * 8 * sizeof(double));
         double *xs = (double *)malloc((size_t)n * 11 * sizeof(double));
         long i;
@@ -187,14 +204,20 @@ int main(int argc, char **argv)
     }}
     {{
         double v = 1.0, w = 1.0;
+#ifndef UWMR_HARNESS_NO_F32
         float vf = 1.0F, wf = 1.0F;
+#endif
         uwmr_{ident}_gains g = {{1.0, 1.0, 1.0}};
+#ifndef UWMR_HARNESS_NO_F32
         uwmr_{ident}_gains_f32 gf = {{1.0F, 1.0F, 1.0F}};
+#endif
         rc |= uwmr_{ident}_control(1.0, 1.0, 1.0, 1.0, 1.0, NULL, &v, &w) == 0 || v != 0.0 || w != 0.0;
         rc |= uwmr_{ident}_control(1.0, 1.0, 1.0, 1.0, 1.0, &g, NULL, &w) == 0 || w != 0.0;
         rc |= uwmr_{ident}_control(1.0, 1.0, 1.0, 1.0, 1.0, &g, &v, NULL) == 0 || v != 0.0;
+#ifndef UWMR_HARNESS_NO_F32
         rc |= uwmr_{ident}_control_f32(1.0F, 1.0F, 1.0F, 1.0F, 1.0F, NULL, &vf, &wf) == 0 || vf != 0.0F;
         rc |= uwmr_{ident}_control_f32(1.0F, 1.0F, 1.0F, 1.0F, 1.0F, &gf, NULL, NULL) == 0;
+#endif
         {{
             double e1 = 1.0, e2 = 1.0, e3 = 1.0;
             uwmr_{ident}_tracker s;
@@ -206,7 +229,9 @@ int main(int argc, char **argv)
             rc |= uwmr_{ident}_track(&s, &p, NULL, &e1, &e2, &e3) != 1 || s.started;
             rc |= uwmr_{ident}_step(&s, &p, &p, 1.0, 1.0, NULL, &v, &w) != 1 || v != 0.0 || w != 0.0;
             rc |= uwmr_{ident}_step(&s, NULL, &p, 1.0, 1.0, &g, &v, NULL) != 1 || v != 0.0;
+#ifndef UWMR_HARNESS_NO_F32
             rc |= uwmr_{ident}_step_f32(NULL, NULL, NULL, 1.0F, 1.0F, NULL, NULL, NULL) != 1;
+#endif
         }}
     }}
     free(x);
@@ -222,10 +247,16 @@ def driver_source(stem: str) -> str:
     return DRIVER.format(stem=stem, ident=c_identifier(stem))
 
 
+def has_float_variant(src_dir, stem: str) -> bool:
+    """Whether the generated header declares the float (_f32) variant."""
+    return f"uwmr_{c_identifier(stem)}_control_f32(" in (Path(src_dir) / f"{stem}.h").read_text()
+
+
 def _compile(src_dir: Path, stem: str, out: Path, flags, cc="gcc"):
     driver = out.parent / f"{stem}_driver.c"
     driver.write_text(driver_source(stem))
-    cmd = [cc, *flags, "-I", str(src_dir), str(src_dir / f"{stem}.c"), str(driver), "-o", str(out), "-lm"]
+    no_f32 = [] if has_float_variant(src_dir, stem) else ["-DUWMR_HARNESS_NO_F32"]
+    cmd = [cc, *flags, *no_f32, "-I", str(src_dir), str(src_dir / f"{stem}.c"), str(driver), "-o", str(out), "-lm"]
     res = subprocess.run(cmd, capture_output=True, text=True)
     if res.returncode != 0:
         raise RuntimeError(f"compilation failed: {' '.join(cmd)}\n{res.stderr}")
@@ -288,6 +319,8 @@ def build_library(src_dir, stem: str, work_dir, extra=("-O2",)) -> Compiled:
     lib = ctypes.CDLL(str(out))
     for name in ("uwmr_batch", "uwmr_batch_f32", "uwmr_batch_errors", "uwmr_batch_errors_f32", "uwmr_batch_track",
                  "uwmr_batch_track_f32", "uwmr_batch_step"):
+        if name.endswith("_f32") and not has_float_variant(src_dir, stem):
+            continue
         getattr(lib, name).restype = None
     return Compiled(lib, c_identifier(stem), out)
 

@@ -100,6 +100,7 @@ class LawModel:
     notes: list = field(default_factory=list)      # numerical choices, for the banner
     thresholds: dict = field(default_factory=lambda: dict(THRESHOLDS))   # precision -> (TINY, FAR)
     accuracy: dict = field(default_factory=dict)   # precision -> accuracy.Accuracy (set by codegen.build)
+    no_float: str | None = None    # why the C code has no float variant (set by codegen.build), else None
 
     @property
     def verified(self) -> bool:
@@ -328,8 +329,9 @@ def _branches(pieces, at_point, to_var, reverse):
     return out[::-1] if reverse else out
 
 
-def build_model(design, analysis, report=None) -> LawModel:
-    """The numeric model of the law for one design (see the module doc)."""
+def build_model(design, analysis, report=None, precisions=("double", "float")) -> LawModel:
+    """The numeric model of the law for one design (see the module doc), for
+    the C variants of `precisions` (the thresholds of the others left out)."""
     kf_upper, kf_text = _kf_fraction(report)
     model = LawModel(stem=design.stem, name=design.name, radial=False, params=dict(design.params),
                      kf_upper=kf_upper, kf_text=kf_text)
@@ -358,7 +360,7 @@ def build_model(design, analysis, report=None) -> LawModel:
         H = _polish(sp.cancel(H) if not H.has(sp.Function) else H)
         model.mid.append(Branch(lo, hi, closed, H))
 
-    model.thresholds = derive_thresholds(model.mid)
+    model.thresholds = {p: th for p, th in derive_thresholds(model.mid).items() if p in precisions}
 
     # tiny region: leading term of F' on the first piece
     dF0 = prepare(sp.diff(pieces[0].expr, S))
