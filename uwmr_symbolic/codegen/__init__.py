@@ -147,7 +147,7 @@ def _context(design, model: LawModel) -> dict:
                 kf_text=model.kf_text, verified=model.verified, clamp=model.bound_kf is not None,
                 kf_status="certified upper bound" if model.kf_upper is not None else "no finite bound certified",
                 kf_double="INFINITY" if math.isinf(kf) else repr(kf),
-                kf_float="INFINITY" if math.isinf(kf) or not np.isfinite(kf32) else _float_text(kf32),
+                kf_float="INFINITY" if math.isinf(kf) else _float_text(kf32),
                 kf_python="float('inf')" if math.isinf(kf) else repr(kf),
                 c_banner=_banner(model, source, "c"), py_banner=_banner(model, source, "py"), example=example)
 
