@@ -873,3 +873,28 @@ def test_an_exact_kf_the_kernel_cannot_take_becomes_its_enclosure(tmp_path, body
         assert U - L <= Fraction(1, 10 ** 6) * U
     from uwmr_symbolic.codegen.law import _kf_fraction
     assert _kf_fraction(report)[0] == U          # the generated code clamps to the kernel's U
+
+
+def test_an_exponent_with_a_large_denominator_is_left_unknown_not_a_crash(tmp_path):
+    """f = log(1 + rho**(2/3)) with a Python float 2/3, read as
+    3333333333333333/5000000000000000: SymPy's gcd works in
+    rho^(1/5000000000000000) and FLINT killed the process (SIGFPE: "the
+    process checking this file died"); a denominator of 10^4 overflowed an
+    integer conversion (exit 2, internal error) and one of 100 outlasted
+    the timeout.  Now every property is unknown at once, the reason names
+    the exponent and how to write 2/3 exactly, and the exit status is 3;
+    with sp.Rational(2, 3) the same f is decided (P2 proved, P6 refuted:
+    F'(s)/s ~ s^(-2/3))."""
+    import subprocess
+    import sys
+    float_path, exact_path = tmp_path / "float_power.py", tmp_path / "exact_power.py"
+    head = "import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+    float_path.write_text(head + "f = sp.log(1 + rho**(2/3))\n")
+    exact_path.write_text(head + "f = sp.log(1 + rho**sp.Rational(2, 3))\n")
+    out = subprocess.run([sys.executable, "-m", "uwmr_symbolic", str(float_path), "--no-cache", "-q"],
+                         capture_output=True, text=True, timeout=120)
+    assert out.returncode == 3, out.stdout + out.stderr
+    assert out.stdout.count("unknown  f has the exponent 3333333333333333/5000000000000000") == 8
+    assert "write sp.Rational(2, 3)" in out.stdout
+    rep = verify_design(exact_path)
+    assert rep.properties["P2"].proved and rep.properties["P6"].refuted

@@ -351,6 +351,7 @@ def write_certificates(paths, results, target) -> int:
     for d in results:
         cert = d.get("certificate")
         if cert is None:
+            print(f"{d['design']}: no certificate written: nothing was decided (see the verdicts)", file=sys.stderr)
             continue
         dest = out / (Path(d["design"]).stem + ".cert.json") if len(paths) > 1 else out
         try:

@@ -31,6 +31,11 @@ DEFAULT_TIMEOUT = 60.0
 
 EXIT_OK, EXIT_REFUTED, EXIT_UNUSABLE, EXIT_INCONCLUSIVE = 0, 1, 2, 3
 SEARCH_ONLY = "not re-checked by the kernel (the search says "     # the start of `kernel_verdict`'s reason
+#: Largest denominator q of a rational exponent of f that the search takes: SymPy's
+#: polynomial algorithms work in x^(1/q), with degrees that grow with q (q = 100
+#: outlasts the default timeout, 10^4 overflows an integer conversion, and the
+#: 5*10^15 of a float 2/3 kills the process inside FLINT's gcd).
+MAX_ROOT_DEGREE = 64
 
 
 @dataclass
@@ -125,6 +130,14 @@ def verify_loaded(design: Design, timeout: float = DEFAULT_TIMEOUT, start: float
     (`kernel_verdict`) and bound (10) is checked only with a kernel-checked
     kf."""
     start = time.monotonic() if start is None else start
+    deep = sorted({e.exp for e in design.f.atoms(sp.Pow) if e.exp.is_Rational and e.exp.q > MAX_ROOT_DEGREE},
+                  key=lambda x: x.q)
+    if deep:
+        why = (f"f has the exponent {deep[-1]}, whose denominator is above {MAX_ROOT_DEGREE}, the most the "
+               f"symbolic search takes: nothing was decided (a float exponent is read as its decimal, "
+               f"0.7 as 7/10 but 2/3 as 3333333333333333/5000000000000000: write sp.Rational(2, 3))")
+        return Report(design.path, design, {p: unknown(why) for p in PROPERTIES}, None,
+                      seconds=time.monotonic() - start)
     try:
         with design_budget(design.f):       # the kernel proposer's work budget for this design
             return _verify(design, timeout, start, kernel_only)
