@@ -308,3 +308,30 @@ def test_printed_bounds_are_never_below_the_certified_ones(models):
         assert printed(r"\|v\^ - v\|") >= acc.v and printed(r"\|w\^ - w\|") >= acc.w
         for r in acc.certified:
             assert float(re.search(re.escape(r.where) + r": g within ([0-9.e+-]+?)\.( |$)", text).group(1)) >= r.g
+
+
+def test_the_near_polynomial_and_its_remainder_bound_hold():
+    """law._taylor_polynomial for F'(s) = atan(s) - s/(1 + s^2), whose H =
+    F'(s)/s is (atan(s) - s/(1 + s^2))/s, all digits lost near 0: below
+    rho = 1/16 the polynomial P (odd series of F', 2/3 s^3 - 4/5 s^5 + ...,
+    divided by s) and its bound must satisfy |H - P| <= bound at 60 digits,
+    the bound must be tiny against H, and its first coefficient is 2/3."""
+    import mpmath
+    from uwmr_symbolic.codegen.law import RHO, S, _taylor_polynomial
+    dF = sp.atan(S) - S / (1 + S ** 2)
+    cut = sp.Rational(1, 16)
+    poly, bound, degree = _taylor_polynomial(dF, cut, 2.0 ** -52)
+    assert degree % 2 == 1 and degree >= 21
+    assert sp.expand(poly).coeff(RHO, 1) == pytest.approx(2 / 3, rel=1e-28) and sp.expand(poly).coeff(RHO, 0) == 0
+    P, B = sp.lambdify(RHO, poly, "mpmath"), sp.lambdify(RHO, bound, "mpmath")
+    for r in ["0.0625", "0.05", "1e-3", "1e-9", "1e-40"]:
+        with mpmath.workdps(60 + 2 * len(r)):     # the exact H cancels too: digits for it
+            r = mpmath.mpf(r)
+            s = mpmath.sqrt(r)
+            H = (mpmath.atan(s) - s / (1 + r)) / s
+            assert abs(H - P(r)) <= B(r) <= 2.0 ** -52 * abs(H), r
+    # a bound that is not bounding: the same polynomial with one coefficient moved is caught
+    with mpmath.workdps(60):
+        r = mpmath.mpf("0.05")
+        H = (mpmath.atan(mpmath.sqrt(r)) - mpmath.sqrt(r) / (1 + r)) / mpmath.sqrt(r)
+        assert abs(H - (P(r) + r * mpmath.mpf("1e-17"))) > B(r)

@@ -50,7 +50,7 @@ from sympy.codegen.cfunctions import expm1, log1p
 from ..kernel.arb import (Iv, Undefined, _abs_like, _add, _increasing, _inv, _log, _mul, _point, _pow,
                           precision as arb_precision)
 from ..univariate import T
-from .law import LT, RHO, ST, LawModel, plain
+from .law import LT, RHO, ST, LawModel, _taylor, plain
 
 __all__ = ["Accuracy", "RegionAccuracy", "certify", "LIBM_U", "UNIT"]
 
@@ -93,6 +93,11 @@ _LOG_DERIVATIVE = {sp.exp: _Z, sp.cosh: _Z * sp.tanh(_Z), sp.sinh: _Z / sp.tanh(
 class Uncertified(ArithmeticError):
     """No bound on this box (a value may leave the normal range, a sum may
     vanish, an unsupported operation)."""
+
+
+class MayVanish(Uncertified):
+    """No relative bound: the enclosure of the value contains 0 (often only
+    the box's width: a smaller box may exclude it)."""
 
 
 def _up(x: arb) -> float:
@@ -243,7 +248,7 @@ class Analysis:
             return E
         lo = _mag(self.value(e))[0]
         if not lo > 0:
-            raise Uncertified(f"{sp.sstr(e)[:60]} may vanish: no relative bound")
+            raise MayVanish(f"{sp.sstr(e)[:60]} may vanish: no relative bound")
         return E + A / lo
 
     # propagation -----------------------------------------------------------
@@ -513,12 +518,12 @@ def _cover(lo, hi, analyse, goal, bad: list, depth=6) -> float:
     while stack:
         a, b, d = stack.pop()
         try:
-            E, why = analyse(a, b), ""
+            E, why, vanish = analyse(a, b), "", False
         except Uncertified as exc:
-            E, why = math.inf, str(exc)
+            E, why, vanish = math.inf, str(exc), isinstance(exc, MayVanish)
         if E > goal and d > 0 and b > a * (1 + 1e-9):
             mid = math.sqrt(a) * math.sqrt(b)
-            d = min(d, 2) if why else d        # a box with no bound at all (overflow...): split little
+            d = min(d, 2) if why and not vanish else d     # no bound at all (overflow...): split little
             stack += [(mid, b, d - 1), (a, mid, d - 1)]
         elif E <= goal:
             worst = max(worst, E)
@@ -613,26 +618,60 @@ def _mismatch(branches, var, region_lo, region_hi, E_var, precision, bad: list) 
     return worst
 
 
+def _mid_box(expr, prec, a, b, bound=sp.S.Zero) -> float:
+    """Relative bound on g = e2 H(rho) for rho in [a, b], H printed as expr,
+    rho = e1*e1 + e2*e2 rounded (absolute underflow of the squares against
+    rho >= a); `bound` >= |H - expr| when expr is a truncated series (a near
+    branch: `law.near_branch`)."""
+    u = arb(fmpq(1, 2 ** (53 if prec == "double" else 24)))
+    E_rho = (1 + u) ** 2 - 1 + arb(SUBNORMAL[prec]) * 2 / arb(a)
+    E_H = Analysis(prec, {RHO: (_iv(a, b), E_rho, arb(0))}).relative(expr)
+    if bound != 0:                      # H = expr + r, |r| <= bound: (1 + E) / (1 - sup bound / min |expr|)
+        exact = Analysis(prec, {RHO: (_iv(a, b), arb(0), arb(0))})
+        trunc = _mag(exact.value(bound))[1] / _mag(exact.value(expr))[0]
+        if not trunc < 1:
+            raise Uncertified(f"the Taylor remainder may reach {_up(trunc):.2g} of the polynomial")
+        E_H = (1 + E_H) / (1 - trunc) - 1
+    return _up(_products([E_H], 1, u))          # g = e2 H: one product
+
+
+def accurate_from(expr, precision: str, top: float, goal: float, needed: float) -> float | None:
+    """For `law.near_branch`: 0.0 when g = e2 H, H printed as expr, is within
+    `needed` (`_mid_box`) for rho in [2^-61, 2^-60], or has no bound there
+    for another reason than a sum that may vanish (no cancellation at 0 to
+    remove); else the least rho = top 2^-k (k >= 0) such that it is
+    within goal on every box [x, 2x] from rho to top; None when not even
+    on [top/2, top]."""
+    def ok(a, b):                       # (boxes split as `_mid` splits them)
+        bad = []
+        try:
+            return _cover(a, b, lambda x, y: _mid_box(expr, precision, x, y), goal, bad) <= goal and not bad
+        except Undefined:
+            return False
+    with arb_precision(128):
+        try:                            # only a cancellation (a large bound, a sum that may vanish) calls for one
+            if _mid_box(expr, precision, 2.0 ** -61, 2.0 ** -60) <= needed:
+                return 0.0
+        except MayVanish:
+            pass
+        except (Uncertified, Undefined):
+            return 0.0
+        lo = top
+        while lo > 2.0 ** -60 and ok(lo / 2, lo):
+            lo /= 2
+    return None if lo == top else lo
+
+
 def _mid(model, prec, reg, tiny, far):
-    """tiny <= m <= far: g = e2 H(rho), rho = e1*e1 + e2*e2 rounded (absolute
-    underflow of the squares against rho >= its lower end).  Returns (bound,
-    bad ranges of m)."""
-    u = reg.u
+    """tiny <= m <= far: g = e2 H(rho) (`_mid_box`).  Returns (bound, bad
+    ranges of m)."""
     rho_lo = tiny ** 2 if model.tiny is not None else MIN_NORMAL[prec] * 2.0 ** 60
     rho_hi = 2 * far ** 2
-    E_rho0 = (1 + u) ** 2 - 1
-    E_var = _up(E_rho0) + 2 ** -60
-
-    def analyse_branch(br):
-        def analyse(a, b):
-            E_rho = E_rho0 + arb(SUBNORMAL[prec]) * 2 / arb(a)
-            E_H = Analysis(prec, {RHO: (_iv(a, b), E_rho, arb(0))}).relative(br.expr)
-            return _up(_products([E_H], 1, u))          # g = e2 H: one product
-        return analyse
+    E_var = _up((1 + reg.u) ** 2 - 1) + 2 ** -60
 
     bad, worst = [], 0.0
     for br, lo, hi in _branch_boxes(model.mid, rho_lo, rho_hi, E_var):
-        worst = max(worst, _cover(lo, hi, analyse_branch(br), GOAL[prec], bad))
+        worst = max(worst, _cover(lo, hi, lambda a, b, br=br: _mid_box(br.expr, prec, a, b, br.bound), GOAL[prec], bad))
     worst += _mismatch(model.mid, RHO, rho_lo, rho_hi, E_var, prec, bad)
     if model.tiny is None:
         bad.append((0.0, rho_lo, "no series at 0: rho may be subnormal"))
@@ -681,8 +720,9 @@ def _series_error(dF, a, j, delta, prec) -> arb:
     """sup |F'(s)/(a s^j) - 1| over (0, delta], rigorously: Arb encloses
     q = F'(s)/s^j over [0, delta] when q, simplified, is defined at 0
     (s^9/(1 + s^10) -> 1/(1 + s^10)); otherwise Lagrange's remainder,
-    |F'(s) - a s^j| <= sup|F'^(j+1)| s^(j+1)/(j+1)! (j <= 4), given
-    F'^(i)(0) = 0 exactly for i < j (Arb's exact zero), F'^(j)(0)/j! near a."""
+    |F'(s) - a s^j| <= sup|F'^(j+1)| s^(j+1)/(j+1)!, given F'^(i)(0) = 0
+    exactly for i < j and F'^(j)(0)/j! near a, from Arb's Taylor series of
+    F' at 0 and over the ball [0, delta] (`law._taylor`)."""
     from ..profile import S
     aj = Analysis(prec, {}).value(sp.sympify(a)).hull()
     if not aj.abs_lower() > 0:
@@ -695,19 +735,21 @@ def _series_error(dF, a, j, delta, prec) -> arb:
         return _mag(Iv(Q.lo - aj, Q.hi - aj))[1] / abs(aj)
     except (Uncertified, Undefined):
         pass
-    if j > 4:
-        raise Uncertified(f"F'(s)/s^{j} is not defined at 0 as written, and the remainder needs "
-                          f"F'^({j + 1})")
-    for i in range(j + 1):
-        c = Analysis(prec, {S: (_point(arb(0)), arb(0), arb(0))}).value(plain(sp.diff(dF, S, i)))
-        if i < j and not _is_zero(c):
-            raise Uncertified(f"F'^({i})(0) = 0 is not exact in Arb")
-    cj = _mag(Iv(c.lo - aj * math.factorial(j), c.hi - aj * math.factorial(j)))[1] / abs(aj)
+    import flint
+    saved = flint.ctx.cap
     try:
-        rem = Analysis(prec, box).value(plain(sp.diff(dF, S, j + 1)))
-    except (Uncertified, Undefined) as exc:
-        raise Uncertified(f"F'^({j + 1}) on [0, {_fmt(delta)}]: {exc}") from None
-    return cj / math.factorial(j) + _mag(rem)[1] * arb(delta) / (math.factorial(j + 1) * abs(aj))
+        flint.ctx.cap = j + 2
+        at0 = _taylor(dF, S, arb(0)).coeffs() + [arb(0)] * (j + 2)
+        ball = arb(delta / 2, delta / 2)
+        rem = (_taylor(dF, S, ball).coeffs() + [arb(0)] * (j + 2))[j + 1]
+    except ValueError as exc:
+        raise Uncertified(f"no series of F' at 0: {exc}") from None
+    finally:
+        flint.ctx.cap = saved
+    if not all(c.is_zero() for c in at0[:j]):
+        raise Uncertified("the series' first terms are not exactly 0 in Arb")
+    # |F'(s) - a s^j| <= |F'^(j)(0)/j! - a| s^j + sup |F'^(j+1)/(j+1)!| s^(j+1) (Lagrange), over |a| s^j
+    return (_mag(Iv(at0[j] - aj, at0[j] - aj))[1] + abs(rem).abs_upper() * arb(delta)) / abs(aj)
 
 
 def _tiny(model, prec, reg, tiny):

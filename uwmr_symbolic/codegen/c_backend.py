@@ -331,15 +331,16 @@ def _variant(model: LawModel, base: CConfig) -> dict:
 
 def float_missing(model: LawModel, kf_float_finite: bool) -> str | None:
     """Why the float variant cannot be written (a constant of the law, or KF,
-    beyond the float range), or None: the double variant and the Python
-    module are then written without it."""
+    beyond the float range; no accurate float form near 0, `law.near_branch`),
+    or None: the double variant and the Python module are then written
+    without it."""
     if not kf_float_finite:
         return "KF is beyond the float range (about 3.4e38)"
     try:
         _variant(model, FLOAT)
     except Unsupported as exc:
         return str(exc)
-    return None
+    return model.float_blocked
 
 
 def render(env, model: LawModel, context: dict) -> dict[str, str]:

@@ -12,6 +12,8 @@ overflows nor cancels there:
   with r = sqrt(1 + q**2), q = min/m, and e2/s = (e2/m)/r;
 * mid    (TINY <= m <= FAR): g = e2 H(rho) with rho = e1**2 + e2**2 and
   H(rho) = F'(s)/s written in rho (no square root of rho for smooth F);
+  where that form cancels as rho -> 0, its Taylor polynomial below a cut
+  (`near_branch`);
 * far    (m > FAR): t = 1/s = (1/m)/r and g = t**k D(t) (e2/m)/r with
   D(t) t**k = F'(1/t) (the verifier's `tail_form`), k the order of F'(1/t)
   at t = 0, so that t**k, which may underflow (k > 0) or overflow (k < 0),
@@ -73,6 +75,7 @@ class Branch:
     expr: sp.Expr
     k: int = 0                 # far region: power of t split off the expression
     dropped: sp.Expr = sp.S.Zero   # far region: terms of F'(1/t)/t**k left out (`split_vanishing`)
+    bound: sp.Expr = sp.S.Zero     # near branch: |H - expr| <= bound (its Taylor remainder, `near_branch`)
 
     @property
     def lo_float(self) -> float:
@@ -101,6 +104,7 @@ class LawModel:
     thresholds: dict = field(default_factory=lambda: dict(THRESHOLDS))   # precision -> (TINY, FAR)
     accuracy: dict = field(default_factory=dict)   # precision -> accuracy.Accuracy (set by codegen.build)
     no_float: str | None = None    # why the C code has no float variant (set by codegen.build), else None
+    float_blocked: str | None = None   # why the law has no accurate float form (`near_branch`), else None
 
     @property
     def verified(self) -> bool:
@@ -360,10 +364,12 @@ def build_model(design, analysis, report=None, precisions=("double", "float")) -
         H = _polish(sp.cancel(H) if not H.has(sp.Function) else H)
         model.mid.append(Branch(lo, hi, closed, H))
 
+    dF0 = prepare(sp.diff(pieces[0].expr, S))
+    if model.mid and model.mid[0].lo == 0:
+        near_branch(model, dF0, precisions)
     model.thresholds = {p: th for p, th in derive_thresholds(model.mid).items() if p in precisions}
 
     # tiny region: leading term of F' on the first piece
-    dF0 = prepare(sp.diff(pieces[0].expr, S))
     lead = _leading(dF0, S)
     tiny_ok = lead is not None and float(pieces[0].hi) > 2 * max(th[0] for th in model.thresholds.values()) * 2
     if tiny_ok:
@@ -482,11 +488,192 @@ def _series_tiny(next_term, prec, thresholds, mid):
     c, d = next_term
     while c * (math.sqrt(2) * tiny) ** d >= SERIES_REL[prec] and tiny / 10 >= TINY_FLOOR[prec]:
         lower = tiny / 10
-        if any(any(_magnitude_risks(br.expr, max(lower ** 2, br.lo_float), min(tiny ** 2, br.hi_float), FORMAT[prec]))
+        if any(any(_magnitude_risks(_risk_form(br), max(lower ** 2, br.lo_float), min(tiny ** 2, br.hi_float), FORMAT[prec]))
                for br in mid if br.lo_float < tiny ** 2):
             break
         tiny = lower
     return tiny, far
+
+
+#: The near branch (`near_branch`): a relative error of g above NEAR_NEEDED
+#: at rho = 2^-60 (what the validation allows: 1e-12 (double) / 1e-5 (float)
+#: of the result) calls for one; the mid form must reach NEAR_GOAL from the
+#: cut up, and the Taylor remainder, relative to H, NEAR_TRUNC below it.
+NEAR_NEEDED = {"double": 1e-12, "float": 1e-5}
+NEAR_GOAL = {"double": 2.0 ** -44, "float": 2.0 ** -18}
+NEAR_TRUNC = {"double": 2.0 ** -52, "float": 2.0 ** -26}
+#: longest Taylor polynomial of F' (terms in s) tried, and the balls covering [0, sqrt(cut)] for its remainder
+NEAR_TERMS, NEAR_BALLS = 128, 32
+
+
+def _taylor(expr, var, x):
+    """expr as a power series in var about the ball x (flint's arb_series,
+    flint.ctx.cap terms): coefficient i encloses expr^(i)(y)/i! for every y
+    in x.  ValueError for a construct it does not take or a value it cannot
+    bound (a division by a series whose first term may be 0)."""
+    from flint import arb, arb_series, fmpq
+
+    def const(v):
+        return arb_series([v])
+
+    def go(e):
+        if e == var:
+            return arb_series([x, 1])
+        if e.is_Rational or e.is_Float:
+            q = sp.Rational(e)
+            return const(arb(fmpq(int(q.p), int(q.q))))
+        if e is sp.pi:
+            return const(arb.pi())
+        if e is sp.E:
+            return const(arb(1).exp())
+        args = [go(a) for a in e.args]
+        if e.is_Add or e.is_Mul:
+            out = args[0]
+            for a in args[1:]:
+                out = out + a if e.is_Add else out * a
+            return out
+        if e.is_Pow:
+            b, p = args[0], e.exp
+            if p.is_Integer:
+                out = const(arb(1))
+                for _ in range(abs(int(p))):
+                    out = out * b
+                return 1 / out if p < 0 else out
+            if p == sp.Rational(1, 2):
+                return b.sqrt()
+            if p == -sp.Rational(1, 2):
+                return b.rsqrt()
+            if p.is_Rational:
+                return (b.log() * arb(fmpq(int(p.p), int(p.q)))).exp()
+        direct = {sp.exp: "exp", sp.log: "log", sp.sin: "sin", sp.cos: "cos", sp.atan: "atan", sp.erf: "erf"}
+        if type(e) in direct and len(args) == 1:
+            return getattr(args[0], direct[type(e)])()
+        if isinstance(e, (sp.tanh, sp.sinh, sp.cosh, sp.asinh)):
+            a = args[0]
+            if isinstance(e, sp.tanh):
+                return 1 - 2 / ((2 * a).exp() + 1)
+            if isinstance(e, sp.asinh):
+                return (a + (a * a + 1).sqrt()).log()
+            half = ((a.exp() - (-a).exp()) if isinstance(e, sp.sinh) else (a.exp() + (-a).exp())) * arb(0.5)
+            return half
+        raise ValueError(f"no series for {type(e).__name__}")
+    try:
+        out = go(expr)
+    except ZeroDivisionError as exc:
+        raise ValueError(str(exc)) from None
+    if not all(c.is_finite() for c in out.coeffs()):
+        raise ValueError("a coefficient is not bounded")
+    return out
+
+
+def _taylor_polynomial(dF, cut, rel):
+    """(P, bound, degree) for 0 < rho <= cut, or None: P the Taylor polynomial
+    of H = F'(s)/s in rho (Horner form), from the series of F' at 0 with
+    coefficients enclosed in Arb (F' odd: its even coefficients enclose 0,
+    those below the leading one are exactly 0), and `bound` >= |H - P| as a
+    function of rho: the coefficients' enclosure widths (and the even ones)
+    plus Lagrange's remainder M s^K, M >= |F'^(K)(y)/K!| over balls covering
+    [0, sqrt(cut)].  K grows until the bound at sqrt(cut) is below `rel` of
+    the polynomial there."""
+    import flint
+    from flint import arb, fmpq
+
+    ctx = flint.ctx
+    saved = ctx.prec, ctx.cap
+    cut_q = sp.Rational(cut)
+    try:
+        ctx.prec = 256
+        d = arb(fmpq(int(cut_q.p), int(cut_q.q))).sqrt().abs_upper()
+        balls = [arb(d * (2 * i + 1) / (2 * NEAR_BALLS), d / (2 * NEAR_BALLS)) for i in range(NEAR_BALLS)]
+        for K in range(16, NEAR_TERMS + 1, 8):
+            ctx.cap = K + 1
+            try:
+                c = _taylor(dF, S, arb(0)).coeffs()
+                remainder = [_taylor(dF, S, b).coeffs() for b in balls]
+            except ValueError:
+                return None
+            c += [arb(0)] * (K + 1 - len(c))
+            j = next((i for i, ci in enumerate(c[:K]) if not ci.is_zero()), None)
+            if j is None or j % 2 == 0 or not abs(c[j]) > 0 or any(abs(ci) > 0 for ci in c[j + 1:K:2]):
+                return None             # no leading term, F'(0) != 0, or F' not odd
+            kept = {i: sp.Rational(c[i].mid().str(30, radius=False, more=False)) for i in range(j, K, 2)}
+            width = {i: _sup(c[i] - arb(fmpq(int(q.p), int(q.q)))) for i, q in kept.items()}
+            width.update({i: _sup(c[i]) for i in range(j + 1, K, 2)})
+            width[K] = max(_sup(r[K]) if len(r) > K else sp.S.Zero for r in remainder)
+            dq = _sup(d)
+            at_d = abs(sum(q * dq ** i for i, q in kept.items()))     # |P| at the cut (`accuracy` checks every box)
+            if sum(w * dq ** i for i, w in width.items()) < at_d * sp.Rational(rel):
+                break
+        else:
+            return None
+    finally:
+        ctx.prec, ctx.cap = saved
+    order = sorted(kept)
+    poly = kept[order[-1]]
+    for i in order[-2::-1]:
+        poly = kept[i] + RHO * poly
+    poly = RHO ** ((j - 1) // 2) * poly
+    bound = sp.Add(*[w * RHO ** sp.Rational(i - 1, 2) for i, w in width.items() if w != 0])
+    return poly, bound, K - 1
+
+
+def _sup(x) -> sp.Rational:
+    """sup |x| over an arb ball, exactly (|midpoint| + radius, binary numbers)."""
+    if not x.is_finite():
+        return sp.oo
+    (m, e), (n, f) = x.mid().man_exp(), x.rad().man_exp()
+    return abs(sp.Integer(int(m)) * sp.Integer(2) ** int(e)) + sp.Integer(int(n)) * sp.Integer(2) ** int(f)
+
+
+def near_branch(model: LawModel, dF, precisions) -> None:
+    """Where the mid form H of the first piece loses digits as rho -> 0
+    (1/(1 + rho) - exp(-rho), atan(s)/s - 1/(1 + rho): a difference of
+    terms near 1), split its branch at a cut: below it, H is its Taylor
+    polynomial (`_taylor_polynomial`, remainder `bound` for `accuracy`).
+    A precision needs one when the mid form is not within NEAR_NEEDED at
+    rho = 2^-60; its cut is then the least rho = 2^-k from which the mid form
+    is within NEAR_GOAL on every box [x, 2x] (`accuracy.accurate_from`).
+    The polynomial, which every precision uses, must reach NEAR_TRUNC of
+    the strictest at the largest cut.  When only float cannot have one (it
+    needs a larger cut, beyond the series' reach), the model says so
+    (`float_blocked`): the code is then written without the float variant."""
+    from .accuracy import accurate_from          # (accuracy imports this module)
+    first = model.mid[0]
+    top = min(first.hi_float / 2, 4.0)
+    needed = {p: accurate_from(first.expr, p, top, NEAR_GOAL[p], NEAR_NEEDED[p]) for p in precisions}
+    needed = {p: c for p, c in needed.items() if c != 0.0}
+    if not needed:
+        return
+
+    def attempt(precs):                 # (the branch serves every precision: the remainder suits them all)
+        if not precs or any(needed[p] is None for p in precs):
+            return None
+        cut = max(needed[p] for p in precs)
+        return cut, _taylor_polynomial(dF, cut, min(NEAR_TRUNC[p] for p in precisions))
+    found = attempt(list(needed))
+    if (found is None or found[1] is None) and "float" in needed:
+        model.float_blocked = "f' cancels near e = 0 beyond what a Taylor polynomial at 0 covers in float"
+        found = attempt([p for p in needed if p != "float"])
+    if found is None or found[1] is None:
+        return
+    cut, (poly, bound, degree) = found
+    cut = sp.Rational(cut)
+    model.mid[0:1] = [Branch(first.lo, cut, True, poly, bound=bound),
+                      Branch(cut, first.hi, first.hi_closed, first.expr)]
+    model.notes.append(f"for rho <= {float(cut):.6g}, where the form of df/de2 loses digits, it is its "
+                       f"Taylor polynomial at 0 (degree {degree} in s; remainder bounded in Arb)")
+
+
+def _risk_form(br: Branch) -> sp.Expr:
+    """What `_magnitude_risks` walks for a mid branch: a near branch's
+    polynomial rho^k (q + rho (...)) as rho^k q (whose rho^k may underflow),
+    sparing the walk through its nested sums, a quadratic cost; their sizes
+    are bounded box by box in `accuracy`."""
+    if br.bound == 0:
+        return br.expr
+    factors = sp.Mul.make_args(br.expr)
+    sums = [f for f in factors if f.is_Add]
+    return sp.Mul(*[f for f in factors if not f.is_Add]) * (sums[0].as_coeff_Add()[0] if sums else 1)
 
 
 def _magnitude_risks(expr, rho_lo, rho_hi, fmt):
@@ -537,7 +724,7 @@ def derive_thresholds(mid) -> dict:
                 blo, bhi = br.lo_float, br.hi_float
                 if bhi < a or blo > b:
                     continue
-                over, under = _magnitude_risks(br.expr, max(a, blo), min(b, bhi), fmt)
+                over, under = _magnitude_risks(_risk_form(br), max(a, blo), min(b, bhi), fmt)
                 risky = risky or over or under
             if risky and k < 0:
                 bad_low = k
