@@ -573,7 +573,7 @@ def _taylor_polynomial(dF, cut, rel):
     those below the leading one are exactly 0), and `bound` >= |H - P| as a
     function of rho: the coefficients' enclosure widths (and the even ones)
     plus Lagrange's remainder M s^K, M >= |F'^(K)(y)/K!| over balls covering
-    [0, sqrt(cut)].  K grows until the bound at sqrt(cut) is below `rel` of
+    [0, sqrt(cut) (1 + 2^-40)].  K grows until the bound at sqrt(cut) is below `rel` of
     the polynomial there."""
     import flint
     from flint import arb, fmpq
@@ -583,7 +583,8 @@ def _taylor_polynomial(dF, cut, rel):
     cut_q = sp.Rational(cut)
     try:
         ctx.prec = 256
-        d = arb(fmpq(int(cut_q.p), int(cut_q.q))).sqrt().abs_upper()
+        # s up to sqrt(cut), and a little beyond: a rounded rho may pick this branch just above the cut
+        d = (arb(fmpq(int(cut_q.p), int(cut_q.q))).sqrt() * (1 + arb(2) ** -40)).abs_upper()
         balls = [arb(d * (2 * i + 1) / (2 * NEAR_BALLS), d / (2 * NEAR_BALLS)) for i in range(NEAR_BALLS)]
         for K in range(16, NEAR_TERMS + 1, 8):
             ctx.cap = K + 1
