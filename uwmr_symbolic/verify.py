@@ -31,11 +31,24 @@ DEFAULT_TIMEOUT = 60.0
 
 EXIT_OK, EXIT_REFUTED, EXIT_UNUSABLE, EXIT_INCONCLUSIVE = 0, 1, 2, 3
 SEARCH_ONLY = "not re-checked by the kernel (the search says "     # the start of `kernel_verdict`'s reason
-#: Largest denominator q of a rational exponent of f that the search takes: SymPy's
-#: polynomial algorithms work in x^(1/q), with degrees that grow with q (q = 100
-#: outlasts the default timeout, 10^4 overflows an integer conversion, and the
-#: 5*10^15 of a float 2/3 kills the process inside FLINT's gcd).
+#: Largest denominator q of a rational exponent of a monomial-like base (rho, e1,
+#: any homogeneous polynomial in e1, e2: s^d along the profile) that the search
+#: takes: SymPy's polynomial algorithms then work in s^(1/q), with degrees that
+#: grow with q (q = 100 outlasts the default timeout, 10^4 overflows an integer
+#: conversion, and the 5*10^15 of a float 2/3 kills the process inside FLINT's
+#: gcd).  (1 + rho)^(10^-20) stays one opaque generator and is decided.
 MAX_ROOT_DEGREE = 64
+
+
+def deep_roots(f: sp.Expr) -> list:
+    """The exponents of f beyond MAX_ROOT_DEGREE on a homogeneous polynomial base."""
+    from . import e1 as E1, e2 as E2
+    out = set()
+    for p in f.atoms(sp.Pow):
+        if p.exp.is_Rational and p.exp.q > MAX_ROOT_DEGREE and p.base.is_polynomial(E1, E2) \
+                and p.base.free_symbols and sp.Poly(p.base, E1, E2).is_homogeneous:
+            out.add(p.exp)
+    return sorted(out, key=lambda x: x.q)
 
 
 @dataclass
@@ -130,11 +143,10 @@ def verify_loaded(design: Design, timeout: float = DEFAULT_TIMEOUT, start: float
     (`kernel_verdict`) and bound (10) is checked only with a kernel-checked
     kf."""
     start = time.monotonic() if start is None else start
-    deep = sorted({e.exp for e in design.f.atoms(sp.Pow) if e.exp.is_Rational and e.exp.q > MAX_ROOT_DEGREE},
-                  key=lambda x: x.q)
+    deep = deep_roots(design.f)
     if deep:
-        why = (f"f has the exponent {deep[-1]}, whose denominator is above {MAX_ROOT_DEGREE}, the most the "
-               f"symbolic search takes: nothing was decided (a float exponent is read as its decimal, "
+        why = (f"f has a power of e1, e2 or rho with the exponent {deep[-1]}, whose denominator is above "
+               f"{MAX_ROOT_DEGREE}, the most the symbolic search takes: nothing was decided (a float exponent is read as its decimal, "
                f"0.7 as 7/10 but 2/3 as 3333333333333333/5000000000000000: write sp.Rational(2, 3))")
         return Report(design.path, design, {p: unknown(why) for p in PROPERTIES}, None,
                       seconds=time.monotonic() - start)
