@@ -885,7 +885,8 @@ def test_an_exponent_with_a_large_denominator_is_left_unknown_not_a_crash(tmp_pa
     the exponent and how to write 2/3 exactly, and the exit status is 3;
     with sp.Rational(2, 3) the same f is decided (P2 proved, P6 refuted:
     F'(s)/s ~ s^(-2/3)), and so is a large denominator on a base that is not
-    homogeneous, (1 + rho)^(1/500) - 1 (one opaque generator for SymPy)."""
+    homogeneous, (1 + rho)^(1/500) - 1 (one opaque generator for SymPy), or a
+    constant times the power alone (3 rho^1.0000000000000002: P1 refuted)."""
     import subprocess
     import sys
     float_path, exact_path = tmp_path / "float_power.py", tmp_path / "exact_power.py"
@@ -902,3 +903,5 @@ def test_an_exponent_with_a_large_denominator_is_left_unknown_not_a_crash(tmp_pa
     assert rep.properties["P2"].proved and rep.properties["P6"].refuted
     exact_path.write_text(head + "f = (1 + rho)**sp.Rational(1, 500) - 1\n")
     assert verify_design(exact_path).properties["P2"].proved
+    exact_path.write_text(head + "f = 3*rho**((0.1 + 0.2)/0.3)\n")       # c P^(p/q) alone: no sum to cancel
+    assert verify_design(exact_path).properties["P1"].refuted

@@ -36,13 +36,18 @@ SEARCH_ONLY = "not re-checked by the kernel (the search says "     # the start o
 #: takes: SymPy's polynomial algorithms then work in s^(1/q), with degrees that
 #: grow with q (q = 100 outlasts the default timeout, 10^4 overflows an integer
 #: conversion, and the 5*10^15 of a float 2/3 kills the process inside FLINT's
-#: gcd).  (1 + rho)^(10^-20) stays one opaque generator and is decided.
+#: gcd).  (1 + rho)^(10^-20) stays one opaque generator and is decided, and so
+#: is c rho^(p/q) alone.
 MAX_ROOT_DEGREE = 64
 
 
 def deep_roots(f: sp.Expr) -> list:
-    """The exponents of f beyond MAX_ROOT_DEGREE on a homogeneous polynomial base."""
+    """The exponents of f beyond MAX_ROOT_DEGREE on a homogeneous polynomial
+    base; none for f = c P^(p/q) alone (c rho^1.0000000000000002 is decided
+    at once: there is no sum to bring to a common denominator)."""
     from . import e1 as E1, e2 as E2
+    if f.as_coeff_Mul()[1].is_Pow:
+        return []
     out = set()
     for p in f.atoms(sp.Pow):
         if p.exp.is_Rational and p.exp.q > MAX_ROOT_DEGREE and p.base.is_polynomial(E1, E2) \
