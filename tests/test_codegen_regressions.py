@@ -62,7 +62,10 @@ def test_printer_power_of_a_sum(tmp_path):
     rows = _law_rows([(0.0, 1.0), (0.3, -0.7), (2.0, 3.0)])
     _, mod, _ = _check_all(path, tmp_path, rows, rows)
     assert mod.control(0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)[1] == pytest.approx(3 / 2 ** 1.5, rel=1e-15)
-    assert "(rho + 1.0)*sqrt(rho + 1.0)" in (tmp_path / "c1_rho_over_sqrt/c1_rho_over_sqrt.c").read_text()
+    # printed as the error analysis bounds it (the elimination of common subexpressions used to
+    # factor it back into (rho + 1.0)*sqrt(rho + 1.0), which the analysis never saw)
+    assert "(rho + 2.0)/(rho*sqrt(rho + 1.0) + sqrt(rho + 1.0))" in \
+        (tmp_path / "c1_rho_over_sqrt/c1_rho_over_sqrt.c").read_text()
 
 
 @pytest.mark.parametrize("stem, pairs", [("c2_log_squared", [(0.0, 2e154), (1e200, -1e200), (0.0, 1e300)]),
@@ -422,3 +425,30 @@ def test_a_law_that_cancels_at_zero_gets_its_taylor_polynomial_there(tmp_path):
         v, w, st = lib.run(_law_rows([(0.0, e2)]))
         assert st[0] == 0 and w[0] == pytest.approx(exact, rel=1e-13), e2
         assert mod.control(0.0, e2, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)[1] == pytest.approx(exact, rel=1e-13)
+
+
+@pytest.mark.parametrize("formula, dF", [
+    # F' = atan(10 s)/10 - s/(1 + 100 s^2) = 200/3 s^3 - ...: 1/10 is not binary, so Arb's s^1
+    # coefficient was a ball around 0, not an exact 0, and no polynomial was built (refused)
+    ("s*sp.atan(10*s)/10 - sp.log(1 + 100*rho)/100", "atan(10*x)/10 - x/(1 + 100*x**2)"),
+    # H = 2/(1 + rho/16) - 2 exp(-rho/16) ~ rho^2/128: the printer's common-subexpression pass factored
+    # 1e-104 out of the polynomial, and 1e-104 rho^2 underflowed at rho = 1e-122 (error 1, refused)
+    ("16*sp.log(1 + rho/16) + 16*sp.exp(-rho/16) - 16", "2*x/(1 + x**2/16) - 2*x*exp(-x**2/16)")])
+def test_cancelling_laws_with_scaled_constants_get_their_polynomial(tmp_path, formula, dF):
+    """Two more laws whose df/de2 cancels at 0 (see the test above), each
+    written and equal to F'(s) e2/s (mpmath, 80 digits) along e1 = 0."""
+    import mpmath
+    import sympy as sp
+    path = tmp_path / "scaled_cancel.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    f"s = sp.sqrt(rho)\nf = {formula}\n")
+    pairs = [(0.0, 1e-6), (1e-3, -2e-3), (0.1, 0.2), (0.0, 1.5), (3.0, 4.0), (-9.1e-90, 1.6e-61)]
+    lib, mod, _ = _check_all(path, tmp_path, _law_rows(pairs))
+    assert "Taylor polynomial at 0" in (tmp_path / "scaled_cancel" / "scaled_cancel.h").read_text()
+    x = sp.Symbol("x")
+    exact = sp.lambdify(x, sp.sympify(dF, locals={"x": x}), "mpmath")
+    for e2 in (1e-6, 1e-2, 0.3, 2.0):
+        with mpmath.workdps(80):
+            want = float(exact(mpmath.mpf(e2)))
+        v, w, st = lib.run(_law_rows([(0.0, e2)]))
+        assert st[0] == 0 and w[0] == pytest.approx(want, rel=1e-13), e2

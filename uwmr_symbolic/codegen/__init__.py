@@ -223,7 +223,7 @@ def validate_build(design_path, model, files, report=None):
     try:
         return validate(design, model, files, kf)
     except ValidationFailed as exc:
-        raise CodegenInvalid(exc.line) from None
+        raise CodegenInvalid(exc.line + (f" ({model.near_missing})" if model.near_missing else "")) from None
     except Exception as exc:  # noqa: BLE001 - code that could not be checked is not written
         first = (str(exc).splitlines() or [""])[0]
         raise CodegenInvalid(f"{model.stem}: the validation could not run: {type(exc).__name__}: {first}") from None

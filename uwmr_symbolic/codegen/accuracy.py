@@ -635,13 +635,30 @@ def _mid_box(expr, prec, a, b, bound=sp.S.Zero) -> float:
     return _up(_products([E_H], 1, u))          # g = e2 H: one product
 
 
-def accurate_from(expr, precision: str, top: float, goal: float, needed: float) -> float | None:
-    """For `law.near_branch`: 0.0 when g = e2 H, H printed as expr, is within
-    `needed` (`_mid_box`) for rho in [2^-61, 2^-60], or has no bound there
-    for another reason than a sum that may vanish (no cancellation at 0 to
-    remove); else the least rho = top 2^-k (k >= 0) such that it is
-    within goal on every box [x, 2x] from rho to top; None when not even
-    on [top/2, top]."""
+def cancels_at_zero(expr, rho: float = 2.0 ** -60, ratio: float = 2.0 ** 10) -> bool:
+    """For `law.near_branch`: does a sum in expr (a mid form H) lose more
+    than `ratio` in magnitude at rho, sum |terms| > ratio |sum|, in exact
+    (Arb) values?  Unlike an error bound, which underflow inflates as
+    well (rho^4 in float at 2^-60), this is the cancellation a series
+    removes."""
+    with arb_precision(256):
+        an = Analysis("double", {RHO: (_iv(rho, rho), arb(0), arb(0))})
+        try:
+            for node in sp.preorder_traversal(expr):
+                if node.is_Add and node.has(RHO):
+                    total = sum((_mag(an.value(t))[1] for t in node.args), arb(0))
+                    if not _mag(an.value(node))[0] * ratio > total:
+                        return True
+        except (Uncertified, Undefined):
+            return False
+    return False
+
+
+def accurate_from(expr, precision: str, top: float, goal: float) -> float | None:
+    """For `law.near_branch`: the least rho = x 2^-k below the highest
+    x = top 2^-j at which g = e2 H, H printed as expr, is within goal
+    (`_mid_box`) on [x/2, x], such that it is within goal on every box
+    [y, 2y] from rho to x; None when there is no such x above 2^-60."""
     def ok(a, b):                       # (boxes split as `_mid` splits them)
         bad = []
         try:
@@ -649,17 +666,14 @@ def accurate_from(expr, precision: str, top: float, goal: float, needed: float) 
         except Undefined:
             return False
     with arb_precision(128):
-        try:                            # only a cancellation (a large bound, a sum that may vanish) calls for one
-            if _mid_box(expr, precision, 2.0 ** -61, 2.0 ** -60) <= needed:
-                return 0.0
-        except MayVanish:
-            pass
-        except (Uncertified, Undefined):
-            return 0.0
         lo = top
+        while lo > 2.0 ** -60 and not ok(lo / 2, lo):     # (above it a form may overflow: not this concern)
+            lo /= 2
+        if lo <= 2.0 ** -60:
+            return None
         while lo > 2.0 ** -60 and ok(lo / 2, lo):
             lo /= 2
-    return None if lo == top else lo
+    return lo
 
 
 def _mid(model, prec, reg, tiny, far):

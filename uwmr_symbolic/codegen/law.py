@@ -105,6 +105,7 @@ class LawModel:
     accuracy: dict = field(default_factory=dict)   # precision -> accuracy.Accuracy (set by codegen.build)
     no_float: str | None = None    # why the C code has no float variant (set by codegen.build), else None
     float_blocked: str | None = None   # why the law has no accurate float form (`near_branch`), else None
+    near_missing: str | None = None    # the double form cancels near 0 and `near_branch` found no polynomial
 
     @property
     def verified(self) -> bool:
@@ -495,11 +496,9 @@ def _series_tiny(next_term, prec, thresholds, mid):
     return tiny, far
 
 
-#: The near branch (`near_branch`): a relative error of g above NEAR_NEEDED
-#: at rho = 2^-60 (what the validation allows: 1e-12 (double) / 1e-5 (float)
-#: of the result) calls for one; the mid form must reach NEAR_GOAL from the
-#: cut up, and the Taylor remainder, relative to H, NEAR_TRUNC below it.
-NEAR_NEEDED = {"double": 1e-12, "float": 1e-5}
+#: The near branch (`near_branch`): where the mid form cancels at 0, it must
+#: reach NEAR_GOAL (the validation allows 1e-12 (double) / 1e-5 (float) of the
+#: result) from the cut up, and the Taylor remainder, relative to H, NEAR_TRUNC below it.
 NEAR_GOAL = {"double": 2.0 ** -44, "float": 2.0 ** -18}
 NEAR_TRUNC = {"double": 2.0 ** -52, "float": 2.0 ** -26}
 #: longest Taylor polynomial of F' (terms in s) tried, and the balls covering [0, sqrt(cut)] for its remainder
@@ -509,23 +508,25 @@ NEAR_TERMS, NEAR_BALLS = 128, 32
 def _taylor(expr, var, x):
     """expr as a power series in var about the ball x (flint's arb_series,
     flint.ctx.cap terms): coefficient i encloses expr^(i)(y)/i! for every y
-    in x.  ValueError for a construct it does not take or a value it cannot
-    bound (a division by a series whose first term may be 0)."""
-    from flint import arb, arb_series, fmpq
+    in x; with x None, about 0 exactly (fmpq_series: rational constants and
+    the functions whose value at the series' first term is rational only).
+    ValueError for a construct it does not take or a value it cannot bound
+    (a division by a series whose first term may be 0)."""
+    from flint import arb, arb_series, fmpq, fmpq_series
 
-    def const(v):
-        return arb_series([v])
+    exact = x is None
+    series = fmpq_series if exact else arb_series
+
+    def const(q):
+        return series([fmpq(int(q.p), int(q.q)) if exact else arb(fmpq(int(q.p), int(q.q)))])
 
     def go(e):
         if e == var:
-            return arb_series([x, 1])
+            return series([0 if exact else x, 1])
         if e.is_Rational or e.is_Float:
-            q = sp.Rational(e)
-            return const(arb(fmpq(int(q.p), int(q.q))))
-        if e is sp.pi:
-            return const(arb.pi())
-        if e is sp.E:
-            return const(arb(1).exp())
+            return const(sp.Rational(e))
+        if (e is sp.pi or e is sp.E) and not exact:
+            return series([arb.pi() if e is sp.pi else arb(1).exp()])
         args = [go(a) for a in e.args]
         if e.is_Add or e.is_Mul:
             out = args[0]
@@ -535,7 +536,7 @@ def _taylor(expr, var, x):
         if e.is_Pow:
             b, p = args[0], e.exp
             if p.is_Integer:
-                out = const(arb(1))
+                out = const(sp.Integer(1))
                 for _ in range(abs(int(p))):
                     out = out * b
                 return 1 / out if p < 0 else out
@@ -544,24 +545,27 @@ def _taylor(expr, var, x):
             if p == -sp.Rational(1, 2):
                 return b.rsqrt()
             if p.is_Rational:
-                return (b.log() * arb(fmpq(int(p.p), int(p.q)))).exp()
-        direct = {sp.exp: "exp", sp.log: "log", sp.sin: "sin", sp.cos: "cos", sp.atan: "atan", sp.erf: "erf"}
-        if type(e) in direct and len(args) == 1:
-            return getattr(args[0], direct[type(e)])()
-        if isinstance(e, (sp.tanh, sp.sinh, sp.cosh, sp.asinh)):
+                return (b.log() * const(p)).exp()
+        names = {sp.exp: "exp", sp.log: "log", sp.sin: "sin", sp.cos: "cos", sp.atan: "atan", sp.erf: "erf",
+                 sp.tanh: "tanh", sp.sinh: "sinh", sp.cosh: "cosh", sp.asinh: "asinh"}
+        name = names.get(type(e))
+        if name is not None and len(args) == 1:
             a = args[0]
-            if isinstance(e, sp.tanh):
+            if exact or name not in ("tanh", "sinh", "cosh", "asinh"):
+                if not hasattr(a, name):
+                    raise ValueError(f"no exact series for {name}")
+                return getattr(a, name)()
+            if name == "tanh":
                 return 1 - 2 / ((2 * a).exp() + 1)
-            if isinstance(e, sp.asinh):
+            if name == "asinh":
                 return (a + (a * a + 1).sqrt()).log()
-            half = ((a.exp() - (-a).exp()) if isinstance(e, sp.sinh) else (a.exp() + (-a).exp())) * arb(0.5)
-            return half
+            return ((a.exp() - (-a).exp()) if name == "sinh" else (a.exp() + (-a).exp())) * arb(0.5)
         raise ValueError(f"no series for {type(e).__name__}")
     try:
         out = go(expr)
     except ZeroDivisionError as exc:
         raise ValueError(str(exc)) from None
-    if not all(c.is_finite() for c in out.coeffs()):
+    if not exact and not all(c.is_finite() for c in out.coeffs()):
         raise ValueError("a coefficient is not bounded")
     return out
 
@@ -589,8 +593,11 @@ def _taylor_polynomial(dF, cut, rel):
         for K in range(16, NEAR_TERMS + 1, 8):
             ctx.cap = K + 1
             try:
-                c = _taylor(dF, S, arb(0)).coeffs()
                 remainder = [_taylor(dF, S, b).coeffs() for b in balls]
+                try:                    # exact coefficients where flint has them: an exact 0 is decided
+                    c = [arb(q) for q in _taylor(dF, S, None).coeffs()]
+                except (ValueError, TypeError):
+                    c = _taylor(dF, S, arb(0)).coeffs()
             except ValueError:
                 return None
             c += [arb(0)] * (K + 1 - len(c))
@@ -631,20 +638,20 @@ def near_branch(model: LawModel, dF, precisions) -> None:
     (1/(1 + rho) - exp(-rho), atan(s)/s - 1/(1 + rho): a difference of
     terms near 1), split its branch at a cut: below it, H is its Taylor
     polynomial (`_taylor_polynomial`, remainder `bound` for `accuracy`).
-    A precision needs one when the mid form is not within NEAR_NEEDED at
-    rho = 2^-60; its cut is then the least rho = 2^-k from which the mid form
-    is within NEAR_GOAL on every box [x, 2x] (`accuracy.accurate_from`).
+    It is needed when a sum of the mid form loses more than 2^10 in
+    magnitude at rho = 2^-60 (`accuracy.cancels_at_zero`); the cut, per
+    precision, is then the least rho = 2^-k from which the mid form is
+    within NEAR_GOAL on every box [x, 2x] (`accuracy.accurate_from`).
     The polynomial, which every precision uses, must reach NEAR_TRUNC of
     the strictest at the largest cut.  When only float cannot have one (it
     needs a larger cut, beyond the series' reach), the model says so
     (`float_blocked`): the code is then written without the float variant."""
-    from .accuracy import accurate_from          # (accuracy imports this module)
+    from .accuracy import accurate_from, cancels_at_zero      # (accuracy imports this module)
     first = model.mid[0]
-    top = min(first.hi_float / 2, 4.0)
-    needed = {p: accurate_from(first.expr, p, top, NEAR_GOAL[p], NEAR_NEEDED[p]) for p in precisions}
-    needed = {p: c for p, c in needed.items() if c != 0.0}
-    if not needed:
+    if not cancels_at_zero(first.expr):
         return
+    top = min(first.hi_float / 2, 2.0 ** 26)     # (a scaled law, atan(s/100): its cancellation reaches rho ~ 10^4)
+    needed = {p: accurate_from(first.expr, p, top, NEAR_GOAL[p]) for p in precisions}
 
     def attempt(precs):                 # (the branch serves every precision: the remainder suits them all)
         if not precs or any(needed[p] is None for p in precs):
@@ -653,9 +660,13 @@ def near_branch(model: LawModel, dF, precisions) -> None:
         return cut, _taylor_polynomial(dF, cut, min(NEAR_TRUNC[p] for p in precisions))
     found = attempt(list(needed))
     if (found is None or found[1] is None) and "float" in needed:
-        model.float_blocked = "f' cancels near e = 0 beyond what a Taylor polynomial at 0 covers in float"
         found = attempt([p for p in needed if p != "float"])
+        if found is not None and found[1] is not None or "double" not in needed:
+            model.float_blocked = "f' cancels near e = 0 beyond what a Taylor polynomial at 0 covers in float"
     if found is None or found[1] is None:
+        if "double" in needed:
+            model.near_missing = ("df/de2 as written loses digits near e = 0, and no Taylor polynomial "
+                                  "with a bounded remainder was found to replace it there")
         return
     cut, (poly, bound, degree) = found
     cut = sp.Rational(cut)

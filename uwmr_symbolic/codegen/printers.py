@@ -202,8 +202,17 @@ class PyPrinter(NumPyPrinter):
 
 def cse_lines(expr, printer, declare, prefix="x"):
     """(assignments, final expression) for expr after common-subexpression
-    elimination; `declare(name, code)` formats one assignment."""
+    elimination; `declare(name, code)` formats one assignment.  The
+    elimination is kept only when substituting its names back gives expr
+    itself: SymPy's rewrites (factor_terms: 1e-104 rho^2 (... + 3.9e101),
+    which underflows; (rho + 1)^(3/2) as rho x0 + x0) would print another
+    expression than the one `accuracy` bounds."""
     symbols = sp.numbered_symbols(prefix)
     replacements, (reduced,) = sp.cse([expr], symbols=symbols, optimizations="basic")
+    back = reduced
+    for sym, sub in reversed(replacements):
+        back = back.xreplace({sym: sub})
+    if back != expr:
+        replacements, reduced = [], expr
     lines = [declare(printer._print(sym), printer.doprint(sub)) for sym, sub in replacements]
     return lines, printer.doprint(reduced)
