@@ -50,8 +50,8 @@ def deep_roots(f: sp.Expr) -> list:
         return []
     out = set()
     for p in f.atoms(sp.Pow):
-        if p.exp.is_Rational and p.exp.q > MAX_ROOT_DEGREE and p.base.is_polynomial(E1, E2) \
-                and p.base.free_symbols and sp.Poly(p.base, E1, E2).is_homogeneous:
+        if p.exp.is_Rational and p.exp.q > MAX_ROOT_DEGREE and p.base.has(E1, E2) \
+                and p.base.is_polynomial(E1, E2) and sp.Poly(p.base, E1, E2).is_homogeneous:
             out.add(p.exp)
     return sorted(out, key=lambda x: x.q)
 
@@ -151,8 +151,9 @@ def verify_loaded(design: Design, timeout: float = DEFAULT_TIMEOUT, start: float
     deep = deep_roots(design.f)
     if deep:
         why = (f"f has a power of e1, e2 or rho with the exponent {deep[-1]}, whose denominator is above "
-               f"{MAX_ROOT_DEGREE}, the most the symbolic search takes: nothing was decided (a float exponent is read as its decimal, "
-               f"0.7 as 7/10 but 2/3 as 3333333333333333/5000000000000000: write sp.Rational(2, 3))")
+               f"{MAX_ROOT_DEGREE}, the most the symbolic search takes: nothing was decided (a float exponent "
+               f"is read as its decimal, 0.7 as 7/10 but 2/3 as 3333333333333333/5000000000000000: write "
+               f"sp.Rational(2, 3))")
         return Report(design.path, design, {p: unknown(why) for p in PROPERTIES}, None,
                       seconds=time.monotonic() - start)
     try:
