@@ -50,7 +50,7 @@ from sympy.codegen.cfunctions import expm1, log1p
 from ..kernel.arb import (Iv, Undefined, _abs_like, _add, _increasing, _inv, _log, _mul, _point, _pow,
                           precision as arb_precision)
 from ..univariate import T
-from .law import LT, RHO, ST, LawModel, _taylor, plain
+from .law import LT, RHO, ST, LawModel, _taylor, plain, series_terms
 
 __all__ = ["Accuracy", "RegionAccuracy", "certify", "LIBM_U", "UNIT"]
 
@@ -749,17 +749,12 @@ def _series_error(dF, a, j, delta, prec) -> arb:
         return _mag(Iv(Q.lo - aj, Q.hi - aj))[1] / abs(aj)
     except (Uncertified, Undefined):
         pass
-    import flint
-    saved = flint.ctx.cap
     try:
-        flint.ctx.cap = j + 2
-        at0 = _taylor(dF, S, arb(0)).coeffs() + [arb(0)] * (j + 2)
-        ball = arb(delta / 2, delta / 2)
-        rem = (_taylor(dF, S, ball).coeffs() + [arb(0)] * (j + 2))[j + 1]
+        with series_terms(j + 2):
+            at0 = _taylor(dF, S, arb(0)).coeffs() + [arb(0)] * (j + 2)
+            rem = (_taylor(dF, S, arb(delta / 2, delta / 2)).coeffs() + [arb(0)] * (j + 2))[j + 1]
     except ValueError as exc:
         raise Uncertified(f"no series of F' at 0: {exc}") from None
-    finally:
-        flint.ctx.cap = saved
     if not all(c.is_zero() for c in at0[:j]):
         raise Uncertified("the series' first terms are not exactly 0 in Arb")
     # |F'(s) - a s^j| <= |F'^(j)(0)/j! - a| s^j + sup |F'^(j+1)/(j+1)!| s^(j+1) (Lagrange), over |a| s^j

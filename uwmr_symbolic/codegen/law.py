@@ -31,6 +31,7 @@ A design that is not radial (only generated with force=True) gets the plain
 derivative g = df/de2 (with SymPy's tanh rewriting), evaluated as written."""
 from __future__ import annotations
 
+import contextlib
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -570,6 +571,19 @@ def _taylor(expr, var, x):
     return out
 
 
+@contextlib.contextmanager
+def series_terms(n: int):
+    """`with series_terms(n):` flint's power series length (ctx.cap) is n,
+    restored after (as `kernel.arb.precision` does for Arb's precision)."""
+    import flint
+    saved = flint.ctx.cap
+    flint.ctx.cap = n
+    try:
+        yield
+    finally:
+        flint.ctx.cap = saved
+
+
 def _taylor_polynomial(dF, cut, rel):
     """(P, bound, degree) for 0 < rho <= cut, or None: P the Taylor polynomial
     of H = F'(s)/s in rho (Horner form), from the series of F' at 0 with
@@ -579,25 +593,23 @@ def _taylor_polynomial(dF, cut, rel):
     plus Lagrange's remainder M s^K, M >= |F'^(K)(y)/K!| over balls covering
     [0, sqrt(cut) (1 + 2^-40)].  K grows until the bound at sqrt(cut) is below `rel` of
     the polynomial there."""
-    import flint
     from flint import arb, fmpq
 
-    ctx = flint.ctx
-    saved = ctx.prec, ctx.cap
+    from ..kernel.arb import precision
     cut_q = sp.Rational(cut)
-    try:
-        ctx.prec = 256
+    with precision(256):
         # s up to sqrt(cut), and a little beyond: a rounded rho may pick this branch just above the cut
         d = (arb(fmpq(int(cut_q.p), int(cut_q.q))).sqrt() * (1 + arb(2) ** -40)).abs_upper()
+        dq = _sup(d)
         balls = [arb(d * (2 * i + 1) / (2 * NEAR_BALLS), d / (2 * NEAR_BALLS)) for i in range(NEAR_BALLS)]
         for K in range(16, NEAR_TERMS + 1, 8):
-            ctx.cap = K + 1
             try:
-                remainder = [_taylor(dF, S, b).coeffs() for b in balls]
-                try:                    # exact coefficients where flint has them: an exact 0 is decided
-                    c = [arb(q) for q in _taylor(dF, S, None).coeffs()]
-                except (ValueError, TypeError):
-                    c = _taylor(dF, S, arb(0)).coeffs()
+                with series_terms(K + 1):
+                    remainder = [_taylor(dF, S, b).coeffs() for b in balls]
+                    try:                # exact coefficients where flint has them: an exact 0 is decided
+                        c = [arb(q) for q in _taylor(dF, S, None).coeffs()]
+                    except (ValueError, TypeError):
+                        c = _taylor(dF, S, arb(0)).coeffs()
             except ValueError:
                 return None
             c += [arb(0)] * (K + 1 - len(c))
@@ -608,14 +620,11 @@ def _taylor_polynomial(dF, cut, rel):
             width = {i: _sup(c[i] - arb(fmpq(int(q.p), int(q.q)))) for i, q in kept.items()}
             width.update({i: _sup(c[i]) for i in range(j + 1, K, 2)})
             width[K] = max(_sup(r[K]) if len(r) > K else sp.S.Zero for r in remainder)
-            dq = _sup(d)
             at_d = abs(sum(q * dq ** i for i, q in kept.items()))     # |P| at the cut (`accuracy` checks every box)
             if sum(w * dq ** i for i, w in width.items()) < at_d * sp.Rational(rel):
                 break
         else:
             return None
-    finally:
-        ctx.prec, ctx.cap = saved
     order = sorted(kept)
     poly = kept[order[-1]]
     for i in order[-2::-1]:
@@ -657,13 +666,14 @@ def near_branch(model: LawModel, dF, precisions) -> None:
         if not precs or any(needed[p] is None for p in precs):
             return None
         cut = max(needed[p] for p in precs)
-        return cut, _taylor_polynomial(dF, cut, min(NEAR_TRUNC[p] for p in precisions))
+        poly = _taylor_polynomial(dF, cut, min(NEAR_TRUNC[p] for p in precisions))
+        return None if poly is None else (cut, poly)
     found = attempt(list(needed))
-    if (found is None or found[1] is None) and "float" in needed:
+    if found is None and "float" in needed:
         found = attempt([p for p in needed if p != "float"])
-        if found is not None and found[1] is not None or "double" not in needed:
+        if found is not None or "double" not in needed:
             model.float_blocked = "f' cancels near e = 0 beyond what a Taylor polynomial at 0 covers in float"
-    if found is None or found[1] is None:
+    if found is None:
         if "double" in needed:
             model.near_missing = ("df/de2 as written loses digits near e = 0, and no Taylor polynomial "
                                   "with a bounded remainder was found to replace it there")
