@@ -317,11 +317,11 @@ def build_library(src_dir, stem: str, work_dir, extra=("-O2",)) -> Compiled:
     out = work_dir / f"lib{stem}.so"
     _compile(src_dir, stem, out, [*STRICT, *extra, "-fPIC", "-shared"])
     lib = ctypes.CDLL(str(out))
+    f32 = has_float_variant(src_dir, stem)
     for name in ("uwmr_batch", "uwmr_batch_f32", "uwmr_batch_errors", "uwmr_batch_errors_f32", "uwmr_batch_track",
                  "uwmr_batch_track_f32", "uwmr_batch_step"):
-        if name.endswith("_f32") and not has_float_variant(src_dir, stem):
-            continue
-        getattr(lib, name).restype = None
+        if f32 or not name.endswith("_f32"):
+            getattr(lib, name).restype = None
     return Compiled(lib, c_identifier(stem), out)
 
 
