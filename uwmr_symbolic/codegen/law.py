@@ -490,7 +490,8 @@ def _series_tiny(next_term, prec, thresholds, mid):
     c, d = next_term
     while c * (math.sqrt(2) * tiny) ** d >= SERIES_REL[prec] and tiny / 10 >= TINY_FLOOR[prec]:
         lower = tiny / 10
-        if any(any(_magnitude_risks(_risk_form(br), max(lower ** 2, br.lo_float), min(tiny ** 2, br.hi_float), FORMAT[prec]))
+        if any(any(_magnitude_risks(_risk_form(br), max(lower ** 2, br.lo_float), min(tiny ** 2, br.hi_float),
+                                    FORMAT[prec]))
                for br in mid if br.lo_float < tiny ** 2):
             break
         tiny = lower
