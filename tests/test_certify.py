@@ -366,3 +366,36 @@ def test_a_tail_sum_with_a_common_exp_or_cosh_factor_is_signed_through_it():
         assert _claim(found[0]) == ("sign", True, sp.srepr(sp.Integer(R)), "oo", False, True, 1, False)
     # a sum whose common factor is no exp, cosh or sinh is left as it is
     assert certify._shared_exp(S ** 2 * sp.log(S) - S ** 2, S) is None
+
+
+def test_a_rational_function_of_a_log_is_signed_by_sturm_in_the_log():
+    """1 - L/(1 + L) >= 0 on [4, oo), L = log(1 + s^2): its form in t = 1/s is
+    oo/oo at t = 0, but as G(U) = 1 - U/(1 + U) it is a rational function,
+    >= 0 for U >= a (Sturm), a = 45/16 a rational just below L(4) = log 17
+    = 2.833, and L - a > 0 on [4, oo) (`sign_by_substitution`).  1/2 -
+    L/(1 + L) is false at s = 4 (L/(1 + L) = 0.739): no theorem."""
+    L = sp.log(1 + S ** 2)
+    theorems, why = sign_theorems(1 - L / (1 + L), S, 4, sp.oo, lo_open=False, strict=False)
+    assert theorems is not None, why
+    th = theorems[0]
+    while th.rule != "sign_by_substitution":
+        assert th.rule in ("sign_by_rewrite", "weaken", "join"), th.rule
+        th = th.premises[0]
+    outer, bound = th.premises
+    u = sp.Symbol("u", nonnegative=True)
+    a = sp.parse_expr(outer.claim.lo)
+    assert outer.claim.expr == sp.srepr(1 - u / (1 + u)) and outer.rule == "sign_by_sturm"
+    assert a.is_Rational and 2.8 < a <= sp.log(17) and bound.claim.expr == sp.srepr(L - a)
+    assert sign_theorems(sp.Rational(1, 2) - L / (1 + L), S, 4, sp.oo, lo_open=False, strict=False)[0] is None
+
+
+def test_growth_of_a_rational_function_of_a_log():
+    """L^2/(1 + L) -> oo: it stays above L/2 once U^2/(1 + U) - U/2 =
+    U (U - 1)/(2 (1 + U)) >= 0, i.e. for L >= 1 (Sturm in U), and L/2 ->
+    oo through the log (`diverges_by_comparison`).  L/(1 + L) < 1 has no
+    divergence theorem."""
+    from uwmr_symbolic.certify import growth_theorems
+    L = sp.log(1 + S ** 2)
+    (th,) = growth_theorems(L ** 2 / (1 + L), S)
+    assert th.rule == "diverges_by_comparison" and th.premises[1].claim.expr == sp.srepr(L / 2)
+    assert growth_theorems(L / (1 + L), S) == []

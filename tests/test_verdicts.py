@@ -285,6 +285,40 @@ def test_nested_logs_are_proved_by_the_kernel(tmp_path):
     assert "sign_below_product" in rules
 
 
+@pytest.mark.parametrize("f, dF, p3", [
+    # L = log(1 + s^2), F = G(L): G(u) = u^2/(1 + u), G' = (2u + u^2)/(1 + u)^2 in [0, 1) for
+    # u >= 0 and L' = 2s/(1 + s^2) in [0, 1], so 0 < F' < 1 (kf finite, P1, P5); F'/s =
+    # G'(L) 2/(1 + s^2) -> 0 at 0, bounded (P6); F >= L - 1 -> oo (P3); F smooth in rho (P7),
+    # F'(0) = 0 (P8).  kf = max F', no closed form: the maximum by zooming.
+    ("log(1 + rho)**2/(1 + log(1 + rho))",
+     lambda s, L: (2 * L + L ** 2) / (1 + L) ** 2 * 2 * s / (1 + s ** 2), "proved"),
+    # G(u) = u^2/(2 + u) (G' = (u^2 + 4u)/(2 + u)^2 in [0, 1)) plus rho/(1 + rho) (slope
+    # 2s/(1 + s^2)^2 >= 0): as above, F >= L/2 - 2 + 0 -> oo.
+    ("log(1 + rho)**2/(2 + log(1 + rho)) + rho/(1 + rho)",
+     lambda s, L: (L ** 2 + 4 * L) / (2 + L) ** 2 * 2 * s / (1 + s ** 2) + 2 * s / (1 + s ** 2) ** 2, "proved"),
+    # G(u) = u/(1 + u) < 1: F is bounded, P3 fails (F -> 1); G' = 1/(1 + u)^2 in (0, 1], the rest
+    # as in the first row.
+    ("log(1 + rho)/(1 + log(1 + rho))",
+     lambda s, L: 1 / (1 + L) ** 2 * 2 * s / (1 + s ** 2), "refuted"),
+])
+def test_rational_functions_of_a_log_are_decided_by_the_kernel(tmp_path, f, dF, p3):
+    """F = G(L), G rational: F'(1/t) is oo/oo at t = 0, so the kernel's bound
+    on the tail and P3's divergence go through U = L (`sign_by_substitution`,
+    Sturm in U), as checked by the kernel: every verdict of the row, kf
+    enclosed around the maximum found by zooming (50 digits)."""
+    from uwmr_symbolic.verify import verify_design
+    path = tmp_path / "log_rational.py"
+    path.write_text(f'import sympy as sp\nfrom sympy import log\ne1, e2 = sp.symbols("e1 e2", real=True)\n'
+                    f'rho = e1**2 + e2**2\nf = {f}\n')
+    report = verify_design(path, timeout=120)
+    want = {f"P{i}": "proved" for i in range(1, 9)} | {"P3": p3}
+    assert {n: v.status.value for n, v in report.properties.items()} == want
+    _, top = _sup_by_zooming(lambda s: dF(s, mp.log(1 + s ** 2)))
+    with mp.workdps(50):
+        lo, hi = (mp.mpf(x.numerator) / x.denominator for x in report.kf.kernel_bounds)
+        assert lo <= top <= hi and hi - lo < 1e-6 * top
+
+
 def _walk(theorems):
     for t in theorems:
         yield t

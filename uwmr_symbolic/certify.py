@@ -410,6 +410,12 @@ class Prover:
                 return self._rewritten(e, self.factored[e], var, I, want, strict, depth, near)
             except NoProof as exc:
                 last = exc
+        if hi == OO and not near and e.has(sp.log, sp.asinh):
+            try:                                # rational in a log: Sturm in U = log(...), before costlier forms
+                return self._substituted(e, var, I, want, strict, logs_only=True)
+            except NoProof as exc:
+                if exc is self.spent:
+                    raise
         if hi != OO:
             try:                                # defined on the closure: one cover
                 return self._weaken(_cover(e, var, lo, hi, want, strict), I, strict)
@@ -600,13 +606,16 @@ class Prover:
         (R0 = `tail_start`): kf - F' for F = tanh(s^2) + log(1 + s^2), whose F' =
         2 s sech(s^2)^2 + 2 s/(s^2 + 1) has no such cover, and whose F'' the
         sign rules do not sign within a budget."""
-        from .univariate import split_terms, tail_box, tail_start, term_bound_on_tail
+        from .univariate import _log_factors, split_terms, tail_box, tail_start, term_bound_on_tail
         lo, _, lo_open, _ = I
         c, rest = e.as_independent(var, as_Add=True)
         terms = split_terms(rest)              # (k - F'/s: the 1/s multiplied in)
+        R = tail_start(lo)                      # (OverflowError where lo is beyond the doubles: no proof)
         if not (c.is_Rational and c > 0 and len(terms) > 1):
             raise NoProof("{} is not c - (a_1 + ... + a_k), c > 0", e)
-        R = tail_start(lo)                      # (OverflowError where lo is beyond the doubles: no proof)
+        whole = sp.factor_terms(rest)           # A(s) G(L), G rational in a log L: one term (its sum bounded)
+        if whole.is_Mul and _log_factors(-whole, var, R) is not None:
+            terms = (whole,)
         if tail_box(e, var, R) is not None and not _essential_at_zero(_tail_form(e, var)):
             raise NoProof("{} is not c - (a_1 + ... + a_k), c > 0, with a blind tail", e)
         for R in (R, 4 * R, 16 * R, 64 * R):   # (s exp(-s^4/10^4) log(1 + s^2/4) falls beyond 16 only)
@@ -653,26 +662,28 @@ class Prover:
 
     def _below_product(self, e, var, I, depth, near):
         """c - A B >= 0 (`sign_below_product`, see `_product_split`) from
-        c - A >= 0, B >= 0 and 1 - B >= 0, the last by the same rule again
+        c/b - A >= 0, B >= 0 and b - B >= 0 (b the least of 1, 2, 4, ...
+        that B is not seen above), the last by the same rule again
         or over one denominator (for B = k/Y^n, (Y^n - k)/Y^n): F' =
         2 s/(s^2 + 1) times factors 1/(1 + log(...)) <= 1 stays below c on
         [R, oo) where 2 s/(s^2 + 1) does (a nest of logs, whose forms in
         t = 1/s are not defined at t = 0)."""
         c, A, B = _product_split(e, var)
-        if _against(c - A, var, I, 1) or _against(1 - B, var, I, 1):
-            raise NoProof("A <= {} or B <= 1 fails inside {}", c, I)
+        b = next((sp.Integer(2) ** k for k in range(21) if not _against(2 ** k - B, var, I, 1)), None)
+        if b is None or _against(c / b - A, var, I, 1):
+            raise NoProof("A <= {}/b or B <= b fails inside {}", c, I)
         sub = lambda x: self.prove(x, var, I, 1, False, depth, near)    # noqa: E731
-        below = sub(c - A)
+        below = sub(c / b - A)
         last = None
         if not (len(sp.Mul.make_args(B)) == 1 and B.is_Pow and B.exp.is_negative):    # 1/Y^n: at once below
             try:
-                last = sub(1 - B)
+                last = sub(b - B)
             except NoProof as exc:
                 if exc is self.spent:
                     raise
         if last is None:
-            last = self._rewritten(1 - B, sp.together(1 - B), var, I, 1, False, depth, near)
-        return _rule(K.sign_below_product, below, sub(B), last, expr=e, a=c, b=1)
+            last = self._rewritten(b - B, sp.together(b - B), var, I, 1, False, depth, near)
+        return _rule(K.sign_below_product, below, sub(B), last, expr=e, a=c / b, b=b)
 
     def _above_floor(self, e, var, I, strict, depth, near):
         """e > 0 where a term t = M G(Y) of e, G increasing, M >= 0, and a
@@ -838,18 +849,29 @@ class Prover:
             out = _rule(K.join, self._weaken(out, _ends(out), strict), self._weaken(p, _ends(p), strict))
         return out
 
-    def _substituted(self, e, var, I, want, strict):
+    def _substituted(self, e, var, I, want, strict, logs_only=False):
         """e = G(u) for u the argument of a function in e that occurs in e
         more than once (u - sin(u)): G signed in its own variable on J =
         <u(lo), u(hi)> and u(x) in J on I (`sign_by_substitution`).  Interval
-        arithmetic on G(U) has no dependency between the two copies of u."""
+        arithmetic on G(U) has no dependency between the two copies of u.
+        On a tail, u may also be a log(...) (or asinh) itself when G is
+        rational in U (1 - L/(1 + L), L = log(1 + s^2)): Sturm signs G on
+        [a, oo), a a rational at or below u(lo), where a cover of the form
+        in t = 1/s meets oo/oo at t = 0 (`logs_only`: only these)."""
         lo, hi, lo_open, hi_open = I
-        inner = {a for g in e.atoms(sp.Function) for a in g.args if a.has(var) and a != var}
-        for u in sorted(inner, key=sp.count_ops, reverse=True):
+        inner = set() if logs_only else {a for g in e.atoms(sp.Function) for a in g.args if a.has(var) and a != var}
+        logs = {g for g in e.atoms(sp.log, sp.asinh) if g.has(var)} if hi == OO else set()
+        for u, is_log in [(u, False) for u in sorted(inner, key=sp.count_ops, reverse=True)] + \
+                [(u, True) for u in sorted(logs, key=sp.count_ops, reverse=True)]:
             G = replaced(e, u, _U)
-            if G.has(var) or G.count(_U) < 2 or G.subs(_U, u) != e:
+            if G.has(var) or G.count(_U) < 2 or G.subs(_U, u) != e or is_log and not K._rational_over_q(G, _U):
                 continue
             a, b = (u.subs(var, x) if x != OO else OO for x in (lo, hi))
+            if is_log:                  # J's lower end a rational at or below u(lo)
+                try:
+                    a = K._rational_beyond(a, -1)
+                except K.KernelError:
+                    continue
             if any(v.free_symbols or v.has(sp.nan, sp.zoo) or v == -OO for v in (a, b)) or not K._lt(a, b):
                 continue
             J = (a, b, lo_open, hi_open)
@@ -1066,7 +1088,8 @@ def _sum_groups(e, var, I, want) -> list:
     its terms, or, where a term or the constant has the other sign
     somewhere, the rational terms together (9 s^2 - 20 s + 9, signed by
     Sturm) and the others one by one (the logs' terms of a numerator put over
-    one denominator), or, when only the constant has the other sign, the
+    one denominator), or the terms that are functions of one log(...) L
+    alone together (L^2/(2 + L) - L/2, signed by Sturm in L), or, when only the constant has the other sign, the
     constant with one term (s^(3/2) + (sqrt(s^2 + 1) - 1)); NoProof when a
     term with the other sign is left alone."""
     terms = [t for t in e.args if t.has(var)]
@@ -1082,6 +1105,12 @@ def _sum_groups(e, var, I, want) -> list:
     others = [t for t in terms if not t.is_rational_function(var)]
     if others and not any(_against(t, var, I, want) for t in others) and not _against(sp.Add(*rational), var, I, want):
         return [sp.Add(*rational), *others]
+    for g in sorted((g for g in e.atoms(sp.log, sp.asinh) if g.has(var)), key=sp.count_ops):
+        in_log = [t for t in terms if not replaced(t, g, _U_REAL).has(var)]     # rational in L = g: Sturm in L
+        rest = [t for t in terms if t not in in_log]
+        if len(in_log) > 1 and K._const_sign(constant) != -want and \
+                not any(_against(t, var, I, want) for t in [sp.Add(*in_log), *rest]):
+            return [sp.Add(*in_log), *rest]
     for i, t in enumerate(terms if clear and len(terms) > 1 else ()):  # s^(3/2) + (sqrt(s^2 + 1) - 1)
         if set(_signs(t + constant, var, I, want)) == {1}:      # seen to have the sign, not just not against
             return [t + constant, *terms[:i], *terms[i + 1:]]
@@ -1510,7 +1539,7 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
     leading = _leading_terms(terms, var)
     prover = Prover(_scaled(WORK, F))
     subsets = [sp.Add(*ts) for ts in (algebraic, leading, transcendental) if ts and len(ts) < len(terms)]
-    for G0 in floors + subsets + [*gaps]:
+    for G0 in floors + subsets + [*gaps] + _log_powers(F, var):
         G = _as_tanh(G0)
         nest = _outer(G, var) is not None
         for R in starts if nest or _plausible(G - 2 * G.subs(var, starts[0]) - 1, var, 10 ** 6, 1) else ():
@@ -1529,6 +1558,25 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
                 if exc is prover.spent:
                     return []
     return []
+
+
+def _log_powers(F, var) -> list:
+    """For F = G(L) + H, G rational in U = L (a log(...) or asinh), G(U) ~
+    c U^d as U -> oo, c > 0 and d >= 1, H the terms of F not rational in L
+    alone (0 too): [c/2 L^d], which diverges with L and stays below F far
+    out where H >= 0 (L^2/(1 + L): L/2), for `_diverges_above`."""
+    out = []
+    for g in sorted((g for g in F.atoms(sp.log, sp.asinh) if g.has(var)), key=sp.count_ops):
+        G = sp.Add(*[t for t in sp.Add.make_args(F) if not replaced(t, g, _U_REAL).has(var)])
+        G = replaced(G, g, _U_REAL)
+        if not G.has(_U_REAL) or not K._rational_over_q(G, _U_REAL):
+            continue
+        num, den = (sp.Poly(p, _U_REAL) for p in sp.fraction(sp.cancel(G)))
+        d = num.degree() - den.degree()
+        c = num.LC() / den.LC()
+        if d >= 1 and c > 0:
+            out.append(c / 2 * g ** d)
+    return out
 
 
 def _spread(e, var):

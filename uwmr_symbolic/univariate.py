@@ -1020,8 +1020,8 @@ def _termwise_tail(expr, var, lo, R):
                           if v is not None)
         except (Undefined, ValueError):
             return None, None
-        total = Fraction(0)
-        for term in split_terms(expr):
+        total = Fraction(0)     # (a product with a factor rational in a log: whole, its sum bounded, not its terms)
+        for term in (expr,) if expr.is_Mul and _log_factors(expr, var, r) else split_terms(expr):
             bound = term_bound_on_tail(term, var, r)
             if bound is None:
                 break
@@ -1067,12 +1067,35 @@ def bounded_factors(term, var, R):
         box = tail_box(f, var, R) if f.has(var) else None
         (inside if box is not None and _lo(box) > 0 else rest).append(f)
     if not inside or not any(f.has(var) for f in rest):
-        return None
+        return _log_factors(term, var, R)
     B = sp.Mul(*inside)
     box = tail_box(B, var, R)
     if box is None or _lo(box) < 0 or _hi(box) <= 0:
         return None
     return sp.Mul(*rest), B, sp.Integer(2) ** math.ceil(math.log2(_hi(box)))
+
+
+def _log_factors(term, var, R):
+    """`bounded_factors`' (A, B, b) with B the factors of term that are a
+    rational function G of one L = log(...) (or asinh): L/(1 + L) in
+    4 s L/((1 + s^2)(1 + L)), whose tail form is oo/oo at t = 0.  0 <= G(U)
+    <= b for U >= a, a rational at or below L(R) (the kernel's Sturm rule,
+    as the proof will; L taken increasing: the proof shows L >= a)."""
+    for g in sorted((g for g in term.atoms(sp.log, sp.asinh) if g.has(var)), key=sp.count_ops):
+        group = [f for f in term.args if f.has(g) and not replaced(f, g, U).has(var)]
+        rest = [f for f in term.args if f not in group]
+        G = replaced(sp.Mul(*group), g, U)
+        if not group or not any(f.has(var) for f in rest) or not K._rational_over_q(G, U):
+            continue
+        try:
+            a = K._rational_beyond(g.subs(var, R), -1)
+            top = max(value_at(G, U, a + x, prec=64).upper_fraction() for x in (0, 1, 16, 10 ** 6))
+        except (K.KernelError, Undefined, ValueError, TypeError):
+            continue
+        b = sp.Integer(2) ** max(0, math.ceil(math.log2(top))) if top > 0 else sp.Integer(1)
+        if _sturm_nonnegative(G, U, a) and _sturm_nonnegative(b - G, U, a):
+            return sp.Mul(*rest), sp.Mul(*group), b
+    return None
 
 
 def term_bound_on_tail(term, var, R) -> tuple[Fraction, str] | None:
@@ -1090,6 +1113,8 @@ def term_bound_on_tail(term, var, R) -> tuple[Fraction, str] | None:
     if split is not None:
         A, _, b = split
         a = term_bound_on_tail(A, var, R)
+        if a is not None and a[0] >= 0 and _sturm_nonnegative(A, var, R):      # (rational: no pool spent)
+            return a[0] * Fraction(b.p, b.q), "product"
         with exploring():
             if a is not None and a[0] >= 0 and \
                     sign_theorems(A, var, R, sp.oo, lo_open=False, strict=False, work=TAIL_WORK)[0] is not None:
@@ -1107,6 +1132,17 @@ def term_bound_on_tail(term, var, R) -> tuple[Fraction, str] | None:
                                                      work=TAIL_WORK)[0] is not None:
             return Fraction(0), "below"
     return None
+
+
+def _sturm_nonnegative(e, var, R) -> bool:
+    """e >= 0 on [R, oo) by the kernel's Sturm rule (e rational over Q)."""
+    if not K._rational_over_q(e, var):
+        return False
+    try:
+        K.sign_by_sturm(expr=e, var=var, lo=R, hi=sp.oo, lo_open=False, hi_open=True, want=1, strict=False)
+        return True
+    except K.KernelError:
+        return False
 
 
 def _seen_falling(e, var, R) -> bool:
