@@ -208,11 +208,29 @@ def _link_p1_p6(name, F, claims) -> list[str]:
               and claims[0].lo == claims[1].lo == "Integer(0)" and claims[1].other == "Integer(0)"
               and got[2] == ("sup_upper", _srepr(dF if signed else sp.Abs(dF)), on))
     else:
-        ok = (len(claims) == 2 and got[0] == ("sign", _srepr(dF), on) and claims[0].want == 1
+        ok = (len(claims) in (2, 4) and got[0] == ("sign", _srepr(dF), on) and claims[0].want == 1
               and got[1] == ("sup_upper", _srepr(dF / S), on) and parse(claims[1].other).is_positive)
+        if ok and len(claims) == 2:
+            return [ORIGIN]
+        ok = ok and _at_origin(F, dF, claims[2:])
     if not ok:
         raise CertificateError(f"{name}: the kernel's conclusions are not the ones {name} needs for this f")
     return []
+
+
+#: what P5 and P6 need at the origin beside the signs on (0, oo): df/de1 exists there (f = |e|
+#: has F' = 1 > 0 and F'/s = 1/s, and Piecewise((1, Eq(rho, 0)), (rho, True)) F' = 2s, F'/s = 2)
+ORIGIN = "df/de1 exists on R^2 (F'(0+) = 0 at the origin)"
+
+
+def _at_origin(F, dF, claims) -> bool:
+    """The claims are F and F' continuous at 0+ (`continuous_at_end`: the
+    one-sided limits are the values at 0) with F'(0+) = 0: then F has the
+    one-sided derivative 0 at s = 0 (mean value theorem), so f = F(|e|)
+    is differentiable at the origin with gradient 0."""
+    return len(claims) == 2 and [(c.kind, c.expr, c.var, c.lo) for c in claims] == [
+        ("limit", _srepr(F), _srepr(S), "Integer(0)"), ("limit", _srepr(dF), _srepr(S), "Integer(0)")] \
+        and claims[1].other == "Integer(0)"
 
 
 def _link_smooth(name, F, claims) -> list[str]:
@@ -487,14 +505,16 @@ def _link_reduced(name, F, dF, claims, k, bounds) -> list[str]:
         raise CertificateError(f"{name}: the kernel's conclusion is not {'F' if name == 'P3' else 'dF/ds'} > 0 "
                                "on (0, oo) for this f")
     rest = [(c.kind, c.expr, c.var, c.lo) for c in claims[1:]]
-    if name == "P3" and rest and not (len(rest) == 1 and rest[0][:3] == ("diverges", _srepr(F), _srepr(S))):
+    if not rest:            # the other half of the property is the search's (also where a note says so)
+        return gap + [DIVERGES if name == "P3" else ORIGIN]
+    if name == "P3" and not (len(rest) == 1 and rest[0][:3] == ("diverges", _srepr(F), _srepr(S))):
         raise CertificateError("P3: the second conclusion is not F(s) -> oo")
-    if name == "P5" and rest and not (
-            len(rest) == 2 and [r[:4] for r in rest] == [("limit", _srepr(F), _srepr(S), "Integer(0)"),
-                                                         ("limit", _srepr(dF), _srepr(S), "Integer(0)")]
-            and claims[2].other == "Integer(0)"):
+    if name == "P5" and not _at_origin(F, dF, claims[1:]):
         raise CertificateError("P5: the further conclusions are not F, F' continuous at 0+ with F'(0+) = 0")
     return gap
+
+
+DIVERGES = "F(s) -> oo as s -> oo"
 
 
 # ---------------------------------------------------------------- refutations
@@ -895,7 +915,8 @@ def _check_property(name, entry, f) -> PropertyCheck:
         elif pc.status == "proved":
             bounds = None if name != "kf" else (parse(entry["exact"]),) * 2 if entry["exact"] is not None \
                 else (parse(entry["lower"]), parse(entry["upper"]))
-            pc.unchecked += [u for u in _link(name, f, theorems, bounds) if u not in pc.unchecked]
+            pc.unchecked += [u for u in _link(name, f, theorems, bounds)     # (a note may say more)
+                             if not any(x.startswith(u) for x in pc.unchecked)]
             if name not in ("P2", "P4"):        # the link differentiates F itself
                 pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
         else:

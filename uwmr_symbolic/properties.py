@@ -607,7 +607,11 @@ def verify_p6(a: Analysis) -> Verdict:
     shown = str(h) if len(str(h)) <= 400 else f"F'(s)/(k s), s = |e| ({sp.count_ops(h)} operations; in the JSON report)"
     v = proved(f"k = {k} ({smallest}), h = F'(s)/(k s) in [0, 1]: h(e1, e2) = {shown}",
                k=str(k), k_float=float_of(k), h=str(h))
-    return _lemmas(v, v, "0 <= h <= 1 (the bound of F'(s)/s is the search's)", lambda: theorems)
+    # df/de1 at the origin: F, F' continuous at 0+ with F'(0+) = 0 (P5's lemmas; for a Piecewise F
+    # they end with the continuity on (0, oo) that `_piecewise_p6` gave)
+    origin = origin_theorems(a.kernel_F, S, a.profile.ends) if theorems else []
+    return _lemmas(v, v, "0 <= h <= 1 (the bound of F'(s)/s is the search's)",
+                   lambda: theorems[:2] + origin if origin else theorems)
 
 
 def _p6_theorems(a: Analysis, k, exact=False) -> list:
