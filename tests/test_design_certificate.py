@@ -287,6 +287,22 @@ def test_cache_hit_is_used_only_when_its_certificate_rechecks(tmp_path):
     assert third["cached"] is False and third["properties"]["P3"]["verdict"] == "proved"
 
 
+def test_trust_search_takes_no_verdict_resting_on_the_search_from_the_cache(tmp_path):
+    """With --trust-search a verdict resting on the search counts, but an
+    entry's word that the search found it is not the search: such an entry
+    (here P7 given a note, kernel summary to match) is verified again."""
+    assert check_file(str(DESIGN1), 60, str(tmp_path), kernel_only=False)["cached"] is False
+    assert check_file(str(DESIGN1), 60, str(tmp_path), kernel_only=False)["cached"] is True
+    cache = ResultCache(tmp_path)
+    path = cache.path_for(design_key(load_design(DESIGN1)) | {"trust_search": True})
+    entry = json.loads(path.read_text())
+    entry["result"]["certificate"]["properties"]["P7"]["unchecked"] = ["F'' continuous (the search's)"]
+    entry["result"]["kernel"] = {"checked": ["P1", "P2", "P3", "P4", "P5", "P6", "P8", "kf"], "search": ["P7"]}
+    path.write_text(json.dumps(entry))
+    again = check_file(str(DESIGN1), 60, str(tmp_path), kernel_only=False)
+    assert again["cached"] is False and "P7" in again["kernel"]["checked"]
+
+
 def test_cache_hit_derives_kf_gains_replay_and_exit_status_again(tmp_path):
     """What a certificate does not hold is never served as stored: design 2's
     lemniscate scenario fails bound (10) by 1.77e-5 (kf = 1 exactly, W bound

@@ -76,8 +76,9 @@ def served(hit: dict, design, kernel_only: bool = True) -> dict | None:
     cached verdicts (each the certificate's, or, with `kernel_only`, unknown
     where the kernel did not check it), and its kf must be the one the kernel
     checked (exact, enclosed, or infinite by a checked witness; one that
-    rests on the search is shown, not used, by default, and computed again
-    with --trust-search).  Bound (10) per scenario, the
+    rests on the search is shown, not used, by default; with --trust-search
+    a result with any verdict resting on the search is computed again: what
+    an entry says the search found could be anybody's).  Bound (10) per scenario, the
     proof replay (11)-(19) and the exit status are derived again from the
     certificate and the design, so a cache entry is never taken on trust."""
     cert = hit.get("certificate")
@@ -86,6 +87,8 @@ def served(hit: dict, design, kernel_only: bool = True) -> dict | None:
     except certificates.CertificateError:
         return None
     kernel = kernel_summary(checks)
+    if not kernel_only and kernel["search"]:      # --trust-search trusts the search, not an entry's notes
+        return None
     statuses = {p: e.get("status") for p, e in cert["properties"].items() if p in PROPERTIES}
     expected = {p: "unknown" if kernel_only and p in kernel["search"] else s for p, s in statuses.items()}
     verdicts = {p: str(v.get("verdict")) for p, v in hit.get("properties", {}).items()}
