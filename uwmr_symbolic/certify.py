@@ -860,11 +860,11 @@ class Prover:
         in t = 1/s meets oo/oo at t = 0 (`logs_only`: only these)."""
         lo, hi, lo_open, hi_open = I
         inner = set() if logs_only else {a for g in e.atoms(sp.Function) for a in g.args if a.has(var) and a != var}
-        logs = {g for g in e.atoms(sp.log, sp.asinh) if g.has(var)} if hi == OO else set()
+        log = log_of(e, var) if hi == OO else None
         for u, is_log in [(u, False) for u in sorted(inner, key=sp.count_ops, reverse=True)] + \
-                [(u, True) for u in sorted(logs, key=sp.count_ops, reverse=True)]:
-            G = replaced(e, u, _U)
-            if G.has(var) or G.count(_U) < 2 or G.subs(_U, u) != e or is_log and not K._rational_over_q(G, _U):
+                ([(log, True)] if log is not None else []):
+            G = e.xreplace({u: _U}) if is_log else replaced(e, u, _U)      # (a log is a subterm, never a sum)
+            if G.has(var) or G.count(_U) < 2 or is_log and not K._rational_over_q(G, _U) or G.subs(_U, u) != e:
                 continue
             a, b = (u.subs(var, x) if x != OO else OO for x in (lo, hi))
             if is_log:                  # J's lower end a rational at or below u(lo)
@@ -1105,12 +1105,14 @@ def _sum_groups(e, var, I, want) -> list:
     others = [t for t in terms if not t.is_rational_function(var)]
     if others and not any(_against(t, var, I, want) for t in others) and not _against(sp.Add(*rational), var, I, want):
         return [sp.Add(*rational), *others]
-    for g in sorted((g for g in e.atoms(sp.log, sp.asinh) if g.has(var)), key=sp.count_ops):
-        in_log = [t for t in terms if not replaced(t, g, _U_REAL).has(var)]     # rational in L = g: Sturm in L
-        rest = [t for t in terms if t not in in_log]
-        if len(in_log) > 1 and K._const_sign(constant) != -want and \
-                not any(_against(t, var, I, want) for t in [sp.Add(*in_log), *rest]):
-            return [sp.Add(*in_log), *rest]
+    in_log = {}                                 # the terms that are rational in one L = log(...): Sturm in L
+    for t in terms:
+        in_log.setdefault(log_of(t, var), []).append(t)
+    for g, group in in_log.items():
+        rest = [t for t in terms if t not in group]
+        if g is not None and len(group) > 1 and K._const_sign(constant) != -want and \
+                not any(_against(t, var, I, want) for t in [sp.Add(*group), *rest]):
+            return [sp.Add(*group), *rest]
     for i, t in enumerate(terms if clear and len(terms) > 1 else ()):  # s^(3/2) + (sqrt(s^2 + 1) - 1)
         if set(_signs(t + constant, var, I, want)) == {1}:      # seen to have the sign, not just not against
             return [t + constant, *terms[:i], *terms[i + 1:]]
@@ -1560,16 +1562,33 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
     return []
 
 
+def log_of(e, var):
+    """L when e is built by +, * and integer powers from constants and one
+    L = log(...) or asinh(...) holding var (a rational function of L: 1 -
+    L/(1 + L)), else None.  Walks e's sums, products and powers only."""
+    found = set()
+
+    def walk(x):
+        if not x.has(var):
+            return True
+        if isinstance(x, (sp.log, sp.asinh)):
+            found.add(x)
+            return len(found) == 1
+        if x.is_Add or x.is_Mul or x.is_Pow and x.exp.is_Integer:
+            return all(walk(a) for a in x.args)
+        return False
+    return next(iter(found)) if walk(e) and found else None
+
+
 def _log_powers(F, var) -> list:
     """For F = G(L) + H, G rational in U = L (a log(...) or asinh), G(U) ~
     c U^d as U -> oo, c > 0 and d >= 1, H the terms of F not rational in L
     alone (0 too): [c/2 L^d], which diverges with L and stays below F far
     out where H >= 0 (L^2/(1 + L): L/2), for `_diverges_above`."""
     out = []
-    for g in sorted((g for g in F.atoms(sp.log, sp.asinh) if g.has(var)), key=sp.count_ops):
-        G = sp.Add(*[t for t in sp.Add.make_args(F) if not replaced(t, g, _U_REAL).has(var)])
-        G = replaced(G, g, _U_REAL)
-        if not G.has(_U_REAL) or not K._rational_over_q(G, _U_REAL):
+    for g in {log_of(t, var) for t in sp.Add.make_args(F)} - {None}:
+        G = sp.Add(*[t for t in sp.Add.make_args(F) if log_of(t, var) == g]).xreplace({g: _U_REAL})
+        if not K._rational_over_q(G, _U_REAL):
             continue
         num, den = (sp.Poly(p, _U_REAL) for p in sp.fraction(sp.cancel(G)))
         d = num.degree() - den.degree()

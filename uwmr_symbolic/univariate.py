@@ -1081,11 +1081,13 @@ def _log_factors(term, var, R):
     4 s L/((1 + s^2)(1 + L)), whose tail form is oo/oo at t = 0.  0 <= G(U)
     <= b for U >= a, a rational at or below L(R) (the kernel's Sturm rule,
     as the proof will; L taken increasing: the proof shows L >= a)."""
-    for g in sorted((g for g in term.atoms(sp.log, sp.asinh) if g.has(var)), key=sp.count_ops):
-        group = [f for f in term.args if f.has(g) and not replaced(f, g, U).has(var)]
+    from .certify import log_of
+    logs = {f: log_of(f, var) for f in term.args}
+    for g in set(logs.values()) - {None}:
+        group = [f for f in term.args if logs[f] == g]
         rest = [f for f in term.args if f not in group]
-        G = replaced(sp.Mul(*group), g, U)
-        if not group or not any(f.has(var) for f in rest) or not K._rational_over_q(G, U):
+        G = sp.Mul(*group).xreplace({g: U})
+        if not any(f.has(var) for f in rest) or not K._rational_over_q(G, U):
             continue
         try:
             a = K._rational_beyond(g.subs(var, R), -1)
