@@ -158,17 +158,23 @@ def test_solveset_is_not_asked_a_mixed_equation_it_cannot_invert():
     assert not solveset_hopeless(S * sp.exp(S) - 1, S) and not solveset_hopeless(sp.tanh(u) - Q(1, 2), S)
 
 
-def test_substitution_is_the_kernel_step_for_u_minus_sin_u():
-    """The theorem for u - sin(u), u = sqrt(1 + s^2) - 1, is `sign_by_substitution`
-    over G(u) = u - sin(u) > 0 on (0, oo) and u > 0 on (0, oo)."""
-    F = sp.sqrt(1 + S ** 2) - 1 - sp.sin(sp.sqrt(1 + S ** 2) - 1)
-    theorems, why = sign_theorems(F, S, 0, sp.oo, work=10 ** 7)
+def _substitution_premises(e, lo, lo_open, **kw):
+    """The premises (G's sign, u's bounds) of the `sign_by_substitution` step
+    that signs e on <lo, oo), below the rewrites, weakenings and joins."""
+    theorems, why = sign_theorems(e, S, lo, sp.oo, lo_open=lo_open, **kw)
     assert theorems is not None, why
     th = theorems[0]
     while th.rule != "sign_by_substitution":
         assert th.rule in ("sign_by_rewrite", "weaken", "join"), th.rule
         th = th.premises[0]
-    outer, bound = th.premises
+    return th.premises
+
+
+def test_substitution_is_the_kernel_step_for_u_minus_sin_u():
+    """The theorem for u - sin(u), u = sqrt(1 + s^2) - 1, is `sign_by_substitution`
+    over G(u) = u - sin(u) > 0 on (0, oo) and u > 0 on (0, oo)."""
+    F = sp.sqrt(1 + S ** 2) - 1 - sp.sin(sp.sqrt(1 + S ** 2) - 1)
+    outer, bound = _substitution_premises(F, 0, True, work=10 ** 7)
     u = sp.Symbol("u", nonnegative=True)
     assert outer.claim.expr == sp.srepr(u - sp.sin(u)) and (outer.claim.lo, outer.claim.hi) == ("Integer(0)", "oo")
     assert bound.claim.expr == sp.srepr(sp.sqrt(1 + S ** 2) - 1) and bound.claim.strict
@@ -372,17 +378,11 @@ def test_a_tail_sum_with_a_common_exp_or_cosh_factor_is_signed_through_it():
 def test_a_rational_function_of_a_log_is_signed_by_sturm_in_the_log():
     """1 - L/(1 + L) >= 0 on [4, oo), L = log(1 + s^2): its form in t = 1/s is
     oo/oo at t = 0, but as G(U) = 1 - U/(1 + U) it is a rational function,
-    >= 0 for U >= a (Sturm), a = 45/16 a rational just below L(4) = log 17
-    = 2.833, and L - a > 0 on [4, oo) (`sign_by_substitution`).  1/2 -
-    L/(1 + L) is false at s = 4 (L/(1 + L) = 0.739): no theorem."""
+    >= 0 for U >= a (Sturm), a a rational just below L(4) = log 17 = 2.833,
+    and L - a > 0 on [4, oo) (`sign_by_substitution`).  1/2 - L/(1 + L) is
+    false at s = 4 (L/(1 + L) = 0.739): no theorem."""
     L = sp.log(1 + S ** 2)
-    theorems, why = sign_theorems(1 - L / (1 + L), S, 4, sp.oo, lo_open=False, strict=False)
-    assert theorems is not None, why
-    th = theorems[0]
-    while th.rule != "sign_by_substitution":
-        assert th.rule in ("sign_by_rewrite", "weaken", "join"), th.rule
-        th = th.premises[0]
-    outer, bound = th.premises
+    outer, bound = _substitution_premises(1 - L / (1 + L), 4, False, strict=False)
     u = sp.Symbol("u", nonnegative=True)
     a = sp.parse_expr(outer.claim.lo)
     assert outer.claim.expr == sp.srepr(1 - u / (1 + u)) and outer.rule == "sign_by_sturm"
