@@ -35,7 +35,7 @@ from . import timeouts
 from .kernel import arb, core as K
 from .kernel.arb import Undefined, centered, evaluate
 from .kernel.core import derivative
-from .univariate import replaced, zero_of_denominator
+from .univariate import log_of, replaced, zero_of_denominator
 from .profile import _relationals
 
 OO = sp.oo
@@ -606,15 +606,15 @@ class Prover:
         (R0 = `tail_start`): kf - F' for F = tanh(s^2) + log(1 + s^2), whose F' =
         2 s sech(s^2)^2 + 2 s/(s^2 + 1) has no such cover, and whose F'' the
         sign rules do not sign within a budget."""
-        from .univariate import _log_factors, split_terms, tail_box, tail_start, term_bound_on_tail
+        from .univariate import log_factors, split_terms, tail_box, tail_start, term_bound_on_tail
         lo, _, lo_open, _ = I
         c, rest = e.as_independent(var, as_Add=True)
         terms = split_terms(rest)              # (k - F'/s: the 1/s multiplied in)
-        R = tail_start(lo)                      # (OverflowError where lo is beyond the doubles: no proof)
         if not (c.is_Rational and c > 0 and len(terms) > 1):
             raise NoProof("{} is not c - (a_1 + ... + a_k), c > 0", e)
+        R = tail_start(lo)                      # (OverflowError where lo is beyond the doubles: no proof)
         whole = sp.factor_terms(rest)           # A(s) G(L), G rational in a log L: one term (its sum bounded)
-        if whole.is_Mul and _log_factors(-whole, var, R) is not None:
+        if whole.is_Mul and log_factors(-whole, var, R) is not None:
             terms = (whole,)
         if tail_box(e, var, R) is not None and not _essential_at_zero(_tail_form(e, var)):
             raise NoProof("{} is not c - (a_1 + ... + a_k), c > 0, with a blind tail", e)
@@ -1088,10 +1088,11 @@ def _sum_groups(e, var, I, want) -> list:
     its terms, or, where a term or the constant has the other sign
     somewhere, the rational terms together (9 s^2 - 20 s + 9, signed by
     Sturm) and the others one by one (the logs' terms of a numerator put over
-    one denominator), or the terms that are functions of one log(...) L
-    alone together (L^2/(2 + L) - L/2, signed by Sturm in L), or, when only the constant has the other sign, the
-    constant with one term (s^(3/2) + (sqrt(s^2 + 1) - 1)); NoProof when a
-    term with the other sign is left alone."""
+    one denominator), or the terms that are rational in one log(...) L
+    together (L^2/(2 + L) - L/2, signed by Sturm in L), or, when only the
+    constant has the other sign, the constant with one term (s^(3/2) +
+    (sqrt(s^2 + 1) - 1)); NoProof when a term with the other sign is left
+    alone."""
     terms = [t for t in e.args if t.has(var)]
     constant = sp.Add(*[t for t in e.args if not t.has(var)])
     clear = not any(_against(t, var, I, want) for t in terms)
@@ -1560,24 +1561,6 @@ def _diverges_above(F, var, starts=(sp.Integer(4), sp.Integer(16))) -> list:
                 if exc is prover.spent:
                     return []
     return []
-
-
-def log_of(e, var):
-    """L when e is built by +, * and integer powers from constants and one
-    L = log(...) or asinh(...) holding var (a rational function of L: 1 -
-    L/(1 + L)), else None.  Walks e's sums, products and powers only."""
-    found = set()
-
-    def walk(x):
-        if not x.has(var):
-            return True
-        if isinstance(x, (sp.log, sp.asinh)):
-            found.add(x)
-            return len(found) == 1
-        if x.is_Add or x.is_Mul or x.is_Pow and x.exp.is_Integer:
-            return all(walk(a) for a in x.args)
-        return False
-    return next(iter(found)) if walk(e) and found else None
 
 
 def _log_powers(F, var) -> list:

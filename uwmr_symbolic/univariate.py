@@ -456,6 +456,24 @@ def replaced(e, u, U):
     return e
 
 
+def log_of(e, var):
+    """L when e is built by +, * and integer powers from constants and one
+    L = log(...) or asinh(...) holding var (a rational function of L: 1 -
+    L/(1 + L)), else None.  Walks e's sums, products and powers only."""
+    found = set()
+
+    def walk(x):
+        if not x.has(var):
+            return True
+        if isinstance(x, (sp.log, sp.asinh)):
+            found.add(x)
+            return len(found) == 1
+        if x.is_Add or x.is_Mul or x.is_Pow and x.exp.is_Integer:
+            return all(walk(a) for a in x.args)
+        return False
+    return next(iter(found)) if walk(e) and found else None
+
+
 def _composed_sign_near(expr, var, lo, hi, c, side, want) -> bool:
     """expr = G(u(var)) for an inner u with u(c) = 0 and a sign beside c:
     then expr has the sign of G on the u-interval (0, max u] (or [min u, 0)),
@@ -1021,7 +1039,7 @@ def _termwise_tail(expr, var, lo, R):
         except (Undefined, ValueError):
             return None, None
         total = Fraction(0)     # (a product with a factor rational in a log: whole, its sum bounded, not its terms)
-        for term in (expr,) if expr.is_Mul and _log_factors(expr, var, r) else split_terms(expr):
+        for term in (expr,) if expr.is_Mul and log_factors(expr, var, r) else split_terms(expr):
             bound = term_bound_on_tail(term, var, r)
             if bound is None:
                 break
@@ -1067,7 +1085,7 @@ def bounded_factors(term, var, R):
         box = tail_box(f, var, R) if f.has(var) else None
         (inside if box is not None and _lo(box) > 0 else rest).append(f)
     if not inside or not any(f.has(var) for f in rest):
-        return _log_factors(term, var, R)
+        return log_factors(term, var, R)
     B = sp.Mul(*inside)
     box = tail_box(B, var, R)
     if box is None or _lo(box) < 0 or _hi(box) <= 0:
@@ -1075,13 +1093,12 @@ def bounded_factors(term, var, R):
     return sp.Mul(*rest), B, sp.Integer(2) ** math.ceil(math.log2(_hi(box)))
 
 
-def _log_factors(term, var, R):
+def log_factors(term, var, R):
     """`bounded_factors`' (A, B, b) with B the factors of term that are a
     rational function G of one L = log(...) (or asinh): L/(1 + L) in
     4 s L/((1 + s^2)(1 + L)), whose tail form is oo/oo at t = 0.  0 <= G(U)
     <= b for U >= a, a rational at or below L(R) (the kernel's Sturm rule,
     as the proof will; L taken increasing: the proof shows L >= a)."""
-    from .certify import log_of
     logs = {f: log_of(f, var) for f in term.args}
     for g in set(logs.values()) - {None}:
         group = [f for f in term.args if logs[f] == g]
