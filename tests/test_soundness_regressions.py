@@ -905,3 +905,11 @@ def test_an_exponent_with_a_large_denominator_is_left_unknown_not_a_crash(tmp_pa
     assert verify_design(exact_path).properties["P2"].proved
     exact_path.write_text(head + "f = 3*rho**((0.1 + 0.2)/0.3)\n")       # c P^(p/q) alone: no sum to cancel
     assert verify_design(exact_path).properties["P1"].refuted
+
+
+def test_a_supremum_beyond_the_doubles_is_no_crash(tmp_path):
+    # 10^308 log(1 + rho): F' = 2 10^308 s/(1 + s^2) <= 10^308 (= at s = 1), F'/s <= 2 10^308, beyond
+    # the largest double; ordering the boxes by float(bound) raised OverflowError (exit 2, "internal error")
+    report, v = verify(tmp_path, "f = 10**308*log(1 + rho)\n")
+    assert v["P1"] == "proved" and report.kf.exact == sp.Integer(10) ** 308
+    assert v["P6"] in ("proved", "unknown")      # true: k = 2 10^308 (a bound the search may not enclose)

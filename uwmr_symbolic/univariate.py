@@ -920,6 +920,15 @@ def _mean_value_upper(fn, dfn, u, v):
     return em_hi + max(right, left)
 
 
+def _ordering(x: Fraction) -> float:
+    """x as a double for ordering the boxes only: +-inf beyond the doubles
+    (f = 10^308 log(1 + rho) has bounds above 1.8e308)."""
+    try:
+        return float(x)
+    except OverflowError:
+        return math.inf if x > 0 else -math.inf
+
+
 def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> SupEnclosure:
     """Rigorous enclosure of sup expr over [lo, hi] (hi may be oo) by interval
     branch and bound: every box keeps an upper bound, every evaluated value a
@@ -993,13 +1002,13 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
             except Undefined:
                 pass
         counter += 1
-        heapq.heappush(heap, (float("-inf") if up is None else -float(up), counter, kind, u, v, up))
+        heapq.heappush(heap, (float("-inf") if up is None else -_ordering(up), counter, kind, u, v, up))
 
     for kind, _, a, b in parts:
         push(kind, a, b)
     for count in range(budget):
         key, _, kind, u, v, up = heap[0]
-        if floor is not None and up is not None and -key < float(floor):
+        if floor is not None and up is not None and -key < _ordering(floor):
             top = max(h[-1] for h in heap)      # the exact largest bound (the heap orders by float)
             if top < floor and (tail_bound is None or tail_bound < floor):
                 top = top if tail_bound is None else max(top, tail_bound)
