@@ -452,3 +452,19 @@ def test_cancelling_laws_with_scaled_constants_get_their_polynomial(tmp_path, fo
             want = float(exact(mpmath.mpf(e2)))
         v, w, st = lib.run(_law_rows([(0.0, e2)]))
         assert st[0] == 0 and w[0] == pytest.approx(want, rel=1e-13), e2
+
+
+def test_a_huge_kf_gets_its_code_with_status_4_where_w_overflows(tmp_path):
+    """10^307 log(1 + rho): kf = 10^307 (F' = 2 10^307 s/(1 + s^2)).  At the
+    row below g = -8.86e306 and w = lam vr g... = 2.6e310 is beyond the
+    doubles: the C and control_status give status 4.  The validation had
+    asked status 0 there of control() (which has no status) and of the
+    CasADi function (neither has one), and refused the proved design."""
+    path = tmp_path / "huge_kf.py"
+    path.write_text('import sympy as sp\ne1, e2 = sp.symbols("e1 e2", real=True)\n'
+                    'f = 10**307*sp.log(1 + e1**2 + e2**2)\n')
+    beyond = np.array([[0.3, -0.7, 0.2, -1e4, 1.0, 0.25, 0.7, 0.3]])
+    rows = np.vstack([beyond, _law_rows([(3.0, -4.0), (0.0, 1e-3)], lam=1e-300)])
+    lib, mod, _ = _check_all(path, tmp_path, rows)
+    assert lib.run(beyond)[2][0] == 4 and mod.control_status(*beyond.T)[2][0] == 4
+    assert 1e307 <= mod.KF <= 1e307 * (1 + 2 ** -52)       # 10^307 rounded up (the clamp's side)
