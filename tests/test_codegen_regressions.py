@@ -468,3 +468,17 @@ def test_a_huge_kf_gets_its_code_with_status_4_where_w_overflows(tmp_path):
     lib, mod, _ = _check_all(path, tmp_path, rows)
     assert lib.run(beyond)[2][0] == 4 and mod.control_status(*beyond.T)[2][0] == 4
     assert 1e307 <= mod.KF <= 1e307 * (1 + 2 ** -52)       # 10^307 rounded up (the clamp's side)
+
+
+def test_a_constant_beyond_the_doubles_is_refused_by_name(tmp_path):
+    """log(1 + rho)/10^310 (proved; kf = 10^-310): H = F'(s)/s is printed
+    over 5 10^309 (SymPy's form), which no double holds.  The printer wrote
+    the literal inf.0 and the design was refused with the C compiler's
+    "'inf' undeclared"; now the refusal names the constant."""
+    from uwmr_symbolic.codegen import CodegenInvalid
+    path = tmp_path / "beyond.py"
+    path.write_text('import sympy as sp\ne1, e2 = sp.symbols("e1 e2", real=True)\n'
+                    'f = sp.log(1 + e1**2 + e2**2)/10**310\n')
+    with pytest.raises(CodegenInvalid, match=r"the constant 5\.0+E\+309 is beyond the double range"):
+        generate(path, tmp_path / "out")
+    assert not (tmp_path / "out").exists()

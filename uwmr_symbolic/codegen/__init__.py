@@ -198,14 +198,14 @@ def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, st
         model.no_float = no_float
         model.notes.append(f"no float (_f32) variant: {model.no_float}; the double variant and the Python "
                            f"module are written without it.")
-    ctx = _context(design, model)
     certified = [accuracy.certify(model, cfg.precision, cfg.sinc_cut)
                  for cfg in ((c_backend.DOUBLE,) if model.no_float else (c_backend.DOUBLE, c_backend.FLOAT))]
     model.accuracy = {acc.precision: acc for acc in certified}
-    ctx["accuracy"] = accuracy.contract_lines(certified)
-    ctx["accuracy_double"] = accuracy.contract_lines(certified[:1])
     files = {}
     try:
+        ctx = _context(design, model)
+        ctx["accuracy"] = accuracy.contract_lines(certified)
+        ctx["accuracy_double"] = accuracy.contract_lines(certified[:1])
         files.update(python_backend.render(env, model, ctx))
         files.update(c_backend.render(env, model, ctx))
     except Unsupported as exc:

@@ -36,6 +36,8 @@ def _value(expr) -> float:
 
 def double_literal(value) -> str:
     x = _value(value)
+    if not np.isfinite(x):                      # (a literal inf.0 would not even compile)
+        raise Unsupported(f"the constant {sp.N(value, 6)} is beyond the double range (about 1.8e308)")
     text = repr(x)
     if "e" not in text and "." not in text:
         text += ".0"
