@@ -35,7 +35,7 @@ from . import timeouts
 from .kernel import arb, core as K
 from .kernel.arb import Undefined, centered, evaluate
 from .kernel.core import derivative
-from .univariate import log_of, replaced, zero_of_denominator
+from .univariate import log_groups, log_of, replaced, zero_of_denominator
 from .profile import _relationals
 
 OO = sp.oo
@@ -1106,12 +1106,9 @@ def _sum_groups(e, var, I, want) -> list:
     others = [t for t in terms if not t.is_rational_function(var)]
     if others and not any(_against(t, var, I, want) for t in others) and not _against(sp.Add(*rational), var, I, want):
         return [sp.Add(*rational), *others]
-    in_log = {}                                 # the terms that are rational in one L = log(...): Sturm in L
-    for t in terms:
-        in_log.setdefault(log_of(t, var), []).append(t)
-    for g, group in in_log.items():
+    for group in log_groups(terms, var).values():      # the terms rational in one L = log(...): Sturm in L
         rest = [t for t in terms if t not in group]
-        if g is not None and len(group) > 1 and K._const_sign(constant) != -want and \
+        if len(group) > 1 and K._const_sign(constant) != -want and \
                 not any(_against(t, var, I, want) for t in [sp.Add(*group), *rest]):
             return [sp.Add(*group), *rest]
     for i, t in enumerate(terms if clear and len(terms) > 1 else ()):  # s^(3/2) + (sqrt(s^2 + 1) - 1)
@@ -1569,8 +1566,8 @@ def _log_powers(F, var) -> list:
     alone (0 too): [c/2 L^d], which diverges with L and stays below F far
     out where H >= 0 (L^2/(1 + L): L/2), for `_diverges_above`."""
     out = []
-    for g in {log_of(t, var) for t in sp.Add.make_args(F)} - {None}:
-        G = sp.Add(*[t for t in sp.Add.make_args(F) if log_of(t, var) == g]).xreplace({g: _U_REAL})
+    for g, group in log_groups(sp.Add.make_args(F), var).items():
+        G = sp.Add(*group).xreplace({g: _U_REAL})
         if not K._rational_over_q(G, _U_REAL):
             continue
         num, den = (sp.Poly(p, _U_REAL) for p in sp.fraction(sp.cancel(G)))

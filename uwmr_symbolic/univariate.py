@@ -1102,15 +1102,24 @@ def bounded_factors(term, var, R):
     return sp.Mul(*rest), B, sp.Integer(2) ** math.ceil(math.log2(_hi(box)))
 
 
+def log_groups(parts, var) -> dict:
+    """{L: the parts that are rational functions of that one L} (`log_of`);
+    a part rational in no single log is in no group."""
+    out = {}
+    for p in parts:
+        g = log_of(p, var)
+        if g is not None:
+            out.setdefault(g, []).append(p)
+    return out
+
+
 def log_factors(term, var, R):
     """`bounded_factors`' (A, B, b) with B the factors of term that are a
     rational function G of one L = log(...) (or asinh): L/(1 + L) in
     4 s L/((1 + s^2)(1 + L)), whose tail form is oo/oo at t = 0.  0 <= G(U)
     <= b for U >= a, a rational at or below L(R) (the kernel's Sturm rule,
     as the proof will; L taken increasing: the proof shows L >= a)."""
-    logs = {f: log_of(f, var) for f in term.args}
-    for g in set(logs.values()) - {None}:
-        group = [f for f in term.args if logs[f] == g]
+    for g, group in log_groups(term.args, var).items():
         rest = [f for f in term.args if f not in group]
         G = sp.Mul(*group).xreplace({g: U})
         if not any(f.has(var) for f in rest) or not K._rational_over_q(G, U):
@@ -1213,9 +1222,6 @@ def _bound_on_tail(expr, var, R, floor) -> Fraction | None:
         if c is None:
             continue
         c = decimal_beyond(c, side, digits)
-        try:
-            K.sign_by_sturm(expr=c - expr, var=var, lo=R, hi=sp.oo, lo_open=False, hi_open=True, want=1, strict=False)
+        if _sturm_nonnegative(c - expr, var, R):
             return Fraction(c.p, c.q)
-        except K.KernelError:
-            continue
     return None
