@@ -172,6 +172,7 @@ def test_python_module_imports_numpy_only():
 def test_python_constants_scalars_broadcasting_and_safe_stop():
     mod = load_module(ROOT / "generated/design3_logcosh/design3_logcosh.py")
     assert mod.KF == 2.0 and mod.PARAMS == {"alpha": 1.0, "beta": 4.0} and mod.VERIFIED is True
+    assert (mod.PARAM_ALPHA, mod.PARAM_BETA) == (1.0, 4.0)
     v, w = mod.control(1.0, 2.0, 0.5, 0.5, 1.0, 0.25, 0.7, 0.3)
     assert isinstance(v, float) and isinstance(w, float)
     e1 = np.linspace(-3, 3, 7)

@@ -482,3 +482,28 @@ def test_a_constant_beyond_the_doubles_is_refused_by_name(tmp_path):
     with pytest.raises(CodegenInvalid, match=r"the constant 5\.0+E\+309 is beyond the double range"):
         generate(path, tmp_path / "out")
     assert not (tmp_path / "out").exists()
+
+
+def test_parameter_names_cannot_redefine_the_generated_constants(tmp_path):
+    """Parameters named h, kf and ok, and one whose name holds "*/": they
+    became the macros UWMR_<STEM>_H (the include guard), UWMR_<STEM>_KF
+    (redefined with the parameter's 100) and, in Python, KF = 100 after the
+    certified KF and OK = 1.  Each now is a PARAM_ constant."""
+    path = tmp_path / "pkf.py"
+    path.write_text('import sympy as sp\ne1, e2 = sp.symbols("e1 e2", real=True)\n'
+                    'kf, h, ok, a = sp.symbols("kf h ok a", positive=True)\nb = sp.Symbol("b*/x", positive=True)\n'
+                    'f = kf*h*ok*a*b*sp.log(1 + e1**2 + e2**2)\n'
+                    'params = {"kf": 100, "h": 1, "ok": 1, "a": sp.Rational(1, 50), "b*/x": 1}\n')
+    lib, mod, _ = _check_all(path, tmp_path, _law_rows([(0.0, 1.0), (3.0, -4.0)]))
+    assert mod.KF == 2.0 and mod.OK == 0 and mod.PARAMS == {"a": 0.02, "b*/x": 1.0, "h": 1.0, "kf": 100.0, "ok": 1.0}
+    assert (mod.PARAM_KF, mod.PARAM_H, mod.PARAM_OK, mod.PARAM_B__X) == (100.0, 1.0, 1.0, 1.0)
+    header = (tmp_path / "pkf" / "pkf.h").read_text()
+    assert "#define UWMR_PKF_KF 2.0\n" in header and "#define UWMR_PKF_PARAM_KF 100.0  /* kf = 100 */" in header
+    assert "/* b* /x = 1 */" in header
+    assert mod.control(0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)[1] == pytest.approx(2.0, rel=1e-15)
+
+
+def test_parameter_names_that_would_give_one_constant_are_numbered():
+    from uwmr_symbolic.codegen import _param_macros
+    assert _param_macros(["a-1", "a_1", "α"]) == ["PARAM1_A_1", "PARAM2_A_1", "PARAM3__"]
+    assert _param_macros(["alpha", "beta"]) == ["PARAM_ALPHA", "PARAM_BETA"]

@@ -142,8 +142,8 @@ extern "C" {
 /* kf = sup |df/de2| over the plane: 2 (certified upper bound) */
 #define UWMR_DESIGN3_LOGCOSH_KF 2.0
 #define UWMR_DESIGN3_LOGCOSH_KF_F32 2.0F
-#define UWMR_DESIGN3_LOGCOSH_ALPHA 1.0  /* alpha = 1 */
-#define UWMR_DESIGN3_LOGCOSH_BETA 4.0  /* beta = 4 */
+#define UWMR_DESIGN3_LOGCOSH_PARAM_ALPHA 1.0  /* alpha = 1 */
+#define UWMR_DESIGN3_LOGCOSH_PARAM_BETA 4.0  /* beta = 4 */
 
 /* The tracker accepts headings with |th|, |thr| <= UWMR_HEADING_MAX rad and
  * counts at most UWMR_TURNS_MAX turns either way (status 4 beyond). */

@@ -56,8 +56,8 @@ NAME = "Design 3"
 #: kf = sup |df/de2| over the plane: 2 (certified upper bound)
 KF = 2.0
 PARAMS = {"alpha": 1.0, "beta": 4.0}
-ALPHA = 1.0
-BETA = 4.0
+PARAM_ALPHA = 1.0
+PARAM_BETA = 4.0
 VERIFIED = True
 
 OK, ERR_NONFINITE, ERR_GAIN, ERR_RANGE = 0, 2, 3, 4

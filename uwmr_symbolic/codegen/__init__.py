@@ -124,15 +124,25 @@ def _banner(model: LawModel, source: str, comment: str) -> str:
     return "\n".join([rule, *[f"# {ln}".rstrip() for ln in wrapped], rule])
 
 
+def _param_macros(names: list[str]) -> list[str]:
+    """The constants naming the design's parameters: PARAM_ and the name in
+    ASCII letters, digits and underscores, upper case, so that no parameter
+    (`kf`, `h`, `ok`, ...) can redefine a name of the generated code; numbered
+    PARAM1_... instead where two names would give the same constant."""
+    plain = ["PARAM_" + "".join(ch if ch.isascii() and ch.isalnum() else "_" for ch in n).upper() for n in names]
+    if len(set(plain)) == len(plain):
+        return plain
+    return [f"PARAM{i}{m[5:]}" for i, m in enumerate(plain, 1)]
+
+
 def _context(design, model: LawModel) -> dict:
     kf = _kf_upper_double(model.kf_upper)
     kf32 = _kf_upper_float(kf)
     source = design.path.name
-    params = []
-    for name in sorted(model.params):
-        macro = "".join(ch if ch.isalnum() else "_" for ch in name).upper()
-        params.append(dict(name=name, macro=macro, exact=str(model.params[name]),
-                           double=double_literal(model.params[name])))
+    names = sorted(model.params)
+    macros = _param_macros(names)
+    params = [dict(name=name, macro=macro, comment=_comment_safe(f"{name} = {model.params[name]}"),
+                   double=double_literal(model.params[name])) for name, macro in zip(names, macros)]
     f_text = "f(e1, e2) = " + sp.sstr(design.f_source)
     gains = design.gains or {}
     scenario = "circle" if "circle" in gains else next(iter(gains), None)
