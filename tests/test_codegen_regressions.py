@@ -507,3 +507,27 @@ def test_parameter_names_that_would_give_one_constant_are_numbered():
     from uwmr_symbolic.codegen import _param_macros
     assert _param_macros(["a-1", "a_1", "α"]) == ["PARAM1_A_1", "PARAM2_A_1", "PARAM3__"]
     assert _param_macros(["alpha", "beta"]) == ["PARAM_ALPHA", "PARAM_BETA"]
+
+
+@pytest.mark.skipif(shutil.which("cmake") is None, reason="cmake missing: `make test` installs it")
+def test_a_design_file_name_with_a_space_builds_with_cmake(tmp_path):
+    """"a b.py": CMakeLists.txt had add_library(... STATIC a b.c), two
+    sources "a" and "b.c"; the source is quoted now."""
+    import subprocess
+    path = tmp_path / "a b.py"
+    path.write_text('import sympy as sp\ne1, e2 = sp.symbols("e1 e2", real=True)\nf = sp.log(1 + e1**2 + e2**2)\n')
+    generate(path, tmp_path / "a b")
+    for cmd in (["cmake", "-S", str(tmp_path / "a b"), "-B", str(tmp_path / "build")],
+                ["cmake", "--build", str(tmp_path / "build")]):
+        run = subprocess.run(cmd, capture_output=True, text=True)
+        assert run.returncode == 0, run.stdout + run.stderr
+    assert list((tmp_path / "build").glob("libuwmr_a_b_*.a"))
+
+
+def test_a_design_file_name_the_generated_code_cannot_quote_is_refused_by_name(tmp_path):
+    from uwmr_symbolic.codegen import CodegenInvalid
+    path = tmp_path / 'a"b.py'
+    path.write_text('import sympy as sp\ne1, e2 = sp.symbols("e1 e2", real=True)\nf = sp.log(1 + e1**2 + e2**2)\n')
+    with pytest.raises(CodegenInvalid, match=r"""a"b: the design file's name holds '"', .* rename the file"""):
+        generate(path, tmp_path / "out")
+    assert not (tmp_path / "out").exists()

@@ -196,8 +196,18 @@ def _gain_notes(gains: dict) -> list[str]:
     return notes
 
 
+def _check_stem(stem: str) -> None:
+    """The generated files are named after the design file, and the C
+    (#include "<stem>.h") and CMakeLists.txt ("<stem>.c") quote that name."""
+    bad = next((ch for ch in stem if ch in '"\\$;' or not ch.isprintable()), None)
+    if bad is not None:
+        raise CodegenInvalid(f"{stem}: the design file's name holds {bad!r}, which the generated #include and "
+                             f"CMakeLists.txt cannot quote; rename the file (letters, digits, '_', '-', '.', spaces)")
+
+
 def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, str]]:
     """The model and {file name: text} for one design (nothing written)."""
+    _check_stem(Path(design_path).stem)
     model, report = _model(design_path, force, report)
     design = report.design
     env = _env()
