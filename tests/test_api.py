@@ -266,3 +266,37 @@ def test_the_reused_worker_reads_relative_paths_from_the_current_folder(tmp_path
     assert verify_file("d.py").kf.exact == sp.Rational(1, 2)
     monkeypatch.chdir(tmp_path / "b")
     assert verify_file("d.py").kf.exact == 1
+
+
+def test_huge_exact_numbers_are_reported_as_powers_that_sympy_reads_back():
+    """10^300 log(1 + rho) printed f, kf and P6's k as 301-digit integers."""
+    d = verify(10**300 * sp.log(1 + e1**2 + e2**2), worker=False).to_dict()
+    assert d["f"] == "(10**300)*log(e1**2 + e2**2 + 1)" and d["kf"]["exact"] == "10**300"
+    assert d["properties"]["P6"]["reason"].startswith("k = 2*10**300 (sup F'(s)/s = 2*10**300 = 2e+300), h = ")
+    assert sp.sympify(d["kf"]["exact"]) == 10**300 and d["exit_status"] == 0
+
+
+@pytest.mark.parametrize("value, text", [(10**21, "10**21"), (-3 * 10**40, "-3*10**40"), (2**100, "2**100"),
+                                         (10**21 + 1, str(10**21 + 1)), (10**20, str(10**20)),
+                                         (sp.Rational(7, 10**30), "7/(10**30)"), (sp.Rational(1, 3), "1/3")])
+def test_exact_text_of_numbers(value, text):
+    from uwmr_symbolic.kf import exact_text
+    assert exact_text(value) == text and sp.sympify(text) == value
+
+
+def test_exact_text_reads_back_as_the_same_expression():
+    from hypothesis import given, settings, strategies as st
+    from uwmr_symbolic.kf import exact_text
+    x = sp.Symbol("x")
+    huge = st.builds(lambda m, k, neg: (-1) ** neg * m * sp.Integer(10) ** k, st.integers(1, 999), st.integers(0, 400),
+                     st.booleans()) | st.builds(lambda k: sp.Integer(2) ** k, st.integers(60, 1100))
+    number = huge | st.builds(lambda p, q: sp.Rational(p, q), huge, huge)
+    shape = st.sampled_from([lambda c: c, lambda c: c * x, lambda c: x - c, lambda c: x**c, lambda c: sp.exp(-c * x),
+                             lambda c: sp.log(1 + c * x**2) / c, lambda c: (x + c) ** sp.Rational(3, 2), lambda c: c**x])
+
+    @settings(max_examples=300, deadline=None, derandomize=True)
+    @given(number, shape)
+    def round_trip(c, make):
+        e = make(c)
+        assert sp.sympify(exact_text(e), locals={"x": x}) == e
+    round_trip()

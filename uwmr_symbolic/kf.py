@@ -50,8 +50,8 @@ class SupCertificate:
 
     def show(self) -> str:
         if self.exact is not None:
-            approx = f"{float_of(self.exact):.10g}"
-            return str(self.exact) if approx == str(self.exact) else f"{self.exact} = {approx}"
+            approx, text = f"{float_of(self.exact):.10g}", exact_text(self.exact)
+            return text if approx == text else f"{text} = {approx}"
         if self.upper is None:
             return "unbounded" if self.unbounded_witness else "undecided"
         return f"[{show(self.lower)}, {show(self.upper)}]"
@@ -461,6 +461,39 @@ def _piecewise_enclosure(cert: SupCertificate, analysis, L, tiers):
         if theorems:
             return U, theorems, ""
     return None, None, why
+
+
+class _CompactPrinter(sp.printing.str.StrPrinter):
+    """SymPy's str, with an integer of more than 21 digits that is m 10^k
+    (k >= 6) or 2^k written so, in parentheses: (10**300), not 301 digits."""
+
+    def _print_Integer(self, expr):
+        n = int(expr)
+        if abs(n) < 10 ** 21:
+            return str(n)
+        m, k = abs(n), 0
+        while m % 10 == 0:
+            m, k = m // 10, k + 1
+        sign = "-" if n < 0 else ""
+        if k >= 6:
+            return f"{sign}({'' if m == 1 else f'{m}*'}10**{k})"
+        if abs(n) & (abs(n) - 1) == 0:
+            return f"{sign}(2**{abs(n).bit_length() - 1})"
+        return str(n)
+
+    def _print_Rational(self, expr):
+        if expr.q == 1:
+            return self._print_Integer(expr)
+        return f"{self._print_Integer(sp.Integer(expr.p))}/{self._print_Integer(sp.Integer(expr.q))}"
+
+
+def exact_text(e) -> str:
+    """An exact SymPy value or expression for messages and reports, which
+    SymPy reads back (`sympify`): huge integers as powers (`_CompactPrinter`)."""
+    text = _CompactPrinter().doprint(sp.sympify(e))
+    sign, body = ("-", text[1:]) if text.startswith("-") else ("", text)
+    inner = body[1:-1]
+    return sign + inner if body.startswith("(") and body.endswith(")") and "(" not in inner else text
 
 
 def show(x, digits: int = 10) -> str:

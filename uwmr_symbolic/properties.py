@@ -37,7 +37,7 @@ from .certify import (REDUCTION, SPENT, WORK, NoProof, continuity_pair, explorin
                       smoothness_theorems, sup_upper_theorem)
 from .kernel import core as K
 from .kernel.core import derivative
-from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, psi_sides, scale, show
+from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, exact_text, psi_sides, scale, show
 from .limits import NoLimit, limit_right
 from .profile import (RHO, S, continuous_on, elliptic_ratio, float_of, one_sided_value,
                       radial_profile,
@@ -599,13 +599,13 @@ def verify_p6(a: Analysis) -> Verdict:
     tries = [(k, True), (loose, False)] if sup.exact is not None else [(loose, False)]
     checked, theorems = next(((c, th) for c, exact in tries for th in [_p6_theorems(a, c, exact)] if th), (k, []))
     smallest = f"sup F'(s)/s = {sup.show()}" + ("" if checked == k else
-                                                 f"; the kernel checks F'(s)/s <= {checked}")
+                                                 f"; the kernel checks F'(s)/s <= {exact_text(checked)}")
     k = checked
     h = a.derivative(a.kernel_F, 1) / (k * S)    # F = G on [0, oo) (`one_branch`): G' is F' also at a point value
     # for the report only: simplify takes seconds on a large h (and expand multiplies it out)
     h = (sp.simplify(h) if sp.count_ops(h) <= 40 else h).subs(S, a.radius)
-    shown = str(h) if len(str(h)) <= 400 else f"F'(s)/(k s), s = |e| ({sp.count_ops(h)} operations; in the JSON report)"
-    v = proved(f"k = {k} ({smallest}), h = F'(s)/(k s) in [0, 1]: h(e1, e2) = {shown}",
+    shown = exact_text(h) if len(exact_text(h)) <= 400 else f"F'(s)/(k s), s = |e| ({sp.count_ops(h)} operations; in the JSON report)"
+    v = proved(f"k = {exact_text(k)} ({smallest}), h = F'(s)/(k s) in [0, 1]: h(e1, e2) = {shown}",
                k=str(k), k_float=float_of(k), h=str(h))
     # df/de1 at the origin: F, F' continuous at 0+ with F'(0+) = 0 (P5's lemmas; for a Piecewise F
     # they end with the continuity on (0, oo) that `_piecewise_p6` gave)
@@ -926,7 +926,7 @@ def _p6_along_e1(f) -> Verdict | None:
         return None
     h = phi / (k * E1)
     return proved(f"df/de1 = phi(e1) does not depend on e2 (f analytic on the plane), phi(e1) e1 >= 0 and "
-                  f"phi(e1)/e1 <= k = {k} (the kernel's sign rules): h = phi(e1)/(k e1) in [0, 1]",
+                  f"phi(e1)/e1 <= k = {exact_text(k)} (the kernel's sign rules): h = phi(e1)/(k e1) in [0, 1]",
                   kernel=plane + signs[0] + signs[1] + uppers, unchecked=[], k=str(k), k_float=float_of(k), h=str(h))
 
 
@@ -1030,7 +1030,7 @@ def _each_branch(f, name: str) -> Verdict | None:
         return proved(why + "G' > 0 on (0, oo) (the kernel's sign rules): df/de1 tanh(e1) > 0 for e1 != 0",
                       kernel=theorems, unchecked=[])
     h = sp.Piecewise(*[(derivative(G, S).xreplace({S: RHO}) / (k * RHO), c) for G, (_, c) in zip(profiles, pw.args)])
-    return proved(why + f"G' >= 0 and G'(s)/s <= k = {k} on (0, oo) (the kernel's rules): h = G'(|e|)/(k |e|) in "
+    return proved(why + f"G' >= 0 and G'(s)/s <= k = {exact_text(k)} on (0, oo) (the kernel's rules): h = G'(|e|)/(k |e|) in "
                   "[0, 1], and h = 0 at the origin", kernel=theorems, unchecked=[], k=str(k), k_float=float_of(k),
                   h=str(h))
 

@@ -17,6 +17,7 @@ from xml.etree import ElementTree as ET
 import sympy as sp
 
 from .interval import Interval
+from .kf import exact_text
 from .verify import Report
 
 MARK = {"proved": "proved ", "refuted": "REFUTED", "unknown": "unknown"}
@@ -66,7 +67,7 @@ def design_fields(design) -> dict:
         gains_line = assignment_line(Path(design.path).read_text(), "gains")
     except (OSError, UnicodeDecodeError):
         gains_line = None
-    return {"design": str(design.path), "name": design.name, "f": str(design.f),
+    return {"design": str(design.path), "name": design.name, "f": exact_text(design.f),
             "f_line": design.f_line, "gains_line": gains_line or design.f_line}
 
 
@@ -77,12 +78,12 @@ def to_dict(r: Report) -> dict:
     d = {
         "design": str(r.path),
         "name": r.design.name if r.design else None,
-        "f": str(r.design.f) if r.design else None,
+        "f": exact_text(r.design.f) if r.design else None,
         "properties": {p: {"verdict": v.status, "reason": v.reason,
                            "witness": _jsonable(v.witness),
                            **_jsonable({k: x for k, x in v.details.items() if k != "kernel"})}
                        for p, v in r.properties.items()},
-        "kf": {"exact": None if kf is None or kf.exact is None else str(kf.exact),
+        "kf": {"exact": None if kf is None or kf.exact is None else exact_text(kf.exact),
                "exact_digits": None if kf is None or kf.exact is None or kf.exact.is_Integer
                else str(sp.N(kf.exact, 20)),
                "lower": None if kf is None or kf.lower is None else Interval.point(kf.lower).lower_float(),
