@@ -531,3 +531,31 @@ def test_a_design_file_name_the_generated_code_cannot_quote_is_refused_by_name(t
     with pytest.raises(CodegenInvalid, match=r"""a"b: the design file's name holds '"', .* rename the file"""):
         generate(path, tmp_path / "out")
     assert not (tmp_path / "out").exists()
+
+
+def test_a_float_variant_certified_for_no_input_is_not_written(tmp_path):
+    """f = 2.5e-40 (sqrt(1 + rho) - 1): g = 2.5e-40 e2/sqrt(1 + rho), below
+    the normal floats.  The float analysis certified nothing (the ranges
+    marked NOT CERTIFIED covered every m, and the header still read "g within
+    0" for them), yet the float variant was written, 2.1e-5 off in g, on
+    testing alone.  Now it is left out, with the reason; the double is
+    certified and written."""
+    path = tmp_path / "tiny.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\n"
+                    "f = sp.Rational(25, 10**41)*(sp.sqrt(1 + e1**2 + e2**2) - 1)\n")
+    lib, mod, law = _check_all(path, tmp_path, _law_rows([(0.0, 1.0), (3.0, -4.0), (1e-3, 2e-3)], lam=1e38))
+    header = (tmp_path / "tiny" / "tiny.h").read_text()
+    text = " ".join(header.replace("\n * ", " ").split())
+    assert "_f32(" not in header and "within 0." not in text
+    assert "no float (_f32) variant: no accuracy of the float code is certified for any input (0 < m <" in text
+    assert "double: |g^ - g| <= 3.6e-15 |g|" in text and "NOT CERTIFIED" not in text
+    # g(0, 1) = 2.5e-40/sqrt(2); lam = 1e38, vr = 1: w = 2.5e-2/sqrt(2)
+    v, w, st = lib.run(_law_rows([(0.0, 1.0)], lam=1e38))
+    assert st[0] == 0 and w[0] == pytest.approx(0.025 / 2 ** 0.5, rel=1e-14)
+
+
+def test_exceptions_that_cover_a_region_leave_it_uncertified():
+    from uwmr_symbolic.codegen.accuracy import _covers
+    assert _covers([(0.0, 0.101, "a")], 0.0, 0.1) and _covers([(0.0, 1.0, "a"), (1.0, 2.0, "b")], 0.0, 2.0)
+    assert not _covers([(0.0, 1.0, "a"), (1.5, 2.0, "b")], 0.0, 2.0) and not _covers([(0.1, 2.0, "a")], 0.0, 2.0)
+    assert not _covers([], 0.0, 1.0) and not _covers([(0.0, 0.5, "a")], 0.0, 1.0)

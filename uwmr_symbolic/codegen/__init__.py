@@ -213,13 +213,16 @@ def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, st
     env = _env()
     kf = _kf_upper_double(model.kf_upper)
     no_float = c_backend.float_missing(model, not math.isfinite(kf) or bool(np.isfinite(_kf_upper_float(kf))))
+    f32 = None if no_float else accuracy.certify(model, "float", c_backend.FLOAT.sinc_cut)
+    if f32 is not None and model.radial and not f32.certified:
+        no_float = "no accuracy of the float code is certified for any input (" + \
+            "; ".join(f"{r.where}: {r.reason}" for r in f32.uncertified) + ")"
     if no_float:        # the model again without the float thresholds, which may have cost the double a series
         model, report = _model(design_path, force, report, precisions=("double",))
         model.no_float = no_float
         model.notes.append(f"no float (_f32) variant: {model.no_float}; the double variant and the Python "
                            f"module are written without it.")
-    certified = [accuracy.certify(model, cfg.precision, cfg.sinc_cut)
-                 for cfg in ((c_backend.DOUBLE,) if model.no_float else (c_backend.DOUBLE, c_backend.FLOAT))]
+    certified = [accuracy.certify(model, "double", c_backend.DOUBLE.sinc_cut)] + ([] if model.no_float else [f32])
     model.accuracy = {acc.precision: acc for acc in certified}
     files = {}
     try:

@@ -543,6 +543,16 @@ def _merge(ranges):
     return out
 
 
+def _covers(ranges, lo: float, hi: float) -> bool:
+    """Whether the merged (a, b, reason) ranges of m cover [lo, hi]."""
+    x = lo
+    for a, b, _ in ranges:
+        if a > x:
+            return False
+        x = max(x, b)
+    return x >= hi
+
+
 def _iv(a: float, b: float) -> Iv:
     return Iv(arb(a), arb(b))
 
@@ -828,7 +838,8 @@ def certify(model: LawModel, precision: str, sinc_cut: float) -> Accuracy:
             term = _up(_products([arb(E), E_sinc], 3, reg.u))
             bad = _merge(bad)
             where = _range(lo, hi) + (" (except as listed)" if bad else "")
-            acc.regions.append(RegionAccuracy(name, where, E, term, m_range=(lo, hi)))
+            if not _covers(bad, lo, hi):    # (where the exceptions cover it all, nothing is certified)
+                acc.regions.append(RegionAccuracy(name, where, E, term, m_range=(lo, hi)))
             acc.regions += [RegionAccuracy(name, _range(max(a, lo), min(b, hi), widen=True), None, reason=why,
                                            m_range=(max(a, lo), min(b, hi))) for a, b, why in bad]
         worst = max((r.term for r in acc.regions if r.term is not None), default=0.0)
