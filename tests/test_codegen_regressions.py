@@ -559,3 +559,23 @@ def test_exceptions_that_cover_a_region_leave_it_uncertified():
     assert _covers([(0.0, 0.101, "a")], 0.0, 0.1) and _covers([(0.0, 1.0, "a"), (1.0, 2.0, "b")], 0.0, 2.0)
     assert not _covers([(0.0, 1.0, "a"), (1.5, 2.0, "b")], 0.0, 2.0) and not _covers([(0.1, 2.0, "a")], 0.0, 2.0)
     assert not _covers([], 0.0, 1.0) and not _covers([(0.0, 0.5, "a")], 0.0, 1.0)
+
+
+@pytest.mark.parametrize("formula", ["s - sp.atan(s)", "s - sp.tanh(s)"])
+def test_the_casadi_function_near_zero_where_f_prime_starts_with_an_even_power(tmp_path, formula):
+    """F'(s) ~ s^2 at 0 (H = F'(s)/s ~ s, no power of rho): where rho
+    underflows the CasADi function computed H(0) = 0/0 and w = NaN at
+    e2 = -1e-300, and the proved design was refused although its C and
+    Python were right.  g = e2 s/(1 + s^2) and e2 tanh(s)^2/s."""
+    import mpmath
+    from uwmr_symbolic.codegen import casadi_function
+    path = tmp_path / "even.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\ns = sp.sqrt(e1**2 + e2**2)\n"
+                    f"f = {formula}\n")
+    fn = casadi_function(path)
+    for e1, e2 in ((0.0, -1e-300), (3e-200, 4e-200), (0.0, 1e-160), (1e-100, 2e-100), (0.3, -0.4), (3.0, 4.0)):
+        w = float(fn(e1, e2, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)[1])
+        with mpmath.workdps(60):
+            s = mpmath.hypot(e1, e2)
+            g = e2 * s / (1 + s**2) if "atan" in formula else e2 * mpmath.tanh(s) ** 2 / s
+        assert w == pytest.approx(float(g), rel=1e-13, abs=1e-320), (e1, e2)

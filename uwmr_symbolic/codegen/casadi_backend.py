@@ -99,11 +99,17 @@ def casadi_function(model: LawModel, config: CasadiConfig = CasadiConfig()) -> c
             cond = rho <= float(br.hi) if br.hi_closed else rho < float(br.hi)
             H = ca.if_else(cond, to_casadi(br.expr, env), H)
         g = e2 * H
-        if model.tiny is not None and model.tiny[1] % 2 == 1:
-            # F'(s) ~ a s^j near 0: H = a rho^((j-1)/2) where rho underflows (0/0 otherwise)
+        if model.tiny is not None:
+            # F'(s) ~ a s^j near 0: H = a s^(j-1) where rho underflows (0/0 otherwise): a power of rho
+            # for odd j, else of s = m sqrt((e1/m)^2 + (e2/m)^2), m = max(|e1|, |e2|), which does not underflow
             a, j = model.tiny
-            small = e2 * float(a) * rho ** ((j - 1) // 2)
-            g = ca.if_else(rho < model.thresholds["double"][0] ** 2, small, g)
+            if j % 2 == 1:
+                power = rho ** ((j - 1) // 2)
+            else:
+                m = ca.fmax(ca.fabs(e1), ca.fabs(e2))
+                unit = ca.if_else(m == 0, 1, m)
+                power = (m * ca.sqrt((e1 / unit) ** 2 + (e2 / unit) ** 2)) ** (j - 1)
+            g = ca.if_else(rho < model.thresholds["double"][0] ** 2, e2 * float(a) * power, g)
     else:
         g = to_casadi(model.general, env)
     z = e3 * e3
