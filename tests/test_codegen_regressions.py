@@ -579,3 +579,17 @@ def test_the_casadi_function_near_zero_where_f_prime_starts_with_an_even_power(t
             s = mpmath.hypot(e1, e2)
             g = e2 * s / (1 + s**2) if "atan" in formula else e2 * mpmath.tanh(s) ** 2 / s
         assert w == pytest.approx(float(g), rel=1e-13, abs=1e-320), (e1, e2)
+
+
+def test_a_law_with_a_named_constant_is_validated_and_written(tmp_path):
+    """EulerGamma log(1 + rho) (proved, kf = EulerGamma): the exact law of the
+    validation had no Arb value for EulerGamma, so the design was refused
+    ("the exact law cannot be evaluated")."""
+    path = tmp_path / "euler.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\n"
+                    "f = sp.EulerGamma*sp.log(1 + e1**2 + e2**2)\n")
+    lib, mod, _ = _check_all(path, tmp_path, _law_rows([(0.0, 1.0), (3.0, -4.0), (1e-200, 1e-3)]))
+    gamma = 0.57721566490153286061
+    assert gamma <= mod.KF <= gamma * (1 + 2 ** -52)
+    v, w, st = lib.run(_law_rows([(0.0, 1.0)]))      # g(0, 1) = 2 EulerGamma/(1 + 1)
+    assert st[0] == 0 and w[0] == pytest.approx(gamma, rel=1e-15)

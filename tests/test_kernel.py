@@ -534,6 +534,13 @@ def test_value_sign():
     rejects(K.value_sign, value=x)
     rejects(K.value_sign, value=sp.Float(0.1))
     rejects(K.value_sign, value=sp.log(-1))
+    # named constants, each against a rational 10^-30 away (mpmath: EulerGamma = 0.57721566490153286060651209008240...,
+    # Catalan = 0.91596559417721901505460351493238..., GoldenRatio = 1.61803398874989484820458683436563...)
+    for c, near in ((sp.EulerGamma, "0.577215664901532860606512090083"), (sp.Catalan, "0.915965594177219015054603514933"),
+                    (sp.GoldenRatio, "1.618033988749894848204586834366")):
+        assert K.value_sign(value=c - sp.Rational(near)).claim.want == -1, c
+        assert K.value_sign(value=c - sp.Rational(near) + sp.Rational(1, 10**30)).claim.want == 1, c
+        assert parse(sp.srepr(2 * c)) == 2 * c
 
 
 def test_a_sum_of_logarithms_of_rationals_is_exactly_zero():

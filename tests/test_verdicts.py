@@ -405,3 +405,22 @@ def test_bounded_chain_with_a_small_slope_far_out(tmp_path):
     _, top = _sup_by_zooming(dF)
     lo, hi = report.kf.kernel_bounds
     assert mp.mpf(lo.numerator) / lo.denominator <= top <= mp.mpf(hi.numerator) / hi.denominator
+
+
+@pytest.mark.parametrize("constant, value", [("EulerGamma", lambda: +mp.euler), ("Catalan", lambda: +mp.catalan),
+                                             ("GoldenRatio", lambda: (1 + mp.sqrt(5)) / 2)])
+def test_named_constants_are_read_by_the_kernel(tmp_path, constant, value):
+    """c log(1 + rho) with c = EulerGamma, Catalan or GoldenRatio: F' =
+    2c s/(1 + s^2), largest at s = 1, so kf = c exactly and k = 2c.  The
+    kernel could not read these constants, so even P2 (f(0, 0) = c log 1 =
+    0) was unknown and every verdict rested on the search."""
+    from uwmr_symbolic.verify import verify_design
+    path = tmp_path / "named.py"
+    path.write_text(f'import sympy as sp\ne1, e2 = sp.symbols("e1 e2", real=True)\n'
+                    f'f = sp.{constant}*sp.log(1 + e1**2 + e2**2)\n')
+    report = verify_design(path, timeout=120)
+    assert {n: v.status.value for n, v in report.properties.items()} == {f"P{i}": "proved" for i in range(1, 9)}
+    assert sp.expand(report.kf.exact - getattr(sp, constant).rewrite(sp.sqrt)) == 0 and not report.kernel["search"]
+    with mp.workdps(50):
+        lo, hi = (mp.mpf(x.numerator) / x.denominator for x in (report.kf.lower, report.kf.upper))
+        assert lo <= value() <= hi and hi - lo < 1e-12

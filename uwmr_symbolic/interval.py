@@ -627,7 +627,7 @@ class Interval:
 # compiler: SymPy tree -> nested closures  f(args) -> (lo, hi)
 # ---------------------------------------------------------------------------
 
-_NUMBER_SYMBOLS = {
+NUMBER_SYMBOLS = {
     sp.pi: lambda: arb.pi(),
     sp.E: lambda: arb.const_e(),
     sp.EulerGamma: lambda: arb.const_euler(),
@@ -746,8 +746,8 @@ class _Compiler:
                 r = sp.Rational(e)
                 v = _enclose_rational(int(r.p), int(r.q))
                 return lambda a: v
-        if e.is_NumberSymbol and e in _NUMBER_SYMBOLS:
-            r = _NUMBER_SYMBOLS[e]()
+        if e.is_NumberSymbol and e in NUMBER_SYMBOLS:
+            r = NUMBER_SYMBOLS[e]()
             v = (_lo(r), _hi(r))
             return lambda a: v
         if e.is_Add:

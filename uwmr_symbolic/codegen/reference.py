@@ -30,6 +30,7 @@ import sympy as sp
 from sympy.codegen.cfunctions import expm1, log1p
 
 from .. import e1 as E1, e2 as E2
+from ..interval import NUMBER_SYMBOLS
 from ..univariate import prepare
 
 START_PREC, MAX_PREC = 128, 16384
@@ -49,10 +50,8 @@ def _arb_fn(expr: sp.Expr):
     if expr.is_Rational:
         p, q = int(expr.p), int(expr.q)
         return lambda a, b: flint.arb(p) / q
-    if expr == sp.pi:
-        return lambda a, b: flint.arb.pi()
-    if expr == sp.E:
-        return lambda a, b: flint.arb(1).exp()
+    if expr in NUMBER_SYMBOLS:          # pi, E, EulerGamma, Catalan, GoldenRatio
+        return lambda a, b: NUMBER_SYMBOLS[expr]()
     if expr.is_Float:
         val = flint.arb(str(expr))
         return lambda a, b: val

@@ -158,15 +158,17 @@ _INCREASING = {sp.exp: arb.exp, sp.tanh: arb.tanh, sp.atan: arb.atan,
 _BOUNDED = {sp.sin: arb.sin, sp.cos: arb.cos}
 
 
+_NAMED = {sp.pi: arb.pi, sp.E: arb.const_e, sp.EulerGamma: arb.const_euler, sp.Catalan: arb.const_catalan,
+          sp.GoldenRatio: lambda: (1 + arb(5).sqrt()) / 2}
+
+
 def _constant(e: sp.Expr) -> arb:
     if e.is_Integer:
         return arb(int(e))
     if e.is_Rational:
         return arb(fmpq(int(e.p), int(e.q)))
-    if e is sp.pi:
-        return arb.pi()
-    if e is sp.E:
-        return arb.const_e()
+    if e in _NAMED:
+        return _NAMED[e]()
     raise Undefined(f"unsupported constant {e}")
 
 
