@@ -168,7 +168,7 @@ def coefficients(draw, allow_float=True):
         x = draw(st.sampled_from([0.1 + 0.2, 1 / 3.0, math.e, math.pi / 4, 0.7071067811865476,
                                   2 ** -0.5, 0.1, 2.5, 1e-3, 1 / 7]))
         return fl(x), kfc(x)       # the second is for kf (see kfc)
-    q = draw(st.sampled_from([R(1), R(1, 2), R(3), R(2, 7), R(1, 1000), R(5, 3)]))
+    q = draw(st.sampled_from([R(1), R(1, 2), R(3), R(2, 7), R(1, 1000), R(5, 3), sp.EulerGamma, sp.Catalan / 2]))
     return q, q
 
 
