@@ -207,8 +207,8 @@ def test_malformed_entries_and_unknown_properties_are_rejected(cert1):
 
 
 def test_other_version_gives_a_clear_error(cert1):
-    bad = dict(cert1, version=2)
-    with pytest.raises(DC.CertificateError, match="version 2 is not supported: this checker reads version 1"):
+    bad = dict(cert1, version=1)        # version 1: P4 without f defined on the plane
+    with pytest.raises(DC.CertificateError, match="version 1 is not supported: this checker reads version 2"):
         DC.check(bad)
 
 
@@ -564,10 +564,10 @@ def test_tampered_reductions_are_not_trusted(elliptic_certs):
     """The checker, not the certificate, decides whether the reduction to F is
     established: claims about F without it leave the reduction to the search."""
     cert = elliptic_certs["r01_nonradial"]
-    # P3 with the reduction's theorems dropped and nothing said to be unchecked
+    # P3 with the reduction's theorems (identity, r > 0, f defined) dropped and nothing said to be unchecked
     bare = copy.deepcopy(cert)
     entry = bare["properties"]["P3"]
-    entry["kernel"]["conclusions"] = entry["kernel"]["conclusions"][2:]
+    entry["kernel"]["conclusions"] = entry["kernel"]["conclusions"][3:]
     entry["unchecked"] = []
     c = _by_name(DC.check(bare))["P3"]
     assert not c.kernel_checked and c.unchecked == [DC.REDUCTION]
@@ -846,7 +846,8 @@ def _forged(f, name, theorems):
     f = f(e1, e2)
     F = sp.piecewise_fold(f.xreplace({e1: S, e2: sp.Integer(0)}))
     red = K.identity_plane(lhs=f, rhs=F.xreplace({S: sp.sqrt(e1 ** 2 + e2 ** 2)}), x=e1, y=e2)
-    proof = [red, K.value_sign(value=sp.Integer(1)), *theorems(K, F, K.derivative(F, S))]
+    proof = [red, K.value_sign(value=sp.Integer(1)), K.defined_on_plane(expr=f, x=e1, y=e2),
+             *theorems(K, F, K.derivative(F, S))]
     return {"format": DC.FORMAT, "version": DC.VERSION, "design": {"name": "forged", "file": "forged.py",
                                                                    "f": sp.srepr(f)},
             "properties": {name: {"status": "proved", "unchecked": [], "witness": None,
@@ -880,3 +881,30 @@ def test_a_certificate_that_proves_half_a_property_is_not_kernel_checked(f, name
     missing, whatever the certificate's notes say."""
     (check,) = DC.check(json.dumps(_forged(f, name, theorems)))
     assert check.status == "proved" and not check.kernel_checked and check.unchecked == [missing]
+
+
+def test_a_reduction_without_f_defined_on_the_plane_is_not_kernel_checked():
+    """Found by a red team: f = log(1 + rho) + e2/(e2 - 2) - 2/(e2 - 2) - 1 is
+    log(1 + rho) wherever it is defined, which `identity_plane` proves, but it
+    has no value on the line e2 = 2; P1-P8 were proved and the certificate
+    re-checked.  P4's link and the elliptic prefix now also ask for
+    `defined_on_plane`, which the kernel refuses for this f."""
+    from uwmr_symbolic.kernel import core as K
+    from uwmr_symbolic.kernel.certificate import to_certificate
+    e1, e2 = sp.symbols("e1 e2", real=True)
+    f = sp.log(1 + e1 ** 2 + e2 ** 2) + e2 / (e2 - 2) - 2 / (e2 - 2) - 1
+    F = sp.log(1 + S ** 2)
+    red = K.identity_plane(lhs=f, rhs=F.xreplace({S: sp.sqrt(e1 ** 2 + e2 ** 2)}), x=e1, y=e2)
+    with pytest.raises(K.KernelError, match="not shown defined on the plane"):
+        K.defined_on_plane(expr=f, x=e1, y=e2)
+    design = {"name": "forged", "file": "forged.py", "f": sp.srepr(f)}
+    p4 = {"format": DC.FORMAT, "version": DC.VERSION, "design": design,
+          "properties": {"P4": {"status": "proved", "unchecked": [], "witness": None,
+                                "kernel": to_certificate([red])}}}
+    with pytest.raises(DC.CertificateError, match="P4: the kernel's conclusions are not .* and f defined at every"):
+        DC.check(json.dumps(p4))
+    rising = _sturm(K, K.derivative(F, S))            # F' = 2s/(1 + s^2) > 0: P5 but for the reduction (and origin)
+    p5 = dict(p4, properties={"P5": {"status": "proved", "unchecked": [], "witness": None,
+                                     "kernel": to_certificate([red, K.value_sign(value=sp.Integer(1)), rising])}})
+    with pytest.raises(DC.CertificateError, match="P5: the kernel's conclusion is not dF/ds > 0"):
+        DC.check(json.dumps(p5))        # (the prefix is no reduction; it was, without definedness)

@@ -997,6 +997,39 @@ def test_not_defined_everywhere_is_refused(expr):
         K.continuous_on_plane(expr=expr, x=px, y=py)
 
 
+_PW = sp.Piecewise
+
+
+@pytest.mark.parametrize("expr", [
+    sp.sqrt(prho), prho ** sp.Rational(3, 4), prho ** sp.pi, 2 ** prho - 1, sp.log(1 + sp.sqrt(prho)),
+    _PW((0, sp.Eq(prho, 0)), (sp.log(prho), True)),                       # the origin given its own value
+    _PW((0, sp.Eq(px, 0) & sp.Eq(py, 0)), (prho * sp.log(prho), True)),   # the same, as two equations
+    _PW((prho, prho < 4), (sp.log(sp.sqrt(prho) / 2) + 4, True)),         # log read where rho >= 4
+    _PW((1, sp.Not(prho >= 1)), (1 / sp.sqrt(prho), True)),
+    _PW((1, px <= 2), (sp.log(px - 2), True)),                           # e1 > 2 there
+    _PW((prho, prho < 1), (sp.sqrt(prho - 1), True)),                     # rho - 1 >= 0 there
+])
+def test_defined_on_the_plane_where_each_branch_is_taken(expr):
+    t = K.defined_on_plane(expr=expr, x=px, y=py)
+    assert (t.claim.kind, t.claim.var, t.claim.lo, t.claim.hi, t.claim.expr) == (
+        "defined", sp.srepr(sp.Tuple(px, py)), "-oo", "oo", sp.srepr(expr))
+
+
+@pytest.mark.parametrize("expr", [
+    py / (py - 2) - 2 / (py - 2), (sp.sqrt(4 - py) + 1) ** 2 - 2 * sp.sqrt(4 - py) + py,    # the red team's
+    (px ** 2 + (py - 2) ** 2) / (px ** 2 + py ** 2 - 4 * py + 4), sp.log(prho), prho ** -sp.pi,
+    _PW((1, prho < 4), (sp.log(prho - 4), True)),        # rho = 4 takes the second branch: log 0
+    _PW((1, sp.Ne(py, 2)), (1 / (py - 2), True)),        # e2 = 2 takes the second branch
+    _PW((sp.log(prho), prho > -1), (0, True)),           # the first branch holds at the origin
+    _PW((0, sp.Eq(px, 0) | sp.Eq(py, 0)), (sp.log(prho), True)),
+    _PW((1, prho < 1)), _PW((1, prho < 1), (2, prho > 1)),   # no condition holds on rho = 1 (or anywhere else)
+    _PW((1, sp.log(px) > 0), (2, True)),                 # a condition not defined everywhere
+])
+def test_not_defined_somewhere_is_not_defined_on_the_plane(expr):
+    with pytest.raises(KernelError, match="not shown defined on the plane"):
+        K.defined_on_plane(expr=expr, x=px, y=py)
+
+
 def test_variables_must_be_real_of_either_sign():
     p = sp.Symbol("p", positive=True)
     with pytest.raises(KernelError, match="must be declared real only"):

@@ -1444,12 +1444,14 @@ def one_branch_theorems(F, var):
 
 
 def radial_theorems(f, F, x, y, var, ratio=1) -> list:
-    """The reduction f(x, y) = F(sqrt(x^2 + r y^2)) as kernel theorems, or []:
-    the kernel's `identity_plane` (P4 when r = 1), and for r != 1 also
-    r > 0 (`value_sign`), the elliptic reduction."""
+    """The reduction f(x, y) = F(sqrt(x^2 + r y^2)) at every point of the
+    plane as kernel theorems, or []: the kernel's `identity_plane` (where
+    both sides are defined), for r != 1 also r > 0 (`value_sign`), and f
+    defined on the plane (`defined_on_plane`).  P4 when r = 1, the elliptic
+    reduction otherwise."""
     try:
         ident = K.identity_plane(lhs=f, rhs=F.subs(var, sp.sqrt(x ** 2 + ratio * y ** 2)), x=x, y=y)
-        return [ident] if ratio == 1 else [ident, K.value_sign(value=ratio)]
+        return [ident, *([] if ratio == 1 else [K.value_sign(value=ratio)]), K.defined_on_plane(expr=f, x=x, y=y)]
     except (K.KernelError, Undefined):
         return []
 

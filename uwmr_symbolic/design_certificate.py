@@ -43,7 +43,7 @@ from .kernel.parse import ParseError, parse
 from .profile import S
 from .verdict import PROPERTIES
 
-FORMAT, VERSION = "uwmr-design-certificate", 1
+FORMAT, VERSION = "uwmr-design-certificate", 2
 SEARCH_ONLY = "the whole argument (no kernel rules for it yet)"
 WITNESS_SEARCH = "the witness of the refutation (checked by the search's own high-precision arithmetic only)"
 H = sp.Symbol("h", positive=True)       # distance from the origin along an axis or a ray (refutation witnesses)
@@ -271,9 +271,11 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
         return []
     if name == "P4":
         rhs = _profile(f).xreplace({S: sp.sqrt(E1 ** 2 + E2 ** 2)})
-        if not (len(claims) == 1 and claims[0].kind == "identity_plane" and claims[0].expr == _srepr(f)
-                and claims[0].other == _srepr(rhs) and claims[0].var == _srepr(sp.Tuple(E1, E2))):
-            raise CertificateError("P4: the kernel's conclusion is not f(e1, e2) = F(sqrt(e1^2 + e2^2))")
+        if not (len(claims) == 2 and claims[0].kind == "identity_plane" and claims[0].expr == _srepr(f)
+                and claims[0].other == _srepr(rhs) and claims[0].var == _srepr(sp.Tuple(E1, E2))
+                and _defined_on_plane(claims[1], f)):
+            raise CertificateError("P4: the kernel's conclusions are not f(e1, e2) = F(sqrt(e1^2 + e2^2)) and f "
+                                   "defined at every point of the plane")
         return []
     if name not in ("P1", "P3", "P5", "P6", "P7", "P8", "kf"):
         return []
@@ -433,19 +435,25 @@ def half_axes(f) -> list:
 
 def _reduction(f, F, claims):
     """(the other claims, sqrt(r)) when the claims begin with the elliptic
-    reduction f(e1, e2) = F(sqrt(e1^2 + r e2^2)) and r > 0, else (claims,
+    reduction f(e1, e2) = F(sqrt(e1^2 + r e2^2)), r > 0 and f defined on the plane, else (claims,
     None).  With s = sqrt(e1^2 + r e2^2), f = G(e1, sqrt(r) e2) for the
     radial G = F(|.|): a linear change of variables, so f has G's
     smoothness, positivity and growth; df/de1 = F'(s) e1/s as for a radial
     f (P5, P6), df/de2 = r F'(s) e2/s -> 0 as e2 -> 0 (P8), and since
     sqrt(r) |e2| <= s with equality on e1 = 0, sup |df/de2| = sqrt(r) sup |F'| (kf)."""
-    if len(claims) >= 2 and claims[0].kind == "identity_plane" and claims[1].kind == "value_sign":
+    if len(claims) >= 3 and claims[0].kind == "identity_plane" and claims[1].kind == "value_sign":
         r = parse(claims[1].expr)
         rhs = F.xreplace({S: sp.sqrt(E1 ** 2 + r * E2 ** 2)})
         if (claims[0].expr, claims[0].other, claims[0].var, claims[1].want) == (
-                _srepr(f), _srepr(rhs), _srepr(sp.Tuple(E1, E2)), 1):
-            return claims[2:], sp.sqrt(r)
+                _srepr(f), _srepr(rhs), _srepr(sp.Tuple(E1, E2)), 1) and _defined_on_plane(claims[2], f):
+            return claims[3:], sp.sqrt(r)
     return claims, None
+
+
+def _defined_on_plane(claim, f) -> bool:
+    """claim says that f has a real value at every point of the plane (an
+    identity on the plane holds where both sides are defined)."""
+    return (claim.kind, claim.expr, claim.var) == ("defined", _srepr(f), _srepr(sp.Tuple(E1, E2)))
 
 
 def _one_branch(F, claims, open_only=False):

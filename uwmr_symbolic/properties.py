@@ -337,7 +337,8 @@ def verify_p4(a: Analysis) -> Verdict:
     if v.proved:
         theorems = radial_theorems(a.f, a.F, E1, E2, S)
         v.details.update(kernel=theorems, unchecked=[] if theorems else [
-            "f(e1, e2) = F(sqrt(e1^2 + e2^2)) (the kernel's identity rule did not accept it)"])
+            "f(e1, e2) = F(sqrt(e1^2 + e2^2)) at every point of the plane (the kernel did not accept the "
+            "identity, or did not show f defined everywhere)"])
     return v
 
 

@@ -1116,7 +1116,7 @@ def sign_by_rewrite(thm, ident, *, cuts=None):
 sign_by_rewrite = rule("arb", "sympy-core")(sign_by_rewrite)
 
 
-def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
+def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
     """Sufficient check that e is defined (real, finite) at every x in
     (lo, hi), exact ends with 0 <= lo < hi <= oo (by default at every
     x > 0): a denominator, a log's argument or a real power's base must be
@@ -1128,36 +1128,95 @@ def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
     the extra assumptions the check rests on (the polynomial ones when a
     rational function was signed, else ()), or None when definedness is not
     shown.  x = Tuple(x1, x2): e defined at every point of the plane, the
-    real variables x1, x2 being of either sign (no rational functions signed)."""
+    real variables x1, x2 being of either sign (no rational functions signed).
+    `analytic=False` (definedness only): also b^y with b > 0 and y any
+    defined exponent, a power with a constant exponent > 0 of a base >= 0,
+    and a Piecewise whose last condition is True, each condition defined
+    where no earlier one holds and each value where its own holds too
+    (`_facts`)."""
     free = x.free_symbols
     lo, hi = _number(lo), _number(hi)
     _need((lo == 0 or _lt(0, lo)) and _lt(lo, hi), "definedness is checked on some (lo, hi) with 0 <= lo < hi")
     ends = (_rational_beyond(lo, -1), _rational_beyond(hi, 1))
     polys = []
 
-    def pos(u):
-        if u == x:
-            return True
-        if not u.has(*free):
-            try:
-                return _const_sign(u) > 0
-            except KernelError:
+    def checker(facts):     # facts: u -> ">", ">=" or "!=" 0, known where this part of e is evaluated
+        def fact(u):        # (keyed by the primitive part: rho/2 > 0 where rho > 0)
+            return facts.get(u.as_content_primitive()[1]) if facts else None
+
+        def pos(u):
+            if u == x or fact(u) == ">":
+                return True
+            if not u.has(*free):
+                try:
+                    return _const_sign(u) > 0
+                except KernelError:
+                    return False
+            if u.is_Add:                            # its constant terms taken together (e - 1 + x > 0)
+                c = u.as_independent(*free, as_Add=True)[0]
+                terms = [a for a in u.args if a.has(*free)] + ([c] if c != 0 else [])
+                ok = all(pos(a) or nonneg(a) for a in terms) and any(pos(a) for a in terms)
+            elif u.is_Mul:
+                ok = all(pos(a) for a in u.args)
+            elif u.is_Pow:                          # b^y > 0 for b > 0 and y real
+                ok = pos(u.base) and (u.exp.is_Rational or not analytic and defined(u.exp))
+            elif isinstance(u, (sp.exp, sp.cosh)):
+                return defined(u.args[0])
+            elif isinstance(u, sp.log):             # log w > 0 where w - 1 > 0
+                return pos(u.args[0] - 1)
+            else:
+                return isinstance(u, _ODD_INCREASING) and pos(u.args[0])     # G(w) > G(0) = 0 where w > 0
+            return ok or positive_rational(u) or (fact(u) == "!=" and weak(u))
+
+        def nonneg(u):
+            return pos(u) or weak(u)
+
+        def weak(u):                                # u >= 0 shown otherwise than by pos(u)
+            if fact(u) == ">=":
+                return True
+            if isinstance(u, sp.log):               # log w >= 0 where w - 1 >= 0
+                return nonneg(u.args[0] - 1)
+            if u.is_Pow and u.exp.is_Integer and u.exp > 0 and u.exp % 2 == 0:
+                return defined(u.base)
+            if isinstance(u, sp.Abs):
+                return defined(u.args[0])
+            if isinstance(u, _ODD_INCREASING):
+                return nonneg(u.args[0])
+            if not analytic and u.is_Pow and not u.exp.has(*free) and _lt(0, u.exp):
+                return nonneg(u.base)
+            return (u.is_Add or u.is_Mul) and all(nonneg(a) for a in u.args)
+
+        def defined(u):
+            if u in free or not u.has(*free):
+                return u in free or _number_ok(u)
+            if u.is_Add or u.is_Mul:
+                return all(defined(a) for a in u.args)
+            if u.is_Pow:
+                if u.exp.is_Integer and u.exp >= 0:
+                    return defined(u.base)
+                return pos(u.base) and (u.exp.is_Rational or not analytic and defined(u.exp)) or \
+                    (not analytic and not u.exp.has(*free) and _lt(0, u.exp) and nonneg(u.base))
+            if isinstance(u, sp.log):
+                return pos(u.args[0])
+            if isinstance(u, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.sin, sp.cos, sp.Abs)):
+                return defined(u.args[0])
+            if not (isinstance(u, sp.Piecewise) and not analytic and u.args[-1].cond == sp.true):
                 return False
-        if u.is_Add:                            # its constant terms taken together (e - 1 + x > 0)
-            c = u.as_independent(*free, as_Add=True)[0]
-            terms = [a for a in u.args if a.has(*free)] + ([c] if c != 0 else [])
-            ok = all(pos(a) or nonneg(a) for a in terms) and any(pos(a) for a in terms)
-        elif u.is_Mul:
-            ok = all(pos(a) for a in u.args)
-        elif u.is_Pow:
-            ok = u.exp.is_Rational and pos(u.base)
-        elif isinstance(u, (sp.exp, sp.cosh)):
-            return defined(u.args[0])
-        elif isinstance(u, sp.log):             # log w > 0 where w - 1 > 0
-            return pos(u.args[0] - 1)
-        else:
-            return isinstance(u, _ODD_INCREASING) and pos(u.args[0])     # G(w) > G(0) = 0 where w > 0
-        return ok or positive_rational(u)
+            known = dict(facts)         # each value where its condition holds and no earlier one does
+            for value, cond in u.args:
+                if not (checker(known)[1](cond) and checker(_facts(cond, False, known))[0](value)):
+                    return False
+                known = _facts(cond, True, known)
+            return True
+
+        def condition(c):
+            if c in (sp.true, sp.false):
+                return True
+            if isinstance(c, (sp.And, sp.Or, sp.Not)):
+                return all(condition(a) for a in c.args)
+            return isinstance(c, sp.core.relational.Relational) and all(defined(a) for a in c.args)
+        pos, weak, defined = map(functools.cache, (pos, weak, defined))   # (a sum asks pos and nonneg of each term)
+        return defined, condition
 
     def positive_rational(u):                   # u = N/D over Q > 0 on (lo', hi') (`_rational_sign`)
         if len(free) > 1 or not _rational_over_q(u, x):
@@ -1168,40 +1227,39 @@ def defined_for_positive(e, x, lo=0, hi=OO) -> tuple | None:
             return False
         polys.append(True)
         return True
-
-    def nonneg(u):
-        if pos(u):
-            return True
-        if isinstance(u, sp.log):               # log w >= 0 where w - 1 >= 0
-            return nonneg(u.args[0] - 1)
-        if u.is_Pow and u.exp.is_Integer and u.exp > 0 and u.exp % 2 == 0:
-            return defined(u.base)
-        if isinstance(u, sp.Abs):
-            return defined(u.args[0])
-        if isinstance(u, _ODD_INCREASING):
-            return nonneg(u.args[0])
-        return (u.is_Add or u.is_Mul) and all(nonneg(a) for a in u.args)
-
-    def defined(u):
-        if u in free or not u.has(*free):
-            return u in free or _number_ok(u)
-        if u.is_Add or u.is_Mul:
-            return all(defined(a) for a in u.args)
-        if u.is_Pow:
-            if not u.exp.is_Rational:
-                return False
-            if u.exp.is_Integer and u.exp >= 0:
-                return defined(u.base)
-            return pos(u.base)
-        if isinstance(u, sp.log):
-            return pos(u.args[0])
-        if isinstance(u, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.sin, sp.cos, sp.Abs)):
-            return defined(u.args[0])
-        return False
-    pos, nonneg, defined = map(functools.cache, (pos, nonneg, defined))   # (a sum asks pos and nonneg of each term)
-    if not defined(_sym(e)):
+    if not checker({})[0](_sym(e)):
         return None
     return ("sympy-polys", "flint-polys") if any(polys) else ()
+
+
+def _facts(c, negate: bool, known: dict) -> dict:
+    """known and what the condition c (its negation) says: u -> ">", ">="
+    or "!=" 0 for u = A - B of a relation A ? B, and for v when u = v + k
+    with a rational k <= 0."""
+    if isinstance(c, sp.Not):
+        return _facts(c.args[0], not negate, known)
+    if negate and isinstance(c, sp.And) and all(isinstance(a, sp.Equality) for a in c.args):   # some a != b:
+        return _facts(sp.Ne(sp.Add(*[(a.lhs - a.rhs) ** 2 for a in c.args]), 0), False, known)  # sum (a - b)^2 != 0
+    if isinstance(c, sp.And if not negate else sp.Or):
+        return functools.reduce(lambda k, a: _facts(a, negate, k), c.args, known)
+    kind = {sp.StrictGreaterThan: (1, ">"), sp.GreaterThan: (1, ">="), sp.StrictLessThan: (-1, ">"),
+            sp.LessThan: (-1, ">="), sp.Unequality: (1, "!="), sp.Equality: (1, "==")}.get(type(c))
+    if kind is None:
+        return known
+    side, op = kind
+    if negate:
+        side, op = -side, {">": ">=", ">=": ">", "!=": "==", "==": "!="}[op]
+    d = c.lhs - c.rhs if side > 0 or op == "!=" else c.rhs - c.lhs
+    new = {d: op} if op != "==" else {}
+    v, k = d.as_independent(*d.free_symbols, as_Add=True)[::-1]       # d = v + k, k constant: v > -k
+    if op in (">", ">=") and k.is_Rational and k <= 0 and v != d:
+        new[v] = ">" if k < 0 or op == ">" else op
+    out = dict(known)
+    for u, o in new.items():
+        u = u.as_content_primitive()[1]             # (its content is > 0)
+        both = {out.get(u), o}
+        out[u] = ">" if ">" in both or both == {">=", "!="} else o
+    return out
 
 
 defined_for_positive = functools.lru_cache(maxsize=4096)(defined_for_positive)      # pure: see core.rule
@@ -1607,6 +1665,18 @@ def continuous_on_plane(*, expr, x, y):
     _need(defined_for_positive(e, sp.Tuple(x, y)) is not None, lambda: f"{e} not shown defined on the plane")
     return Claim("continuous", _s(e), _s(sp.Tuple(x, y)), "-oo", "oo", True, True)
 continuous_on_plane = rule("sympy-core")(continuous_on_plane)
+
+
+def defined_on_plane(*, expr, x, y):
+    """E has a real value at every point (x, y) of the plane:
+    `defined_for_positive` with two real variables of either sign and
+    `analytic=False`.  (An identity on the plane holds where both sides are
+    defined; with this, everywhere.)  Claim kind "defined", on (-oo, oo)."""
+    e = _in_plane(expr, x, y)
+    _need(defined_for_positive(e, sp.Tuple(x, y), analytic=False) is not None,
+          lambda: f"{e} not shown defined on the plane")
+    return Claim("defined", _s(e), _s(sp.Tuple(x, y)), "-oo", "oo", True, True)
+defined_on_plane = rule("sympy-core")(defined_on_plane)
 
 
 def continuous_at_end(*, expr, var, c, width):
