@@ -33,6 +33,7 @@ CASES = {
     "max_of_hidden_zero.py": "Max of a constant 0 in disguise (SymPy's Piecewise rewrite loops)",
     "e1_declared_positive.py": "e1, e2 declared positive (SymPy simplified f with it)",
     "param_against_assumption.py": "a parameter declared positive given -1",
+    "undefined_on_a_line.py": "0/0 on the line e2 = 2 (a zero of a polynomial denominator)",
 }
 
 #: file -> the words of the one line that name the fix
@@ -46,6 +47,7 @@ FIXES = {
     "max_of_hidden_zero.py": ["could not write the Abs, Max", "write f as a Piecewise"],
     "e1_declared_positive.py": ["e1 is declared positive=True", "sympy.symbols('e1 e2', real=True)"],
     "param_against_assumption.py": ["params['c'] = -1 does not satisfy positive=True", "give a value that does"],
+    "undefined_on_a_line.py": ["f is undefined at (e1, e2) = (0, 2)"],
 }
 HANGS = "sleep_forever.py"
 

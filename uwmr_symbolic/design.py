@@ -281,7 +281,7 @@ def _check_real_valued(f: sp.Expr) -> None:
         raise DesignError("f contains the imaginary unit; f must be real-valued")
     pts = [(0, 0), (1, 0), (0, 1), (-1, 0), (0, -1), (sp.Rational(1, 2), sp.Rational(1, 3)),
            (3, -2), (-5, 7), (sp.Rational(1, 10), 0), (100, 100)]
-    for a, b in pts:
+    for a, b in pts + _zeros_of_denominators(f):
         try:
             v = f.subs({E1: a, E2: b})
             if isinstance(v, sp.Piecewise) or v.free_symbols:
@@ -297,6 +297,23 @@ def _check_real_valued(f: sp.Expr) -> None:
         re, im = v.as_real_imag()
         if im != 0 and abs(im) > 1e-25:
             raise DesignError(f"f is not real-valued at (e1, e2) = ({a}, {b}): f = {sp.N(v, 6)}")
+
+
+def _zeros_of_denominators(f: sp.Expr, lines=(0, 1, -1)) -> list:
+    """Rational points where a denominator of f that is a polynomial over Q
+    in e1, e2 vanishes, on the lines e1 = c and e2 = c (c in `lines`): where
+    f = e2/(e2 - 2) - 2/(e2 - 2) has no value, off the sample points."""
+    out = []
+    for p in f.atoms(sp.Pow):
+        if not (p.exp.is_Rational and p.exp < 0 and p.base.free_symbols and p.base.is_polynomial(E1, E2)):
+            continue
+        for c in lines:
+            for var, other in ((E1, E2), (E2, E1)):
+                base = sp.Poly(p.base.subs(var, c), other)
+                if base.is_zero or base.degree() > 8 or not base.domain.is_QQ and not base.domain.is_ZZ:
+                    continue
+                out += [(c, r) if var == E1 else (r, c) for r in sp.roots(base, filter="Q")]
+    return out[:20]
 
 
 _RECIPROCALS = {sp.sech: lambda x: 1 / sp.cosh(x), sp.csch: lambda x: 1 / sp.sinh(x),
