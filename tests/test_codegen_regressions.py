@@ -7,6 +7,7 @@ are compared with the exact law (`validate.check`: status 0, finite,
 error <= 1e-12 / 1e-5 of the scale, bound (10))."""
 from __future__ import annotations
 
+import math
 import shutil
 from pathlib import Path
 
@@ -593,3 +594,31 @@ def test_a_law_with_a_named_constant_is_validated_and_written(tmp_path):
     assert gamma <= mod.KF <= gamma * (1 + 2 ** -52)
     v, w, st = lib.run(_law_rows([(0.0, 1.0)]))      # g(0, 1) = 2 EulerGamma/(1 + 1)
     assert st[0] == 0 and w[0] == pytest.approx(gamma, rel=1e-15)
+
+
+@pytest.mark.parametrize("R", [100, 10**4])
+def test_a_c2_join_far_out_is_generated(tmp_path, R):
+    """F = s^2/2 up to R, then R s - R^2/2 + (R^2/2) log(1 + ((s - R)/R)^2)
+    (C^2 at R: value R^2/2, slope R, F'' = 1; proved, kf = 3R/2).  Asking
+    SymPy's simplify whether the formula at the join is the piece's ran for
+    minutes (the log's argument raised to the power R^2/2) and --codegen
+    never finished; it gets 2 s now.  At e = (0, e2), g = F'(|e2|): e2 inside,
+    and beyond F'(s) = R + (s - R)/(1 + ((s - R)/R)^2), so F'(2R) = 3R/2."""
+    path = tmp_path / "join.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    f"s = sp.sqrt(rho)\nR = sp.Integer({R})\n"
+                    "f = sp.Piecewise((rho/2, rho <= R**2), (R*s - R**2/2 + R**2/2*sp.log(1 + ((s - R)/R)**2), True))\n")
+    lib, mod, _ = _check_all(path, tmp_path, _law_rows([(0.0, 0.5 * R), (0.0, 2.0 * R), (3.0 * R, 4.0 * R)]))
+    v, w, st = lib.run(_law_rows([(0.0, 0.5 * R), (0.0, 2.0 * R)]))
+    assert list(st) == [0, 0] and w[0] == pytest.approx(0.5 * R, rel=1e-14) and w[1] == pytest.approx(1.5 * R, rel=1e-14)
+
+
+def test_a_tolerance_scale_beyond_every_number_is_inf():
+    """|e . grad g| beyond the doubles (log(1 + rho) + (1 - cos rho)/(2 (1 + rho))
+    at e2 = -DBL_MAX): the reference raised in man_exp, and the proved design
+    was refused as "the exact law could not be evaluated"; the refusal now
+    names what fails (the C double's status 4 where the law is finite)."""
+    import flint
+    from uwmr_symbolic.codegen.reference import _to_float
+    assert _to_float(flint.arb("inf")) == math.inf and _to_float(-flint.arb("inf")) == -math.inf
+    assert _to_float(flint.arb(2) ** 1100) == math.inf and _to_float(flint.arb(3) / 4) == 0.75

@@ -245,6 +245,8 @@ def _to_float(x) -> float:
     """Nearest double of an arb's midpoint, rounded as IEEE does: +-inf from
     2^1024 - 2^970 on, the largest double between that and the largest double."""
     m = x.mid()
+    if not m.is_finite():                       # (a tolerance scale of |e . grad g| beyond every number)
+        return math.copysign(math.inf, float(m)) if not m.is_nan() else math.nan
     if abs(m) > flint.arb(1.7976931348623157e308):
         man, exp = m.man_exp()                  # the exact dyadic midpoint
         mag = abs(int(man))
