@@ -128,3 +128,22 @@ def test_bad_reference_is_a_one_line_usage_error(tmp_path):
     run = cli(ROOT / "designs/design1_jiang.py", "--simulate", "--reference", f"circle={tmp_path / 'ref.csv'}")
     assert run.returncode == 2
     assert len(run.stderr.strip().splitlines()) == 1 and "ref.csv" in run.stderr
+
+
+def test_codegen_refuses_an_unproved_design_without_verifying_it_again(tmp_path, capsys):
+    """The batch's result says P3 is unknown: --codegen refused it only after
+    a second verification in this process, which a red team saw run for
+    25 minutes inside SymPy's C code (no time limit reaches there).  Now the
+    refusal comes from the result itself; --force verifies in a worker
+    process, killed past --timeout like the batch's."""
+    from uwmr_symbolic.cli import write_code
+    design = tmp_path / "d.py"
+    results = [{"design": str(design), "f": "log(e1**2 + e2**2 + 1)", "properties": {
+        "P1": {"verdict": "proved", "reason": "ok"}, "P3": {"verdict": "unknown", "reason": "undecided near s = 4"}}}]
+
+    def reports(path):
+        raise AssertionError("verified again")
+    assert write_code([design], results, str(tmp_path / "out"), False, reports) == 1
+    err = capsys.readouterr().err
+    assert "d.py: no code generated, the design is not verified (1 reason(s): P3 unknown: undecided near s = 4" in err
+    assert "use --force" in err and not (tmp_path / "out").exists()

@@ -220,8 +220,8 @@ class Reports:
     def __call__(self, path):
         from .api import verify_file
         key = str(path)
-        if key not in self._reports:
-            self._reports[key] = verify_file(path, timeout=self.timeout, worker=False)
+        if key not in self._reports:    # in a worker process, killed past --timeout like the batch's
+            self._reports[key] = verify_file(path, timeout=self.timeout, worker=True)
         return self._reports[key]
 
 
@@ -278,7 +278,10 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
             print(f"{path}: no code generated: the design file did not load within --timeout", file=sys.stderr)
             continue
         target = None if out == "" else (Path(out) / path.stem if len(paths) > 1 else Path(out))
+        unproved = [f"{p} {v['verdict']}: {v['reason']}" for p, v in d["properties"].items() if v["verdict"] != "proved"]
         try:
+            if unproved and not force:      # refused as `generate` would, without verifying it again
+                raise CodegenRefused(unproved)
             written = generate(path, target, force=force, report=reports(path))
         except CodegenInvalid as exc:
             print(f"{path}: no code generated, the generated code failed its validation: {exc.reasons[0]}",
