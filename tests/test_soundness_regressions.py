@@ -916,14 +916,15 @@ def test_a_supremum_beyond_the_doubles_is_no_crash(tmp_path):
 
 
 @pytest.mark.parametrize("body", [
-    "f = log(1 + rho) + e2/(e2 - 2) - 2/(e2 - 2) - 1",                      # no value on the line e2 = 2
-    "f = log(1 + rho) + (e1*e2 - 2*e2)/(e1 - 2) - e2",                       # ... on the line e1 = 2
-    "f = log(1 + rho)*(e1**2 + (e2 - 2)**2)/(e1**2 + e2**2 - 4*e2 + 4)",     # ... at the point (0, 2)
+    "f = log(1 + rho) + e2/(e2 - sqrt(2)) - sqrt(2)/(e2 - sqrt(2)) - 1",     # no value on the line e2 = sqrt 2
+    "f = log(1 + rho) + (e1*e2 - sqrt(3)*e2)/(e1 - sqrt(3)) - e2",           # ... on the line e1 = sqrt 3
+    "f = log(1 + rho)*(e1**2 + (e2 - sqrt(2))**2)/(e1**2 + e2**2 - 2*sqrt(2)*e2 + 2)",   # ... at (0, sqrt 2)
     "f = log(1 + rho)*((sqrt(4 - e2) + 1)**2 - 2*sqrt(4 - e2) - 4 + e2)",    # not real for e2 > 4
 ])
 def test_an_f_without_a_value_somewhere_off_the_e1_axis_is_not_proved(tmp_path, body):
     """Found by a red team: each f is log(1 + rho) wherever it has a real
-    value (the loader's ten points and the e1 axis miss the bad set), so the
+    value (the loader's sample points and the e1 axis miss the bad set; with
+    rational lines, 2 for sqrt 2, the loader now refuses the f), so the
     identity f = F(|e|) held where both sides are defined and P1-P8 were
     proved.  The reduction now also needs f defined on the whole plane."""
     report, got = verify(tmp_path, body)
