@@ -1008,6 +1008,9 @@ _PW = sp.Piecewise
     _PW((1, sp.Not(prho >= 1)), (1 / sp.sqrt(prho), True)),
     _PW((1, px <= 2), (sp.log(px - 2), True)),                           # e1 > 2 there
     _PW((prho, prho < 1), (sp.sqrt(prho - 1), True)),                     # rho - 1 >= 0 there
+    _PW((prho, prho < 3), ((prho - 3) / (prho - 2), True)),              # rho - 2 >= 1 > 0 there
+    _PW((prho, (prho < 1) | (prho < 2)), (1 / (2 * prho - 3), True)),    # 2 rho - 3 >= 1 there
+    sp.log(1 + sp.log(sp.cosh(prho))), sp.expand((prho - 4) ** 2) ** sp.Rational(3, 2),   # log cosh >= 0; (rho - 4)^2
 ])
 def test_defined_on_the_plane_where_each_branch_is_taken(expr):
     t = K.defined_on_plane(expr=expr, x=px, y=py)
@@ -1019,6 +1022,8 @@ def test_defined_on_the_plane_where_each_branch_is_taken(expr):
     py / (py - 2) - 2 / (py - 2), (sp.sqrt(4 - py) + 1) ** 2 - 2 * sp.sqrt(4 - py) + py,    # the red team's
     (px ** 2 + (py - 2) ** 2) / (px ** 2 + py ** 2 - 4 * py + 4), sp.log(prho), prho ** -sp.pi,
     _PW((1, prho < 4), (sp.log(prho - 4), True)),        # rho = 4 takes the second branch: log 0
+    _PW((1, prho < 3), (1 / (2 * prho - 6), True)),      # ... and 1/0 at rho = 3
+    sp.expand((prho - 4) * (prho - 5)) ** sp.Rational(1, 2),            # < 0 for 4 < rho < 5
     _PW((1, sp.Ne(py, 2)), (1 / (py - 2), True)),        # e2 = 2 takes the second branch
     _PW((sp.log(prho), prho > -1), (0, True)),           # the first branch holds at the origin
     _PW((0, sp.Eq(px, 0) | sp.Eq(py, 0)), (sp.log(prho), True)),

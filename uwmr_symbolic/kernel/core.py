@@ -1140,9 +1140,14 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
     ends = (_rational_beyond(lo, -1), _rational_beyond(hi, 1))
     polys = []
 
-    def checker(facts):     # facts: u -> ">", ">=" or "!=" 0, known where this part of e is evaluated
-        def fact(u):        # (keyed by the primitive part: rho/2 > 0 where rho > 0)
-            return facts.get(u.as_content_primitive()[1]) if facts else None
+    def checker(facts):     # `_facts`, known where this part of e is evaluated
+        def fact(u):        # ">", ">=" when u = c p + k > 0, >= 0 by p >= L (c > 0), "!=" when p != 0 (k = 0)
+            c, p, k = _split(u) if facts else (0, None, 0)
+            if (p, ">=") in facts:
+                L, strict = facts[(p, ">=")]
+                if c * L + k >= 0:
+                    return ">" if c * L + k > 0 or strict else ">="
+            return "!=" if k == 0 and (p, "!=") in facts else None
 
         def pos(u):
             if u == x or fact(u) == ">":
@@ -1166,7 +1171,7 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
                 return pos(u.args[0] - 1)
             else:
                 return isinstance(u, _ODD_INCREASING) and pos(u.args[0])     # G(w) > G(0) = 0 where w > 0
-            return ok or positive_rational(u) or (fact(u) == "!=" and weak(u))
+            return ok or positive_rational(u) or radial_polynomial(u, True) or (fact(u) == "!=" and weak(u))
 
         def nonneg(u):
             return pos(u) or weak(u)
@@ -1174,8 +1179,10 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
         def weak(u):                                # u >= 0 shown otherwise than by pos(u)
             if fact(u) == ">=":
                 return True
-            if isinstance(u, sp.log):               # log w >= 0 where w - 1 >= 0
-                return nonneg(u.args[0] - 1)
+            if isinstance(u, sp.log):               # log w >= 0 where w - 1 >= 0; log cosh w >= 0
+                return nonneg(u.args[0] - 1) or isinstance(u.args[0], sp.cosh) and defined(u.args[0])
+            if radial_polynomial(u, False):
+                return True
             if u.is_Pow and u.exp.is_Integer and u.exp > 0 and u.exp % 2 == 0:
                 return defined(u.base)
             if isinstance(u, sp.Abs):
@@ -1218,6 +1225,18 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
         pos, weak, defined = map(functools.cache, (pos, weak, defined))   # (a sum asks pos and nonneg of each term)
         return defined, condition
 
+    def radial_polynomial(u, strict):           # u = q(x1^2 + x2^2), q over Q, q(r) >= 0 (> 0) for r >= 0
+        if len(free) != 2 or not u.is_polynomial(*free):
+            return False
+        q = sp.expand(u.xreplace({x[0]: sp.sqrt(_R - x[1] ** 2)}))
+        try:
+            _need(q.free_symbols <= {_R}, "not a polynomial in x1^2 + x2^2")
+            _rational_sign(q, _R, sp.Integer(0), OO, False, True, 1, strict)
+        except KernelError:
+            return False
+        polys.append(True)
+        return True
+
     def positive_rational(u):                   # u = N/D over Q > 0 on (lo', hi') (`_rational_sign`)
         if len(free) > 1 or not _rational_over_q(u, x):
             return False
@@ -1232,10 +1251,23 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
     return ("sympy-polys", "flint-polys") if any(polys) else ()
 
 
+_R = sp.Symbol("r", nonnegative=True)
+
+
+def _split(d):
+    """(c, p, k) with d = c p + k, c > 0 and k rational, p without constant
+    term or content ((0, None, 0) when d has no such form)."""
+    k, v = d.as_independent(*d.free_symbols, as_Add=True)
+    if not (k.is_Rational and v.free_symbols):
+        return 0, None, 0
+    c, p = v.as_content_primitive()
+    return c, p, k
+
+
 def _facts(c, negate: bool, known: dict) -> dict:
-    """known and what the condition c (its negation) says: u -> ">", ">="
-    or "!=" 0 for u = A - B of a relation A ? B, and for v when u = v + k
-    with a rational k <= 0."""
+    """known and what the condition c (its negation) says: for each relation
+    A ? B, with A - B = c p + k (`_split`), a lower bound (p, ">=") -> (L,
+    strict): p >= L, or p > L; and (p, "!=") when A - B = c p != 0."""
     if isinstance(c, sp.Not):
         return _facts(c.args[0], not negate, known)
     if negate and isinstance(c, sp.And) and all(isinstance(a, sp.Equality) for a in c.args):   # some a != b:
@@ -1249,16 +1281,14 @@ def _facts(c, negate: bool, known: dict) -> dict:
     side, op = kind
     if negate:
         side, op = -side, {">": ">=", ">=": ">", "!=": "==", "==": "!="}[op]
-    d = c.lhs - c.rhs if side > 0 or op == "!=" else c.rhs - c.lhs
-    new = {d: op} if op != "==" else {}
-    v, k = d.as_independent(*d.free_symbols, as_Add=True)[::-1]       # d = v + k, k constant: v > -k
-    if op in (">", ">=") and k.is_Rational and k <= 0 and v != d:
-        new[v] = ">" if k < 0 or op == ">" else op
+    f, p, k = _split(c.lhs - c.rhs if side > 0 or op == "!=" else c.rhs - c.lhs)
     out = dict(known)
-    for u, o in new.items():
-        u = u.as_content_primitive()[1]             # (its content is > 0)
-        both = {out.get(u), o}
-        out[u] = ">" if ">" in both or both == {">=", "!="} else o
+    if p is not None and op == "!=" and k == 0:
+        out[(p, "!=")] = True
+    elif p is not None and op in (">", ">="):       # f p + k > 0: p > -k/f
+        new = (-k / f, op == ">")
+        old = out.get((p, ">="), new)
+        out[(p, ">=")] = max(new, old)               # the larger bound; at one bound, the strict one
     return out
 
 
