@@ -1011,6 +1011,7 @@ _PW = sp.Piecewise
     _PW((prho, prho < 3), ((prho - 3) / (prho - 2), True)),              # rho - 2 >= 1 > 0 there
     _PW((prho, (prho < 1) | (prho < 2)), (1 / (2 * prho - 3), True)),    # 2 rho - 3 >= 1 there
     sp.log(1 + sp.log(sp.cosh(prho))), sp.expand((prho - 4) ** 2) ** sp.Rational(3, 2),   # log cosh >= 0; (rho - 4)^2
+    sp.log(2 - sp.exp(-prho)), 1 / (3 - 2 * sp.tanh(prho)), 1 / (2 - sp.atan(prho)),   # terms bounded below
 ])
 def test_defined_on_the_plane_where_each_branch_is_taken(expr):
     t = K.defined_on_plane(expr=expr, x=px, y=py)
@@ -1024,6 +1025,8 @@ def test_defined_on_the_plane_where_each_branch_is_taken(expr):
     _PW((1, prho < 4), (sp.log(prho - 4), True)),        # rho = 4 takes the second branch: log 0
     _PW((1, prho < 3), (1 / (2 * prho - 6), True)),      # ... and 1/0 at rho = 3
     sp.expand((prho - 4) * (prho - 5)) ** sp.Rational(1, 2),            # < 0 for 4 < rho < 5
+    sp.log(1 - sp.exp(-prho)), sp.log(2 - 2 * sp.cos(prho)),            # log 0 at the origin
+    1 / (1 - sp.tanh(prho)),     # defined (tanh < 1), but the bound -1 of -tanh gives only >= 0: not shown
     _PW((1, sp.Ne(py, 2)), (1 / (py - 2), True)),        # e2 = 2 takes the second branch
     _PW((sp.log(prho), prho > -1), (0, True)),           # the first branch holds at the origin
     _PW((0, sp.Eq(px, 0) | sp.Eq(py, 0)), (sp.log(prho), True)),

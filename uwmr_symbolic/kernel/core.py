@@ -1161,6 +1161,8 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
                 c = u.as_independent(*free, as_Add=True)[0]
                 terms = [a for a in u.args if a.has(*free)] + ([c] if c != 0 else [])
                 ok = all(pos(a) or nonneg(a) for a in terms) and any(pos(a) for a in terms)
+                bounds = [] if ok else [low(a) for a in terms]
+                ok = ok or None not in bounds and _lt(0, sp.Add(*bounds))
             elif u.is_Mul:
                 ok = all(pos(a) for a in u.args)
             elif u.is_Pow:                          # b^y > 0 for b > 0 and y real
@@ -1175,6 +1177,16 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
 
         def nonneg(u):
             return pos(u) or weak(u)
+
+        def low(a):                 # a constant at or below the term a, or None
+            if not a.has(*free) or nonneg(a):
+                return a if not a.has(*free) else 0
+            c, g = a.as_coeff_Mul()             # c g with c < 0 and g <= 1 (pi/2): exp(w) with w <= 0, tanh, ...
+            if not (c < 0 and defined(g)):
+                return None
+            if isinstance(g, (sp.tanh, sp.erf, sp.sin, sp.cos)) or isinstance(g, sp.exp) and nonneg(-g.args[0]):
+                return c
+            return c * sp.pi / 2 if isinstance(g, sp.atan) else None
 
         def weak(u):                                # u >= 0 shown otherwise than by pos(u)
             if fact(u) == ">=":
