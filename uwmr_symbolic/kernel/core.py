@@ -1128,8 +1128,11 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
     the extra assumptions the check rests on (the polynomial ones when a
     rational function was signed, else ()), or None when definedness is not
     shown.  x = Tuple(x1, x2): e defined at every point of the plane, the
-    real variables x1, x2 being of either sign (no rational functions signed).
-    `analytic=False` (definedness only): also b^y with b > 0 and y any
+    real variables x1, x2 being of either sign (no rational functions signed
+    but polynomials q(x1^2 + x2^2), by Sturm in r >= 0).  Both: log cosh w >=
+    0, and a sum > 0 when its terms' lower bounds add up to more than 0 (c
+    exp(w) >= c for c < 0 and w <= 0; c G >= c for G = tanh, erf, sin, cos;
+    c atan >= c pi/2).  `analytic=False` (definedness only): also b^y with b > 0 and y any
     defined exponent, a power with a constant exponent > 0 of a base >= 0,
     and a Piecewise whose last condition is True, each condition defined
     where no earlier one holds and each value where its own holds too
