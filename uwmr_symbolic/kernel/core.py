@@ -1182,8 +1182,10 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
             return pos(u) or weak(u)
 
         def low(a):                 # a constant at or below the term a, or None
-            if not a.has(*free) or nonneg(a):
-                return a if not a.has(*free) else 0
+            if not a.has(*free):
+                return a
+            if nonneg(a):
+                return 0
             c, g = a.as_coeff_Mul()             # c g with c < 0 and g <= 1 (pi/2): exp(w) with w <= 0, tanh, ...
             if not (c < 0 and defined(g)):
                 return None
@@ -1196,8 +1198,6 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
                 return True
             if isinstance(u, sp.log):               # log w >= 0 where w - 1 >= 0; log cosh w >= 0
                 return nonneg(u.args[0] - 1) or isinstance(u.args[0], sp.cosh) and defined(u.args[0])
-            if radial_polynomial(u, False):
-                return True
             if u.is_Pow and u.exp.is_Integer and u.exp > 0 and u.exp % 2 == 0:
                 return defined(u.base)
             if isinstance(u, sp.Abs):
@@ -1206,7 +1206,7 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
                 return nonneg(u.args[0])
             if not analytic and u.is_Pow and not u.exp.has(*free) and _lt(0, u.exp):
                 return nonneg(u.base)
-            return (u.is_Add or u.is_Mul) and all(nonneg(a) for a in u.args)
+            return (u.is_Add or u.is_Mul) and all(nonneg(a) for a in u.args) or radial_polynomial(u, False)
 
         def defined(u):
             if u in free or not u.has(*free):
