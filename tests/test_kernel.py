@@ -1012,6 +1012,8 @@ _PW = sp.Piecewise
     _PW((prho, (prho < 1) | (prho < 2)), (1 / (2 * prho - 3), True)),    # 2 rho - 3 >= 1 there
     sp.log(1 + sp.log(sp.cosh(prho))), sp.expand((prho - 4) ** 2) ** sp.Rational(3, 2),   # log cosh >= 0; (rho - 4)^2
     sp.log(2 - sp.exp(-prho)), 1 / (3 - 2 * sp.tanh(prho)), 1 / (2 - sp.atan(prho)),   # terms bounded below
+    sp.log(2 + sp.sin(px)), 1 / (sp.cosh(px) - sp.Rational(1, 2)), sp.log(1 + sp.tanh(px)),   # sin >= -1, cosh >= 1,
+    1 / (1 + sp.erf(px * py)), sp.log(sp.log(prho + 2)), sp.log(1 + sp.atan(prho)),         # tanh, erf > -1; log 2
 ])
 def test_defined_on_the_plane_where_each_branch_is_taken(expr):
     t = K.defined_on_plane(expr=expr, x=px, y=py)
@@ -1032,6 +1034,8 @@ def test_defined_on_the_plane_where_each_branch_is_taken(expr):
     _PW((0, sp.Eq(px, 0) | sp.Eq(py, 0)), (sp.log(prho), True)),
     _PW((1, prho < 1)), _PW((1, prho < 1), (2, prho > 1)),   # no condition holds on rho = 1 (or anywhere else)
     _PW((1, sp.log(px) > 0), (2, True)),                 # a condition not defined everywhere
+    _PW((sp.oo, prho < 1), (prho, True)), _PW((-sp.oo, sp.Eq(prho, 2)), (prho, True)),   # no real value
+    1 / (1 + sp.sin(px)), 1 / (sp.cosh(px) - 1), sp.log(sp.log(prho + 1)), 1 / (1 + sp.erf(px) + sp.tanh(py)),
 ])
 def test_not_defined_somewhere_is_not_defined_on_the_plane(expr):
     with pytest.raises(KernelError, match="not shown defined on the plane"):

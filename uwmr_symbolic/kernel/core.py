@@ -167,10 +167,10 @@ def decode(v):
 
 def rule(*assumes):
     """Register a rule: ``fn(*premises, **data)`` returns a Claim (or a
-    (Claim, extra assumptions) pair) after checking everything.  Applied as
-    ``name = rule(...)(name)`` after the definition rather than as a
-    decorator, so that mutation testing (mutmut skips decorated functions)
-    reaches the rule bodies; the effect is the same."""
+    (Claim, extra assumptions) pair) after checking everything.  Applied
+    to every rule by the table `_RULE_ASSUMPTIONS` at the end of this
+    module, rather than as a decorator, so that mutation testing (mutmut
+    skips decorated functions) reaches the rule bodies."""
     def deco(fn):
         @functools.wraps(fn)
         def apply(*premises, **data):
@@ -245,7 +245,6 @@ def derivative(e, x):
     return sp.Add(*[e.fdiff(i) * d for i, d in enumerate(ds, 1) if d != 0])
 
 
-derivative = functools.lru_cache(maxsize=8192)(derivative)     # pure: see core.rule
 
 
 def _lt(a, b) -> bool:
@@ -264,7 +263,6 @@ def _lt(a, b) -> bool:
     return d.positive()
 
 
-_lt = functools.lru_cache(maxsize=8192)(_lt)      # pure: see core.rule (ends are compared again and again)
 
 
 def _const_sign(c, zero=False) -> int:
@@ -303,7 +301,6 @@ def _exact_in(e, var) -> sp.Expr:
     return e
 
 
-_exact_in = functools.lru_cache(maxsize=4096)(_exact_in)       # pure (a large claim's checks cost milliseconds)
 
 
 def _interval(var, lo, hi, lo_open, hi_open, at_zero=False):
@@ -405,7 +402,6 @@ def sign_by_cover(*, expr, var, cuts, want, strict=True, mean_value=False):
         _need(_box_ok(v, want, strict), lambda: f"sign not shown on [{a}, {b}]: {v}")
     claim = _sign_claim(e, var, cuts[0], cuts[-1], False, False, want, strict)
     return (claim, ("sympy-diff",)) if d is not None else claim
-sign_by_cover = rule("arb", "sympy-core")(sign_by_cover)
 
 
 def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
@@ -430,7 +426,6 @@ def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
     sigma = _vanishing_to_order(e, var, c, cuts, order)[1]
     _need(sigma != 0, lambda: f"derivative {order} has no strict sign on [{a}, {b}]")
     return _sign_claim(e, var, a, b, side > 0, side < 0, sigma * side ** order, True)
-sign_by_taylor = rule("arb", "sympy-core", "sympy-diff")(sign_by_taylor)
 
 
 def _vanishing_to_order(e, var, c, cuts, m):
@@ -473,7 +468,6 @@ def limit_by_taylor(*, expr, num, den, var, order, width):
     L = _number(dn.xreplace({var: sp.Integer(0)}) / dd.xreplace({var: sp.Integer(0)}))
     _need(evaluate(dn / dd - L, var, 0, 0, bits=256).hull().contains(0), "Arb disagrees with L")
     return Claim("limit", _s(e), _s(var), _s(0), _s(w), other=_s(L)), extra
-limit_by_taylor = rule("arb", "sympy-core", "sympy-diff", "sympy-polys")(limit_by_taylor)
 
 
 def sign_by_sturm(*, expr, var, lo, hi, lo_open, hi_open, want, strict=True):
@@ -500,19 +494,9 @@ def _rational_sign(e, var, lo, hi, lo_open, hi_open, want, strict):
     N, D, G = _fraction_over_q(e, var)
     x0 = _inner_point(lo, hi, [])
     at = fmpq(int(x0.p), int(x0.q))
-    _flint_sign(G, var, lo, hi, lo_open, hi_open, 1 if G(at) > 0 else -1, True, x0)
+    _polynomial_sign(G, var, lo, hi, lo_open, hi_open, 1 if G(at) > 0 else -1, True, x0)
     _need(D(at) != 0, "D vanishes where G does not")
-    _flint_sign(N, var, lo, hi, lo_open, hi_open, want * (1 if D(at) > 0 else -1), strict, x0)
-
-
-def _flint_sign(q, var, lo, hi, lo_open, hi_open, want, strict, x0):
-    """`_polynomial_sign` of an fmpq_poly q: where Descartes' rule (in FLINT)
-    shows no root in I, the sign at the inner point x0; else as a SymPy Poly."""
-    if not q.is_zero() and _rootless_by_descartes(q, lo, hi, lo_open, hi_open):
-        _need(q(fmpq(int(x0.p), int(x0.q))) * want > 0, lambda: f"p({x0}) has the wrong sign")
-        return
-    poly = sp.Poly([sp.Rational(int(c.p), int(c.q)) for c in reversed(q.coeffs())] or [0], var, domain=sp.QQ)
-    _polynomial_sign(poly, lo, hi, lo_open, hi_open, want, strict)
+    _polynomial_sign(N, var, lo, hi, lo_open, hi_open, want * (1 if D(at) > 0 else -1), strict, x0)
 
 
 MAX_DEGREE = 2000       # `_fraction_over_q` refuses beyond (exact arithmetic in such degrees takes minutes)
@@ -558,17 +542,22 @@ def _fraction_over_q(e, var):
     return walk(e)
 
 
-def _polynomial_sign(poly, lo, hi, lo_open, hi_open, want, strict):
-    """`sign_by_sturm`'s check of a Poly over Q, without a theorem (also
-    `defined_for_positive`'s)."""
-    if poly.is_zero:                            # 0 >= 0 and 0 <= 0 everywhere, never > 0
+def _polynomial_sign(q, var, lo, hi, lo_open, hi_open, want, strict, x0):
+    """`sign_by_sturm`'s check of a polynomial q over Q (FLINT's fmpq_poly),
+    without a theorem: where Descartes' rule shows no root in I, the sign
+    at the inner point x0; else as a SymPy Poly, by its square-free factors."""
+    if q.is_zero():                             # 0 >= 0 and 0 <= 0 everywhere, never > 0
         _need(not strict, "the zero polynomial has no strict sign")
         return
-    factors = [] if _rootless_by_descartes(poly, lo, hi, lo_open, hi_open) else poly.sqf_list()[1]
-    for q, m in factors:                        # weak: roots of even multiplicity, and at the ends, do no harm
+    if _rootless_by_descartes(q, lo, hi, lo_open, hi_open):
+        _need(q(fmpq(int(x0.p), int(x0.q))) * want > 0, lambda: f"p({x0}) has the wrong sign")
+        return
+    poly = sp.Poly([sp.Rational(int(c.p), int(c.q)) for c in reversed(q.coeffs())], var, domain=sp.QQ)
+    factors = poly.sqf_list()[1]
+    for f, m in factors:                        # weak: roots of even multiplicity, and at the ends, do no harm
         if strict or m % 2:
-            _need(_roots_in(q, lo, hi, lo_open or not strict, hi_open or not strict) == 0,
-                  lambda: f"factor {q.as_expr()} has a root in the interval")
+            _need(_roots_in(f, lo, hi, lo_open or not strict, hi_open or not strict) == 0,
+                  lambda: f"factor {f.as_expr()} has a root in the interval")
     x0 = _inner_point(lo, hi, factors)
     _need(sp.sign(poly.eval(x0)) == want, lambda: f"p({x0}) has the wrong sign")
 
@@ -578,13 +567,9 @@ def _inner_point(lo, hi, factors):
     lo_q, hi_q = _rational_beyond(lo, 1), _rational_beyond(hi, -1)
     base = lo_q if lo_q != -OO else (hi_q - 1 if hi_q != OO else sp.Integer(0))
     step = (hi_q - lo_q) if lo_q != -OO and hi_q != OO else sp.Integer(1)
-    for k in range(1, 60):
-        x0 = base + step / (k + 1) if lo_q != -OO else base - sp.Integer(k)
-        if all(q.eval(x0) != 0 for q, _ in factors):
-            break
-    else:
-        raise KernelError("no inner point found")
-    _need(x0.is_Rational and _lt(lo, x0) and _lt(x0, hi), "inner point outside")
+    points = (base + step / (k + 1) if lo_q != -OO else base - k for k in range(1, 60))
+    x0 = next((x for x in points if all(q.eval(x) != 0 for q, _ in factors)), None)
+    _need(x0 is not None and x0.is_Rational and _lt(lo, x0) and _lt(x0, hi), "no inner point found")
     return x0
 
 
@@ -603,7 +588,6 @@ def _roots_in(q, lo, hi, lo_open, hi_open) -> int:
                    if end not in (OO, -OO)) for (a, b), _ in q.intervals())
 
 
-_roots_in = functools.lru_cache(maxsize=4096)(_roots_in)
 
 
 def _rootless_by_descartes(q, lo, hi, lo_open, hi_open) -> bool:
@@ -619,10 +603,9 @@ def _rootless_by_descartes(q, lo, hi, lo_open, hi_open) -> bool:
             for end, side, is_open in ((lo, -1, lo_open), (hi, 1, hi_open)))
     f = q if isinstance(q, fmpq_poly) else fmpq_poly([fmpq(int(c.p), int(c.q)) for c in reversed(q.all_coeffs())])
     Q = lambda c: fmpq(int(c.p), int(c.q))     # noqa: E731
-    if b == OO:
-        g = f(fmpq_poly([Q(a), 1]))
-    else:                                       # y -> a + (b - a) y, reversed, y -> 1 + y
-        g = fmpq_poly(list(reversed(f(fmpq_poly([Q(a), Q(b - a)])).coeffs())))(fmpq_poly([1, 1]))
+    # b finite: y -> a + (b - a) y, reversed, y -> 1 + y
+    g = f(fmpq_poly([Q(a), 1])) if b == OO else \
+        fmpq_poly(list(reversed(f(fmpq_poly([Q(a), Q(b - a)])).coeffs())))(fmpq_poly([1, 1]))
     signs = [c > 0 for c in g.coeffs() if c]
     return all(x == signs[0] for x in signs)
 
@@ -644,7 +627,6 @@ def _side_of_root(q, a, b, end) -> int:
     raise KernelError(f"cannot place a root of {q.as_expr()} against {end}")
 
 
-sign_by_sturm = rule("sympy-polys", "flint-polys")(sign_by_sturm)
 
 
 def sign_of_product(*premises, expr):
@@ -666,16 +648,12 @@ def sign_of_product(*premises, expr):
             _need(s != 0, "a zero factor")
             sign *= s
             continue
-        p = by_expr.get(_s(f))
-        if p is not None:
-            sign, strict = sign * p.claim.want, strict and p.claim.strict
-            used.add(p.claim.expr)
-            continue
-        _need(f.is_Pow and f.exp.is_Rational, lambda: f"no premise for factor {f}")
-        p = by_expr.get(_s(f.base))
-        _need(p is not None, lambda: f"no premise for factor {f} nor its base")
+        p, n = by_expr.get(_s(f)), sp.Integer(1)       # a premise about f = f^1, else about the base b of f = b^n
+        if p is None:
+            _need(f.is_Pow and f.exp.is_Rational, lambda: f"no premise for factor {f}")
+            p, n = by_expr.get(_s(f.base)), f.exp
+            _need(p is not None, lambda: f"no premise for factor {f} nor its base")
         used.add(p.claim.expr)
-        n = f.exp
         if n.is_Integer:
             _need(n > 0 or p.claim.strict, lambda: f"{f}: a negative power needs a strict sign of its base")
             if n % 2 == 0 and not p.claim.strict:
@@ -687,7 +665,6 @@ def sign_of_product(*premises, expr):
             strict = strict and p.claim.strict
     _need(used == set(by_expr), "a premise matches no factor")
     return _sign_on(premises[0].claim, e, sign, strict)
-sign_of_product = rule("arb", "sympy-core")(sign_of_product)
 
 
 def sign_of_sum(*premises, expr, want):
@@ -717,7 +694,6 @@ def sign_of_sum(*premises, expr, want):
     _need(s in (0, want), lambda: f"the constant terms {sp.Add(*rest) - taken} have the wrong sign")
     strict = s == want or any(p.claim.strict for p in premises)
     return _sign_on(premises[0].claim, e, want, strict)
-sign_of_sum = rule("arb", "sympy-core")(sign_of_sum)
 
 
 _ODD_INCREASING = (sp.tanh, sp.atan, sp.asinh, sp.sinh, sp.erf)
@@ -746,7 +722,6 @@ def sign_through_increasing(*premises, expr):
         q = premises[1].claim
         _need(q.expr == _s(y) and q.want > 0 and q.strict, "second premise must be Y > 0")
     return _sign_on(c, e, c.want, c.strict)
-sign_through_increasing = rule("sympy-core")(sign_through_increasing)
 
 
 _SUP = {sp.tanh: sp.Integer(1), sp.erf: sp.Integer(1), sp.atan: sp.pi / 2}   # sup over R, never attained
@@ -772,7 +747,6 @@ def sign_below_sup(arg, *, expr, bounded, want=1):
     margin = _const_sign(want * a - sign * m * top)
     _need(sign != 0 and margin >= 0, "needs m != 0 and w a - |m| sup G >= 0")
     return _sign_on(c, e, want, type(g) in _SUP or margin > 0)
-sign_below_sup = rule("arb", "sympy-core")(sign_below_sup)
 
 
 def sign_by_log_bound(bound, coeff, positive, *, expr, term, p):
@@ -806,7 +780,6 @@ def sign_by_log_bound(bound, coeff, positive, *, expr, term, p):
           lambda: f"premise must be the sign {-c.want * _const_sign(p)} of {m}")
     _need(c.expr == _s(b), lambda: f"premise must be about {b}")
     return _sign_on(c, e, c.want, c.strict)
-sign_by_log_bound = rule("sympy-core")(sign_by_log_bound)
 
 
 def _log_bound_of(y, g, p):
@@ -839,7 +812,6 @@ def sign_of_increasing_difference(arg, *, expr, inner, c):
     _need(e == k * g - k * g.func(c) and p.expr == _s(g.args[0] - c),
           lambda: f"{e} is not k (G(Y) - G(c)) with the premise Y - c")
     return _sign_on(p, e, sk * p.want, p.strict)
-sign_of_increasing_difference = rule("arb", "sympy-core")(sign_of_increasing_difference)
 
 
 def sign_below_product(bound_a, sign_b, bound_b, *, expr, a, b):
@@ -859,7 +831,6 @@ def sign_below_product(bound_a, sign_b, bound_b, *, expr, a, b):
     margin = _const_sign(c - a * b)
     _need(margin >= 0, "needs c - a b >= 0")
     return _sign_on(c0, e, 1, margin > 0)
-sign_below_product = rule("arb", "sympy-core")(sign_below_product)
 
 
 def _adjacent(left, right):
@@ -877,7 +848,6 @@ def join(left, right):
     l, r = _adjacent(left, right)
     _need(not (l.hi_open and r.lo_open), lambda: f"shared end point {l.hi} is covered by neither")
     return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, l.strict and r.strict)
-join = rule()(join)
 
 
 def _join_at_point(left, right):
@@ -901,7 +871,6 @@ def join_at_zero(left, right):
     claim, _, zero, _ = _join_at_point(left, right)
     _need(zero, lambda: f"E({parse(left.claim.hi)}) is not exactly 0")
     return claim
-join_at_zero = rule("arb", "sympy-core")(join_at_zero)
 
 
 def join_at_point(left, right):
@@ -915,7 +884,6 @@ def join_at_point(left, right):
         return claim
     _need(box.positive() if claim.want > 0 else box.negative(), lambda: f"E({parse(left.claim.hi)}) = {v} has not the sign")
     return dataclasses.replace(claim, strict=left.claim.strict and right.claim.strict)
-join_at_point = rule("arb", "sympy-core")(join_at_point)
 
 
 _TRUE_WHEN = {sp.StrictLessThan: (1, True), sp.LessThan: (1, False),
@@ -958,7 +926,6 @@ def _folded(e):
     return pw
 
 
-_folded = functools.lru_cache(maxsize=1024)(_folded)      # pure: see core.rule
 
 
 def _branch(pw, sign_ok, at=0):
@@ -1001,7 +968,6 @@ def select_branch(thm, *signs, expr):
     _need(_branch(_folded(e), _decided_by(signs, var, lo, hi, c.lo_open, c.hi_open)) == c.e(),
           "the premise is not about the branch that applies on I")
     return dataclasses.replace(c, expr=_s(e))
-select_branch = rule("arb", "sympy-core", "sympy-polys")(select_branch)
 
 
 def _decided_by(signs, var, lo, hi, lo_open, hi_open):
@@ -1046,7 +1012,6 @@ def piecewise_branches(*signs, expr, var, cuts):
     (0, oo), other = the cuts."""
     _, e, ends, _, extra = _pieces(signs, expr, var, cuts)
     return Claim("pieces", _s(e), _s(var), _s(0), "oo", True, True, other=_s(sp.Tuple(*ends[1:-1]))), extra
-piecewise_branches = rule("arb", "sympy-core", "sympy-polys")(piecewise_branches)
 
 
 def continuous_piecewise(*signs, expr, var, cuts):
@@ -1065,19 +1030,16 @@ def continuous_piecewise(*signs, expr, var, cuts):
             _need(_enclose(at - g, var, b, b, lambda: f"P undefined at {b}", bits=256).hull().contains(0),
                   "Arb disagrees with exact 0")
     return Claim("continuous", _s(e), _s(var), _s(0), "oo", True, True)
-continuous_piecewise = rule("arb", "sympy-core", "sympy-polys")(continuous_piecewise)
 
 
 def weaken(thm, *, lo, hi, lo_open, hi_open, strict):
     """A sign on I gives the same sign on any J contained in I, and a
     strict sign gives the weak one."""
     c, var = _is_sign(thm)
-    a, b = c.ends()
     lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     _need(_within(c, lo, hi, lo_open, hi_open), "J is not inside I")
     _need(c.strict or not strict, "a weak sign does not give a strict one")
     return _sign_claim(c.e(), var, lo, hi, lo_open, hi_open, c.want, strict)
-weaken = rule("arb")(weaken)
 
 
 def _within(c: Claim, lo, hi, lo_open, hi_open) -> bool:
@@ -1099,171 +1061,142 @@ def sign_by_rewrite(thm, ident, *, cuts=None):
     _need(ic.var == c.var and ic.other == c.expr, "the identity must read L = R for the R of the sign")
     lo, hi = c.ends()
     _need(_within(ic, lo, hi, c.lo_open, c.hi_open), "the identity does not hold on all of I")
-    var, lhs = c.x(), ic.e()
-    extra = ()
+    var, lhs, out = c.x(), ic.e(), dataclasses.replace(c, expr=ic.expr)
     if cuts is None:
-        _need(_lt(0, lo) or (lo == 0 and c.lo_open), "L not shown defined on I")
         try:
-            extra = _defined(lhs, var, lo, hi, c.lo_open, c.hi_open)
+            _need(_lt(0, lo) or (lo == 0 and c.lo_open), "")
+            return out, _defined(lhs, var, lo, hi, c.lo_open, c.hi_open)
         except KernelError:
             raise KernelError("L not shown defined on I") from None
-    else:
-        cuts = _cuts(var, cuts)
-        _need(not (c.lo_open or c.hi_open) and cuts[0] == lo and cuts[-1] == hi, "cuts must tile the closed I")
-        for u, v in zip(cuts, cuts[1:]):
-            _enclose(lhs, var, u, v, lambda: f"L undefined on [{u}, {v}]")
-    return dataclasses.replace(c, expr=ic.expr), extra
-sign_by_rewrite = rule("arb", "sympy-core")(sign_by_rewrite)
+    cuts = _cuts(var, cuts)
+    _need(not (c.lo_open or c.hi_open) and cuts[0] == lo and cuts[-1] == hi, "cuts must tile the closed I")
+    for u, v in zip(cuts, cuts[1:]):
+        _enclose(lhs, var, u, v, lambda: f"L undefined on [{u}, {v}]")
+    return out
 
 
 def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
     """Sufficient check that e is defined (real, finite) at every x in
     (lo, hi), exact ends with 0 <= lo < hi <= oo (by default at every
-    x > 0): a denominator, a log's argument or a real power's base must be
-    built from x, positive constants, +, *, exp, cosh, powers of such, log w
-    with w - 1 so built (log w > 0; >= 0 when w - 1 >= 0), and G(w) with G
-    odd increasing (G(w) > 0 where w > 0, >= 0 where w >= 0); or be a
-    rational function of x over Q shown defined and positive on (lo', hi')
-    (`_rational_sign`; lo' <= lo and hi' >= hi rational, lo' >= 0).  Returns
-    the extra assumptions the check rests on (the polynomial ones when a
-    rational function was signed, else ()), or None when definedness is not
-    shown.  x = Tuple(x1, x2): e defined at every point of the plane, the
-    real variables x1, x2 being of either sign (no rational functions signed
-    but polynomials q(x1^2 + x2^2), by Sturm in r >= 0).  Both: log cosh w >=
-    0, and a sum > 0 when its terms' lower bounds add up to more than 0 (c
-    exp(w) >= c for c < 0 and w <= 0; c G >= c for G = tanh, erf, sin, cos;
-    c atan >= c pi/2).  `analytic=False` (definedness only): also b^y with b > 0 and y any
-    defined exponent, a power with a constant exponent > 0 of a base >= 0,
-    and a Piecewise whose last condition is True, each condition defined
-    where no earlier one holds and each value where its own holds too
-    (`_facts`)."""
+    x > 0).  Each subterm u gets a lower bound (L, strict), u >= L (u > L
+    when strict), L exact or -oo, or none when u is not shown defined:
+    x > lo; a finite constant c >= c; a sum's bound is the sum of its
+    terms' bounds; a product of factors >= 0 (> 0) is >= 0 (> 0), and
+    c G(w) >= c sup G for c < 0 and G <= 1 (tanh, erf, sin, cos, exp(w)
+    with w <= 0) or G <= pi/2 (atan); G(w) >= G(L) for G = tanh, atan,
+    asinh, sinh, erf, exp, increasing (> G(L) when w > L, and always when
+    L = -oo); log w >= log L for w >= L > 0 (log w needs w > 0); cosh >=
+    1, sin, cos >= -1, |w| >= 0, w^n >= 0 (n even, > 0 if w > 0) and b^r >
+    0 for b > 0 and rational r (a base or a log's argument without a
+    bound > 0 (>= 0) is not shown defined).  A rational function of x over
+    Q is > 0 (>= 0) on (lo', hi') when `_rational_sign` shows it (lo' <=
+    lo and hi' >= hi rational, lo' >= 0).  Returns the extra assumptions
+    the check rests on (the polynomial ones when a rational function was
+    signed, else ()), or None when definedness is not shown.  x = Tuple(x1,
+    x2): e defined at every point of the plane, x1, x2 real of either sign
+    (no bound); instead of rational functions, polynomials q(x1^2 + x2^2)
+    are signed by Sturm in r >= 0.  `analytic=False` (definedness only):
+    also b^y with b > 0 and y any defined exponent, w^r >= 0 for a constant
+    r > 0 and w >= 0, and a Piecewise whose last condition is True, each
+    condition defined where no earlier one holds and each value where its
+    own holds too (`_facts`: bounds of the form c p + k from the
+    conditions, and c p > 0 where c p != 0 and c p >= 0)."""
     free = x.free_symbols
     lo, hi = _number(lo), _number(hi)
     _need((lo == 0 or _lt(0, lo)) and _lt(lo, hi), "definedness is checked on some (lo, hi) with 0 <= lo < hi")
     ends = (_rational_beyond(lo, -1), _rational_beyond(hi, 1))
     polys = []
 
+    def shows(b, strict):   # the bound b shows u > 0 (strict) or u >= 0
+        return b is not None and (_lt(0, b[0]) or b[0] == 0 and (b[1] or not strict))
+
+    def better(a, b):       # the stronger of two bounds
+        return a if b is None else b if a is None or _lt(a[0], b[0]) or a[0] == b[0] and b[1] else a
+
+    def by_sturm(u, weak_too):      # (0, strict) for u over Q > 0 (>= 0) by `_rational_sign`, or None
+        q = sp.expand(u.xreplace({x[0]: sp.sqrt(_R - x[1] ** 2)})) if len(free) == 2 and u.is_polynomial(*free) else None
+        if len(free) == 1 and _rational_over_q(u, x):
+            args = u, x, *ends, True
+        elif q is not None and q.free_symbols <= {_R}:     # u = q(x1^2 + x2^2), r >= 0
+            args = q, _R, sp.Integer(0), OO, False
+        else:
+            return None
+        for strict in (True, False)[:1 + weak_too]:
+            with contextlib.suppress(KernelError):
+                _rational_sign(*args, True, 1, strict)
+                polys.append(True)
+                return sp.Integer(0), strict
+        return None
+
     def checker(facts):     # `_facts`, known where this part of e is evaluated
-        def fact(u):        # ">", ">=" when u = c p + k > 0, >= 0 by p >= L (c > 0), "!=" when p != 0 (k = 0)
-            c, p, k = _split(u) if facts else (0, None, 0)
-            if (p, ">=") in facts:
-                L, strict = facts[(p, ">=")]
-                if c * L + k >= 0:
-                    return ">" if c * L + k > 0 or strict else ">="
-            return "!=" if k == 0 and (p, "!=") in facts else None
+        def low(u):         # u's lower bound: its structure's, a fact's, Sturm's
+            c, p, k = _split(u) if facts and u.has(*free) else (0, None, 0)
+            b, f = structure(u), facts.get((p, ">="))
+            b = better(b, f and (c * f[0] + k, f[1]))
+            if b is not None and b[0] == 0 and k == 0 and (p, "!=") in facts:     # u = c p >= 0 and != 0
+                b = b[0], True
+            if u.has(*free) and not shows(b, True):
+                b = better(b, by_sturm(u, not shows(b, False)))
+            return b
 
-        def pos(u):
-            if u == x or fact(u) == ">":
-                return True
+        def structure(u):
+            if u in free:
+                return (lo, True) if len(free) == 1 else (-OO, False)
             if not u.has(*free):
-                try:
-                    return _const_sign(u) > 0
-                except KernelError:
-                    return False
-            if u.is_Add:                            # its constant terms taken together (e - 1 + x > 0)
-                c = u.as_independent(*free, as_Add=True)[0]
-                terms = [a for a in u.args if a.has(*free)] + ([c] if c != 0 else [])
-                ok = all(pos(a) or nonneg(a) for a in terms) and any(pos(a) for a in terms)
-                bounds = [] if ok else [low(a) for a in terms]
-                ok = ok or None not in bounds and _lt(0, sp.Add(*bounds))
-            elif u.is_Mul:
-                ok = all(pos(a) for a in u.args)
-            elif u.is_Pow:                          # b^y > 0 for b > 0 and y real
-                ok = pos(u.base) and (u.exp.is_Rational or not analytic and defined(u.exp))
-            elif isinstance(u, (sp.exp, sp.cosh)):
-                return defined(u.args[0])
-            elif isinstance(u, sp.log):             # log w > 0 where w - 1 > 0
-                return pos(u.args[0] - 1)
-            else:
-                return isinstance(u, _ODD_INCREASING) and pos(u.args[0])     # G(w) > G(0) = 0 where w > 0
-            return ok or positive_rational(u) or radial_polynomial(u, True) or (fact(u) == "!=" and weak(u))
-
-        def nonneg(u):
-            return pos(u) or weak(u)
-
-        def low(a):                 # a constant at or below the term a, or None
-            if not a.has(*free):
-                return a
-            if nonneg(a):
-                return 0
-            c, g = a.as_coeff_Mul()             # c g with c < 0 and g <= 1 (pi/2): exp(w) with w <= 0, tanh, ...
-            if not (c < 0 and defined(g)):
-                return None
-            if isinstance(g, (sp.tanh, sp.erf, sp.sin, sp.cos)) or isinstance(g, sp.exp) and nonneg(-g.args[0]):
-                return c
-            return c * sp.pi / 2 if isinstance(g, sp.atan) else None
-
-        def weak(u):                                # u >= 0 shown otherwise than by pos(u)
-            if fact(u) == ">=":
-                return True
-            if isinstance(u, sp.log):               # log w >= 0 where w - 1 >= 0; log cosh w >= 0
-                return nonneg(u.args[0] - 1) or isinstance(u.args[0], sp.cosh) and defined(u.args[0])
-            if u.is_Pow and u.exp.is_Integer and u.exp > 0 and u.exp % 2 == 0:
-                return defined(u.base)
-            if isinstance(u, sp.Abs):
-                return defined(u.args[0])
-            if isinstance(u, _ODD_INCREASING):
-                return nonneg(u.args[0])
-            if not analytic and u.is_Pow and not u.exp.has(*free) and _lt(0, u.exp):
-                return nonneg(u.base)
-            return (u.is_Add or u.is_Mul) and all(nonneg(a) for a in u.args) or radial_polynomial(u, False)
-
-        def defined(u):
-            if u in free or not u.has(*free):
-                return u in free or _number_ok(u)
-            if u.is_Add or u.is_Mul:
-                return all(defined(a) for a in u.args)
+                return (u, False) if u not in (OO, -OO) and _number_ok(u) else None
+            if u.is_Add:
+                bs = [low(a) for a in u.args]
+                return None if None in bs else (sp.Add(*[b for b, _ in bs]), any(s for _, s in bs))
+            if u.is_Mul:
+                c, g = u.as_coeff_Mul()         # c G with c < 0 and G <= 1 (pi/2 for atan)
+                top = None if not c < 0 else 1 if isinstance(g, (sp.tanh, sp.erf, sp.sin, sp.cos)) or \
+                    isinstance(g, sp.exp) and shows(low(-g.args[0]), False) else sp.pi / 2 if isinstance(g, sp.atan) else None
+                if top is not None:
+                    return (c * top, False) if low(g) is not None else None
+                bs = [low(a) for a in u.args]
+                return None if None in bs else (sp.Integer(0), all(shows(b, True) for b in bs)) \
+                    if all(shows(b, False) for b in bs) else (-OO, False)
             if u.is_Pow:
-                if u.exp.is_Integer and u.exp >= 0:
-                    return defined(u.base)
-                return pos(u.base) and (u.exp.is_Rational or not analytic and defined(u.exp)) or \
-                    (not analytic and not u.exp.has(*free) and _lt(0, u.exp) and nonneg(u.base))
-            if isinstance(u, sp.log):
-                return pos(u.args[0])
-            if isinstance(u, (*_ODD_INCREASING, sp.exp, sp.cosh, sp.sin, sp.cos, sp.Abs)):
-                return defined(u.args[0])
+                b, n = low(u.base), u.exp
+                if n.is_Integer and n > 0:      # w^n >= 0 for n even or w >= 0, > 0 for w > 0
+                    return None if b is None else (sp.Integer(0), shows(b, True)) if n % 2 == 0 or \
+                        shows(b, False) else (-OO, False)
+                if shows(b, True) and (n.is_Rational or not analytic and low(n) is not None):
+                    return sp.Integer(0), True
+                return (sp.Integer(0), False) if not analytic and not n.has(*free) and _lt(0, n) and \
+                    shows(b, False) else None
+            if isinstance(u, (*_ODD_INCREASING, sp.exp)):   # G(w) >= G(L), > where w > L; G(-oo) = inf G
+                b = low(u.args[0])
+                return None if b is None else (u.func(b[0]), b[1] or b[0] == -OO)
+            if isinstance(u, sp.log):           # log w >= log L where w >= L > 0
+                b = low(u.args[0] - 1)
+                b = better(low(u.args[0]), b and (b[0] + 1, b[1]))
+                return None if not shows(b, True) else (sp.log(b[0]), b[1]) if _lt(0, b[0]) else (-OO, False)
+            if type(u) in _FLOOR:               # cosh >= 1, sin, cos >= -1, |w| >= 0
+                return None if low(u.args[0]) is None else (sp.Integer(_FLOOR[type(u)]), False)
             if not (isinstance(u, sp.Piecewise) and not analytic and u.args[-1].cond == sp.true):
-                return False
+                return None
             known = dict(facts)         # each value where its condition holds and no earlier one does
             for value, cond in u.args:
-                if not (checker(known)[1](cond) and checker(_facts(cond, False, known))[0](value)):
-                    return False
+                if not (checker(known)[1](cond) and checker(_facts(cond, False, known))[0](value) is not None):
+                    return None
                 known = _facts(cond, True, known)
-            return True
+            return -OO, False
 
         def condition(c):
             if c in (sp.true, sp.false):
                 return True
             if isinstance(c, (sp.And, sp.Or, sp.Not)):
                 return all(condition(a) for a in c.args)
-            return isinstance(c, sp.core.relational.Relational) and all(defined(a) for a in c.args)
-        pos, weak, defined = map(functools.cache, (pos, weak, defined))   # (a sum asks pos and nonneg of each term)
-        return defined, condition
-
-    def radial_polynomial(u, strict):           # u = q(x1^2 + x2^2), q over Q, q(r) >= 0 (> 0) for r >= 0
-        if len(free) != 2 or not u.is_polynomial(*free):
-            return False
-        q = sp.expand(u.xreplace({x[0]: sp.sqrt(_R - x[1] ** 2)}))
-        try:
-            _need(q.free_symbols <= {_R}, "not a polynomial in x1^2 + x2^2")
-            _rational_sign(q, _R, sp.Integer(0), OO, False, True, 1, strict)
-        except KernelError:
-            return False
-        polys.append(True)
-        return True
-
-    def positive_rational(u):                   # u = N/D over Q > 0 on (lo', hi') (`_rational_sign`)
-        if len(free) > 1 or not _rational_over_q(u, x):
-            return False
-        try:
-            _rational_sign(u, x, ends[0], ends[1], True, True, 1, True)
-        except KernelError:
-            return False
-        polys.append(True)
-        return True
-    if not checker({})[0](_sym(e)):
+            return isinstance(c, sp.core.relational.Relational) and all(low(a) is not None for a in c.args)
+        low = functools.cache(low)
+        return low, condition
+    if checker({})[0](_sym(e)) is None:
         return None
     return ("sympy-polys", "flint-polys") if any(polys) else ()
+
+
+_FLOOR = {sp.cosh: 1, sp.sin: -1, sp.cos: -1, sp.Abs: 0}
 
 
 _R = sp.Symbol("r", nonnegative=True)
@@ -1301,13 +1234,11 @@ def _facts(c, negate: bool, known: dict) -> dict:
     if p is not None and op == "!=" and k == 0:
         out[(p, "!=")] = True
     elif p is not None and op in (">", ">="):       # f p + k > 0: p > -k/f
-        new = (-k / f, op == ">")
-        old = out.get((p, ">="), new)
-        out[(p, ">=")] = max(new, old)               # the larger bound; at one bound, the strict one
+        new = (-k / f, op == ">")                   # the larger bound; at one bound, the strict one
+        out[(p, ">=")] = max(new, out.get((p, ">="), new))
     return out
 
 
-defined_for_positive = functools.lru_cache(maxsize=4096)(defined_for_positive)      # pure: see core.rule
 
 
 def _defined(e, var, lo=0, hi=OO, lo_open=True, hi_open=True) -> tuple:
@@ -1335,11 +1266,9 @@ def _rational_beyond(c, side):
 
 
 def _number_ok(u):
-    try:
-        _number(u)
-        return True
-    except KernelError:
-        return False
+    with contextlib.suppress(KernelError):
+        return _number(u) is not None
+    return False
 
 
 def sign_on_tail(tail, ident, *, expr, var, R):
@@ -1365,7 +1294,6 @@ def sign_on_tail(tail, ident, *, expr, var, R):
     at_t = _defined(et, t, 0, 1 / R)       # E(1/t) defined for t in (0, 1/R)
     _interval(var, R, OO, False, True)
     return _sign_claim(e, var, R, OO, False, True, tc.want, tc.strict), {*extra, *at_t}
-sign_on_tail = rule("sympy-core")(sign_on_tail)
 
 
 def sign_by_substitution(outer, *bounds, inner):
@@ -1388,7 +1316,6 @@ def sign_by_substitution(outer, *bounds, inner):
               lambda: f"premise must show {'u - ' + str(u_end) if side > 0 else str(u_end) + ' - u'} "
                       f"{'>' if op else '>='} 0")
     return _sign_on(c, G.subs(U, u), g.want, g.strict)
-sign_by_substitution = rule("sympy-core")(sign_by_substitution)
 
 
 def sign_by_monotone(deriv, *, expr, var, R):
@@ -1407,7 +1334,6 @@ def sign_by_monotone(deriv, *, expr, var, R):
     _need(at_r.positive() if d.want > 0 else at_r.negative(), "E(R) has not the sign of E'")
     _interval(var, R, OO, False, True)
     return _sign_claim(e, var, R, OO, False, True, d.want, True), extra
-sign_by_monotone = rule("arb", "sympy-core", "sympy-diff")(sign_by_monotone)
 
 
 CROSS_CHECK_BITS = 320
@@ -1416,14 +1342,9 @@ CROSS_CHECK_BITS = 320
 def _cross_check(d, var, lo, hi):
     """d(x) = lhs - rhs encloses 0 at fixed rational points of I, with
     radius < 2^-250, at 320 bits; at least 3 points must be evaluable."""
-    if lo == -OO and hi == OO:
-        pts = [sp.Rational(k, 3) for k in range(-4, 5)]
-    elif hi == OO:
-        pts = [lo + sp.Rational(k, 3) for k in range(1, 10)]
-    elif lo == -OO:
-        pts = [hi - sp.Rational(k, 3) for k in range(1, 10)]
-    else:
-        pts = [lo + (hi - lo) * sp.Rational(k, 10) for k in range(1, 10)]
+    base, step = (lo, (hi - lo) / 10 if hi != OO else sp.Rational(1, 3)) if lo != -OO else \
+        (hi, -sp.Rational(1, 3)) if hi != OO else (sp.Rational(-5, 3), sp.Rational(1, 3))
+    pts = [base + step * k for k in range(1, 10)]
     _need(all(p.is_Rational for p in pts), "cross-check needs rational ends")
     _vanishes_at([(f"{var} = {p}", lambda p=p: evaluate(d, var, p, p, bits=CROSS_CHECK_BITS)) for p in pts])
 
@@ -1480,7 +1401,6 @@ def _rational_over_q(d, *variables) -> bool:
         and not d.atoms(sp.NumberSymbol) and all(p.exp.is_Integer and abs(p.exp) <= 64 for p in d.atoms(sp.Pow))
 
 
-_rational_over_q = functools.lru_cache(maxsize=4096)(_rational_over_q)
 
 
 def _generalized(d, variables):
@@ -1586,7 +1506,6 @@ def _zero_when_generalized(d, *variables) -> bool:
     return not num
 
 
-_zero_when_generalized = functools.lru_cache(maxsize=1024)(_zero_when_generalized)   # pure: see core.rule
 
 
 def _exact_zero(l, r, variables) -> bool:
@@ -1617,7 +1536,6 @@ def identity(*, lhs, rhs, var, lo, hi, lo_open, hi_open):
     _cross_check(d, var, lo, hi)        # first: simplify may run for minutes on what is no identity
     _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
     return claim, ("sympy-simplify", "arb")
-identity = rule("sympy-core")(identity)
 
 
 def _same_branches(l, r, variables) -> bool:
@@ -1696,7 +1614,6 @@ def identity_plane(*, lhs, rhs, x, y):
                   for p, q in _PLANE_POINTS])        # first: simplify may run for minutes on what is no identity
     _need(sp.simplify(d) == 0, "SymPy's simplify does not reduce lhs - rhs to 0")
     return claim, ("sympy-simplify", "arb")
-identity_plane = rule("sympy-core")(identity_plane)
 
 
 def continuous_on_plane(*, expr, x, y):
@@ -1709,7 +1626,6 @@ def continuous_on_plane(*, expr, x, y):
     e = _in_plane(expr, x, y)
     _need(defined_for_positive(e, sp.Tuple(x, y)) is not None, lambda: f"{e} not shown defined on the plane")
     return Claim("continuous", _s(e), _s(sp.Tuple(x, y)), "-oo", "oo", True, True)
-continuous_on_plane = rule("sympy-core")(continuous_on_plane)
 
 
 def defined_on_plane(*, expr, x, y):
@@ -1721,7 +1637,6 @@ def defined_on_plane(*, expr, x, y):
     _need(defined_for_positive(e, sp.Tuple(x, y), analytic=False) is not None,
           lambda: f"{e} not shown defined on the plane")
     return Claim("defined", _s(e), _s(sp.Tuple(x, y)), "-oo", "oo", True, True)
-defined_on_plane = rule("sympy-core")(defined_on_plane)
 
 
 def continuous_at_end(*, expr, var, c, width):
@@ -1730,6 +1645,13 @@ def continuous_at_end(*, expr, var, c, width):
     its value at c is exactly v (SymPy's evaluation of E(c) is a number
     without floats, and Arb's enclosure of E(c) - v contains 0).  Then
     lim E(x) as x -> c+ is v.  Claim kind "limit" with other = v."""
+    e, c, w, v = _value_at_end(expr, var, c, width)
+    return Claim("limit", _s(e), _s(var), _s(c), _s(c + w), other=_s(v))
+
+
+def _value_at_end(expr, var, c, width):
+    """(E, c, w, v) for `continuous_at_end` and `_tail_limit`: E defined on
+    the closed [c, c+w] (Arb), v = E(c) exactly (SymPy), Arb agreeing."""
     c, w = _number(c), _number(width)
     _need(c not in (OO, -OO) and w != OO and _lt(0, w), "finite c and w > 0")
     _interval(var, c, c + w, False, False, at_zero=True)
@@ -1737,8 +1659,7 @@ def continuous_at_end(*, expr, var, c, width):
     _enclose(e, var, c, c + w, lambda: f"{e} not defined on [{c}, {c + w}]")
     v = _number(e.xreplace({var: c}))
     _need(evaluate(e - v, var, c, c, bits=256).hull().contains(0), "Arb disagrees with E(c)")
-    return Claim("limit", _s(e), _s(var), _s(c), _s(c + w), other=_s(v))
-continuous_at_end = rule("arb", "sympy-core")(continuous_at_end)
+    return e, c, w, v
 
 
 def continuous_on_positive(*, expr, var):
@@ -1750,7 +1671,6 @@ def continuous_on_positive(*, expr, var):
     extra = _defined(e, var)
     _interval(var, 0, OO, True, True)
     return Claim("continuous", _s(e), _s(var), _s(0), "oo", True, True), extra
-continuous_on_positive = rule("sympy-core")(continuous_on_positive)
 
 
 def diverges_by_growth(lower, *, expr, var, R, rate, k):
@@ -1773,7 +1693,6 @@ def diverges_by_growth(lower, *, expr, var, R, rate, k):
     _need((c.expr, c.var, c.lo, c.lo_open, c.hi, c.want) == (_s(g - k), _s(var), _s(R), False, "oo", 1),
           lambda: f"premise must be {g - k} >= 0 on [{R}, oo)")
     return Claim("diverges", _s(e), _s(var), _s(R), "oo", False, True), _defined(e, var, R, lo_open=False)
-diverges_by_growth = rule("arb", "sympy-core", "sympy-diff")(diverges_by_growth)
 
 
 def diverges_through_increasing(div, *, expr):
@@ -1789,7 +1708,6 @@ def diverges_through_increasing(div, *, expr):
     _need(_number_ok(a) and _const_sign(m) > 0 and unbounded_increasing(g) and c.expr == _s(g.args[0]),
           lambda: f"{e} is not a + m G(Y), m > 0, with the premise about Y")
     return dataclasses.replace(c, expr=_s(e)), _defined(e, var, c.ends()[0], lo_open=False)
-diverges_through_increasing = rule("sympy-core")(diverges_through_increasing)
 
 
 def unbounded_increasing(g) -> bool:
@@ -1811,7 +1729,6 @@ def diverges_by_comparison(lower, div, *, expr):
     (a, _), (b, _) = c.ends(), d.ends()
     R = b if _lt(a, b) else a
     return Claim("diverges", _s(e), _s(var), _s(R), "oo", False, True), _defined(e, var, R, lo_open=False)
-diverges_by_comparison = rule("sympy-core")(diverges_by_comparison)
 
 
 def value_sign(*, value):
@@ -1820,7 +1737,6 @@ def value_sign(*, value):
     v = _number(value)
     _need(v not in (OO, -OO), "a finite constant")
     return Claim("value_sign", _s(v), want=_const_sign(v, zero=True), strict=True)
-value_sign = rule("arb", "sympy-core")(value_sign)
 
 
 def sup_upper_by_sign(thm, *, expr, bound):
@@ -1830,7 +1746,6 @@ def sup_upper_by_sign(thm, *, expr, bound):
     e, u = _expr(expr, var), _number(bound)
     _need(c.want == 1 and c.expr == _s(u - e), "premise must be U - E >= 0")
     return Claim("sup_upper", _s(e), c.var, c.lo, c.hi, c.lo_open, c.hi_open, other=_s(u))
-sup_upper_by_sign = rule()(sup_upper_by_sign)
 
 
 def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
@@ -1844,7 +1759,6 @@ def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
     if not v.lo >= evaluate(L, bits=256).hi:      # else E(p) - L exactly 0 (Arb first: exact 0 may cost)
         _need(_const_sign(e.xreplace({var: p}) - L, zero=True) == 0, lambda: f"E({p}) >= {L} not shown")
     return Claim("sup_lower", _s(e), _s(var), _s(lo), _s(hi), bool(lo_open), bool(hi_open), other=_s(L))
-sup_lower_by_point = rule("arb", "sympy-core")(sup_lower_by_point)
 
 
 def _tail_limit(ident, expr, var, width):
@@ -1854,18 +1768,10 @@ def _tail_limit(ident, expr, var, width):
     Arb agrees); E defined for all s > 1/w (and the extra assumptions of that)."""
     ic, t = _of_kind(ident, "identity", "premise must be an identity")
     _need(t != var, "the tail variable must differ from the variable")
-    e, w = _expr(expr, var), _number(width)
-    _need(_lt(0, w) and w != OO, "finite w > 0")
+    e = _expr(expr, var)
     _need(ic.other == _s(e.xreplace({var: 1 / t})), "the identity must read E_t(t) = E(1/t)")
+    _, _, w, c = _value_at_end(ic.e(), t, 0, width)
     _need(_within(ic, 0, w, True, False), "the identity must hold on (0, w]")
-    et = ic.e()
-    try:
-        evaluate(et, t, 0, w)
-        c = _number(et.xreplace({t: sp.Integer(0)}))             # finite: E_t is defined on [0, w]
-        at0 = evaluate(et - c, t, 0, 0, bits=256)
-    except Undefined as exc:
-        raise KernelError(f"E_t not defined on [0, {w}]: {exc}") from None
-    _need(at0.hull().contains(0), lambda: f"Arb disagrees with E_t(0) = {c}")
     return e, c, _defined(e, var, 1 / w)
 
 
@@ -1878,7 +1784,6 @@ def sup_lower_by_limit(ident, *, expr, var, width, bound, lo, lo_open):
     lo = _interval(var, lo, OO, lo_open, True)[0]
     _need(lo == 0 or _lt(0, lo), "lo >= 0")
     return Claim("sup_lower", _s(e), _s(var), _s(lo), "oo", lo_open, True, other=_s(c)), extra
-sup_lower_by_limit = rule("arb", "sympy-core")(sup_lower_by_limit)
 
 
 def limit_at_infinity(ident, *, expr, var, width):
@@ -1886,7 +1791,6 @@ def limit_at_infinity(ident, *, expr, var, width):
     "limit_oo" with other = c."""
     e, c, extra = _tail_limit(ident, expr, var, width)
     return Claim("limit_oo", _s(e), _s(var), hi="oo", other=_s(c)), extra
-limit_at_infinity = rule("arb", "sympy-core")(limit_at_infinity)
 
 
 def limit_of_bounded(div, *, expr):
@@ -1896,7 +1800,6 @@ def limit_of_bounded(div, *, expr):
     e = _expr(expr, var)
     _need(type(e) in _SUP and c.expr == _s(e.args[0]), lambda: f"{e} is not G(Y) with the premise about Y")
     return Claim("limit_oo", _s(e), _s(var), hi="oo", other=_s(_SUP[type(e)]))
-limit_of_bounded = rule("sympy-core")(limit_of_bounded)
 
 
 def limit_of_product(*premises, expr):
@@ -1912,7 +1815,6 @@ def limit_of_product(*premises, expr):
     _need(not k.has(var, *fresh.values()) and _number(k) not in (OO, -OO),
           lambda: f"{e} is not a constant times the premises' product")
     return Claim("limit_oo", _s(e), _s(var), hi="oo", other=_s(k * sp.Mul(*(parse(p.claim.other) for p in premises))))
-limit_of_product = rule("sympy-core")(limit_of_product)
 
 
 def sup_lower_from_limit(lim, *, lo, lo_open):
@@ -1922,7 +1824,6 @@ def sup_lower_from_limit(lim, *, lo, lo_open):
     _need(lo not in (OO, -OO), "finite lo")
     _interval(var, lo, OO, lo_open, True)
     return Claim("sup_lower", c.expr, c.var, _s(lo), "oo", bool(lo_open), True, other=c.other)
-sup_lower_from_limit = rule()(sup_lower_from_limit)
 
 
 def widen(thm, *, lo, hi, lo_open, hi_open):
@@ -1933,7 +1834,6 @@ def widen(thm, *, lo, hi, lo_open, hi_open):
     _need(_within(Claim("", "", c.var, _s(lo), _s(hi), lo_open, hi_open), a, b, c.lo_open, c.hi_open),
           "J does not contain I")
     return dataclasses.replace(c, lo=_s(lo), hi=_s(hi), lo_open=bool(lo_open), hi_open=bool(hi_open))
-widen = rule("arb")(widen)
 
 
 def sup_upper_of_abs(up, down):
@@ -1945,4 +1845,31 @@ def sup_upper_of_abs(up, down):
     e = a.e()
     _need(b.expr == _s(-e), "second premise must be about -E")
     return dataclasses.replace(a, expr=_s(sp.Abs(e)))
-sup_upper_of_abs = rule()(sup_upper_of_abs)
+
+
+# ------------------------------------------------------------- the table
+
+# Every rule, grouped by what its theorems rest on besides their premises (see the module docstring),
+# made a rule here (`rule`: not as a decorator, for mutation testing).
+_RULE_ASSUMPTIONS = {
+    (): "join sup_upper_by_sign sup_lower_from_limit sup_upper_of_abs",
+    ("arb",): "weaken widen",
+    ("sympy-core",): "sign_through_increasing sign_by_log_bound sign_on_tail sign_by_substitution identity "
+                     "identity_plane continuous_on_plane defined_on_plane continuous_on_positive "
+                     "diverges_through_increasing diverges_by_comparison limit_of_bounded limit_of_product",
+    ("arb", "sympy-core"): "sign_by_cover sign_of_product sign_of_sum sign_below_sup sign_of_increasing_difference "
+                           "sign_below_product join_at_zero join_at_point sign_by_rewrite continuous_at_end "
+                           "value_sign sup_lower_by_point sup_lower_by_limit limit_at_infinity",
+    ("arb", "sympy-core", "sympy-diff"): "sign_by_taylor sign_by_monotone diverges_by_growth",
+    ("arb", "sympy-core", "sympy-polys"): "select_branch piecewise_branches continuous_piecewise",
+    ("arb", "sympy-core", "sympy-diff", "sympy-polys"): "limit_by_taylor",
+    ("sympy-polys", "flint-polys"): "sign_by_sturm",
+}
+# Pure functions that the rules call again and again with the same arguments, and their cache sizes.
+_CACHED = {"derivative": 8192, "_lt": 8192, "_exact_in": 4096, "_roots_in": 4096, "_folded": 1024,
+           "defined_for_positive": 4096, "_rational_over_q": 4096, "_zero_when_generalized": 1024}
+for _assumes, _names in _RULE_ASSUMPTIONS.items():
+    for _name in _names.split():
+        globals()[_name] = rule(*_assumes)(globals()[_name])
+for _name, _size in _CACHED.items():
+    globals()[_name] = functools.lru_cache(maxsize=_size)(globals()[_name])

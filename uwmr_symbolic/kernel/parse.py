@@ -113,4 +113,4 @@ def parse(text: str, design: bool = False) -> sp.Expr:
     return out
 
 
-parse = lru_cache(maxsize=4096)(parse)      # not a decorator: see core.rule
+parse = lru_cache(maxsize=4096)(parse)      # not a decorator: mutmut skips decorated functions
