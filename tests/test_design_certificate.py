@@ -908,3 +908,19 @@ def test_a_reduction_without_f_defined_on_the_plane_is_not_kernel_checked():
                                      "kernel": to_certificate([red, K.value_sign(value=sp.Integer(1)), rising])}})
     with pytest.raises(DC.CertificateError, match="P5: the kernel's conclusion is not dF/ds > 0"):
         DC.check(json.dumps(p5))        # (the prefix is no reduction; it was, without definedness)
+
+
+def test_f_at_a_point_reads_the_conditions_in_order():
+    """`at_point`: a condition is read only where no earlier one holds, an
+    Or (And) is decided by one true (false) part, and f has no value (nan)
+    where a condition read before the branch taken has none."""
+    from uwmr_symbolic.design_certificate import at_point
+    x, y = sp.symbols("e1 e2", real=True)
+    r2 = x ** 2 + y ** 2
+    f = sp.Piecewise((1, r2 <= 1), (2, sp.log(r2) > 1), (3, True))
+    assert at_point(f, (0, 0)) == 1 and at_point(f, (3, 4)) == 2 and at_point(f, (1, 1)) == 3
+    assert at_point(sp.Piecewise((1, sp.Eq(r2, 0) | (sp.log(r2) < 0)), (2, True)), (0, 0)) == 1
+    assert at_point(sp.Piecewise((1, (r2 > 0) & (sp.log(r2) < 0)), (2, True)), (0, 0)) == 2
+    assert at_point(sp.Piecewise((1, sp.log(x) > 0), (2, True)), (0, 1)) is sp.nan
+    assert at_point(sp.Piecewise((1, sp.log(x) > 0), (2, True)), (-1, 1)) is sp.nan       # log(-1): not real
+    assert at_point(f + x, (x, 0)) == sp.Piecewise((1, x ** 2 <= 1), (2, sp.log(x ** 2) > 1), (3, True)) + x

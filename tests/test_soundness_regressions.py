@@ -931,3 +931,22 @@ def test_an_f_without_a_value_somewhere_off_the_e1_axis_is_not_proved(tmp_path, 
     assert got["P2"] == "proved"                    # f(0, 0) = 0: the origin is fine
     assert all(got[p] != "proved" for p in ("P1", "P3", "P4", "P5", "P6", "P7", "P8")), got
     assert "kf" in report.kernel["search"]
+
+
+@pytest.mark.parametrize("body, want", [
+    # F = s^2/2 for s <= 1, log s + 1/2 beyond: C^1, F'' jumps at s = 1 (1 on the left, -1 on the right)
+    ("f = Piecewise((rho/2, rho <= 1), (log(rho)/2 + Rational(1, 2), log(rho) > 0), (0, True))",
+     {"P2": "proved", "P3": "proved", "P4": "proved", "P7": "refuted"}),
+    ("f = Piecewise((rho/2, Eq(rho, 0) | (log(rho) <= 0)), (log(rho)/2 + Rational(1, 2), True))", {"P2": "proved"}),
+    # e1^2 + e2^2 where e1 <= 0 or log(e1) > -1, one more elsewhere: f(1/3, 0) = f(0, 1/3) + 1
+    ("f = Piecewise((rho, e1 <= 0), (rho, log(e1) > -1), (rho + 1, True))", {"P2": "proved", "P4": "refuted"}),
+])
+def test_a_condition_without_a_value_where_it_is_not_read_is_no_crash(tmp_path, body, want):
+    """Found by a red team: a condition with no real value at a point where
+    an earlier one holds (log(rho) > 0 at the origin, after rho <= 1) or on a
+    half-line the search tried (log(e1), e1 < 0) made SymPy raise TypeError
+    while building it (exit 2, "internal error").  f at a point now reads the
+    conditions in order, as the Piecewise does (`design_certificate.at_point`)."""
+    report, got = verify(tmp_path, body)
+    assert {p: got[p] for p in want} == want
+    assert {"P2"} <= set(report.kernel["checked"])

@@ -2124,7 +2124,7 @@ def _jump_theorems(f, record):
     its conditions' signs on (0, w], the one-sided limits of the branches'
     order-th derivatives, a nonzero gap.  Fills in record's branches, width
     and compare."""
-    from .design_certificate import CertificateError, H, _at, branch_conditions, chosen_by_e1, jump_parts
+    from .design_certificate import CertificateError, H, at_point, branch_conditions, chosen_by_e1, jump_parts
     if not isinstance(f, sp.Piecewise):
         raise NoProof("f is not a Piecewise")
     v = sp.Symbol(record.get("var", "e1"), real=True)
@@ -2151,7 +2151,7 @@ def _jump_theorems(f, record):
         except NoProof:
             continue
         left, right = (K.parse(t.claim.other) for t in lims)
-        value = _at(f, record["points"][0])         # f at the witness point, as the link computes it
+        value = at_point(f, record["points"][0])         # f at the witness point, as the link computes it
         gaps = (("sides", right - left), ("left", value - left), ("right", value - right))
         for compare, gap in gaps[:1 if order else 3]:
             try:

@@ -265,7 +265,7 @@ def _link(name, f, theorems, bounds=None) -> list[str]:
     claims = [t.claim for t in theorems]
     if name == "P2":
         ok = len(claims) == 1 and claims[0].kind == "value_sign" and claims[0].want == 0 \
-            and claims[0].expr == _srepr(_at(f, (0, 0)))
+            and claims[0].expr == _srepr(at_point(f, (0, 0)))
         if not ok:
             raise CertificateError("P2: the kernel's conclusion is not f(0, 0) = 0")
         return []
@@ -360,6 +360,15 @@ def _link_plane(name, f, claims, bounds=None) -> list[str]:
     return []
 
 
+def relations_defined(pw) -> bool:
+    """Both sides of every relation in the conditions of the Piecewise pw
+    are defined on the plane (`defined_for_positive` with two real
+    variables), so that at every point some branch is taken."""
+    from .kernel.core import defined_for_positive
+    return all(defined_for_positive(side, sp.Tuple(E1, E2)) is not None
+               for _, c in pw.args for r in c.atoms(sp.Rel) for side in (r.lhs, r.rhs))
+
+
 def _link_branches(name, f, claims) -> list[str]:
     """P3, P5, P6 of a Piecewise f (SymPy's `piecewise_fold` of the design's
     f) whose last condition is True and the two sides of every relation in
@@ -378,15 +387,12 @@ def _link_branches(name, f, claims) -> list[str]:
     being even and differentiable).  P5: G' > 0, so df/de1 has the sign of e1.
     P6: G' >= 0 and G'(s)/s <= k, one k > 0 for all branches: h = G'(|e|)/(k |e|)
     lies in [0, 1] (h = 0 at the origin)."""
-    from .kernel.core import defined_for_positive
     pw, xy = sp.piecewise_fold(f), sp.Tuple(E1, E2)
     plane, on = (_srepr(xy), "-oo", "oo", True, True, 0, False), (_srepr(S), "Integer(0)", "oo", True, True)
     n = {"P3": 4, "P5": 3, "P6": 4}.get(name, 0)
     branches = pw.args if isinstance(pw, sp.Piecewise) else ()
-    sides = [side for _, c in branches for r in c.atoms(sp.Rel) for side in (r.lhs, r.rhs)]
     ok = branches and pw.args[-1].cond == sp.true and n and len(claims) == n * len(pw.args) \
-        and all(defined_for_positive(side, xy) is not None for side in sides) \
-        and (name == "P3" or all(c.free_symbols <= {E2} for _, c in branches))
+        and relations_defined(pw) and (name == "P3" or all(c.free_symbols <= {E2} for _, c in branches))
     want, bounds = [], set()
     for i, (g, _) in enumerate(branches if ok else ()):
         G, mine = _profile(g), claims[n * i:n * i + n]
@@ -425,12 +431,12 @@ def e2_sides(f) -> list:
 
 def axis_split(f):
     """f(e1, 0) + f(0, e2): f itself when f is separable and f(0, 0) = 0."""
-    return _at(f, (E1, 0)) + _at(f, (0, E2))
+    return at_point(f, (E1, 0)) + at_point(f, (0, E2))
 
 
 def half_axes(f) -> list:
     """f(s, 0), f(-s, 0), f(0, s), f(0, -s): f on the four half-axes, s > 0."""
-    return [_at(f, p) for p in ((S, 0), (-S, 0), (0, S), (0, -S))]
+    return [at_point(f, p) for p in ((S, 0), (-S, 0), (0, S), (0, -S))]
 
 
 def _reduction(f, F, claims):
@@ -621,8 +627,41 @@ _UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo")
               ("P1", "e1", 1, "0", "plain"), ("P5", "e1", 1, "0", "plain"), ("P6", "e1", 1, "0", "plain")}
 
 
-def _at(f, p):
-    return f.xreplace({E1: sp.sympify(p[0], strict=True), E2: sp.sympify(p[1], strict=True)})
+def at_point(f, p):
+    """f at the point p = (e1, e2) (numbers or expressions): each subterm
+    with the point put in, except that a Piecewise's conditions are read
+    in order up to the first that holds, as the Piecewise is (a later one
+    may have no value there: log(e1^2 + e2^2) > 0 at the origin), and an
+    And (Or) is false (true) when one of its parts is, whatever the others.
+    Where a condition read before it has no value, neither has f: nan."""
+    point = {E1: sp.sympify(p[0], strict=True), E2: sp.sympify(p[1], strict=True)}
+
+    def truth(c):           # c at p, or None where it has no value
+        if isinstance(c, (sp.And, sp.Or)):
+            parts = [truth(a) for a in c.args]
+            decides = sp.false if isinstance(c, sp.And) else sp.true
+            return decides if decides in parts else None if None in parts else c.func(*parts)
+        try:
+            return c.xreplace(point)
+        except TypeError:   # SymPy compares no zoo or non-real number
+            return None
+
+    def at(e):
+        if not e.has(sp.Piecewise):
+            return e.xreplace(point)
+        if not isinstance(e, sp.Piecewise):
+            return e.func(*[at(a) for a in e.args])
+        pairs = []
+        for value, cond in e.args:
+            c = truth(cond)
+            if c is None:
+                c, value = sp.true, sp.nan
+            if c != sp.false:
+                pairs.append((at(value), c))
+            if c == sp.true:
+                break
+        return sp.Piecewise(*pairs) if pairs else sp.nan
+    return at(f)
 
 
 def axis_derivative(f, v, side):
@@ -770,7 +809,7 @@ def _link_jump(name, f, claims, witness, bad) -> str:
             raise bad
         limits.append(parse(c.other))
         k += 1
-    value = _at(f, (x, y))
+    value = at_point(f, (x, y))
     gaps = {"sides": limits[1] - limits[0], "left": value - limits[0], "right": value - limits[1]}
     gap = gaps.get(witness.get("compare")) if order == 0 or witness.get("compare") == "sides" else None
     if gap is None or len(claims) != k + 1 or claims[k].kind != "value_sign" or claims[k].expr != _srepr(gap) \
@@ -786,11 +825,11 @@ def witness_values(kind, f, points) -> list:
     """The exact constants whose signs the kernel must claim (kinds value,
     circle, slope, step); the proposer uses this too."""
     if kind == "value":
-        return [_at(f, points[0])]
+        return [at_point(f, points[0])]
     if kind in ("circle", "step"):
-        return [_at(f, points[1]) - _at(f, points[0])]
+        return [at_point(f, points[1]) - at_point(f, points[0])]
     if kind == "slope":
-        return [_at(derivative(f, E1), points[0])]
+        return [at_point(derivative(f, E1), points[0])]
     raise CertificateError(f"unknown witness kind {kind!r}")
 
 
@@ -956,7 +995,7 @@ def check(data) -> list[PropertyCheck]:
             raise CertificateError(f"the checker cannot read the design's f ({exc}): nothing can be re-checked; "
                                    f"the kernel reads exp, log, sqrt and powers, trigonometric and hyperbolic "
                                    f"functions and their inverses, erf, Abs, Max, Min, Piecewise") from None
-        if _at(f, (0, 0)).has(sp.nan, sp.zoo):      # the links read F(0+) as F(0) (`kernel.limit_by_taylor`)
+        if at_point(f, (0, 0)).has(sp.nan, sp.zoo):      # the links read F(0+) as F(0) (`kernel.limit_by_taylor`)
             raise CertificateError("the design's f is undefined at the origin")
         props = data["properties"]
         names = set(props) if isinstance(props, dict) else set()

@@ -38,7 +38,9 @@ class Lim:
 
 def exact_sign(value) -> int | None:
     """Sign of an exact real constant: interval arithmetic, or a symbolic
-    zero; None when neither decides."""
+    zero; None when neither decides (or there is no value: None)."""
+    if value is None:
+        return None
     if value == 0:
         return 0
     try:

@@ -269,14 +269,13 @@ def split_profile(F: sp.Expr) -> tuple[Profile | None, Verdict]:
         pieces.append(Piece(a, b, branch))
     for b in bounds[:-1]:
         truth = {}
-        for rel in rels:
+        for rel in rels:        # undecided (or without a value at b: log s > 0 at 0): only a later condition's
             sgn = exact_sign(exact_value(rel.lhs - rel.rhs, S, b))
-            if sgn is None:
-                return None, unknown(f"cannot decide {rel} at s = {b}")
-            truth[rel] = sp.true if rel.func(sgn, 0) else sp.false
+            if sgn is not None:
+                truth[rel] = sp.true if rel.func(sgn, 0) else sp.false
         branch = _choose_branch(F, truth)
         if branch is None:
-            return None, unknown(f"no branch of F applies at s = {b}")
+            return None, unknown(f"cannot decide which branch of F applies at s = {b}")
         at_point[b] = branch
     for i in range(len(pieces) - 1, 0, -1):     # a point value (Eq) equal to the formula around it: no boundary
         left, right = pieces[i - 1], pieces[i]

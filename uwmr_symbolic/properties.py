@@ -29,7 +29,8 @@ import sympy as sp
 
 from . import e1 as E1, e2 as E2
 from .design import Design
-from .design_certificate import _JUMPS, SMOOTH_ONLY, H, along_ray, axis_split, branch_profile, e1_sides, half_axes
+from .design_certificate import (_JUMPS, SMOOTH_ONLY, H, along_ray, at_point, axis_split, branch_profile, e1_sides,
+                                 half_axes, relations_defined)
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, SPENT, WORK, NoProof, continuity_pair, exploring, growth_theorems,
                       one_branch_theorems, origin_theorems, origin_value_theorems, piecewise_sign_theorem,
@@ -320,7 +321,7 @@ def _all(parts, what) -> Verdict:
 
 def verify_p2(a: Analysis) -> Verdict:
     """P2: f(0, 0) = 0, by exact evaluation."""
-    v = a.f.xreplace({E1: sp.Integer(0), E2: sp.Integer(0)})
+    v = at_point(a.f, (0, 0))
     if v.has(sp.Piecewise) or v.free_symbols:
         return unknown("cannot evaluate f at the origin exactly")
     sgn = exact_sign(v)
@@ -837,8 +838,11 @@ def _fails_along_a_line(f, name: str) -> Verdict | None:
         if name != "P3" and dx == 0:
             continue
         e = f if name == "P3" else derivative(f, E1) * dx
-        v = prove_sign(e.xreplace({E1: dx * S, E2: dy * S}), S, 0, sp.oo, want=1, strict=name != "P6",
-                       budget=MAX_BOXES // 4)
+        try:
+            e = e.xreplace({E1: dx * S, E2: dy * S})
+        except TypeError:           # a Piecewise condition with no real value on this half-line (log(e1), e1 < 0)
+            continue
+        v = prove_sign(e, S, 0, sp.oo, want=1, strict=name != "P6", budget=MAX_BOXES // 4)
         if v.refuted and v.witness is not None and exact_sign(v.witness) == 1:
             x, y = sp.expand(dx * v.witness), sp.expand(dy * v.witness)
             what = {"P3": "f <= 0", "P5": "df/de1 tanh(e1) <= 0", "P6": "e1 df/de1 < 0"}[name]
@@ -1002,7 +1006,8 @@ def _each_branch(f, name: str) -> Verdict | None:
     one k proposed about 1/8 above the sampled largest G'/s."""
     pw = sp.piecewise_fold(f)
     if not isinstance(pw, sp.Piecewise) or pw.args[-1].cond != sp.true or any(g.has(*SMOOTH_ONLY) for g, _ in pw.args) \
-            or name != "P3" and any(g.has(sp.Abs) or c.free_symbols - {E2} for g, c in pw.args):
+            or name != "P3" and any(g.has(sp.Abs) or c.free_symbols - {E2} for g, c in pw.args) \
+            or not relations_defined(pw):
         return None
     profiles = [branch_profile(g) for g, _ in pw.args]
     k = _proposed_bound([derivative(G, S) / S for G in profiles]) if name == "P6" else None
