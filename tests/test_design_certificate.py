@@ -924,3 +924,34 @@ def test_f_at_a_point_reads_the_conditions_in_order():
     assert at_point(sp.Piecewise((1, sp.log(x) > 0), (2, True)), (0, 1)) is sp.nan
     assert at_point(sp.Piecewise((1, sp.log(x) > 0), (2, True)), (-1, 1)) is sp.nan       # log(-1): not real
     assert at_point(f + x, (x, 0)) == sp.Piecewise((1, x ** 2 <= 1), (2, sp.log(x ** 2) > 1), (3, True)) + x
+
+
+@pytest.mark.parametrize("name, witness", [
+    # f = log(1 + e1^2 + e2^2)/2 is log(1/2)/2 < 0 at (1, i sqrt(3/2)), and df/de1 = -1/2 at (1, 2 i)
+    ("P3", {"kind": "value", "points": [["Integer(1)", "Pow(Rational(-3, 2), Rational(1, 2))"]]}),
+    ("P5", {"kind": "slope", "points": [["Integer(1)", "Mul(Integer(2), Pow(Integer(-1), Rational(1, 2)))"]]}),
+    ("P6", {"kind": "slope", "points": [["Integer(1)", "Mul(Integer(2), Pow(Integer(-1), Rational(1, 2)))"]]}),
+])
+def test_a_witness_at_a_point_that_is_not_real_is_rejected(cert1, name, witness):
+    """Found by a red team (forged certificates): the links never checked
+    that a witness's coordinates are real, and design 1's true P3, P5 and
+    P6 were "refuted" by points with an imaginary coordinate, where f and
+    its derivative are real and negative."""
+    from uwmr_symbolic.kernel import core as K
+    from uwmr_symbolic.kernel.certificate import to_certificate
+    f = parse(cert1["design"]["f"], design=True)
+    points = [tuple(parse(c, design=True) for c in p) for p in witness["points"]]
+    value = DC.witness_values(witness["kind"], f, points)[0]
+    assert value.is_real and value < 0                  # real and negative: the forgery's kernel step holds
+    forged = copy.deepcopy(cert1)
+    forged["properties"][name] = {"status": "refuted", "reason": "forged", "unchecked": [], "witness": witness,
+                                  "kernel": to_certificate([K.value_sign(value=value)])}
+    with pytest.raises(DC.CertificateError, match="not a real constant"):
+        DC.check(forged)
+
+
+def test_a_kf_enclosure_with_an_infinite_end_is_rejected(cert1):
+    vacuous = copy.deepcopy(cert1)
+    vacuous["properties"]["kf"].update(exact=None, lower="Mul(Integer(-1), oo)", upper="oo")
+    with pytest.raises(DC.CertificateError, match="kf: .* is not an enclosure by finite numbers"):
+        DC.check(vacuous)

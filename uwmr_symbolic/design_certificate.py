@@ -785,9 +785,9 @@ def _link_jump(name, f, claims, witness, bad) -> str:
     if name not in _JUMPS.get((v, order, "mixed") if mixed else (v, order), ()):
         raise CertificateError(f"{name}: a jump of the order-{order} derivative in {v} does not refute {name}")
     v = {"e1": E1, "e2": E2}[v]
-    (x, y), = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
+    (x, y), = [tuple(_real(c) for c in p) for p in witness.get("points", [])]
     b, other = (x, y) if v == E1 else (y, x)
-    branches, w = witness.get("branches"), parse(witness.get("width"))
+    branches, w = witness.get("branches"), _real(witness.get("width"))
     if not isinstance(other, sp.Rational) or not (isinstance(branches, list) and len(branches) == 2
                                                   and all(type(i) is int and 0 <= i < len(f.args) for i in branches)):
         raise bad
@@ -841,6 +841,18 @@ def _sign(c) -> int:
         raise CertificateError(f"witness: {exc}") from None
 
 
+def _real(text) -> sp.Expr:
+    """A witness's coordinate, direction or width: an exact, finite, real
+    constant (Arb evaluates it with a decided sign), never I, oo or nan: at
+    (1, 2 I), where f = log(1 + e1^2 + e2^2)/2 is log(1/2)/2 < 0, a true P3
+    had been "refuted"."""
+    c = parse(text, design=True)
+    if not (isinstance(c, sp.Expr) and c.is_number and c not in (sp.oo, -sp.oo)):
+        raise CertificateError(f"witness: {text} is not a finite number")
+    _sign(c)
+    return c
+
+
 def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
     """Check that the kernel's conclusions refute property `name` of f (see
     the table above); (what they show, whether the link used sympy.diff).
@@ -870,7 +882,7 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
                 f"along the {v} axis on either side of the origin"), True
     if kind == "e2_limit":
         points = witness.get("points") or [()]
-        p = tuple(parse(c, design=True) for c in points[0])
+        p = tuple(_real(c) for c in points[0])
         if len(points) != 1 or len(p) != 2 or _sign(p[1]) != 0:
             raise bad
         if not (len(claims) == 2 and (claims[0].kind, claims[0].expr, claims[0].var, claims[0].lo)
@@ -880,7 +892,7 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         return f"df/de2({p[0]}, h) -> {parse(claims[0].other)} != 0 as h -> 0+", True
     on_h = (_srepr(H), "Integer(0)", "oo", True)
     if kind == "bounded":
-        d = tuple(parse(c, design=True) for c in witness.get("direction", ()))
+        d = tuple(_real(c) for c in witness.get("direction", ()))
         if len(d) != 2 or (_sign(d[0]) == 0 and _sign(d[1]) == 0):
             raise bad
         c = claims[0] if len(claims) == 1 else None
@@ -907,7 +919,7 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         return f"{what} -> oo as h -> {'oo' if at == 'oo' else '0+'}", True
     if kind == "jump":
         return _link_jump(name, f, claims, witness, bad), bool(witness.get("order", 0))
-    points = [tuple(parse(c, design=True) for c in p) for p in witness.get("points", [])]
+    points = [tuple(_real(c) for c in p) for p in witness.get("points", [])]
     if len(points) != (2 if kind in ("circle", "step") else 1) or any(len(p) != 2 for p in points):
         raise bad
     values = witness_values(kind, f, points)
@@ -962,6 +974,8 @@ def _check_property(name, entry, f) -> PropertyCheck:
         elif pc.status == "proved":
             bounds = None if name != "kf" else (parse(entry["exact"]),) * 2 if entry["exact"] is not None \
                 else (parse(entry["lower"]), parse(entry["upper"]))
+            if bounds is not None and not all(b.is_number and b.is_finite for b in bounds):
+                raise CertificateError(f"kf: [{bounds[0]}, {bounds[1]}] is not an enclosure by finite numbers")
             pc.unchecked += [u for u in _link(name, f, theorems, bounds)     # (a note may say more)
                              if not any(x.startswith(u) for x in pc.unchecked)]
             if name not in ("P2", "P4"):        # the link differentiates F itself
