@@ -950,3 +950,13 @@ def test_a_condition_without_a_value_where_it_is_not_read_is_no_crash(tmp_path, 
     report, got = verify(tmp_path, body)
     assert {p: got[p] for p in want} == want
     assert {"P2"} <= set(report.kernel["checked"])
+
+
+def test_a_condition_written_as_a_negation_reads_as_its_negation_normal_form(tmp_path):
+    """log(1 + rho) off the origin and 0 at it is log(1 + rho) (a red team's
+    design): the loader writes ~(Eq(e1, 0) & Eq(e2, 0)) as Ne(e1, 0) | Ne(e2, 0),
+    and P4 falls back on the kernel's identity, whose conditions read alike
+    (|e| != 0).  Everything was unknown: P4 had no route."""
+    report, got = verify(tmp_path, "f = Piecewise((log(1 + rho), sp.Not(Eq(e1, 0) & Eq(e2, 0))), (0, True))")
+    assert set(got.values()) == {"proved"} and report.kf.exact == 1
+    assert set(report.kernel["checked"]) >= {"P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8", "kf"}

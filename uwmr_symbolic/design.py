@@ -341,7 +341,8 @@ def _plain_conditions(f: sp.Expr) -> sp.Expr:
     """f with each Piecewise condition written with relations, And, Or and
     Not only (the conditions the certificate checker reads): membership
     `Contains(x, set)` as the set's relations, Xor, ITE, Implies, Equivalent,
-    Nand and Nor in negation normal form (logical equivalences)."""
+    Nand, Nor and a Not of an And or Or in negation normal form (logical
+    equivalences: ~(Eq(e1, 0) & Eq(e2, 0)) is Ne(e1, 0) | Ne(e2, 0))."""
     def relations(b):                   # (an ImageSet has no relations: left as it is, unread by the checker)
         try:
             return b.args[1].as_relational(b.args[0])
@@ -358,7 +359,7 @@ def _plain_conditions(f: sp.Expr) -> sp.Expr:
                      lambda e: sp.Piecewise(*[(x, plain(c)) for x, c in e.args]))
 
 
-_COMPOUND = (sp.Xor, sp.ITE, sp.Implies, sp.Equivalent, sp.Nand, sp.Nor)
+_COMPOUND = (sp.Xor, sp.ITE, sp.Implies, sp.Equivalent, sp.Nand, sp.Nor, sp.Not)
 
 
 def load_design(path) -> Design:

@@ -17,6 +17,7 @@ import sympy as sp
 
 from . import e1 as E1, e2 as E2
 from .interval import Interval, IntervalFunction, Undefined
+from .kernel import core as K
 from .limits import NoLimit, limit_right
 from .timeouts import attempt
 from .univariate import (X, certified_inside, enclose, exact_sign, exact_value, exact_zeros_in, numerically_equal,
@@ -80,7 +81,12 @@ def verify_radial(f: sp.Expr, F: sp.Expr) -> Verdict:
     # (e1 df/de2 - e2 df/de1 simplifying to 0 is not used: SymPy differentiates
     # a Piecewise branch by branch and says nothing about its boundaries, and
     # only the identity f = F(|e|) licenses the reduction to F)
-    return unknown("could neither prove f radial nor find two points on a circle with different values")
+    try:        # the kernel's own identity: a Piecewise whose conditions read alike (e1 != 0 | e2 != 0 and |e| != 0)
+        K.identity_plane(lhs=f, rhs=radial, x=E1, y=E2)
+        return proved("f(e1, e2) = F(sqrt(e1^2 + e2^2)) is an identity (the kernel's), "
+                      "so e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
+    except K.KernelError:
+        return unknown("could neither prove f radial nor find two points on a circle with different values")
 
 
 def elliptic_ratio(f, F):
