@@ -476,6 +476,8 @@ def test_kernel_verdict_and_kf_checked():
     unbounded = {"properties": {"P1": {"witness": {"kind": "unbounded", "var": "e2"}}}}
     assert _kf_checked(unbounded, kernel) and not _kf_checked(unbounded, {"checked": [], "search": ["P1"]})
     assert not _kf_checked({"properties": {"P1": {"witness": {"kind": "jump"}}}}, kernel)
+    # df/de1 -> oo at the origin refutes P1 but says nothing of sup |df/de2| (a red team's remark)
+    assert not _kf_checked({"properties": {"P1": {"witness": {"kind": "unbounded", "var": "e1"}}}}, kernel)
     assert _kf_checked(None, {"checked": ["kf"], "search": []}) and not _kf_checked(None, kernel)
 
 

@@ -209,11 +209,12 @@ def kernel_verdict(name: str, v: Verdict, kernel: dict) -> Verdict:
 
 def _kf_checked(certificate: dict | None, kernel: dict) -> bool:
     """The kernel checked kf: its value, or that it is infinite, by a checked
-    refutation of P1 whose witness is df/de2 -> oo (kind "unbounded")."""
+    refutation of P1 whose witness is df/de2 -> oo (kind "unbounded", var
+    e2: df/de1 -> oo says nothing of kf = sup |df/de2| unless f is radial)."""
     if "kf" in kernel["checked"]:
         return True
-    p1 = (certificate or {}).get("properties", {}).get("P1", {})
-    return "P1" in kernel["checked"] and (p1.get("witness") or {}).get("kind") == "unbounded"
+    witness = (certificate or {}).get("properties", {}).get("P1", {}).get("witness") or {}
+    return "P1" in kernel["checked"] and (witness.get("kind"), witness.get("var")) == ("unbounded", "e2")
 
 
 def _gains(design: Design, kf: SupCertificate | None) -> dict[str, GainCheck]:
