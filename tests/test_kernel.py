@@ -1014,11 +1014,17 @@ _PW = sp.Piecewise
     sp.log(2 - sp.exp(-prho)), 1 / (3 - 2 * sp.tanh(prho)), 1 / (2 - sp.atan(prho)),   # terms bounded below
     sp.log(2 + sp.sin(px)), 1 / (sp.cosh(px) - sp.Rational(1, 2)), sp.log(1 + sp.tanh(px)),   # sin >= -1, cosh >= 1,
     1 / (1 + sp.erf(px * py)), sp.log(sp.log(prho + 2)), sp.log(1 + sp.atan(prho)),         # tanh, erf > -1; log 2
+    sp.log(1 + prho ** 3 * sp.exp(px)), sp.log(1 + (sp.Abs(px) + py ** 2) ** 3),   # an odd power of a base >= 0
+    # facts: a negated Not(And), a negated And of equations off the origin, > and >=, the larger of two bounds
+    _PW((1, sp.Not(sp.And(prho < 4, px < 100))), (sp.log(4 - prho), True)),
+    _PW((0, sp.Eq(px, 1) & sp.Eq(py, 2)), (1 / ((px - 1) ** 2 + (py - 2) ** 2), True)),
+    _PW((sp.log(prho - 1), prho > 1), (0, True)), _PW((sp.sqrt(prho - 1), prho >= 1), (0, True)),
+    _PW((1, prho < 4), (2, prho < 1), (sp.log(prho - 3), True)), _PW((sp.log(prho), prho > 0), (0, True)),
 ])
 def test_defined_on_the_plane_where_each_branch_is_taken(expr):
     t = K.defined_on_plane(expr=expr, x=px, y=py)
-    assert (t.claim.kind, t.claim.var, t.claim.lo, t.claim.hi, t.claim.expr) == (
-        "defined", sp.srepr(sp.Tuple(px, py)), "-oo", "oo", sp.srepr(expr))
+    assert (t.claim.kind, t.claim.var, t.claim.lo, t.claim.hi, t.claim.lo_open, t.claim.hi_open, t.claim.expr) == (
+        "defined", sp.srepr(sp.Tuple(px, py)), "-oo", "oo", True, True, sp.srepr(expr))
 
 
 @pytest.mark.parametrize("expr", [
@@ -1036,10 +1042,38 @@ def test_defined_on_the_plane_where_each_branch_is_taken(expr):
     _PW((1, sp.log(px) > 0), (2, True)),                 # a condition not defined everywhere
     _PW((sp.oo, prho < 1), (prho, True)), _PW((-sp.oo, sp.Eq(prho, 2)), (prho, True)),   # no real value
     1 / (1 + sp.sin(px)), 1 / (sp.cosh(px) - 1), sp.log(sp.log(prho + 1)), 1 / (1 + sp.erf(px) + sp.tanh(py)),
+    # bounds that must not be made up (each has no value somewhere: the mutants that survived a run)
+    1 / (sp.Rational(5, 4) - sp.atan(prho)), sp.log(2 - sp.tanh(sp.log(px))), 1 / (px ** 2 * py ** 2 - sp.Rational(1, 2)),
+    1 / (px ** 2 * sp.exp(py)), sp.log(px ** 2 * sp.exp(py)), 1 / (1 + sp.log(px) ** 2), sp.log(prho ** 2),
+    1 / (prho ** 2 * sp.exp(px)),
+    1 / (sp.sqrt(prho) - sp.Rational(1, 2)), sp.log(sp.sqrt(prho)), sp.log(sp.tanh(px) / 2),
+    sp.log(_PW((px - 2, px > 1), (1, True))), _PW((1, sp.Eq(sp.sin(px), 0)), (sp.log(sp.sin(px) + 1), True)),
+    # facts that must not be made up: Not(And) where it holds, < read as >, a negative end, >= read as !=,
+    # != read as a bound, a coefficient of 2 (2 rho >= 1 is rho >= 1/2)
+    _PW((sp.log(4 - prho), sp.Not(sp.And(prho < 4, px < 100))), (1, True)),
+    _PW((sp.log(prho - 3), prho < 4), (0, True)), _PW((sp.log(px - 5), px < -10), (0, True)),
+    _PW((1 / px, px >= 0), (1, True)), _PW((sp.log(px - 2), sp.Ne(px, 3)), (0, True)),
+    _PW((1, 2 * prho < 1), (sp.log(prho - 1), True)),
 ])
 def test_not_defined_somewhere_is_not_defined_on_the_plane(expr):
     with pytest.raises(KernelError, match="not shown defined on the plane"):
         K.defined_on_plane(expr=expr, x=px, y=py)
+
+
+def test_facts_read_from_a_condition_or_its_negation():
+    """`_facts`: p >= L (p > L) for A - B = c p + k with c > 0, p != 0 for
+    A != B with k = 0, nothing from A != B with k != 0 (no bound)."""
+    F, half = K._facts, sp.Rational(1, 2)
+    assert F(px >= 0, False, {}) == {(px, ">="): (0, False)} and F(px > 1, False, {}) == {(px, ">="): (1, True)}
+    assert F(px < 1, True, {}) == {(px, ">="): (1, False)} and F(px <= 1, True, {}) == {(px, ">="): (1, True)}
+    assert F(2 * prho < 1, True, {}) == {(prho, ">="): (half, False)}      # 2 rho >= 1: rho >= 1/2
+    assert F(sp.Ne(px, 0), False, {}) == F(sp.Eq(px, 0), True, {}) == {(px, "!="): True}
+    assert F(sp.Ne(px, 3), False, {}) == F(sp.Eq(px, 3), False, {}) == F(sp.Eq(px, 0), False, {}) == {}
+    assert F(sp.And(px > 1, px >= 2), False, {}) == {(px, ">="): (2, False)}       # the larger bound
+    assert F(sp.And(px >= 2, px > 2), False, {}) == {(px, ">="): (2, True)}        # at one bound, the strict one
+    assert F(sp.Or(px > 1, py > 1), False, {}) == {} and F(sp.Or(px > 1, py > 1), True, {}) == {
+        (-px, ">="): (-1, False), (-py, ">="): (-1, False)}
+    assert F(sp.Eq(px, 1) & sp.Eq(py, 2), True, {}) == {((px - 1) ** 2 + (py - 2) ** 2, "!="): True}
 
 
 def test_variables_must_be_real_of_either_sign():

@@ -403,7 +403,8 @@ def test_sign_of_product_claims_and_messages():
              ((wneg,), (x - 2) ** 2, 1, False), ((wneg,), (x - 2) ** 3, -1, False),
              ((weak,), sp.sqrt(x - 1), 1, False), ((pos,), (x + 1) ** Q(-1, 2), 1, True),
              ((pos, weak), (x + 1) * (x - 1), 1, False), ((pos, wneg), 3 * (x + 1) ** 2 * (x - 2) ** 3, -1, False),
-             ((pos,), (x + 1) ** 2 * 5, 1, True), ((wneg,), -(x - 2) ** 3, 1, False)]
+             ((pos,), (x + 1) ** 2 * 5, 1, True), ((wneg,), -(x - 2) ** 3, 1, False),
+             ((pos,), -sp.pi * (x + 1), -1, True), ((neg,), -sp.E * sp.pi * (x - 3), 1, True)]   # two constants
     for prem, e, w, st in cases:
         thm = P(*prem, expr=e)
         assert thm.claim == sign(e, x, 1, 2, want=w, strict=st), e
@@ -584,6 +585,11 @@ def test_sign_by_rewrite_claims_and_messages():
         "the identity must read L = R for the R of the sign"
     assert why(K.sign_by_rewrite, sturm(x + 1, x, 0, 3), identx, cuts=[0, 3]) == \
         "the identity does not hold on all of I"
+    # a closed end is an end where L must be defined too: (x^2 - 1)/(x - 1) at 1, (x^2 - 4)/(x - 2) at 2
+    assert K.sign_by_rewrite(sturm(x + 1, x, 1, 2, lo_open=True, hi_open=True), ident1).claim.lo == R(I1)
+    assert why(K.sign_by_rewrite, sturm(x + 1, x, 1, 2, hi_open=True), ident1) == "L not shown defined on I"
+    ident2 = exact_identity((x ** 2 - 4) / (x - 2), x + 2, x, 0, 2)
+    assert why(K.sign_by_rewrite, sturm(x + 2, x, 1, 2, lo_open=True), ident2) == "L not shown defined on I"
 
 
 def test_defined_for_positive():
@@ -610,7 +616,8 @@ def test_defined_for_positive():
     for e in (1 / (1 + (s ** 2 - 1) ** 3), sp.log(1 + (s ** 2 - 1) ** 3), 1 / ((s - 1) ** 2 + (s - 2) ** 2),
               sp.sqrt(1 + (1 / s ** 2 - 1) ** 3), 1 / (2 - 3 * s + 2 * s ** 2), 1 / ((s - 1) ** 3 + 3 * s + 1),
               sp.log((s ** 2 - s + 1) / (s ** 2 + 1)) ** 2,
-              sp.log((s - 1) ** 3 + 1), 1 / (s + 1 - 1 / (s + 1))):
+              sp.log((s - 1) ** 3 + 1), 1 / (s + 1 - 1 / (s + 1)),
+              1 / sp.log(s ** 2 - s + 2)):                     # log w > 0 from w - 1 = s^2 - s + 1 > 0
         assert d(e, s) == ("sympy-polys", "flint-polys"), e
     # not (or not syntactically) defined for every s > 0
     for e in (1 / (s - 1), sp.log(s - 1), sp.sqrt(s - 1), 1 / sp.sin(s), sp.log(sp.sin(s) + 1), s ** s,
