@@ -847,6 +847,7 @@ def _real(text) -> sp.Expr:
     (1, 2 I), where f = log(1 + e1^2 + e2^2)/2 is log(1/2)/2 < 0, a true P3
     had been "refuted"."""
     c = parse(text, design=True)
+    c = sp.Integer(c) if type(c) is int else c          # "1" reads as the int 1
     if not (isinstance(c, sp.Expr) and c.is_number and c not in (sp.oo, -sp.oo)):
         raise CertificateError(f"witness: {text} is not a finite number")
     _sign(c)
