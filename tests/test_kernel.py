@@ -1054,6 +1054,9 @@ def test_defined_on_the_plane_where_each_branch_is_taken(expr):
     _PW((sp.log(prho - 3), prho < 4), (0, True)), _PW((sp.log(px - 5), px < -10), (0, True)),
     _PW((1 / px, px >= 0), (1, True)), _PW((sp.log(px - 2), sp.Ne(px, 3)), (0, True)),
     _PW((1, 2 * prho < 1), (sp.log(prho - 1), True)),
+    # red team round 11: -oo times a bounded function, a constant exponent oo, a relation between conditions
+    -sp.oo * sp.tanh(px), px ** 2 - sp.oo * sp.cos(py), (1 + px ** 2) ** sp.oo, sp.Abs(px) ** sp.oo,
+    _PW((0, px > 1), (1, sp.Eq(px > 0, py > 0)), (2, True)),
 ])
 def test_not_defined_somewhere_is_not_defined_on_the_plane(expr):
     with pytest.raises(KernelError, match="not shown defined on the plane"):

@@ -636,8 +636,10 @@ def test_defined_for_positive():
               1 / (s ** 2 - 3 * s + 2 - s ** 3), 1 / (2 - 3 * s + s ** 2),
               1 / (s ** 3 - 3 * s ** 2 + 4 * s - 1), sp.sqrt((s ** 2 - 25) / (s - 5)), 1 / ((s - 2) ** 2 * (s + 1)),
               sp.log(-1 - s ** 2), 1 / (s ** 2 - sp.pi * s + 3), sp.log((s ** 2 + 1) / (s - 3) + 4 - s / 10),
-              1 / ((1 - 2 * s) / (s - 3) ** 2 - 1 / (s - 3) ** 2 + 7), sp.log(-(s ** 2 + 1) / (s + 2))):
+              1 / ((1 - 2 * s) / (s - 3) ** 2 - 1 / (s - 3) ** 2 + 7), sp.log(-(s ** 2 + 1) / (s + 2)),
+              -sp.oo * sp.sin(s), -sp.oo * sp.erf(s - 2)):          # -oo sin(1) has no finite value
         assert d(e, s) is None, e
+    assert d(s ** sp.oo, s, analytic=False) is None and d(s ** sp.pi, s, analytic=False) == ()
 
 
 def test_defined_on_an_interval():

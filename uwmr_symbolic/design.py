@@ -411,6 +411,11 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
                               f"(stopped after {time.monotonic() - start:.1f} s); simplify their constant arguments, "
                               f"or write f as a Piecewise")
     f = _plain_conditions(_plain_functions(f))
+    compared = next((r for r in f.atoms(sp.core.relational.Relational) if not all(isinstance(a, sp.Expr) for a in r.args)),
+                    None)
+    if compared is not None:
+        raise DesignError(f"a condition of f compares truth values, {compared}; write it with And, Or and Not "
+                          f"(Eq(e1 > 0, e2 > 0) is (e1 > 0) & (e2 > 0) | (e1 <= 0) & (e2 <= 0))")
     _check_real_valued(f)
     if any(max(abs(r.p), r.q).bit_length() > 14_000 for r in f.atoms(sp.Rational)):   # Python prints <= 4,300 digits
         raise DesignError("f holds a number of more than 4,200 digits, which cannot be printed into a certificate "

@@ -1149,7 +1149,7 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
                 return None if None in bs else (sp.Add(*[b for b, _ in bs]), any(s for _, s in bs))
             if u.is_Mul:
                 c, g = u.as_coeff_Mul()         # c G with c < 0 and G <= 1 (pi/2 for atan)
-                top = None if not c < 0 else 1 if isinstance(g, (sp.tanh, sp.erf, sp.sin, sp.cos)) or \
+                top = None if not c.is_negative else 1 if isinstance(g, (sp.tanh, sp.erf, sp.sin, sp.cos)) or \
                     isinstance(g, sp.exp) and shows(low(-g.args[0]), False) else sp.pi / 2 if isinstance(g, sp.atan) else None
                 if top is not None:
                     return (c * top, False) if low(g) is not None else None
@@ -1163,7 +1163,7 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
                         shows(b, False) else (-OO, False)
                 if shows(b, True) and (n.is_Rational or not analytic and low(n) is not None):
                     return sp.Integer(0), True
-                return (sp.Integer(0), False) if not analytic and not n.has(*free) and _lt(0, n) and \
+                return (sp.Integer(0), False) if not analytic and not n.has(*free) and n != OO and _lt(0, n) and \
                     shows(b, False) else None
             if isinstance(u, (*_ODD_INCREASING, sp.exp)):   # G(w) >= G(L), > where w > L; G(-oo) = inf G
                 b = low(u.args[0])
@@ -1188,7 +1188,8 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
                 return True
             if isinstance(c, (sp.And, sp.Or, sp.Not)):
                 return all(condition(a) for a in c.args)
-            return isinstance(c, sp.core.relational.Relational) and all(low(a) is not None for a in c.args)
+            return isinstance(c, sp.core.relational.Relational) and all(isinstance(a, sp.Expr) and low(a) is not None
+                                                                        for a in c.args)
         low = functools.cache(low)
         return low, condition
     if checker({})[0](_sym(e)) is None:
