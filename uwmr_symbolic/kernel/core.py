@@ -1129,15 +1129,14 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
         return None
 
     def checker(facts):     # `_facts`, known where this part of e is evaluated
-        def low(u):         # u's lower bound: its structure's, a fact's, Sturm's
+        def low(u, signed=False):   # u's lower bound: its structure's, a fact's; Sturm's too where a sign is asked
+            if signed:              # (a factor, a base, a function's argument: not a sum's term nor e itself)
+                b = low(u)
+                return better(b, by_sturm(u, not shows(b, False))) if u.has(*free) and not shows(b, True) else b
             c, p, k = _split(u) if facts and u.has(*free) else (0, None, 0)
             b, f = structure(u), facts.get((p, ">="))
-            b = better(b, f and (c * f[0] + k, f[1]))
-            if b is not None and b[0] == 0 and k == 0 and (p, "!=") in facts:     # u = c p >= 0 and != 0
-                b = b[0], True
-            if u.has(*free) and not shows(b, True):
-                b = better(b, by_sturm(u, not shows(b, False)))
-            return b
+            b = better(b, f and (c * f[0] + k, f[1]))       # and u = c p >= 0 with p != 0 is > 0:
+            return (b[0], True) if b is not None and b[0] == 0 and k == 0 and (p, "!=") in facts else b
 
         def structure(u):
             if u in free:
@@ -1150,14 +1149,14 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
             if u.is_Mul:
                 c, g = u.as_coeff_Mul()         # c G with c < 0 and G <= 1 (pi/2 for atan)
                 top = None if not c.is_negative else 1 if isinstance(g, (sp.tanh, sp.erf, sp.sin, sp.cos)) or \
-                    isinstance(g, sp.exp) and shows(low(-g.args[0]), False) else sp.pi / 2 if isinstance(g, sp.atan) else None
+                    isinstance(g, sp.exp) and shows(low(-g.args[0], True), False) else sp.pi / 2 if isinstance(g, sp.atan) else None
                 if top is not None:
                     return (c * top, False) if low(g) is not None else None
-                bs = [low(a) for a in u.args]
+                bs = [low(a, True) for a in u.args]
                 return None if None in bs else (sp.Integer(0), all(shows(b, True) for b in bs)) \
                     if all(shows(b, False) for b in bs) else (-OO, False)
             if u.is_Pow:
-                b, n = low(u.base), u.exp
+                b, n = low(u.base, True), u.exp
                 if n.is_Integer and n > 0:      # w^n >= 0 for n even or w >= 0, > 0 for w > 0
                     return None if b is None else (sp.Integer(0), shows(b, True)) if n % 2 == 0 or \
                         shows(b, False) else (-OO, False)
@@ -1166,11 +1165,11 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
                 return (sp.Integer(0), False) if not analytic and not n.has(*free) and n != OO and _lt(0, n) and \
                     shows(b, False) else None
             if isinstance(u, (*_ODD_INCREASING, sp.exp)):   # G(w) >= G(L), > where w > L; G(-oo) = inf G
-                b = low(u.args[0])
+                b = low(u.args[0], True)
                 return None if b is None else (u.func(b[0]), b[1] or b[0] == -OO)
             if isinstance(u, sp.log):           # log w >= log L where w >= L > 0
-                b = low(u.args[0] - 1)
-                b = better(low(u.args[0]), b and (b[0] + 1, b[1]))
+                b = low(u.args[0] - 1, True)
+                b = better(low(u.args[0], True), b and (b[0] + 1, b[1]))
                 return None if not shows(b, True) else (sp.log(b[0]), b[1]) if _lt(0, b[0]) else (-OO, False)
             if type(u) in _FLOOR:               # cosh >= 1, sin, cos >= -1, |w| >= 0
                 return None if low(u.args[0]) is None else (sp.Integer(_FLOOR[type(u)]), False)
