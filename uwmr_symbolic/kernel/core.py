@@ -1088,7 +1088,8 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
     L = -oo); log w >= log L for w >= L > 0 (log w needs w > 0); cosh >=
     1, sin, cos >= -1, |w| >= 0, w^n >= 0 (n even, > 0 if w > 0) and b^r >
     0 for b > 0 and rational r (a base or a log's argument without a
-    bound > 0 (>= 0) is not shown defined).  A rational function of x over
+    bound > 0 (>= 0) is not shown defined).  Where a sign is asked (a
+    factor, a base, a function's argument), a rational function of x over
     Q is > 0 (>= 0) on (lo', hi') when `_rational_sign` shows it (lo' <=
     lo and hi' >= hi rational, lo' >= 0).  Returns the extra assumptions
     the check rests on (the polynomial ones when a rational function was
