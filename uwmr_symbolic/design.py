@@ -411,8 +411,8 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
                               f"(stopped after {time.monotonic() - start:.1f} s); simplify their constant arguments, "
                               f"or write f as a Piecewise")
     f = _plain_conditions(_plain_functions(f))
-    compared = next((r for r in f.atoms(sp.core.relational.Relational) if not all(isinstance(a, sp.Expr) for a in r.args)),
-                    None)
+    compared = next((r for r in f.atoms(sp.core.relational.Relational)
+                     if not all(isinstance(a, sp.Expr) for a in r.args)), None)
     if compared is not None:
         raise DesignError(f"a condition of f compares truth values, {compared}; write it with And, Or and Not "
                           f"(Eq(e1 > 0, e2 > 0) is (e1 > 0) & (e2 > 0) | (e1 <= 0) & (e2 <= 0))")

@@ -245,8 +245,6 @@ def derivative(e, x):
     return sp.Add(*[e.fdiff(i) * d for i, d in enumerate(ds, 1) if d != 0])
 
 
-
-
 def _lt(a, b) -> bool:
     """a < b, certified (exactly for rationals and oo, else by Arb)."""
     a, b = _sym(a), _sym(b)
@@ -261,8 +259,6 @@ def _lt(a, b) -> bool:
     except Undefined:
         return False
     return d.positive()
-
-
 
 
 def _const_sign(c, zero=False) -> int:
@@ -299,8 +295,6 @@ def _exact_in(e, var) -> sp.Expr:
     _need(not e.has(sp.Float), lambda: f"floats are not exact: {e}")
     _need(e.free_symbols <= {var}, lambda: f"{e} has symbols other than {var}")
     return e
-
-
 
 
 def _interval(var, lo, hi, lo_open, hi_open, at_zero=False):
@@ -588,8 +582,6 @@ def _roots_in(q, lo, hi, lo_open, hi_open) -> int:
                    if end not in (OO, -OO)) for (a, b), _ in q.intervals())
 
 
-
-
 def _rootless_by_descartes(q, lo, hi, lo_open, hi_open) -> bool:
     """True if Descartes' rule of signs shows q has no root in <lo, hi>: on a
     rational (a, b) containing it, the positive roots of q(a + y) (b = oo)
@@ -625,8 +617,6 @@ def _side_of_root(q, a, b, end) -> int:
         _need(a != b, lambda: f"cannot place the root {a} against {end}")
         a, b = (sp.Rational(v) for v in q.refine_root(a, b, eps=(b - a) / 16))
     raise KernelError(f"cannot place a root of {q.as_expr()} against {end}")
-
-
 
 
 def sign_of_product(*premises, expr):
@@ -926,8 +916,6 @@ def _folded(e):
     return pw
 
 
-
-
 def _branch(pw, sign_ok, at=0):
     """The branch of the Piecewise pw that applies wherever the facts
     `sign_ok` hold: its condition holds there and every earlier one fails,
@@ -1063,8 +1051,8 @@ def sign_by_rewrite(thm, ident, *, cuts=None):
     _need(_within(ic, lo, hi, c.lo_open, c.hi_open), "the identity does not hold on all of I")
     var, lhs, out = c.x(), ic.e(), dataclasses.replace(c, expr=ic.expr)
     if cuts is None:
+        _need(_lt(0, lo) or (lo == 0 and c.lo_open), "L not shown defined on I")
         try:
-            _need(_lt(0, lo) or (lo == 0 and c.lo_open), "")
             return out, _defined(lhs, var, lo, hi, c.lo_open, c.hi_open)
         except KernelError:
             raise KernelError("L not shown defined on I") from None
@@ -1136,7 +1124,7 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
                 return better(b, by_sturm(u, not shows(b, False))) if u.has(*free) and not shows(b, True) else b
             c, p, k = _split(u) if facts and u.has(*free) else (0, None, 0)
             b, f = structure(u), facts.get((p, ">="))
-            b = better(b, f and (c * f[0] + k, f[1]))       # and u = c p >= 0 with p != 0 is > 0:
+            b = better(b, f and (c * f[0] + k, f[1]))       # a fact's bound; u = c p >= 0 with p != 0 is > 0
             return (b[0], True) if b is not None and b[0] == 0 and k == 0 and (p, "!=") in facts else b
 
         def structure(u):
@@ -1148,9 +1136,9 @@ def defined_for_positive(e, x, lo=0, hi=OO, analytic=True) -> tuple | None:
                 bs = [low(a) for a in u.args]
                 return None if None in bs else (sp.Add(*[b for b, _ in bs]), any(s for _, s in bs))
             if u.is_Mul:
-                c, g = u.as_coeff_Mul()         # c G with c < 0 and G <= 1 (pi/2 for atan)
-                top = None if not c.is_negative else 1 if isinstance(g, (sp.tanh, sp.erf, sp.sin, sp.cos)) or \
-                    isinstance(g, sp.exp) and shows(low(-g.args[0], True), False) else sp.pi / 2 if isinstance(g, sp.atan) else None
+                c, g = u.as_coeff_Mul()         # c G with c < 0 and G <= sup G (`_SUP`, `_MAX`; exp(w) <= 1 for w <= 0)
+                top = None if not c.is_negative else sp.Integer(1) if isinstance(g, sp.exp) and \
+                    shows(low(-g.args[0], True), False) else {**_SUP, **_MAX}.get(type(g))
                 if top is not None:
                     return (c * top, False) if low(g) is not None else None
                 bs = [low(a, True) for a in u.args]
@@ -1238,8 +1226,6 @@ def _facts(c, negate: bool, known: dict) -> dict:
         new = (-k / f, op == ">")                   # the larger bound; at one bound, the strict one
         out[(p, ">=")] = max(new, out.get((p, ">="), new))
     return out
-
-
 
 
 def _defined(e, var, lo=0, hi=OO, lo_open=True, hi_open=True) -> tuple:
@@ -1402,8 +1388,6 @@ def _rational_over_q(d, *variables) -> bool:
         and not d.atoms(sp.NumberSymbol) and all(p.exp.is_Integer and abs(p.exp) <= 64 for p in d.atoms(sp.Pow))
 
 
-
-
 def _generalized(d, variables):
     """d with each maximal subterm that is not built from the variables and
     rationals by +, * and integer powers (sqrt(3), pi, tanh(x), x**(1/2), ...)
@@ -1505,8 +1489,6 @@ def _zero_when_generalized(d, *variables) -> bool:
             num = num if not A else sum((ring({m[:j] + (m[j] % q,) + m[j + 1:]: c}) * bn ** (m[j] // q)
                        * bd ** (A - m[j] // q) for m, c in num.terms()), ring.zero)
     return not num
-
-
 
 
 def _exact_zero(l, r, variables) -> bool:
