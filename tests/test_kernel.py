@@ -53,6 +53,7 @@ def test_evaluator_encloses_the_range(e, lo, hi):
     (sp.log(x), 0, 1), (sp.sqrt(x), -Q(1, 10 ** 30), 1), (x ** Q(1, 3), -1, 1), (1 / x, -1, 1),
     (x ** Q(-1, 2), 0, 1), (sp.log(x - 1), 1, 2), (sp.gamma(x), 1, 2), (sp.Float(0.5) * x, 0, 1),
     (sp.Piecewise((x, x > 0), (0, True)), -1, 1), (sp.sqrt(x - 2), 0, 1), (sp.I * x, 0, 1),
+    (sp.sign(x), -1, 1), (sp.sign(x), 0, 0), (sp.sign(x - Q(1, 3)), Q(1, 3), 1),  # sign jumps at 0: no value there
 ])
 def test_evaluator_refuses_undefined_or_unsupported(e, lo, hi):
     with pytest.raises(Undefined):
@@ -68,6 +69,9 @@ def test_evaluator_domain_edges_are_not_clipped():
     # powers of an end that is a ball around 0 ((x - 1/3) at x = 1/3; Arb's own b**n is NaN there)
     at_zero = evaluate((x - Q(1, 3)) ** 4, x, Q(1, 3), Q(1, 3))
     assert at_zero.lo.is_zero() and 0 <= at_zero.hi.upper() < Q(1, 10 ** 100)
+    # sign u is evaluated where the enclosure of u excludes 0 (constant there, so continuous)
+    assert [(float(v.lo.mid()), float(v.hi.mid())) for v in (evaluate(sp.sign(x - 1) * 3, x, Q(3, 2), 5),
+            evaluate(2 + sp.sign(x ** 3 - 1), x, -4, Q(1, 2)))] == [(3, 3), (1, 1)]
     odd = evaluate((x - Q(1, 3)) ** 3 + 2, x, 0, Q(1, 3))           # -1/27 + 2 <= e <= 2
     assert abs(float(odd.lo.mid()) - 53 / 27) < 1e-14 and abs(float(odd.hi.mid()) - 2) < 1e-14
 
@@ -163,6 +167,14 @@ def test_sign_by_taylor():
             cuts=cuts[:-1])                                               # cuts must end at c + w
     # E = x*log(x) is not defined at 0
     rejects(K.sign_by_taylor, expr=s * sp.log(s) + s, var=s, c=ZERO, side=1, width=Q(1, 4), order=1)
+    # E = 1 - |s - 1| (a condition |e| < 1 on the line e = 1 - s): E' = sign(1 - s) = 1 on [0, 1/4], so E > 0 on
+    # (0, 1/4]; on [0, 2] E' jumps at s = 1 and has no value there.  Left of x = 2, E = 2 - x > 0 (E' = -1,
+    # side -1); right of it E'(2) = -1 is not 0, so order 2 is refused
+    assert K.sign_by_taylor(expr=1 - sp.Abs(s - 1), var=s, c=ZERO, side=1, width=Q(1, 4), order=1).claim.want == 1
+    rejects(K.sign_by_taylor, expr=1 - sp.Abs(s - 1), var=s, c=ZERO, side=1, width=sp.Integer(2), order=1)
+    assert K.sign_by_taylor(expr=1 - sp.Abs(x - 1), var=x, c=sp.Integer(2), side=-1, width=Q(1, 2),
+                            order=1).claim.want == 1
+    rejects(K.sign_by_taylor, expr=1 - sp.Abs(x - 1), var=x, c=sp.Integer(2), side=1, width=Q(1, 2), order=2)
 
 
 def test_limit_by_taylor():

@@ -960,3 +960,29 @@ def test_a_condition_written_as_a_negation_reads_as_its_negation_normal_form(tmp
     report, got = verify(tmp_path, "f = Piecewise((log(1 + rho), sp.Not(Eq(e1, 0) & Eq(e2, 0))), (0, True))")
     assert set(got.values()) == {"proved"} and report.kf.exact == 1
     assert set(report.kernel["checked"]) >= {"P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8", "kf"}
+
+
+@pytest.mark.parametrize("inside", ["<", "<="])
+def test_kf_attained_at_a_join_and_the_jump_of_f_second_derivative(tmp_path, inside):
+    # F(s) = s^2/2 for s < 1 (or <= 1), log s + 1/2 beyond.  By hand: F(1) = 1/2 from both sides, F'(s) = s, then
+    # 1/s: F'(1) = 1 from both sides, so f is C^1; sup F' = 1 exactly, attained only at the join s = 1 (F' < 1
+    # elsewhere).  F'' = 1, then -1/s^2: it jumps from 1 to -1 at s = 1, so P7 fails.  F' > 0 and F'(s)/s <= 1
+    # (P5, P6), F -> oo (P3).  Before, sup F' >= 1 was looked for inside a piece only, and the condition's sign
+    # on the line e1 = 0 below the circle (1 - |1 - h| > 0) needed sign(1 - h) in Arb.
+    report, v = verify(tmp_path, f"r = e1**2 + e2**2\n"
+                                 f"f = Piecewise((r/2, sqrt(r) {inside} 1), (log(sqrt(r)) + Rational(1, 2), True))\n")
+    assert v == {"P1": "proved", "P2": "proved", "P3": "proved", "P4": "proved", "P5": "proved", "P6": "proved",
+                 "P7": "refuted", "P8": "proved"}
+    assert (report.kf.lower, report.kf.upper) == (1, 1)
+    assert {"P1", "P7", "kf"} <= set(report.kernel["checked"])
+
+
+def test_a_slope_that_jumps_at_a_join_is_refuted_by_the_kernel(tmp_path):
+    # F(s) = s^2/2 for s < 1, (log s + 1)/2 beyond: F is continuous (1/2 at s = 1) but F' jumps from 1 to 1/2, so
+    # df/de1 does not exist on the unit circle: P1, P5, P6 and P7 fail; P2, P3, P4, P8 hold.  The branch on the
+    # e2 axis below the circle is chosen by 1 - |1 - h| > 0, whose Taylor step needs sign(1 - h).
+    report, v = verify(tmp_path, "r = e1**2 + e2**2\n"
+                                 "f = Piecewise((r/2, sqrt(r) < 1), ((log(sqrt(r)) + 1)/2, True))\n")
+    assert v == {"P1": "refuted", "P2": "proved", "P3": "proved", "P4": "proved", "P5": "refuted",
+                 "P6": "refuted", "P7": "refuted", "P8": "proved"}
+    assert {"P1", "P5", "P6", "P7"} <= set(report.kernel["checked"])

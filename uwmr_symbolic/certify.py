@@ -1336,7 +1336,13 @@ def _relation_sign(d, var, I):
     lo, hi = I[:2]
     inner = _mid(lo, hi) if hi != OO else lo + 1
     box = evaluate(d, var, inner, inner, bits=128)
-    return Prover(WORK).prove(d, var, I, 1 if box.positive() else -1, True)
+    want = 1 if box.positive() else -1
+    try:
+        return Prover(WORK).prove(d, var, I, want, True)
+    except NoProof:
+        if I[2] and I[3]:
+            raise
+        return Prover(WORK).prove(d, var, I, want, False)    # d may vanish at a closed end (the point of a join)
 
 
 def piecewise_sup_theorems(F, c, point, var, ends, lower=None, work=2 * WORK):
@@ -1380,11 +1386,14 @@ def _piecewise_lower(dF, c, point, var, ends):
     """sup F' >= c on a piece: F'(point) = c when the point lies inside a
     piece, else (a boundary point, or c approached) c = lim F' at oo."""
     prover = Prover(WORK)
-    inside = [(a, b) for a, b in zip(ends, ends[1:]) if point is not None and K._lt(a, point) and K._lt(point, b)]
-    for lo, hi in inside:
+    pieces = [*zip(ends, ends[1:])] if point is not None else []
+    inside = [(a, b, True, True) for a, b in pieces if K._lt(a, point) and K._lt(point, b)] or \
+        [(a, b, a != point, b != point) for a, b in pieces if point in (a, b) and point not in (0, OO)]
+    for I in inside:        # (at a join: the piece on either side, closed at the point, whose branch applies there)
         try:
-            return on_branch(dF, var, (lo, hi, True, True), prover, lambda g: _rule(
-                K.sup_lower_by_point, expr=g, var=var, point=point, bound=c, lo=lo, hi=hi, lo_open=True, hi_open=True))
+            return on_branch(dF, var, I, prover, lambda g: _rule(
+                K.sup_lower_by_point, expr=g, var=var, point=point, bound=c, lo=I[0], hi=I[1], lo_open=I[2],
+                hi_open=I[3]))
         except (NoProof, K.KernelError, Undefined):
             pass
     R = _beyond(ends[-2])

@@ -217,6 +217,8 @@ def _node(e: sp.Expr, env: dict) -> Iv:
         return _abs_like(_eval(e.args[0], env), arb.cosh)
     if f is sp.Abs:
         return _abs_like(_eval(e.args[0], env), lambda b: b)
+    if f is sp.sign and (_eval(e.args[0], env).positive() or _eval(e.args[0], env).negative()):
+        return _point(arb(1 if env[e.args[0]].positive() else -1))      # (constant, so continuous, on the box)
     raise Undefined(f"unsupported function {f.__name__}")
 
 

@@ -214,10 +214,7 @@ def _number(c) -> sp.Expr:
         return c
     _need(c in (OO, -OO) or (c.is_number and not c.has(sp.Float)), lambda: f"not an exact number: {c}")
     if c not in (OO, -OO):
-        try:
-            evaluate(c)
-        except Undefined as exc:
-            raise KernelError(f"not a real constant: {c} ({exc})") from None
+        _enclose(c, None, None, None, lambda: f"not a real constant: {c}")
     return c
 
 

@@ -15,11 +15,11 @@ import sympy as sp
 # exact), but the Arb evaluator and `defined_for_positive` refuse them, so no
 # sign, limit or continuity rule accepts a claim that needs their values.
 _NAMES = ("Symbol Integer Rational Add Mul Pow exp log sin cos tanh atan asinh "
-          "sinh cosh erf Abs pi E EulerGamma Catalan GoldenRatio oo Tuple Piecewise Equality Unequality StrictGreaterThan "
+          "sinh cosh erf Abs sign pi E EulerGamma Catalan GoldenRatio oo Tuple Piecewise Equality Unequality StrictGreaterThan "
           "StrictLessThan GreaterThan LessThan And Or Not true false").split()
 _SCOPE = {n: getattr(sp, n) for n in _NAMES} | {"ExprCondPair": sp.functions.elementary.piecewise.ExprCondPair}
 # a design's f (design certificates) may use more; still constructors only
-_DESIGN_NAMES = "Max Min sign erfc erfi gamma acosh atanh asin acos tan sqrt".split()
+_DESIGN_NAMES = "Max Min erfc erfi gamma acosh atanh asin acos tan sqrt".split()
 _DESIGN_SCOPE = {**_SCOPE, **{n: getattr(sp, n) for n in _DESIGN_NAMES}}
 _ASSUMPTIONS = {"real", "positive", "nonnegative"}
 # a name, an integer (with its sign), a quoted name without quotes or
