@@ -285,6 +285,18 @@ def test_limit_of_a_product_with_a_sum_that_is_zero_times_infinity_as_written():
     assert (lim.value, lim.side) == (sp.oo, 1)
 
 
+def test_limit_of_a_quotient_of_fractional_powers_that_is_zero_times_infinity_as_written():
+    from uwmr_symbolic.limits import limit_right, puiseux_cancel
+    x, Q = sp.Symbol("x", positive=True), sp.Rational
+    # rational in u = sqrt(x): 2 u^2/(u^5 + u^6 + u^2) = 2/(u^3 + u^4 + 1) -> 2, and (3u/2 + 2u^2)/(u^2 (u^3 + u^4 +
+    # 1)) = (3/2 + 2u)/(u (u^3 + u^4 + 1)) -> oo (F'(s)/s of F = log(1 + s^2 + s^(3/2)) at 0)
+    assert limit_right(2 * x / (x ** Q(5, 2) + x ** 3 + x), x).value == 2
+    assert limit_right((3 * sp.sqrt(x) / 2 + 2 * x) / (x * (x ** Q(3, 2) + x ** 2 + 1)), x).value == sp.oo
+    assert limit_right(x ** Q(1, 3) / (x ** Q(1, 2) + x ** Q(5, 6)), x).value == sp.oo      # u^2/(u^3 + u^5)
+    # a float exponent's denominator (5*10^15) would make u^q a polynomial FLINT cannot allocate
+    assert puiseux_cancel(x ** sp.Rational(10000000000000001, 10000000000000000) / (x + x ** 2), x) is None
+
+
 def test_a_power_beats_a_logarithm_but_not_a_faster_growth():
     from uwmr_symbolic.limits import NoLimit, limit_right
     x = sp.Symbol("x", positive=True)
@@ -986,3 +998,19 @@ def test_a_slope_that_jumps_at_a_join_is_refuted_by_the_kernel(tmp_path):
     assert v == {"P1": "refuted", "P2": "proved", "P3": "proved", "P4": "proved", "P5": "refuted",
                  "P6": "refuted", "P7": "refuted", "P8": "proved"}
     assert {"P1", "P5", "P6", "P7"} <= set(report.kernel["checked"])
+
+
+def test_kf_of_a_log_with_a_three_halves_power(tmp_path):
+    # F(s) = log(1 + s^2 + s^(3/2)): F' = (2 s + 3 sqrt(s)/2)/(1 + s^2 + s^(3/2)) > 0, F'(0+) = 0, F' -> 0 at oo, so kf
+    # = max F' (about 1.29484, mpmath below).  F'(s)/s ~ 3/(2 sqrt(s)) -> oo at 0: P6 fails, and F'' -> oo: P7
+    # fails.  The tail form of F' in t = 1/s had t^(3/2) over t^(3/2) uncancelled (0/0 at t = 0): no bound, P1 and
+    # kf unknown, and F'(s)/s -> oo was not seen (0 * oo as written), P6 unknown.
+    report, v = verify(tmp_path, "f = log(1 + rho + sqrt(rho)**Rational(3, 2))\n")
+    assert v == {"P1": "proved", "P2": "proved", "P3": "proved", "P4": "proved", "P5": "proved", "P6": "refuted",
+                 "P7": "refuted", "P8": "proved"}
+    assert set(report.kernel["checked"]) >= {"P1", "P6", "P7", "kf"}
+    mpmath.mp.dps = 30
+    dF = lambda s: (2 * s + 3 * mpmath.sqrt(s) / 2) / (1 + s ** 2 + s ** mpmath.mpf(1.5))
+    top = dF(mpmath.findroot(lambda s: mpmath.diff(dF, s), 0.6))
+    assert report.kf.lower <= Fraction(str(mpmath.nstr(top, 25))) <= report.kf.upper
+    assert report.kf.upper - report.kf.lower < Fraction(1, 10 ** 6)

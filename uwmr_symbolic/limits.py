@@ -14,6 +14,7 @@ eventual strict sign of the quantity near the limit (+1, -1), 0 for an exact
 constant, or None when it is not known."""
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import sympy as sp
@@ -112,8 +113,8 @@ def _limit(expr: sp.Expr, x: sp.Symbol) -> Lim:
             except NoLimit:     # 0 * oo in a rational function: 1/(x^2 (1 + x^-2)) is 1/(x^2 + 1);
                 # else a product with a sum, distributed: (3 sqrt(x)/2 + x)/x is 3/(2 sqrt(x)) + 1
                 sums = [len(a.args) for a in expr.args if isinstance(a, sp.Add)]
-                cancelled = sp.cancel(expr) if expr.is_rational_function(x) else \
-                    sp.expand_mul(expr, deep=False) if sums and sp.prod(sums) <= 64 else expr   # (at most 64 terms)
+                cancelled = sp.cancel(expr) if expr.is_rational_function(x) else puiseux_cancel(expr, x) or (
+                    sp.expand_mul(expr, deep=False) if sums and sp.prod(sums) <= 64 else expr)  # (at most 64 terms)
                 if cancelled != expr:
                     return _limit(cancelled, x)
                 try:
@@ -253,6 +254,30 @@ def rational_parts(e, x) -> tuple[sp.Poly, sp.Poly] | None:
         g = num.gcd(den)
         num, den = num.exquo(g), den.exquo(g)
     return num, den
+
+
+#: Largest denominator q of a rational exponent of a monomial-like base (rho, e1,
+#: any homogeneous polynomial in e1, e2: s^d along the profile) that the search
+#: takes: SymPy's polynomial algorithms then work in s^(1/q), with degrees that
+#: grow with q (q = 100 outlasts the default timeout, 10^4 overflows an integer
+#: conversion, and the 5*10^15 of a float 2/3 kills the process inside FLINT's
+#: gcd).  (1 + rho)^(10^-20) stays one opaque generator and is decided, and so
+#: is c rho^(p/q) alone.
+MAX_ROOT_DEGREE = 64
+
+
+def puiseux_cancel(e, x):
+    """e over one denominator in lowest terms when its only non-rational
+    parts are powers x^(p/q): rational in u = x^(1/q), q the least common
+    denominator up to MAX_ROOT_DEGREE; None otherwise.  (4 x^(5/2) + 3 x^3)/(2 x^(7/2) + 2 x^(3/2)
+    + 2 x^2), the tail form of log(1 + s^2 + s^(3/2))', becomes (4 x + 3 x^(3/2))/(2 x^2 + 2 x^(1/2) + 2),
+    defined at x = 0; 2 x/(x^(5/2) + x^3 + x) becomes 2/(x^(3/2) + x^2 + 1)."""
+    powers = [p for p in e.atoms(sp.Pow) if p.base == x and p.exp.is_Rational and not p.exp.is_Integer]
+    q, u = math.lcm(*[int(p.exp.q) for p in powers]), sp.Dummy("u", positive=True)
+    if not powers or q > MAX_ROOT_DEGREE:
+        return None
+    parts = rational_parts(sp.powsimp(e.xreplace({x: u ** q})), u)
+    return None if parts is None else (parts[0].as_expr() / parts[1].as_expr()).xreplace({u: x ** sp.Rational(1, q)})
 
 
 def _polynomial_side(expr, x) -> int | None:

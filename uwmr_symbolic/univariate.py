@@ -32,7 +32,7 @@ from flint import arb
 
 from .interval import Interval, IntervalFunction, Undefined, mean_value_form
 from .kernel import core as K
-from .limits import NoLimit, exact_sign, limit_right, rational_parts, rational_poly
+from .limits import NoLimit, exact_sign, limit_right, puiseux_cancel, rational_parts, rational_poly
 from .timeouts import attempt
 from .verdict import Verdict, proved, refuted, unknown
 
@@ -241,8 +241,9 @@ def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
                   lambda n: sp.pi / 2 - sp.atan(sp.cancel(1 / n.args[0])))
     if not e.has(sp.Function, sp.Piecewise) and not _stays_a_sum(e):
         parts = rational_parts(e, T)
-        e = parts[0].as_expr() / parts[1].as_expr() if parts is not None else sp.cancel(e)
+        e = parts[0].as_expr() / parts[1].as_expr() if parts is not None else puiseux_cancel(e, T) or sp.cancel(e)
     return _checked_rewrite(substitute(expr, s, 1 / T), e)
+
 
 
 #: a rational tail form stays a sum when its terms' distinct denominators have more

@@ -21,6 +21,7 @@ from .certify import design_budget
 from .design import Design, DesignError, load_design
 from .gains import GainCheck, check_gains
 from .kf import SupCertificate, certify_kf_along_e2, show
+from .limits import MAX_ROOT_DEGREE
 from .properties import PROPERTIES, VERIFIERS, Analysis
 from .replay import replay
 from . import timeouts
@@ -31,14 +32,6 @@ DEFAULT_TIMEOUT = 60.0
 
 EXIT_OK, EXIT_REFUTED, EXIT_UNUSABLE, EXIT_INCONCLUSIVE = 0, 1, 2, 3
 SEARCH_ONLY = "not re-checked by the kernel (the search says "     # the start of `kernel_verdict`'s reason
-#: Largest denominator q of a rational exponent of a monomial-like base (rho, e1,
-#: any homogeneous polynomial in e1, e2: s^d along the profile) that the search
-#: takes: SymPy's polynomial algorithms then work in s^(1/q), with degrees that
-#: grow with q (q = 100 outlasts the default timeout, 10^4 overflows an integer
-#: conversion, and the 5*10^15 of a float 2/3 kills the process inside FLINT's
-#: gcd).  (1 + rho)^(10^-20) stays one opaque generator and is decided, and so
-#: is c rho^(p/q) alone.
-MAX_ROOT_DEGREE = 64
 
 
 def deep_roots(f: sp.Expr) -> list:

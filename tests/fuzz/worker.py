@@ -119,7 +119,11 @@ class Verifier:
             code = self.proc.poll()
             self.close()
             return {"hang": code is None, "crash": None if code is None else f"worker process died (status {code})"}
-        out = json.loads(line)
+        try:
+            out = json.loads(line)
+        except json.JSONDecodeError:      # a native library wrote to stdout as it aborted ("FLINT exception ...")
+            self.close()
+            return {"hang": False, "crash": f"worker process wrote {line.strip()[:200]!r} and stopped"}
         if out.get("timed_out"):
             # the verifier's SIGALRM limits are per process state: after one
             # expired, start afresh (the CLI runs one process per file anyway)
