@@ -165,7 +165,9 @@ def main(argv=None):
     print(f"seed {seed}", flush=True)
 
     def progress(n, case, result, found):
-        tags = " ".join(f"{p}:{(result.get('properties') or {}).get(p, {}).get('status', '-')[0]}" for p in PROPS)
+        checked = set(result.get("kernel_checked") or []) | set(result.get("refutations_checked") or [])
+        tags = " ".join(f"{p}:{(result.get('properties') or {}).get(p, {}).get('status', '-')[0]}"
+                        f"{'*' if p in checked else ' '}" for p in PROPS)     # *: the kernel has checked it
         print(f"[{n}] {case.family:16} {tags} {result.get('seconds', 0) or 0:5.1f}s "
               + ("; ".join(c.line()[:160] for c in found)), flush=True)
     stats = run_profile(a.examples, seed, a.timeout, a.keep, progress, a.family)
