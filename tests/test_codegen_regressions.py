@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import shutil
+from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
@@ -222,6 +223,46 @@ def test_piecewise_branch_chosen_from_the_exact_rho(tmp_path):
         ref = reference.table(law, rows)
         v, w, st = lib.run(rows, f32=f32)
         check(path.stem, "C float" if f32 else "C double", rows, ref, v, w, st, "float" if f32 else "double")
+
+
+def test_the_exact_rhos_branch_in_python_and_casadi_too(tmp_path):
+    """Design 4 again: at (2.2057465672105434, 3.359683287083449) rho is
+    1.0e-16 below the switch (pi + 1)^2 - 1 but its rounding 3.6e-15 above
+    it; F' jumps there (sin s/(s + 1) against 1/(s + 1)), so the outer branch
+    that the Python module and the CasADi function took from the rounded rho
+    gave w 0.24 off.  Both now take the branch from the exact rho, as C."""
+    from uwmr_symbolic.codegen import casadi_function
+    path = ROOT.parent / "designs" / "design4_cosine.py"
+    generate(path, tmp_path / path.stem, force=True)
+    mod = load_module(tmp_path / path.stem / f"{path.stem}.py", "regression_design4_python")
+    law = reference.Law.of(load_design(path))
+    rows = _law_rows([(2.2057465672105434, 3.359683287083449), (3.359683287083449, -2.2057465672105434)])
+    ref = reference.table(law, rows)
+    v, w, st = mod.control_status(*rows.T)
+    check(path.stem, "Python", rows, ref, v, w, st, "double")
+    fn = casadi_function(path, force=True)
+    out = fn.map(len(rows))(*[rows[:, i][None, :] for i in range(8)])
+    check(path.stem, "CasADi", rows, ref, np.asarray(out[0]).ravel(), np.asarray(out[1]).ravel(),
+          np.zeros(len(rows), dtype=int), "double")
+
+
+def test_a_rounded_rho_beyond_a_boundary_with_an_odd_last_bit_stays_in_the_branch(tmp_path):
+    """c12: the branch below b = 7881299444482489/2^52 holds (b - rho)^(3/2) in
+    its F'.  At points where rho < b but e1*e1 + e2*e2 rounds above b (the
+    rows of `validate.rounding_crossings`), the C double code took that
+    branch (from the exact rho) with the rounded rho: a NaN, and status 4
+    where v and w are finite.  The rounded rho is now brought into the branch's ends."""
+    from uwmr_symbolic.codegen.law import build_model
+    from uwmr_symbolic.codegen.validate import rounding_crossings
+    from uwmr_symbolic.properties import Analysis
+    path = ROOT / "designs_codegen" / "c12_join_odd_last_bit.py"
+    design = load_design(path)
+    pairs = rounding_crossings(build_model(design, Analysis(design), precisions=("double",)), "double")
+    b = Fraction(7881299444482489, 2 ** 52)
+    assert len(pairs) == 8 and all((Fraction(x) ** 2 + Fraction(y) ** 2 - b) * (Fraction(x * x + y * y) - b) < 0
+                                   for x, y in pairs)
+    assert any(Fraction(x) ** 2 + Fraction(y) ** 2 < b for x, y in pairs)
+    _check_all(path, tmp_path, _law_rows(pairs, lam=0.5, vr=0.5))
 
 
 def test_bound_10_where_g_reaches_kf(tmp_path):

@@ -1014,3 +1014,16 @@ def test_kf_of_a_log_with_a_three_halves_power(tmp_path):
     top = dF(mpmath.findroot(lambda s: mpmath.diff(dF, s), 0.6))
     assert report.kf.lower <= Fraction(str(mpmath.nstr(top, 25))) <= report.kf.upper
     assert report.kf.upper - report.kf.lower < Fraction(1, 10 ** 6)
+
+
+def test_an_overflow_inside_sympy_leaves_that_property_unknown(tmp_path, monkeypatch):
+    # SymPy factors huge integers with python-flint, whose float() of one beyond the doubles raises OverflowError
+    # (a red team's design reached it from sympy.diff in the search): that property is unknown, the rest decided.
+    from uwmr_symbolic.properties import VERIFIERS
+
+    def overflowing(analysis):
+        raise OverflowError("int too large to convert to float")
+    monkeypatch.setitem(VERIFIERS, "P5", overflowing)
+    report, v = verify(tmp_path, "f = log(1 + rho)\n")
+    assert v == {**{p: "proved" for p in ("P1", "P2", "P3", "P4", "P6", "P7", "P8")}, "P5": "unknown"}
+    assert "OverflowError" in report.properties["P5"].reason

@@ -153,7 +153,7 @@ class Analysis:
         is 0 in disguise (log 6 - log 2 - log 3), None when neither 0 nor
         signed (`exact_sign`): a refutation needs a value shown nonzero."""
         d = one_sided_value(self.derivative(self.profile.pieces[0].expr, 1), 0, +1)
-        if d is None or d == 0 or not d.is_number or not d.is_finite:
+        if d is None or d == 0 or not d.is_number or d in (sp.oo, -sp.oo):    # (is_finite may be None: undecided)
             return d
         sign = exact_sign(d)
         return sp.Integer(0) if sign == 0 else None if sign is None else d

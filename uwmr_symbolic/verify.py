@@ -252,6 +252,8 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Tr
         except TimeLimit:
             props[name] = _timed_out(name, timeout)
             timed_out = True
+        except OverflowError as exc:        # SymPy's integer factoring of a huge number (python-flint's float())
+            props[name] = unknown(f"SymPy failed on a huge number while deciding {name} (OverflowError: {exc})")
     props = {p: props[p] for p in PROPERTIES}
     kf = None
     try:
@@ -263,6 +265,8 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Tr
     except TimeLimit:
         kf = None
         timed_out = True
+    except OverflowError:       # (as above: P1 says so)
+        kf = None
     try:
         with time_limit(stage_seconds(deadline, 5.0, time.monotonic())), design_budget(design.f):   # the witnesses' own budget
             certificate, kernel = _kernel_check(Report(path, design, props, kf))

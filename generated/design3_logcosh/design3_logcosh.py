@@ -127,7 +127,7 @@ def _prod(xs, shift):
     return p
 
 
-def _H(rho):
+def _H(rho, e1, e2):
     return _H0(rho)
 
 
@@ -140,7 +140,7 @@ def _gterm_careful(e1, e2, lam, vr, sinc, shift):
     if mid.any():
         x1, x2 = e1[mid], e2[mid]
         rho = x1 * x1 + x2 * x2
-        out[mid] = _prod([lam[mid], vr[mid], sinc[mid], x2, _H(rho)], shift[mid])
+        out[mid] = _prod([lam[mid], vr[mid], sinc[mid], x2, _H(rho, x1, x2)], shift[mid])
     other = ~mid & (m > 0)
     if not other.any():
         return out
@@ -209,7 +209,7 @@ def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
         q = numpy.multiply(vr, lam)
         if not _normal(q):
             return None
-        q *= _H(rho)
+        q *= _H(rho, e1, e2)
         numpy.sin(e3, out=a)
         a /= e3
         if not _normal(a):

@@ -73,8 +73,9 @@ static double gterm_law(double e1, double e2, double lam, double vr, double sinc
     const double a1 = fabs(e1), a2 = fabs(e2);
     const double m = a1 > a2 ? a1 : a2;
     if (m >= 1e-100 && m <= 10000.0) {
-        const double rho = e1 * e1 + e2 * e2;
+        double rho = e1 * e1 + e2 * e2;
         if (rho_cmp(e1, e2, 16.152789708268944, 8.714589107034418e-16) <= 0) {
+            rho = rho > 16.152789708268944 ? 16.152789708268944 : rho;
             const double x0 = sqrt(rho + 1.0);
             const double H = sin(rho/(x0 + 1.0))/x0;
             const double p1 = lam * vr;
@@ -88,6 +89,7 @@ static double gterm_law(double e1, double e2, double lam, double vr, double sinc
                 return prod_slow(x, 5, shift);
             }
         } else {
+            rho = rho < 16.152789708268944 ? 16.152789708268944 : rho;
             const double H = (1.0/sqrt(rho + 1.0));
             const double p1 = lam * vr;
             const double p2 = p1 * sinc;
@@ -239,12 +241,14 @@ int uwmr_design4_cosine_control(double e1, double e2, double e3, double vr, doub
         const double lv = lam * vr;
         if ((s12 >= 2e-100) & (s12 <= 10000.0) & (a3 >= 0.000244140625) & (a3 <= 1048576.0) & (kmin >= 0.0)
             & (fabs(lv) >= DBL_MIN) & (fabs(vr) + fabs(wr) + k1 + k2 <= 1.1235582092889474e+307)) {
-            const double rho = e1 * e1 + e2 * e2;
+            double rho = e1 * e1 + e2 * e2;
             double H;
             if (rho_cmp(e1, e2, 16.152789708268944, 8.714589107034418e-16) <= 0) {
+                rho = rho > 16.152789708268944 ? 16.152789708268944 : rho;
                 const double x0 = sqrt(rho + 1.0);
                 H = sin(rho/(x0 + 1.0))/x0;
             } else {
+                rho = rho < 16.152789708268944 ? 16.152789708268944 : rho;
                 H = (1.0/sqrt(rho + 1.0));
             }
             {
@@ -439,8 +443,9 @@ static float gterm_law_f32(float e1, float e2, float lam, float vr, float sinc, 
     const float a1 = fabsf(e1), a2 = fabsf(e2);
     const float m = a1 > a2 ? a1 : a2;
     if (m >= 1e-12F && m <= 10000.0F) {
-        const float rho = e1 * e1 + e2 * e2;
+        float rho = e1 * e1 + e2 * e2;
         if (rho_cmp_f32(e1, e2, 16.15279F, -3.6131112e-07F) <= 0) {
+            rho = rho > 16.15279F ? 16.15279F : rho;
             const float x0 = sqrtf(rho + 1.0F);
             const float H = sinf(rho/(x0 + 1.0F))/x0;
             const float p1 = lam * vr;
@@ -454,6 +459,7 @@ static float gterm_law_f32(float e1, float e2, float lam, float vr, float sinc, 
                 return prod_slow_f32(x, 5, shift);
             }
         } else {
+            rho = rho < 16.15279F ? 16.15279F : rho;
             const float H = (1.0F/sqrtf(rho + 1.0F));
             const float p1 = lam * vr;
             const float p2 = p1 * sinc;
@@ -605,12 +611,14 @@ int uwmr_design4_cosine_control_f32(float e1, float e2, float e3, float vr, floa
         const float lv = lam * vr;
         if ((s12 >= 2e-12F) & (s12 <= 10000.0F) & (a3 >= 0.015625F) & (a3 <= 1024.0F) & (kmin >= 0.0F)
             & (fabsf(lv) >= FLT_MIN) & (fabsf(vr) + fabsf(wr) + k1 + k2 <= 4.2535296e+37F)) {
-            const float rho = e1 * e1 + e2 * e2;
+            float rho = e1 * e1 + e2 * e2;
             float H;
             if (rho_cmp_f32(e1, e2, 16.15279F, -3.6131112e-07F) <= 0) {
+                rho = rho > 16.15279F ? 16.15279F : rho;
                 const float x0 = sqrtf(rho + 1.0F);
                 H = sinf(rho/(x0 + 1.0F))/x0;
             } else {
+                rho = rho < 16.15279F ? 16.15279F : rho;
                 H = (1.0F/sqrtf(rho + 1.0F));
             }
             {

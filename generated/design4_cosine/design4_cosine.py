@@ -119,16 +119,34 @@ def _prod(xs, shift):
     return p
 
 
-def _H(rho):
+def _square(a):
+    """a*a rounded and its rounding error, exactly (Dekker's product)."""
+    p, c = a * a, 134217729.0 * a
+    hi = c - (c - a)
+    lo = a - hi
+    return p, ((hi * hi - p) + 2.0 * hi * lo) + lo * lo
+
+
+def _rho_cmp(e1, e2, bh, bl):
+    """The sign of e1^2 + e2^2 - (bh + bl) without the rounding of rho, for
+    TINY <= max(|e1|, |e2|) <= FAR (the C code's rho_cmp, with TwoSum)."""
+    (p1, q1), (p2, q2) = _square(e1), _square(e2)
+    s = p1 + p2
+    z = s - p1
+    return numpy.sign((s - bh) + ((((p1 - (s - z)) + (p2 - z)) + q1 + q2) - bl))
+
+
+def _H(rho, e1, e2):
+    """H on the exact rho's branch, the rounded rho brought into its ends."""
     out = numpy.empty(rho.shape)
     rest = numpy.ones(rho.shape, dtype=bool)
-    sel = rest & (rho <= 16.152789708268944)
+    sel = rest & (_rho_cmp(e1, e2, 16.152789708268944, 8.714589107034418e-16) <= 0)
     rest &= ~sel
     if sel.any():
-        out[sel] = _H0(rho[sel])
+        out[sel] = _H0(numpy.clip(rho[sel], None, 16.152789708268944))
     sel = rest
     if sel.any():
-        out[sel] = _H1(rho[sel])
+        out[sel] = _H1(numpy.clip(rho[sel], 16.152789708268944, None))
     return out
 
 
@@ -141,7 +159,7 @@ def _gterm_careful(e1, e2, lam, vr, sinc, shift):
     if mid.any():
         x1, x2 = e1[mid], e2[mid]
         rho = x1 * x1 + x2 * x2
-        out[mid] = _prod([lam[mid], vr[mid], sinc[mid], x2, _H(rho)], shift[mid])
+        out[mid] = _prod([lam[mid], vr[mid], sinc[mid], x2, _H(rho, x1, x2)], shift[mid])
     other = ~mid & (m > 0)
     if not other.any():
         return out
@@ -210,7 +228,7 @@ def _fast(e1, e2, e3, vr, wr, k1, k2, lam):
         q = numpy.multiply(vr, lam)
         if not _normal(q):
             return None
-        q *= _H(rho)
+        q *= _H(rho, e1, e2)
         numpy.sin(e3, out=a)
         a /= e3
         if not _normal(a):

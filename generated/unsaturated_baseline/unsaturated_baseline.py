@@ -111,7 +111,7 @@ def _prod(xs, shift):
     return p
 
 
-def _H(rho):
+def _H(rho, e1, e2):
     return _H0(rho)
 
 
@@ -124,7 +124,7 @@ def _gterm_careful(e1, e2, lam, vr, sinc, shift):
     if mid.any():
         x1, x2 = e1[mid], e2[mid]
         rho = x1 * x1 + x2 * x2
-        out[mid] = _prod([lam[mid], vr[mid], sinc[mid], x2, _H(rho)], shift[mid])
+        out[mid] = _prod([lam[mid], vr[mid], sinc[mid], x2, _H(rho, x1, x2)], shift[mid])
     other = ~mid & (m > 0)
     if not other.any():
         return out

@@ -121,6 +121,13 @@ def _chain(branches, var, cfg, body):
         return ["{", *_indent(body(branches[0]), 4), "}"]
     out = []
     for i, br in enumerate(branches):
+        clamp = []
+        if var == "rho":    # the branch is the exact rho's, but its formula reads the rounded rho, which may lie
+            # an ulp or two beyond the branch's ends (then a root of b - rho below b would not be real): brought back
+            lo = _split_constant(branches[i - 1].hi, cfg)[0] if i else None
+            hi = _split_constant(br.hi, cfg)[0] if i < len(branches) - 1 else None
+            above = "rho" if hi is None else f"rho > {hi} ? {hi} : rho"
+            clamp = [f"rho = {above if lo is None else f'rho < {lo} ? {lo} : ' + (above if hi is None else f'({above})')};"]
         if i < len(branches) - 1:
             op = "<=" if br.hi_closed else "<"
             if var == "rho":
@@ -132,7 +139,7 @@ def _chain(branches, var, cfg, body):
         else:
             head = "} else {"
         out.append(head)
-        out.extend(_indent(body(br), 4))
+        out.extend(_indent(clamp + body(br), 4))
     out.append("}")
     return out
 
@@ -181,7 +188,7 @@ def gterm_lines(model: LawModel, cfg: CConfig, names) -> list[str]:
     lower = f"m >= {cfg.lit(cfg.tiny)}" if model.tiny is not None else "m > 0"
     out.append(f"if ({lower} && m <= {cfg.lit(cfg.far)}) {{")
     uses_rho = len(model.mid) > 1 or any(br.expr.has(RHO) for br in model.mid)
-    mid = [f"const {t} rho = e1 * e1 + e2 * e2;"] if uses_rho else []
+    mid = [f"{'const ' * (len(model.mid) == 1)}{t} rho = e1 * e1 + e2 * e2;"] if uses_rho else []
 
     def mid_body(br):
         lines, h = cse_lines(br.expr, pr, decl)
@@ -276,7 +283,7 @@ def fast_lines(model: LawModel, cfg: CConfig, names) -> list[str] | None:
            f"    & {lv_test} & (fabs{fn}(vr) + fabs{fn}(wr) + {gains_sum} <= {lit(big)})) {{"]
     body = []
     if len(model.mid) > 1 or any(br.expr.has(RHO) for br in model.mid):
-        body.append(f"const {t} rho = e1 * e1 + e2 * e2;")
+        body.append(f"{'const ' * (len(model.mid) == 1)}{t} rho = e1 * e1 + e2 * e2;")
     body.append(f"{t} H;")
 
     tanh_call = re.compile(rf"\btanh{fn}\(")

@@ -13,6 +13,7 @@ rho or H(rho) may overflow.  A function CasADi lacks (gamma, ...) raises
 NotImplementedError naming it."""
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import casadi as ca
@@ -85,6 +86,23 @@ def to_casadi(expr: sp.Expr, env: dict):
     raise NotImplementedError(f"no CasADi translation for {expr.func.__name__}")
 
 
+def _rho_sign(e1, e2, bh, bl):
+    """The sign of e1^2 + e2^2 - (bh + bl) without the rounding of rho
+    (Dekker's products and TwoSum, as the C code's rho_cmp), for
+    max(|e1|, |e2|) <= FAR.  CasADi simplifies (p1 + p2) - p1 to p2, which
+    would undo TwoSum: the sum goes through fmax(., -DBL_MAX), which it
+    keeps as written (validation checks the result near every boundary)."""
+    def square(a):
+        c = 134217729.0 * a
+        hi = c - (c - a)
+        lo = a - hi
+        return a * a, ((hi * hi - a * a) + 2 * hi * lo) + lo * lo
+    (p1, q1), (p2, q2) = square(e1), square(e2)
+    s = ca.fmax(p1 + p2, -1.7976931348623157e308)
+    z = s - p1
+    return ca.sign((s - bh) + ((((p1 - (s - z)) + (p2 - z)) + q1 + q2) - bl))
+
+
 def casadi_function(model: LawModel, config: CasadiConfig = CasadiConfig()) -> ca.Function:
     names = ["e1", "e2", "e3", "vr", "wr", "k1", "k2", "lam"]
     sym = {n: ca.SX.sym(n) for n in names}
@@ -93,11 +111,19 @@ def casadi_function(model: LawModel, config: CasadiConfig = CasadiConfig()) -> c
     if model.radial:
         rho = e1 * e1 + e2 * e2
         env[RHO] = rho
-        # branches in increasing rho: the first whose upper end is not passed
-        H = to_casadi(model.mid[-1].expr, env)
-        for br in reversed(model.mid[:-1]):
-            cond = rho <= float(br.hi) if br.hi_closed else rho < float(br.hi)
-            H = ca.if_else(cond, to_casadi(br.expr, env), H)
+        # branches in increasing rho: the first whose upper end the exact rho has not passed, its formula
+        # read at the rounded rho brought into the branch's ends (as the C code: `c_backend._chain`)
+        ends = [-math.inf, *(float(br.hi) for br in model.mid[:-1]), math.inf]
+        H = None
+        for i in reversed(range(len(model.mid))):
+            br = model.mid[i]
+            inside = rho if len(model.mid) == 1 else ca.fmin(ca.fmax(rho, ends[i]), ends[i + 1])
+            value = to_casadi(br.expr, {**env, RHO: inside})
+            if H is None:
+                H = value
+            else:
+                sign = _rho_sign(e1, e2, float(br.hi), float(sp.N(br.hi - sp.Rational(float(br.hi)), 40)))
+                H = ca.if_else(sign <= 0 if br.hi_closed else sign < 0, value, H)
         g = e2 * H
         if model.tiny is not None:
             # F'(s) ~ a s^j near 0: H = a s^(j-1) where rho underflows (0/0 otherwise): a power of rho

@@ -38,11 +38,16 @@ def _function(name, arg, expr, printer):
 
 
 def _masks(branches, var):
-    """[(condition code for branch i given earlier ones are excluded)]"""
+    """[(condition code for branch i given earlier ones are excluded)]; in
+    rho the exact rho's branch (`_rho_cmp`, as the C code's `rho_cmp`)."""
     out = []
     for i, br in enumerate(branches):
         if i == len(branches) - 1:
             out.append(None)
+        elif var == "rho":
+            bh = float(br.hi)
+            bl = float(sp.N(br.hi - sp.Rational(bh), 40))
+            out.append(f"_rho_cmp(e1, e2, {double_literal(bh)}, {double_literal(bl)}) {'<=' if br.hi_closed else '<'} 0")
         else:
             out.append(f"{var} {'<=' if br.hi_closed else '<'} {double_literal(br.hi)}")
     return out
@@ -65,7 +70,10 @@ def render(env, model: LawModel, context: dict, config: PythonConfig | None = No
     mid = []
     for i, (br, cond) in enumerate(zip(model.mid, _masks(model.mid, "rho"))):
         functions += _function(f"_H{i}", "rho", br.expr, pr) + [""]
-        mid.append(dict(fn=f"_H{i}", cond=cond))
+        # the rounded rho brought into the branch's ends (see `c_backend._chain`)
+        ends = [double_literal(float(b.hi)) if b is not None else "None"
+                for b in (model.mid[i - 1] if i else None, br if cond is not None else None)]
+        mid.append(dict(fn=f"_H{i}", cond=cond, ends=ends))
     far = []
     uses_lt = any(br.expr.has(LT) for br in model.far)
     for i, (br, cond) in enumerate(zip(model.far, _masks(model.far, "tt"))):

@@ -13,7 +13,8 @@ compares with the exact law (`reference`, Arb ball arithmetic).  The sample
   analogues), e1 x e2 in full, the others one at a time and in small
   products with vr = 0, lam = 0 and e3 = 0 among them;
 * both sides (x (1 +- 2^-10)) of every region switch of the generated code
-  (TINY, FAR, Piecewise boundaries in rho and t);
+  (TINY, FAR, Piecewise boundaries in rho and t), and points near a
+  boundary in rho where rho and its rounding fall on different sides;
 * random rows, log-uniform over every magnitude of the type and over
   1e-4..1e4.
 
@@ -40,9 +41,11 @@ import sys
 import tempfile
 import time
 from dataclasses import dataclass, field
+from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
+import sympy as sp
 
 from . import reference
 from .accuracy import lam_vr_kf
@@ -106,6 +109,48 @@ def switch_points(model: LawModel, precision: str) -> list[float]:
     return out
 
 
+def _square(a, split):
+    """a*a rounded and its rounding error (Dekker's product, `split` =
+    2^ceil(p/2) + 1 for p bits: exact in the type)."""
+    p, c = a * a, split * a
+    hi = c - (c - a)
+    lo = a - hi
+    return p, ((hi * hi - p) + 2 * hi * lo) + lo * lo
+
+
+def rounding_crossings(model: LawModel, precision: str, per_boundary: int = 8, tries: int = 40_000):
+    """Points (e1, e2) of the type near each Piecewise boundary b in rho
+    where rho = e1^2 + e2^2 and its rounding e1*e1 + e2*e2 lie strictly on
+    different sides of b: the generated C picks the exact rho's branch
+    (`rho_cmp`), whose formula then reads the rounded rho (a boundary with
+    an odd last bit lets the rounding cross it).  Found among random points
+    of the circle, a few ulps either way, with rho - b signed as `rho_cmp`
+    signs it (TwoSum of Dekker's squares, b as a pair of the type)."""
+    t = np.float32 if precision == "float" else np.float64
+    split = t(4097.0 if precision == "float" else 134217729.0)
+    rng = np.random.default_rng(1)
+    out = []
+    with np.errstate(all="ignore"):
+        for br in model.mid[:-1]:
+            exact = sp.Rational(br.hi) if br.hi.is_Rational else sp.Rational(str(sp.N(br.hi, 40)))
+            bh = t(float(exact))
+            bl = t(float(exact - sp.Rational(float(bh))))
+            e1 = t(math.sqrt(float(exact))) * rng.uniform(0.05, 0.999, tries).astype(t)
+            e2 = np.sqrt(bh - e1 * e1)
+            found = []
+            for _ in range(3):          # e2 and its next two neighbours up
+                (p1, q1), (p2, q2) = _square(e1, split), _square(e2, split)
+                s = p1 + p2
+                z = s - p1
+                r = (s - bh) + ((((p1 - (s - z)) + (p2 - z)) + q1 + q2) - bl)
+                rounded = (e1 * e1 + e2 * e2) - bh
+                hit = ((r < 0) & (rounded > 0)) | ((r > 0) & (rounded < 0))
+                found += [(float(x), float(y)) for x, y in zip(e1[hit], e2[hit])]
+                e2 = np.nextafter(e2, t(np.inf))
+            out += found[:per_boundary]
+    return out
+
+
 def sample_inputs(model: LawModel, precision: str, nominal, n_random: int = 600, seed: int = 0) -> np.ndarray:
     """Rows of 8 inputs (see the module doc), as doubles holding values of
     the precision's type."""
@@ -139,6 +184,10 @@ def sample_inputs(model: LawModel, precision: str, nominal, n_random: int = 600,
         for q in (0.0, 0.5, 1.0):
             rows.append([m * q, m, *base[2:]])
             rows.append([m, -m * q, *base[2:]])
+    # where the rounding of rho crosses a boundary that rho does not
+    for e1, e2 in rounding_crossings(model, precision):
+        rows.append([e1, e2, *base[2:]])
+        rows.append([e2, -e1, *base[2:]])
     # random: every magnitude, and moderate
     lo = math.log10(_limits(precision)[0]) + 0.3
     hi = math.log10(_limits(precision)[2]) - 0.1
