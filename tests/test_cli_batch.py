@@ -497,6 +497,19 @@ def test_a_long_exact_kf_shows_its_digits_in_the_summary():
     assert _kf_summary({**base, "exact": str(3 * 10**150 + 7), "exact_digits": None}) == "3.0000000000000000e+150..."
 
 
+def test_an_enclosure_is_printed_rounded_outward():
+    # a red team: P1 printed kf = sup|F'| in [1.29483614, 1.29483626] (nearest rounding) for log(1 + rho +
+    # rho^(3/4)), whose kf is 1.2948361364...: below the printed lower end
+    from fractions import Fraction
+    from uwmr_symbolic.kf import show_interval
+    lo, hi = Fraction(1294836136402, 10 ** 12), Fraction(1294836257, 10 ** 9)
+    assert show_interval(lo, hi, 9) == "[1.29483613, 1.29483626]"
+    assert show_interval(Fraction(12948361, 10 ** 7), Fraction(12948363, 10 ** 7), 12) == "[1.2948361, 1.2948363]"
+    assert show_interval(-Fraction(2, 3), Fraction(1, 3), 4) == "[-0.667, 0.3334]"
+    tiny = Fraction(1, 3 * 10 ** 400)        # beyond the doubles: by mpmath, still outward
+    assert show_interval(tiny, 2 * tiny, 5) == "[3.3333e-401, 6.6667e-401]"
+
+
 def test_unusable_options_end_before_anything_is_verified_or_written(tmp_path):
     """Exit 2 with one line and nothing written: a --timeout that is not a
     number of seconds the workers can wait (inf, nan, above 1e6), a folder

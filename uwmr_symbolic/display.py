@@ -29,7 +29,7 @@ def _kf_text(d: dict) -> str:
     if kf["exact"] is not None:
         digits = f" = {kf['exact_digits']}…" if kf.get("exact_digits") else ""
         return f"kf = {kf['exact']}{digits} ({att[kf['attained']]})"
-    return f"kf in [{kf['lower']:.12g}, {kf['upper']:.12g}] ({att[kf['attained']]})"
+    return f"kf in {kf['enclosure']} ({att[kf['attained']]})"
 
 
 def report_html(report) -> str:

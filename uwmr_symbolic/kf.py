@@ -54,7 +54,7 @@ class SupCertificate:
             return text if approx == text else f"{text} = {approx}"
         if self.upper is None:
             return "unbounded" if self.unbounded_witness else "undecided"
-        return f"[{show(self.lower)}, {show(self.upper)}]"
+        return show_interval(self.lower, self.upper)
 
 
 KfCertificate = SupCertificate
@@ -329,7 +329,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
         return exact_certificate(value, attained,
                               f"sup {name} = {value} {where}, proved by {value} - {name} >= 0 on [0, oo)")
     return SupCertificate(lower, upper, None, None,
-                          f"interval branch and bound: sup {name} in [{show(lower)}, {show(upper)}]",
+                          f"interval branch and bound: sup {name} in {show_interval(lower, upper)}",
                           point=enc.point)
 
 
@@ -412,7 +412,7 @@ def _enclosure_with_kernel(cert: SupCertificate, analysis, side=None) -> SupCert
     else:
         U, theorems, why = _formula_enclosure(cert, analysis, L, tiers, side)
     if theorems is None:
-        cert.unchecked = [f"kf in [{show(cert.lower)}, {show(cert.upper)}] (kernel: {why})"]
+        cert.unchecked = [f"kf in {show_interval(cert.lower, cert.upper)} (kernel: {why})"]
         return cert
     cert.kernel_bounds = (Fraction(L.p, L.q), Fraction(U.p, U.q))
     cert.kernel, cert.unchecked = theorems, []
@@ -510,6 +510,12 @@ def show(x, digits: int = 10) -> str:
     return mpmath.nstr(mpmath.mpf(x.numerator) / x.denominator, digits)
 
 
+def show_interval(lower, upper, digits: int = 10) -> str:
+    """[lower, upper] (Fractions or floats) with `digits` significant digits,
+    rounded outward: the printed interval holds the one given."""
+    return f"[{show(decimal_beyond(lower, -1, digits), digits)}, {show(decimal_beyond(upper, 1, digits), digits)}]"
+
+
 def certify_kf(analysis) -> SupCertificate:
     """kf = sup |F'| over [0, oo) (bound (10), property P1)."""
     pieces = analysis.profile.pieces
@@ -561,7 +567,7 @@ def certify_kf_along_e2(f) -> SupCertificate | None:
     cert = SupCertificate(best.lower, max(enc.upper for _, enc in found), None, None, "", point=best.point)
     blind = len(found) < len(sides)     # (-psi when psi > 0 decays: sup 0, approached at 0 and oo)
     cert.reason = (f"df/de2 = psi(e2) does not depend on e1 (f analytic on the plane): kf = sup |psi| in "
-                   f"[{show(cert.lower)}, {show(cert.upper)}] (interval branch and bound on both half-axes)")
+                   f"{show_interval(cert.lower, cert.upper)} (interval branch and bound on both half-axes)")
     L = decimal_beyond(cert.lower, -1)
     plane = plane_theorems(f, E1, E2, []) if L > 0 and best.point is not None else []
     lower = sup_lower_theorem(side, L, best.point, S) if plane else None
@@ -576,7 +582,7 @@ def certify_kf_along_e2(f) -> SupCertificate | None:
             return cert
     if blind:          # a side the search did not bound: only the kernel's bound U makes [lower, upper] an enclosure
         return None
-    cert.unchecked = [f"kf in [{show(cert.lower)}, {show(cert.upper)}] (kernel: "
+    cert.unchecked = [f"kf in {show_interval(cert.lower, cert.upper)} (kernel: "
                       + ("f not shown analytic on the plane, or sup psi >= L not shown)" if not lower else
                          "|psi| <= U not shown)")]
     return cert

@@ -38,7 +38,7 @@ from .certify import (REDUCTION, SPENT, WORK, NoProof, continuity_pair, explorin
                       smoothness_theorems, sup_upper_theorem)
 from .kernel import core as K
 from .kernel.core import derivative
-from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, exact_text, psi_sides, scale, show
+from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, exact_text, psi_sides, scale, show, show_interval
 from .limits import NoLimit, limit_right
 from .profile import (RHO, S, continuous_on, elliptic_ratio, float_of, one_sided_value,
                       radial_profile,
@@ -366,7 +366,7 @@ def verify_p1(a: Analysis) -> Verdict:
         return c1
     if kf.upper is None:
         return unknown(f"C^1 proved, but no finite bound on |df/de2| found: {kf.reason}")
-    v = proved(f"{c1.reason}; kf = sup|F'| in [{show(kf.lower, 9)}, {show(kf.upper, 9)}]")
+    v = proved(f"{c1.reason}; kf = sup|F'| in {show_interval(kf.lower, kf.upper, 9)}")
     if kf.kernel:
         # F' > 0 and F' <= c on (0, oo) (`certify.sup_theorems`), or |F'| <= c (`certify.sup_abs_theorems`)
         own = kf.kernel[len(a.reduction) + len(a.one_branch[1]):]

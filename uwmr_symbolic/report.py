@@ -17,7 +17,7 @@ from xml.etree import ElementTree as ET
 import sympy as sp
 
 from .interval import Interval
-from .kf import exact_text
+from .kf import exact_text, show_interval
 from .verify import Report
 
 MARK = {"proved": "proved ", "refuted": "REFUTED", "unknown": "unknown"}
@@ -88,6 +88,8 @@ def to_dict(r: Report) -> dict:
                else str(sp.N(kf.exact, 20)),
                "lower": None if kf is None or kf.lower is None else Interval.point(kf.lower).lower_float(),
                "upper": None if kf is None or kf.upper is None else Interval.point(kf.upper).upper_float(),
+               "enclosure": None if kf is None or kf.lower is None or kf.upper is None
+               else show_interval(kf.lower, kf.upper, 12),     # (decimals rounded outward, for the text)
                "attained": None if kf is None else kf.attained,
                "unbounded": kf is not None and kf.upper is None and bool(kf.unbounded_witness),
                "reason": "undecided (f not radial or P1 not analysed)" if kf is None else kf.reason},
@@ -153,7 +155,7 @@ def render_text(r) -> str:
             digits = f" = {kf['exact_digits']}..." if kf.get("exact_digits") else ""
             lines.append(f"  kf = {kf['exact']}{digits}  ({how})")
         else:
-            lines.append(f"  kf in [{kf['lower']:.12g}, {kf['upper']:.12g}]  ({how})")
+            lines.append(f"  kf in {kf['enclosure']}  ({how})")
     if d["gains"]:
         lines.append("")
         lines.append("  bound (10)     |V| bound  margin          |W| bound  margin          lam_max")
