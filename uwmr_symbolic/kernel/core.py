@@ -375,8 +375,9 @@ def sign_by_cover(*, expr, var, cuts, want, strict=True, mean_value=False):
     mean value form E(m) + E'(B)(B - m) (`arb.centered`), E' = sympy.diff(E)
     evaluable on the closed box B.  Every function the evaluator supports is
     differentiable, with SymPy's derivative, wherever that derivative's
-    formula is evaluable (|u| and the like have none: sign(u) is refused),
-    so E is C^1 on B and E(x) = E(m) + E'(xi)(x - m)."""
+    formula is evaluable (that of |u|, sign(u) u', only where u has one
+    strict sign on the box; that of sign(u), a DiracDelta, never), so E
+    is C^1 on B and E(x) = E(m) + E'(xi)(x - m)."""
     _need(want in (1, -1) and isinstance(strict, bool) and isinstance(mean_value, bool),
           "want is +1 or -1, strict and mean_value booleans")
     cuts = _cuts(var, cuts)
