@@ -147,3 +147,20 @@ def test_codegen_refuses_an_unproved_design_without_verifying_it_again(tmp_path,
     err = capsys.readouterr().err
     assert "d.py: no code generated, the design is not verified (1 reason(s): P3 unknown: undecided near s = 4" in err
     assert "use --force" in err and not (tmp_path / "out").exists()
+
+
+def test_trust_search_does_not_extend_to_codegen_and_says_so(tmp_path):
+    """A half-plane switch between log(1 + rho) and log((1 + rho)^2)/2, the
+    same function: the search proves P1-P8, the kernel re-checks only P2
+    (it has no rule for a Piecewise equal to one formula).  With
+    --trust-search the report says all proved, and --codegen had refused it
+    as "not verified ... counts only with --trust-search"; now it says why."""
+    design = tmp_path / "switch.py"
+    design.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                      "f = sp.Piecewise((sp.log(1 + rho), e1 > 0), (sp.log((1 + rho)**2)/2, True))\n")
+    run = cli(design, "--no-cache", "--trust-search", "--codegen", tmp_path / "out")
+    assert run.returncode == 1 and "all properties proved" in run.stdout
+    assert run.stderr.strip().splitlines()[-1].startswith(
+        f"{design}: no code generated: code is generated from the kernel's verdicts only, and P1, P3, P4, P5, P6, "
+        "P7, P8 rest on the search alone (--trust-search does not extend to --codegen")
+    assert not (tmp_path / "out").exists()

@@ -13,7 +13,7 @@ from .batch import Progress, check_files, expand_paths, worst_status
 from .cache import ResultCache
 from .report import (render_github, render_json, render_junit, render_markdown_summary, render_summary,
                      render_text)
-from .verify import DEFAULT_TIMEOUT
+from .verify import DEFAULT_TIMEOUT, SEARCH_ONLY
 
 
 def render_simulation_text(sim) -> str:
@@ -290,6 +290,13 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
             continue
         except CodegenRefused as exc:
             hint = "" if force else "; use --force for a NOT VERIFIED build"
+            search = [r.split()[0] for r in exc.reasons if SEARCH_ONLY in r]
+            if search and not unproved:     # --trust-search counted them, the code generator does not
+                print(f"{path}: no code generated: code is generated from the kernel's verdicts only, and "
+                      f"{', '.join(search)} rest on the search alone (--trust-search does not extend to --codegen; "
+                      f"--certificate FILE says why){hint}", file=sys.stderr)
+                status = 1
+                continue
             print(f"{path}: no code generated, the design is not verified ({len(exc.reasons)} "
                   f"reason(s): {exc.reasons[0]} ...){hint}", file=sys.stderr)
             status = 1
