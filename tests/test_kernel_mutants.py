@@ -55,6 +55,8 @@ def test_rule_data_and_premises_are_checked():
     assert why(K.value_sign, value=x) == "not an exact number: x"
     # a Float never reaches a rule: the data is re-read from its srepr, and Float is not allowed there
     assert why(K.value_sign, value=sp.Float(1)) == "value_sign: name not allowed: Float"
+    with pytest.raises(KernelError, match="^not an exact number: 0.5"):     # (and not by Arb, later)
+        K._number(sp.Float(0.5))
     # (-1)**(1/3) is a number, but the kernel reads x**(1/3) as the real root only for x >= 0
     assert why(K.value_sign, value=sp.Pow(-1, Q(1, 3))) == "not a real constant: (-1)**(1/3): x**(1/3) needs x >= 0"
     assert why(K.value_sign, value=oo) == "a finite constant"
