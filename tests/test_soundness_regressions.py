@@ -1030,3 +1030,16 @@ def test_an_overflow_inside_sympy_leaves_that_property_unknown(tmp_path, monkeyp
     report, v = verify(tmp_path, "f = log(1 + rho)\n")
     assert v == {**{p: "proved" for p in ("P1", "P2", "P3", "P4", "P6", "P7", "P8")}, "P5": "unknown"}
     assert "OverflowError" in report.properties["P5"].reason
+
+
+def test_a_slope_given_as_sympys_own_integral_gives_no_crash_and_no_wrong_refutation(tmp_path):
+    # A red team's design: F = the integral from 0 to s of F'(t) = 2t (2t^2 - 3t + 2)/(1 + t^4), which SymPy
+    # writes with logs and atans of nested radicals.  By hand F' > 0 for t > 0 (2t^2 - 3t + 2 has no real root),
+    # F'(0+) = 0, F' <= 1 with equality at t = 1 (1 + t^4 - F'(t) = (t - 1)^4), F'/t <= 4: every property holds.
+    # Two faults: SymPy's integer factoring inside sympy.diff took python-flint's float of a huge integer
+    # (OverflowError, "internal error", exit 2), and F'(0+), a disguised zero whose finiteness SymPy leaves
+    # undecided, was taken for infinite, refuting P1, P5, P6, P7 and P8 with --trust-search.
+    report, v = verify(tmp_path, "S = sp.Symbol('S', nonnegative=True)\n"
+                                 "F = sp.integrate(2*S*(2*S**2 - 3*S + 2)/(1 + S**4), (S, 0, S))\n"
+                                 "f = F.subs(S, sqrt(rho))\n", timeout=30, kernel_only=False)
+    assert "refuted" not in v.values() and v["P2"] == v["P4"] == "proved"
