@@ -245,7 +245,6 @@ def tail_form(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
     return _checked_rewrite(substitute(expr, s, 1 / T), e)
 
 
-
 #: a rational tail form stays a sum when its terms' distinct denominators have more
 #: than this total degree (the degree of the one denominator they would share)
 TERMWISE_DEGREE = 64
