@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .law import LT, RHO, SIN_MIN, SINC_SHIFT, ST, THRESHOLDS, LawModel, mid_h_bounds
+from .law import LT, RHO, SIN_MIN, SINC_SHIFT, ST, THRESHOLDS, LawModel, mid_h_bounds, split_boundary
 from .printers import CPrinter, Unsupported, cse_lines
 from .. import e1 as E1, e2 as E2
 from ..univariate import T
@@ -105,11 +105,8 @@ def _indent(lines, n):
 
 
 def _split_constant(value, cfg) -> tuple[str, str]:
-    """(hi, lo) literals with hi + lo = value to twice the type's precision."""
-    import numpy as np
-    exact = sp.N(value, 80)
-    hi = float(exact) if cfg.precision == "double" else float(np.float32(float(exact)))
-    lo = sp.N(exact - sp.Rational(hi), 40)
+    """(hi, lo) literals with hi + lo = value to twice the type's precision (`law.split_boundary`)."""
+    hi, lo = split_boundary(value, cfg.precision)
     return cfg.lit(sp.Rational(hi)), cfg.lit(lo)
 
 
@@ -119,20 +116,20 @@ def _chain(branches, var, cfg, body):
     the sign of e1^2 + e2^2 - b without the rounding of rho."""
     if len(branches) == 1:
         return ["{", *_indent(body(branches[0]), 4), "}"]
+    ends = [_split_constant(b.hi, cfg) for b in branches[:-1]] if var == "rho" else []
     out = []
     for i, br in enumerate(branches):
         clamp = []
         if var == "rho":    # the branch is the exact rho's, but its formula reads the rounded rho, which may lie
             # an ulp or two beyond the branch's ends (then a root of b - rho below b would not be real): brought back
-            lo = _split_constant(branches[i - 1].hi, cfg)[0] if i else None
-            hi = _split_constant(br.hi, cfg)[0] if i < len(branches) - 1 else None
-            above = "rho" if hi is None else f"rho > {hi} ? {hi} : rho"
-            clamp = [f"rho = {above if lo is None else f'rho < {lo} ? {lo} : ' + (above if hi is None else f'({above})')};"]
+            value = "rho" if i == len(branches) - 1 else f"rho > {ends[i][0]} ? {ends[i][0]} : rho"
+            if i:
+                value = f"rho < {ends[i - 1][0]} ? {ends[i - 1][0]} : " + (f"({value})" if value != "rho" else value)
+            clamp = [f"rho = {value};"]
         if i < len(branches) - 1:
             op = "<=" if br.hi_closed else "<"
             if var == "rho":
-                hi, lo = _split_constant(br.hi, cfg)
-                test = f"rho_cmp{cfg.suffix}(e1, e2, {hi}, {lo}) {op} 0"
+                test = f"rho_cmp{cfg.suffix}(e1, e2, {ends[i][0]}, {ends[i][1]}) {op} 0"
             else:
                 test = f"{var} {op} {cfg.lit(br.hi)}"
             head = ("if" if i == 0 else "} else if") + f" ({test}) {{"

@@ -20,7 +20,7 @@ import casadi as ca
 import sympy as sp
 from sympy.codegen.cfunctions import expm1, log1p
 
-from .law import RHO, LawModel
+from .law import RHO, LawModel, rho_minus_b, split_boundary
 from .. import e1 as E1, e2 as E2
 
 
@@ -86,23 +86,6 @@ def to_casadi(expr: sp.Expr, env: dict):
     raise NotImplementedError(f"no CasADi translation for {expr.func.__name__}")
 
 
-def _rho_sign(e1, e2, bh, bl):
-    """The sign of e1^2 + e2^2 - (bh + bl) without the rounding of rho
-    (Dekker's products and TwoSum, as the C code's rho_cmp), for
-    max(|e1|, |e2|) <= FAR.  CasADi simplifies (p1 + p2) - p1 to p2, which
-    would undo TwoSum: the sum goes through fmax(., -DBL_MAX), which it
-    keeps as written (validation checks the result near every boundary)."""
-    def square(a):
-        c = 134217729.0 * a
-        hi = c - (c - a)
-        lo = a - hi
-        return a * a, ((hi * hi - a * a) + 2 * hi * lo) + lo * lo
-    (p1, q1), (p2, q2) = square(e1), square(e2)
-    s = ca.fmax(p1 + p2, -1.7976931348623157e308)
-    z = s - p1
-    return ca.sign((s - bh) + ((((p1 - (s - z)) + (p2 - z)) + q1 + q2) - bl))
-
-
 def casadi_function(model: LawModel, config: CasadiConfig = CasadiConfig()) -> ca.Function:
     names = ["e1", "e2", "e3", "vr", "wr", "k1", "k2", "lam"]
     sym = {n: ca.SX.sym(n) for n in names}
@@ -122,8 +105,9 @@ def casadi_function(model: LawModel, config: CasadiConfig = CasadiConfig()) -> c
             if H is None:
                 H = value
             else:
-                sign = _rho_sign(e1, e2, float(br.hi), float(sp.N(br.hi - sp.Rational(float(br.hi)), 40)))
-                H = ca.if_else(sign <= 0 if br.hi_closed else sign < 0, value, H)
+                bh, bl = split_boundary(br.hi)      # the exact rho's side (CasADi rewrites (p1 + p2) - p1: fmax)
+                d = rho_minus_b(e1, e2, bh, float(bl), opaque=lambda s: ca.fmax(s, -1.7976931348623157e308))
+                H = ca.if_else(d <= 0 if br.hi_closed else d < 0, value, H)
         g = e2 * H
         if model.tiny is not None:
             # F'(s) ~ a s^j near 0: H = a s^(j-1) where rho underflows (0/0 otherwise): a power of rho

@@ -66,6 +66,36 @@ SINC_SHIFT = {"double": 512, "float": 100}
 SIN_MIN = {"double": "2^-61", "float": "2^-28.2"}
 
 
+def split_boundary(b, precision: str = "double") -> tuple[float, sp.Float]:
+    """(bh, bl): the boundary b of a Piecewise branch in rho rounded to the
+    type, and b - bh to 40 digits, so that bh + bl is b to about twice the
+    type's precision: what each back-end's exact branch test compares
+    e1^2 + e2^2 with (`rho_minus_b`, the C code's `rho_cmp`)."""
+    import numpy as np
+    exact = sp.N(b, 80)
+    hi = float(exact) if precision == "double" else float(np.float32(float(exact)))
+    return hi, sp.N(exact - sp.Rational(hi), 40)
+
+
+def rho_minus_b(e1, e2, bh, bl, split=134217729.0, opaque=lambda s: s):
+    """e1^2 + e2^2 - (bh + bl) without the rounding of rho (its sign is
+    exact unless |rho - b| is below about 2^-100 rho), in any arithmetic
+    that rounds like the type: numpy arrays of doubles or floats, CasADi
+    SX.  Dekker's exact squares (`split` = 2^ceil(p/2) + 1 for p bits) and
+    TwoSum: the C code's `rho_cmp` without fma.  `opaque(p1 + p2)` keeps a
+    symbolic back-end from rewriting (p1 + p2) - p1 as p2, which would undo
+    TwoSum (CasADi does)."""
+    def square(a):
+        p, c = a * a, split * a
+        hi = c - (c - a)
+        lo = a - hi
+        return p, ((hi * hi - p) + 2 * hi * lo) + lo * lo
+    (p1, q1), (p2, q2) = square(e1), square(e2)
+    s = opaque(p1 + p2)
+    z = s - p1
+    return (s - bh) + ((((p1 - (s - z)) + (p2 - z)) + q1 + q2) - bl)
+
+
 @dataclass
 class Branch:
     """expr holds for lo < x < hi (x is rho or t); `hi_closed` says whether

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .law import LT, RHO, SINC_SHIFT, ST, THRESHOLDS, LawModel
+from .law import LT, RHO, SINC_SHIFT, ST, THRESHOLDS, LawModel, split_boundary
 from .printers import PyPrinter, cse_lines, double_literal
 from .. import e1 as E1, e2 as E2
 from ..univariate import T
@@ -45,9 +45,8 @@ def _masks(branches, var):
         if i == len(branches) - 1:
             out.append(None)
         elif var == "rho":
-            bh = float(br.hi)
-            bl = float(sp.N(br.hi - sp.Rational(bh), 40))
-            out.append(f"_rho_cmp(e1, e2, {double_literal(bh)}, {double_literal(bl)}) {'<=' if br.hi_closed else '<'} 0")
+            bh, bl = split_boundary(br.hi)
+            out.append(f"_rho_cmp(e1, e2, {double_literal(bh)}, {double_literal(float(bl))}) {'<=' if br.hi_closed else '<'} 0")
         else:
             out.append(f"{var} {'<=' if br.hi_closed else '<'} {double_literal(br.hi)}")
     return out
@@ -71,7 +70,7 @@ def render(env, model: LawModel, context: dict, config: PythonConfig | None = No
     for i, (br, cond) in enumerate(zip(model.mid, _masks(model.mid, "rho"))):
         functions += _function(f"_H{i}", "rho", br.expr, pr) + [""]
         # the rounded rho brought into the branch's ends (see `c_backend._chain`)
-        ends = [double_literal(float(b.hi)) if b is not None else "None"
+        ends = [double_literal(split_boundary(b.hi)[0]) if b is not None else "None"
                 for b in (model.mid[i - 1] if i else None, br if cond is not None else None)]
         mid.append(dict(fn=f"_H{i}", cond=cond, ends=ends))
     far = []

@@ -44,11 +44,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-import sympy as sp
 
 from . import reference
 from .accuracy import lam_vr_kf
-from .law import LawModel
+from .law import LawModel, rho_minus_b, split_boundary
 
 OK, ERR_NULL, ERR_NONFINITE, ERR_GAIN, ERR_RANGE = 0, 1, 2, 3, 4
 TOL = {"double": 1e-12, "float": 1e-5}
@@ -108,15 +107,6 @@ def switch_points(model: LawModel, precision: str) -> list[float]:
     return out
 
 
-def _square(a, split):
-    """a*a rounded and its rounding error (Dekker's product, `split` =
-    2^ceil(p/2) + 1 for p bits: exact in the type)."""
-    p, c = a * a, split * a
-    hi = c - (c - a)
-    lo = a - hi
-    return p, ((hi * hi - p) + 2 * hi * lo) + lo * lo
-
-
 def rounding_crossings(model: LawModel, precision: str, per_boundary: int = 8, tries: int = 40_000):
     """Points (e1, e2) of the type near each Piecewise boundary b in rho
     where rho = e1^2 + e2^2 and its rounding e1*e1 + e2*e2 lie strictly on
@@ -124,24 +114,20 @@ def rounding_crossings(model: LawModel, precision: str, per_boundary: int = 8, t
     (`rho_cmp`), whose formula then reads the rounded rho (a boundary with
     an odd last bit lets the rounding cross it).  Found among random points
     of the circle, a few ulps either way, with rho - b signed as `rho_cmp`
-    signs it (TwoSum of Dekker's squares, b as a pair of the type)."""
+    signs it (`law.rho_minus_b`, b as a pair of the type)."""
     t = np.float32 if precision == "float" else np.float64
     split = t(4097.0 if precision == "float" else 134217729.0)
     rng = np.random.default_rng(1)
     out = []
     with np.errstate(all="ignore"):
         for br in model.mid[:-1]:
-            exact = sp.Rational(br.hi) if br.hi.is_Rational else sp.Rational(str(sp.N(br.hi, 40)))
-            bh = t(float(exact))
-            bl = t(float(exact - sp.Rational(float(bh))))
-            e1 = t(math.sqrt(float(exact))) * rng.uniform(0.05, 0.999, tries).astype(t)
+            bh, bl = split_boundary(br.hi, precision)
+            bh, bl = t(bh), t(float(bl))
+            e1 = t(math.sqrt(float(br.hi))) * rng.uniform(0.05, 0.999, tries).astype(t)
             e2 = np.sqrt(bh - e1 * e1)
             found = []
             for _ in range(3):          # e2 and its next two neighbours up
-                (p1, q1), (p2, q2) = _square(e1, split), _square(e2, split)
-                s = p1 + p2
-                z = s - p1
-                r = (s - bh) + ((((p1 - (s - z)) + (p2 - z)) + q1 + q2) - bl)
+                r = rho_minus_b(e1, e2, bh, bl, split)
                 rounded = (e1 * e1 + e2 * e2) - bh
                 hit = ((r < 0) & (rounded > 0)) | ((r > 0) & (rounded < 0))
                 found += [(float(x), float(y)) for x, y in zip(e1[hit], e2[hit])]
