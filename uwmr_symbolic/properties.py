@@ -38,7 +38,8 @@ from .certify import (REDUCTION, SPENT, WORK, NoProof, continuity_pair, explorin
                       smoothness_theorems, sup_upper_theorem)
 from .kernel import core as K
 from .kernel.core import derivative
-from .kf import KfCertificate, certify_kf, certify_sup, decimal_beyond, exact_text, psi_sides, scale, show, show_interval
+from .kf import (KfCertificate, certify_kf, certify_sup, decimal_beyond, exact_text, psi_sides, scale, show,
+                 show_interval)
 from .limits import NoLimit, limit_right
 from .profile import (RHO, S, continuous_on, elliptic_ratio, float_of, one_sided_value,
                       radial_profile,

@@ -46,7 +46,8 @@ def _masks(branches, var):
             out.append(None)
         elif var == "rho":
             bh, bl = split_boundary(br.hi)
-            out.append(f"_rho_cmp(e1, e2, {double_literal(bh)}, {double_literal(float(bl))}) {'<=' if br.hi_closed else '<'} 0")
+            op = "<=" if br.hi_closed else "<"
+            out.append(f"_rho_cmp(e1, e2, {double_literal(bh)}, {double_literal(float(bl))}) {op} 0")
         else:
             out.append(f"{var} {'<=' if br.hi_closed else '<'} {double_literal(br.hi)}")
     return out

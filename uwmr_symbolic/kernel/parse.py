@@ -14,8 +14,8 @@ import sympy as sp
 # Piecewise expressions, or one with the same Piecewise on both sides, is
 # exact), but the Arb evaluator and `defined_for_positive` refuse them, so no
 # sign, limit or continuity rule accepts a claim that needs their values.
-_NAMES = ("Symbol Integer Rational Add Mul Pow exp log sin cos tanh atan asinh "
-          "sinh cosh erf Abs sign pi E EulerGamma Catalan GoldenRatio oo Tuple Piecewise Equality Unequality StrictGreaterThan "
+_NAMES = ("Symbol Integer Rational Add Mul Pow exp log sin cos tanh atan asinh sinh cosh erf Abs sign "
+          "pi E EulerGamma Catalan GoldenRatio oo Tuple Piecewise Equality Unequality StrictGreaterThan "
           "StrictLessThan GreaterThan LessThan And Or Not true false").split()
 _SCOPE = {n: getattr(sp, n) for n in _NAMES} | {"ExprCondPair": sp.functions.elementary.piecewise.ExprCondPair}
 # a design's f (design certificates) may use more; still constructors only
