@@ -1032,6 +1032,27 @@ def test_an_overflow_inside_sympy_leaves_that_property_unknown(tmp_path, monkeyp
     assert "OverflowError" in report.properties["P5"].reason
 
 
+def test_a_slope_at_zero_whose_finiteness_sympy_leaves_open_is_not_taken_for_infinite(monkeypatch):
+    # F'(0+) is what one_sided_value returns.  Below, g = -68/(1 + (420/A)^2) with A = 24.04... a sum of nested
+    # radicals: SymPy's is_finite of g is None, though g = -0.2221... (mpmath).  z = sqrt(5 + 2 sqrt 6) - sqrt 2
+    # - sqrt 3 is 0 by denesting ((sqrt 2 + sqrt 3)^2 = 5 + 2 sqrt 6).  `not d.is_finite` had read None as
+    # infinite and handed d on as a nonzero F'(0+): z g, a zero, refuted P1, P5-P8 (red team 12a's design).
+    from types import SimpleNamespace
+    from uwmr_symbolic import properties
+    r2 = sp.sqrt(2)
+    a = sp.sqrt(17 - 12 * r2)
+    A = -32 * sp.sqrt(35 - 6 * a) * (1 - sp.Rational(9, 32) * r2 * a - sp.Rational(3, 4) * r2)
+    g = -68 / (1 + (420 / A) ** 2)
+    z = sp.sqrt(5 + 2 * sp.sqrt(6)) - r2 - sp.sqrt(3)
+    assert g.is_finite is None and (z * g).is_finite is None
+    assert abs(sp.N(g, 30) + sp.Rational(2221, 10 ** 4)) < sp.Rational(1, 10 ** 4)
+    analysis = SimpleNamespace(profile=SimpleNamespace(pieces=[SimpleNamespace(expr=None)]),
+                               derivative=lambda expr, k: None)
+    for d, expected in ((z * g, (None, 0)), (g, (g,)), (sp.oo, (sp.oo,))):
+        monkeypatch.setattr(properties, "one_sided_value", lambda *args, d=d: d)
+        assert properties.Analysis.dF0.func(analysis) in expected
+
+
 def test_a_slope_given_as_sympys_own_integral_gives_no_crash_and_no_wrong_refutation(tmp_path):
     # A red team's design: F = the integral from 0 to s of F'(t) = 2t (2t^2 - 3t + 2)/(1 + t^4), which SymPy
     # writes with logs and atans of nested radicals.  By hand F' > 0 for t > 0 (2t^2 - 3t + 2 has no real root),
