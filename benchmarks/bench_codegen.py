@@ -46,6 +46,7 @@ HAND_G = {
     "design1_jiang": "e2 / (1.0 + rho)",
     "design2_sqrt": "e2 / sqrt(1.0 + rho)",
     "design3_logcosh": "4.0 * e2 * tanh(sqrt(4.0 * rho + 1.0) - 1.0) / sqrt(4.0 * rho + 1.0)",
+    "design4_cosine": "e2 / sqrt(1.0 + rho) * (sqrt(1.0 + rho) - 1.0 > 3.141592653589793 ? 1.0 : sin(sqrt(1.0 + rho) - 1.0))",
     "design5_rational": "2.0 * e2 / ((1.0 + rho) * (1.0 + rho))",
     "unsaturated_baseline": "e2",
 }
@@ -184,6 +185,8 @@ def plain_numpy(stem):
     g = {"design1_jiang": lambda e1, e2, rho: e2 / (1 + rho),
          "design2_sqrt": lambda e1, e2, rho: e2 / np.sqrt(1 + rho),
          "design3_logcosh": lambda e1, e2, rho: 4 * e2 * np.tanh(np.sqrt(4 * rho + 1) - 1) / np.sqrt(4 * rho + 1),
+         "design4_cosine": lambda e1, e2, rho: e2 / np.sqrt(1 + rho) * np.where(np.sqrt(1 + rho) - 1 > np.pi, 1.0,
+                                                                                np.sin(np.sqrt(1 + rho) - 1)),
          "design5_rational": lambda e1, e2, rho: 2 * e2 / (1 + rho) ** 2,
          "unsaturated_baseline": lambda e1, e2, rho: e2}[stem]
 

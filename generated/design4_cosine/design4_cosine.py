@@ -127,20 +127,27 @@ def _square(a):
     return p, ((hi * hi - p) + 2.0 * hi * lo) + lo * lo
 
 
-def _rho_cmp(e1, e2, bh, bl):
+def _rho_cmp(rho, e1, e2, bh, bl, near):
     """The sign of e1^2 + e2^2 - (bh + bl) without the rounding of rho, for
-    TINY <= max(|e1|, |e2|) <= FAR (the C code's rho_cmp, with TwoSum)."""
-    (p1, q1), (p2, q2) = _square(e1), _square(e2)
-    s = p1 + p2
-    z = s - p1
-    return numpy.sign((s - bh) + ((((p1 - (s - z)) + (p2 - z)) + q1 + q2) - bl))
+    TINY <= max(|e1|, |e2|) <= FAR: the sign of rho - bh where that is above
+    near = 2^-50 bh (rho is within 2^-51 rho of the exact sum, and |bl| <=
+    2^-53 bh), the C code's rho_cmp with TwoSum on the few others."""
+    d = rho - bh
+    out = numpy.sign(d)
+    close = numpy.abs(d) <= near
+    if close.any():
+        (p1, q1), (p2, q2) = _square(e1[close]), _square(e2[close])
+        s = p1 + p2
+        z = s - p1
+        out[close] = numpy.sign((s - bh) + ((((p1 - (s - z)) + (p2 - z)) + q1 + q2) - bl))
+    return out
 
 
 def _H(rho, e1, e2):
     """H on the exact rho's branch, the rounded rho brought into its ends."""
     out = numpy.empty(rho.shape)
     rest = numpy.ones(rho.shape, dtype=bool)
-    sel = rest & (_rho_cmp(e1, e2, 16.152789708268944, 8.714589107034418e-16) <= 0)
+    sel = rest & (_rho_cmp(rho, e1, e2, 16.152789708268944, 8.714589107034418e-16, 1.4346559236838758e-14) <= 0)
     rest &= ~sel
     if sel.any():
         out[sel] = _H0(numpy.clip(rho[sel], None, 16.152789708268944))

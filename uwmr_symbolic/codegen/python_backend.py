@@ -47,7 +47,9 @@ def _masks(branches, var):
         elif var == "rho":
             bh, bl = split_boundary(br.hi)
             op = "<=" if br.hi_closed else "<"
-            out.append(f"_rho_cmp(e1, e2, {double_literal(bh)}, {double_literal(float(bl))}) {op} 0")
+            # rho - bh decides beyond 2^-50 bh (see `_rho_cmp`); all exact when that is not a normal double
+            near = double_literal(bh * 2.0 ** -50) if bh >= 2.0 ** -960 else "numpy.inf"
+            out.append(f"_rho_cmp(rho, e1, e2, {double_literal(bh)}, {double_literal(float(bl))}, {near}) {op} 0")
         else:
             out.append(f"{var} {'<=' if br.hi_closed else '<'} {double_literal(br.hi)}")
     return out
