@@ -167,3 +167,21 @@ def test_symbol_assumptions_that_hold_are_accepted_and_the_others_refused(tmp_pa
         design.write_text(head + params.format(decl, value))
         with pytest.raises(DesignError, match=rf"params\['c'\] = .* does not satisfy {fact}"):
             load_design(design)
+
+
+def test_a_sympy_float_no_double_holds_is_read_as_written():
+    """A SymPy Float of 53 bits that no double holds was read through
+    float(): 1e-400 as 0 (log(1 + rho) + Float('1e-400') had P2 "proved"),
+    3e-324 as 5e-324.  It is now read as the shortest decimal that rounds
+    back to it at 53 bits; what a double holds keeps Python's repr."""
+    from uwmr_symbolic.design import exact_float
+    cases = {sp.Float("1e-400"): sp.Rational(1, 10 ** 400), sp.Float("-2.5e-500"): sp.Rational(-25, 10 ** 501),
+             sp.Float("3e-324"): sp.Rational(3, 10 ** 324), sp.Float("1e400"): sp.Integer(10) ** 400,
+             sp.Float("1.2345678901234e-320"): sp.Rational(12345678901234, 10 ** 333),
+             sp.Float(5e-324): sp.Rational(5, 10 ** 324), sp.Float(0.1): sp.Rational(1, 10),
+             sp.Float(1 / 3.0): sp.Rational(3333333333333333, 10 ** 16)}
+    for x, value in cases.items():
+        assert exact_float(x) == value, x
+    tiny = sp.N(sp.exp(-1000))          # a 53-bit Float of 5.08e-435
+    assert exact_float(tiny) == sp.Rational(5075958897549457, 10 ** 450)
+    assert sp.Float(exact_float(tiny), precision=53) == tiny

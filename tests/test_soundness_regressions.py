@@ -1064,3 +1064,19 @@ def test_a_slope_given_as_sympys_own_integral_gives_no_crash_and_no_wrong_refuta
                                  "F = sp.integrate(2*S*(2*S**2 - 3*S + 2)/(1 + S**4), (S, 0, S))\n"
                                  "f = F.subs(S, sqrt(rho))\n", timeout=30, kernel_only=False)
     assert "refuted" not in v.values() and v["P2"] == v["P4"] == "proved"
+
+
+def test_sympy_floats_below_the_doubles_are_not_read_as_zero(tmp_path):
+    # Red team 14a: SymPy Floats that no double holds were read through float().  By hand:
+    # log(1 + rho) + 10^-400 has f(0, 0) = 10^-400 != 0 (P2 false; it was "proved");
+    # 10^-400 log(1 + rho) has every property and kf = 10^-400 (P3, P5 were refuted: f read as 0);
+    # Piecewise((0, rho <= 10^-400), (log(1 + rho), True)) is 0 on the disc |e| <= 10^-200 (P3 false) and
+    # jumps by about 10^-400 on its edge (P1 false); it had been read as the condition rho <= 0, all proved.
+    report, v = verify(tmp_path, "f = log(1 + rho) + sp.Float('1e-400')\n")
+    assert v["P2"] == "refuted" and Fraction(report.properties["P2"].witness["f"]) == Fraction(1, 10 ** 400)
+    report, v = verify(tmp_path, "f = sp.Float('1e-400')*log(1 + rho)\n")
+    assert set(v.values()) == {"proved"} and report.kf.exact == sp.Rational(1, 10 ** 400)
+    report, v = verify(tmp_path, "f = Piecewise((0, rho <= sp.Float('1e-400')), (log(1 + rho), True))\n",
+                       kernel_only=False)
+    assert v["P1"] == v["P7"] == "refuted" and v["P3"] != "proved"
+    assert Fraction(report.properties["P1"].witness["e1"]) == Fraction(1, 10 ** 200)     # on the circle rho = 10^-400

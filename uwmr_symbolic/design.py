@@ -9,6 +9,7 @@ from __future__ import annotations
 import ast
 import contextlib
 import fractions
+import math
 import numbers
 import re
 import runpy
@@ -17,6 +18,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import mpmath
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
@@ -55,12 +57,25 @@ class Design:
 
 def exact_float(x: sp.Float) -> sp.Rational:
     """The exact rational a float stands for.  A double (a Python float, or a
-    SymPy Float of 53 bits or less) is read as its shortest round-trip decimal,
-    Python's ``repr`` (0.1 -> 1/10, 1/3.0 -> 3333333333333333/10**16): the
-    decimal a person reads, never a shorter one.  A SymPy Float of more than
-    53 bits is read as its exact binary value."""
-    if isinstance(x, float) or x._prec <= 53:
-        return sp.Rational(repr(float(x)))
+    SymPy Float of 53 bits or less that a double holds exactly) is read as its
+    shortest round-trip decimal, Python's ``repr`` (0.1 -> 1/10, 1/3.0 ->
+    3333333333333333/10**16): the decimal a person reads, never a shorter
+    one.  A SymPy Float of 53 bits or less that no double holds (beyond the
+    double range, or finer than a subnormal: Float('1e-400'), Float('3e-324'))
+    is read the same way at 53 bits and any exponent, the shortest decimal
+    that rounds back to it (`float()` had read 1e-400 as 0).  A SymPy Float
+    of more than 53 bits is read as its exact binary value."""
+    if isinstance(x, float):
+        return sp.Rational(repr(x))
+    if x._prec > 53:
+        return sp.Rational(x)
+    double = float(x)
+    if math.isfinite(double) and sp.Rational(double) == sp.Rational(x):
+        return sp.Rational(repr(double))
+    for digits in range(1, 18):          # 17 significant digits always round back at 53 bits
+        text = mpmath.libmp.to_str(x._mpf_, digits, strip_zeros=False)
+        if mpmath.libmp.from_str(text, 53, mpmath.libmp.round_nearest) == x._mpf_:
+            return sp.Rational(text)
     return sp.Rational(x)
 
 

@@ -50,7 +50,9 @@ class SupCertificate:
 
     def show(self) -> str:
         if self.exact is not None:
-            approx, text = f"{float_of(self.exact):.10g}", exact_text(self.exact)
+            x = self.exact      # (a rational by `show`: a float prints 10^-400 as 0)
+            approx = show(Fraction(x.p, x.q)) if x.is_Rational else f"{float_of(x):.10g}"
+            text = exact_text(x)
             return text if approx == text else f"{text} = {approx}"
         if self.upper is None:
             return "unbounded" if self.unbounded_witness else "undecided"

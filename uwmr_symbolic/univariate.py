@@ -976,6 +976,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
     lower = point = None
     heap = []
     counter = 0
+    size = _size(expr, var, lo, hi)
 
     def raise_lower(box, kind, u, v):   # expr >= _lo(box) on [u, v]
         nonlocal lower, point
@@ -1013,9 +1014,11 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
             if top < floor and (tail_bound is None or tail_bound < floor):
                 top = top if tail_bound is None else max(top, tail_bound)
                 return SupEnclosure(lower, top, at_infinity=False, near=None, point=point)
+        # relative to a positive lower bound, however small (kf = 1e-18 had been enclosed in [0.97e-18,
+        # 4e-18]); where the sup may be 0 or below, to 10^-9 of expr's size
         if up is not None and lower is not None and \
                 (up if tail_bound is None else max(up, tail_bound)) - lower <= \
-                Fraction(rel_tol) * max(abs(lower), Fraction(1, 10 ** 9)):
+                Fraction(rel_tol) * (lower if lower > 0 else max(-lower, size / 10 ** 9)):
             near = float((u + v) / 2) if kind == "s" else None
             # the heap orders by float(up): take the exact largest bound
             upper = max([h[-1] for h in heap] + ([] if tail_bound is None else [tail_bound]))
@@ -1031,6 +1034,22 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
     ups = [h[-1] for h in heap] + ([tail_bound] if tail_bound is not None else [])
     upper = None if (not ups or any(u is None for u in ups)) else max(ups)
     return SupEnclosure(lower, upper, at_infinity=False, near=None, point=point)
+
+
+def _size(expr, var, lo, hi) -> Fraction:
+    """The largest |expr| at lo + 2^k (k = -3 ... 6) inside (lo, hi), or 1
+    when none is a nonzero double: the scale of `enclose_sup`'s tolerance
+    where the sup may be 0 (a tenth of 10^-20 F' had been lost in it)."""
+    top = Fraction(0)
+    for k in range(-3, 7):
+        x = lo + sp.Rational(2) ** k
+        if hi == sp.oo or x < hi:
+            try:
+                box = value_at(expr, var, x, prec=64)
+            except (Undefined, ValueError, ZeroDivisionError):
+                continue
+            top = max([top] + [abs(b) for b in (_lo(box), _hi(box)) if b is not None])
+    return top or Fraction(1)
 
 
 def _termwise_tail(expr, var, lo, R):
