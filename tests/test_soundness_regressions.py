@@ -1080,3 +1080,20 @@ def test_sympy_floats_below_the_doubles_are_not_read_as_zero(tmp_path):
                        kernel_only=False)
     assert v["P1"] == v["P7"] == "refuted" and v["P3"] != "proved"
     assert Fraction(report.properties["P1"].witness["e1"]) == Fraction(1, 10 ** 200)     # on the circle rho = 10^-400
+
+
+def test_a_tiny_kf_is_enclosed_to_its_relative_width(tmp_path):
+    # The branch and bound of sup F' stopped once its enclosure was 10^-16 wide, whatever F's size (red team 14b):
+    # 10^-18 (sqrt(1 + rho) - 1), F' = 10^-18 s/sqrt(1 + s^2) < 10^-18 -> 10^-18 (kf = 10^-18 exactly, by hand), had
+    # kf in [0.97e-18, 4e-18]; the slope of the test above scaled by 10^-20 (F' changes sign; kf = 10^-20 sup -F'),
+    # kf in [-1e-11, 9.0e-20] and P1 left to the search.
+    report, v = verify(tmp_path, "f = Rational(1, 10**18)*(sqrt(1 + rho) - 1)\n")
+    assert report.kf.exact == sp.Rational(1, 10 ** 18) and report.kf.attained is False
+    report, v = verify(tmp_path, "f = Rational(1, 10**20)*(-Rational(9, 10)*sp.tanh(rho) + sp.tanh(sp.erf(rho)))\n")
+    assert v["P1"] == "proved" and {"P1", "kf"} <= set(report.kernel["checked"])
+    dF = lambda s: -mpmath.mpf(9) / 5 * s / mpmath.cosh(s ** 2) ** 2 + \
+        4 * s * mpmath.exp(-s ** 4) / (mpmath.sqrt(mpmath.pi) * mpmath.cosh(mpmath.erf(s ** 2)) ** 2)
+    neg = lambda s: -dF(s)
+    top = neg(mpmath.findroot(lambda s: mpmath.diff(neg, s), max((mpmath.mpf(i) / 200 for i in range(1, 800)), key=neg)))
+    kf = Fraction(str(mpmath.nstr(top, 30))) / 10 ** 20
+    assert report.kf.lower <= kf <= report.kf.upper and report.kf.upper - report.kf.lower < kf / 10 ** 6
