@@ -1097,3 +1097,10 @@ def test_a_tiny_kf_is_enclosed_to_its_relative_width(tmp_path):
     top = neg(mpmath.findroot(lambda s: mpmath.diff(neg, s), max((mpmath.mpf(i) / 200 for i in range(1, 800)), key=neg)))
     kf = Fraction(str(mpmath.nstr(top, 30))) / 10 ** 20
     assert report.kf.lower <= kf <= report.kf.upper and report.kf.upper - report.kf.lower < kf / 10 ** 6
+
+
+def test_a_slope_limit_at_the_origin_is_not_called_attained(tmp_path):
+    # acosh(1 + rho): F' = 2/sqrt(s^2 + 2) falls from its limit sqrt(2) at 0+, where f is a cone (no gradient):
+    # kf = sqrt(2) is approached, not attained (red team 14a; it had been reported "attained").
+    report, v = verify(tmp_path, "f = sp.acosh(1 + rho)\n", kernel_only=False)
+    assert v["P1"] == "refuted" and report.kf.exact == sp.sqrt(2) and report.kf.attained is not True

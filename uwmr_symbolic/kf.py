@@ -321,10 +321,11 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
             continue
         if point is not None and point != sp.oo:
             # a one-sided limit at a piece end is a value only where the
-            # neighbouring piece (or the origin) continues it
-            attained = True if (piece.lo < point < piece.hi or point == 0 or
+            # neighbouring piece (or the origin) continues it; at s = 0 only a
+            # sup of 0 (a limit F'(0+) != 0 is no gradient: f has a cone there)
+            attained = True if (piece.lo < point < piece.hi or (value == 0 if point == 0 else
                                 _continued_at(exprs, pieces, point, value)
-                                and _value_continued_at(analysis.profile, point)) else None
+                                and _value_continued_at(analysis.profile, point))) else None
         else:
             attained = False if strict else None
         where = f"at s = {point}" if point is not None else "approached as s -> oo"
