@@ -101,6 +101,18 @@ def test_oracle_takes_p2_from_f_as_read_where_sympy_folded_a_float():
     assert [(c.prop, c.kind) for c in oracle.check(exact, _result({"P2": "refuted"}))] == [("P2", "wrong refutation")]
 
 
+def test_oracle_reads_a_float_beyond_the_doubles_as_the_decimal_written():
+    """Float('1e-400') went through float() (0) in the verifier until red team
+    14a; the oracle must not share that reading: log(1 + rho) + Float('1e-400')
+    has f(0, 0) = 10^-400, so a proved P2 is a false proof."""
+    c = grammar.fl_text("1e-400")
+    assert grammar.as_read(c) == sp.Rational(1, 10 ** 400) and grammar.as_read(-c) == -sp.Rational(1, 10 ** 400)
+    case = Case("extreme", sp.log(1 + RHO) + c, {"P2": False})
+    found = oracle.check(case, _result({"P2": "proved"}))
+    assert [(c.prop, c.kind) for c in found] == [("P2", "false proof")]
+    assert oracle.check(case, _result({"P2": "refuted"})) == []
+
+
 def test_oracle_flags_a_kf_enclosure_below_the_true_value_and_a_made_up_exact_value():
     c = 0.30000000000000004
     f = sp.Float(c) * sp.log(1 + RHO)           # kf = c exactly (at |e| = 1)

@@ -58,10 +58,26 @@ class Case:
         return self.truth.get(prop)
 
 
-def as_read(x: float) -> sp.Rational:
-    """The value uwmr-symbolic reads for a double (README): its shortest
-    round-trip decimal, Python's repr."""
+_WRITTEN: dict = {}     # SymPy Floats that no double holds -> the decimal each was written as
+
+
+def as_read(x) -> sp.Rational:
+    """The value uwmr-symbolic reads for a float (README): a double's shortest
+    round-trip decimal, Python's repr; a SymPy Float beyond the doubles that
+    `fl_text` made, the decimal it was written as."""
+    if isinstance(x, sp.Float) and x in _WRITTEN:
+        return _WRITTEN[x]
     return sp.Rational(repr(float(x)))
+
+
+def fl_text(text: str) -> sp.Float:
+    """A 53-bit SymPy Float written as a one-digit decimal no double holds
+    (Float('1e-400'), a user's sp.N(...) of a tiny number): read as that
+    decimal, the shortest one that rounds back to it (docs/verifier.md)."""
+    x = sp.Float(text, precision=53)
+    assert not 1e-300 < abs(float(x)) < 1e300
+    _WRITTEN[x], _WRITTEN[-x] = sp.Rational(text), -sp.Rational(text)     # (-x is a Float of its own)
+    return x
 
 
 def fl(x: float) -> sp.Float:
@@ -236,11 +252,11 @@ def _origin_as_read(f: sp.Expr) -> sp.Expr:
     """f(0, 0) with each float read first (as_read): substituting into f
     itself lets SymPy add a float to the exact constants it meets in 53-bit
     arithmetic (-5/3 exp(0) + 4.80825932025646 becomes one double)."""
-    return f.xreplace({a: as_read(float(a)) for a in f.atoms(sp.Float)}).subs({e1: 0, e2: 0})
+    return f.xreplace({a: as_read(a) for a in f.atoms(sp.Float)}).subs({e1: 0, e2: 0})
 
 
 def _exact_sign(x: sp.Expr) -> int:
-    x = x.xreplace({a: as_read(float(a)) for a in x.atoms(sp.Float)})
+    x = x.xreplace({a: as_read(a) for a in x.atoms(sp.Float)})
     v = sp.N(x, 60)
     if v == 0 and sp.N(x, 120) == 0:
         return 0
@@ -624,8 +640,28 @@ def extreme_designs(draw):
     (each term is increasing, 0 at the origin, analytic; growth log):
     c log(1 + rho): F' = 2 c s/(1 + s^2), kf = c at s = 1;
     log(1 + c rho): F' = 2 c s/(1 + c s^2), kf = sqrt(c) at s = 1/sqrt(c);
-    log(1 + rho) + c (1 - exp(-K rho)): F'/s <= 2 + 2 c K, kf not known here."""
-    kind = draw(st.sampled_from(["outer", "inner", "steep"]))
+    log(1 + rho) + c (1 - exp(-K rho)): F'/s <= 2 + 2 c K, kf not known here.
+    And SymPy Floats no double holds (red team 14a: read as 0 through a
+    double): d log(1 + rho), all true, kf = d; log(1 + rho) + d, f(0, 0) = d
+    (P2 false; P3 as the sign of d); 0 on the disc rho <= d, log(1 + rho)
+    beyond: F jumps by about d at s = sqrt(d) (P1, P5, P6, P7 false; P3
+    false: f = 0 on the disc; P8 true: df/de2 = 0 inside, 2 e2/(1 + rho)
+    on the circle's outside and on it)."""
+    kind = draw(st.sampled_from(["outer", "inner", "steep", "float-outer", "float-offset", "float-disc"]))
+    if kind.startswith("float"):
+        d = draw(st.sampled_from(["1e-400", "9e-330", "4e-600"] + (["3e-324", "5e400"] if kind == "float-outer"
+                                                                     else [])))
+        c, sign = fl_text(d), draw(st.sampled_from([1, -1])) if kind == "float-offset" else 1
+        log_growth = (Fraction(0), Fraction(1))
+        if kind == "float-outer":
+            return Case("extreme", c * sp.log(1 + RHO), radial_truth(log_growth), sp.Rational(d),
+                        note=f"Float('{d}') log(1 + rho)")
+        if kind == "float-offset":
+            return Case("extreme", sp.log(1 + RHO) + sign * c, radial_truth(log_growth, sign), sp.Integer(1),
+                        note=f"log(1 + rho) + {sign} Float('{d}')")
+        t = {"P1": False, "P2": True, "P3": False, "P4": None, "P5": False, "P6": False, "P7": False, "P8": True}
+        return Case("extreme", sp.Piecewise((0, RHO <= c), (sp.log(1 + RHO), True)), t, None,
+                    radii=[sp.sqrt(sp.Rational(d))], note=f"0 on rho <= Float('{d}'), log(1 + rho) beyond")
     c = sp.Integer(10) ** (draw(st.sampled_from([12, 40, 310, 400])) * draw(st.sampled_from([1, -1])))
     truth = radial_truth((Fraction(0), Fraction(1)))
     if kind == "outer":

@@ -43,9 +43,10 @@ class Contradiction:
 
 
 def exact(f):
-    """f with every Float as the verifier reads it (README): a double as its repr decimal."""
+    """f with every Float as the verifier reads it (README): a double as its repr decimal, a
+    Float beyond the doubles as the decimal the grammar wrote."""
     f = placeholders(f, as_read)
-    return f.xreplace({a: as_read(float(a)) for a in f.atoms(sp.Float)})
+    return f.xreplace({a: as_read(a) for a in f.atoms(sp.Float)})
 
 
 def _mpf(x, dps):
