@@ -52,11 +52,10 @@ def report_html(report) -> str:
     if d["gains"]:
         word = {True: "PASS", False: "FAIL", None: "unchecked"}
         grows = "".join(
-            f"<tr><td>{esc(n)}</td><td>{g['V_bound']:.6g}</td><td>{g['V_margin_float']:+.3e} {word[g['V_ok']]}</td>"
-            f"<td>{'∞' if g['W_bound'] is None else format(g['W_bound'], '.6g')}</td>"
-            f"<td>{'—' if g['W_margin_float'] is None else format(g['W_margin_float'], '+.3e')} {word[g['W_ok']]}</td>"
-            f"<td>{'?' if g['lam_max'] is None else format(g['lam_max'], '.8g')}</td></tr>"
-            for n, g in d["gains"].items())
+            f"<tr><td>{esc(n)}</td><td>{t['V_bound']}</td><td>{t['V_margin']} {word[g['V_ok']]}</td>"
+            f"<td>{t['W_bound'] or '∞'}</td><td>{t['W_margin'] or '—'} {word[g['W_ok']]}</td>"
+            f"<td>{t['lam_max'] or '?'}</td></tr>"
+            for n, g in d["gains"].items() for t in [g["text"]])
         parts.append("<table><tr><th>bound (10)</th><th>|V| bound</th><th>margin</th><th>|W| bound</th>"
                      f"<th>margin</th><th>largest λ</th></tr>{grows}</table>")
     pr = d["proof_replay"]

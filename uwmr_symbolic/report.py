@@ -106,13 +106,30 @@ def to_dict(r: Report) -> dict:
     return d
 
 
+def _text(x, spec: str) -> str | None:
+    """x (an exact number, None: none) in the format spec ('.8g', '+.3e'),
+    through a float where a normal double holds it, else SymPy's digits (a
+    gain of 10^-400 is not 0, nor 10^400 inf)."""
+    if x is None:
+        return None
+    v = _num(x)
+    if v is not None and (v == 0) == (x == 0) and (v == 0 or abs(v) >= 1e-300):
+        return format(v, spec)
+    text = str(sp.N(x, int(re.search(r"\d+", spec).group()) + ("e" in spec)))
+    return ("+" if "+" in spec and not text.startswith("-") else "") + text
+
+
 def gains_dict(gains: dict) -> dict:
-    """Bound (10) per gain scenario (`gains.GainCheck`) as JSON-able data."""
+    """Bound (10) per gain scenario (`gains.GainCheck`) as JSON-able data;
+    "text": the numbers as the reports print them."""
     return {name: {"V_bound": _num(g.V_bound), "W_bound": _num(g.W_bound),
                    "V_margin": str(g.V_margin), "W_margin": None if g.W_margin is None else str(g.W_margin),
                    "V_margin_float": _num(g.V_margin), "W_margin_float": _num(g.W_margin),
                    "V_ok": g.V_ok, "W_ok": g.W_ok, "lam_max": _num(g.lam_max),
-                   "lam_max_exact": None if g.lam_max is None else str(g.lam_max)}
+                   "lam_max_exact": None if g.lam_max is None else str(g.lam_max),
+                   "text": {"V_bound": _text(g.V_bound, ".8g"), "W_bound": _text(g.W_bound, ".8g"),
+                            "V_margin": _text(g.V_margin, "+.3e"), "W_margin": _text(g.W_margin, "+.3e"),
+                            "lam_max": _text(g.lam_max, ".8g")}}
             for name, g in gains.items()}
 
 
@@ -122,10 +139,6 @@ def _as_dict(r) -> dict:
 
 def render_json(r) -> str:
     return json.dumps(_as_dict(r), indent=2)
-
-
-def _fmt(x, digits=10):
-    return "inf" if x is None else f"{float(x):.{digits}g}"
 
 
 # ---------------------------------------------------------------- text
@@ -162,10 +175,9 @@ def render_text(r) -> str:
         for name, g in d["gains"].items():
             v_ok = "PASS" if g["V_ok"] else "FAIL"
             w_ok = {True: "PASS", False: "FAIL", None: "????"}[g["W_ok"]]
-            w_margin = "—" if g["W_margin_float"] is None else f"{g['W_margin_float']:+.3e}"
-            lam = _fmt(g["lam_max"], 8) if g["lam_max"] is not None else "?"
-            lines.append(f"  {name:<12} {_fmt(g['V_bound'], 8):>10}  {g['V_margin_float']:+.3e} {v_ok}"
-                         f"  {_fmt(g['W_bound'], 8):>10}  {w_margin} {w_ok}  {lam}")
+            t = g["text"]
+            lines.append(f"  {name:<12} {t['V_bound']:>10}  {t['V_margin']} {v_ok}  {t['W_bound'] or 'inf':>10}  "
+                         f"{t['W_margin'] or '—'} {w_ok}  {t['lam_max'] or '?'}")
     if d.get("kernel") is not None:
         lines.append("")
         lines.append(f"  {kernel_text(d['kernel'])}")
@@ -379,10 +391,10 @@ def _bound_text(g: dict, which: str) -> str:
     """e.g. '|W| bound 2.000012851 FAIL, margin -1.285e-05 = 3/10 - 13857*sqrt(3)/80000'."""
     ok = g[f"{which}_ok"]
     word = {True: "ok", False: "FAIL", None: "unchecked"}[ok]
-    margin, exact = g[f"{which}_margin_float"], g[f"{which}_margin"]
-    m = "—" if exact is None else (f"{margin:+.3e}" if margin is not None else "?") + \
+    margin, exact = g["text"][f"{which}_margin"], g[f"{which}_margin"]
+    m = "—" if exact is None else (margin or "?") + \
         ("" if exact in (None, "0") or "/" not in exact and "sqrt" not in exact else f" = {exact}")
-    return f"|{which}| bound {_fmt(g[f'{which}_bound'], 10)} {word}, margin {m}"
+    return f"|{which}| bound {g['text'][f'{which}_bound'] or 'inf'} {word}, margin {m}"
 
 
 def render_github(results: list[dict]) -> str:
