@@ -1104,3 +1104,17 @@ def test_a_slope_limit_at_the_origin_is_not_called_attained(tmp_path):
     # kf = sqrt(2) is approached, not attained (red team 14a; it had been reported "attained").
     report, v = verify(tmp_path, "f = sp.acosh(1 + rho)\n", kernel_only=False)
     assert v["P1"] == "refuted" and report.kf.exact == sp.sqrt(2) and report.kf.attained is not True
+
+
+def test_a_kf_below_the_normal_doubles_is_enclosed_to_its_relative_width(tmp_path):
+    # Red team 15b: the branch and bound's bounds were rounded to doubles, which at 10^-320 resolve only
+    # 5e-324: c (log(1 + rho) + 1 - exp(-rho)) had kf in [1.81915e-320, 1.81964e-320] (3e-4 wide), and at
+    # c = 10^-400 in [0, 4.94e-324].  By hand F' = c (2s/(1 + s^2) + 2s exp(-s^2)), largest where F'' = 0:
+    # s = 0.79406151270694 (mpmath's findroot), sup = 1.8193597258023 c.
+    dF = lambda s: 2 * s / (1 + s ** 2) + 2 * s * mpmath.exp(-s ** 2)
+    top = dF(mpmath.findroot(lambda s: mpmath.diff(dF, s), 0.8))
+    for k in (320, 400):
+        report, v = verify(tmp_path, f"f = Rational(1, 10**{k})*(log(1 + rho) + 1 - sp.exp(-rho))\n")
+        kf = Fraction(str(mpmath.nstr(top, 30))) / 10 ** k
+        assert set(v.values()) == {"proved"} and "kf" in report.kernel["checked"]
+        assert report.kf.lower <= kf <= report.kf.upper and report.kf.upper - report.kf.lower < kf / 10 ** 6

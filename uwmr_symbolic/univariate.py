@@ -30,7 +30,7 @@ from functools import lru_cache
 import sympy as sp
 from flint import arb
 
-from .interval import Interval, IntervalFunction, Undefined, mean_value_form
+from .interval import NINF, PINF, Interval, IntervalFunction, Undefined, mean_value_form
 from .kernel import core as K
 from .limits import NoLimit, exact_sign, limit_right, puiseux_cancel, rational_parts, rational_poly
 from .timeouts import attempt
@@ -901,6 +901,29 @@ def _hi(box: Interval) -> Fraction | None:
     return Fraction(x) if math.isfinite(x) else None
 
 
+def _rounded(x, down: bool) -> Fraction | None:
+    """The exact arb x rounded to 53 bits toward -oo (down) or +oo, at any
+    scale from 2^-4000 to 2^4000 (below, 0 or +-2^-4000; above, None): the
+    bounds of `enclose_sup`, where a double had flushed a kf of 10^-400 to
+    [0, 5e-324] and left one of 10^-320 to 3e-4 of its size."""
+    if not x.is_finite():
+        return None
+    m, e = (int(v) for v in x.mid().man_exp())
+    shift = max(m.bit_length() - 53, -4000 - e, 0)
+    if shift:
+        q = m >> shift                              # floor
+        m, e = (q if down or q << shift == m else q + 1), e + shift
+    return None if e > 4000 else Fraction(m) * Fraction(2) ** e
+
+
+def _lo53(box: Interval) -> Fraction | None:
+    return None if box.lo is NINF else _rounded(box.lo, True)
+
+
+def _hi53(box: Interval) -> Fraction | None:
+    return None if box.hi is PINF else _rounded(box.hi, False)
+
+
 def _mean_value_upper(fn, dfn, u, v):
     """Upper bound of E on [u, v] from the mean-value form
     E(x) = E(m) + E'(xi) (x - m), tighter than the natural enclosure near a
@@ -911,8 +934,8 @@ def _mean_value_upper(fn, dfn, u, v):
     if not (em.is_finite() and d.is_finite()):
         return None
     mf = Fraction(int(m.p), int(m.q))
-    ends = (_hi(d), _lo(d), _hi(em), _hi(Interval.point(v)), _lo(Interval.point(u)))
-    if any(x is None for x in ends):       # beyond double range: no bound here
+    ends = (_hi53(d), _lo53(d), _hi53(em), _hi53(Interval.point(v)), _lo53(Interval.point(u)))
+    if any(x is None for x in ends):       # beyond 2^4000: no bound here
         return None
     d_hi, d_lo, em_hi, v_hi, u_lo = ends
     right = max(Fraction(0), d_hi) * (v_hi - mf)
@@ -921,8 +944,8 @@ def _mean_value_upper(fn, dfn, u, v):
 
 
 def _ordering(x: Fraction) -> float:
-    """x as a double for ordering the boxes only: +-inf beyond the doubles
-    (f = 10^308 log(1 + rho) has bounds above 1.8e308)."""
+    """x as a double for ordering the boxes only (x scaled by `enclose_sup`):
+    +-inf beyond the doubles."""
     try:
         return float(x)
     except OverflowError:
@@ -977,10 +1000,12 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
     heap = []
     counter = 0
     size = _size(expr, var, lo, hi)
+    # the heap orders boxes by doubles: scaled near 1 (a kf of 10^-320 is subnormal)
+    unit = Fraction(2) ** (size.denominator.bit_length() - size.numerator.bit_length())
 
-    def raise_lower(box, kind, u, v):   # expr >= _lo(box) on [u, v]
+    def raise_lower(box, kind, u, v):   # expr >= _lo53(box) on [u, v]
         nonlocal lower, point
-        lf = _lo(box)
+        lf = _lo53(box)
         if lf is not None and (lower is None or lf > lower):
             at = u if u == v else rational_between(u, v)
             lower, point = lf, (at if kind == "s" else 1 / at)
@@ -992,7 +1017,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
         try:
             box = fn(Interval.of(u, v))
             raise_lower(box, kind, u, v)
-            up = _hi(box)
+            up = _hi53(box)
         except Undefined:
             pass
         if not (kind == "t" and u == 0) and smooth[kind]:
@@ -1003,13 +1028,13 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
             except Undefined:
                 pass
         counter += 1
-        heapq.heappush(heap, (float("-inf") if up is None else -_ordering(up), counter, kind, u, v, up))
+        heapq.heappush(heap, (float("-inf") if up is None else -_ordering(up * unit), counter, kind, u, v, up))
 
     for kind, _, a, b in parts:
         push(kind, a, b)
     for count in range(budget):
         key, _, kind, u, v, up = heap[0]
-        if floor is not None and up is not None and -key < _ordering(floor):
+        if floor is not None and up is not None and -key < _ordering(floor * unit):
             top = max(h[-1] for h in heap)      # the exact largest bound (the heap orders by float)
             if top < floor and (tail_bound is None or tail_bound < floor):
                 top = top if tail_bound is None else max(top, tail_bound)
@@ -1038,7 +1063,7 @@ def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> Sup
 
 def _size(expr, var, lo, hi) -> Fraction:
     """The largest |expr| at lo + 2^k (k = -3 ... 6) inside (lo, hi), or 1
-    when none is a nonzero double: the scale of `enclose_sup`'s tolerance
+    when none is a nonzero number: the scale of `enclose_sup`'s tolerance
     where the sup may be 0 (an absolute 10^-16 had left the sup of an F' of
     size 10^-20 in [-10^-11, 9e-20])."""
     top = Fraction(0)
@@ -1049,7 +1074,7 @@ def _size(expr, var, lo, hi) -> Fraction:
                 box = value_at(expr, var, x, prec=64)
             except (Undefined, ValueError, ZeroDivisionError):
                 continue
-            top = max([top] + [abs(b) for b in (_lo(box), _hi(box)) if b is not None])
+            top = max([top] + [abs(b) for b in (_lo53(box), _hi53(box)) if b is not None])
     return top or Fraction(1)
 
 
