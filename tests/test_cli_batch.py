@@ -484,7 +484,7 @@ def test_kernel_verdict_and_kf_checked():
 def test_a_long_exact_kf_shows_its_digits_in_the_summary():
     from uwmr_symbolic.report import _kf_summary
     long = "2999999999999989999999999999991*sqrt(5)*sqrt(sqrt(9000000000000014000000000000009) + 3)/16"
-    base = {"lower": 0.6495, "upper": 0.6496, "unbounded": False}
+    base = {"lower": 0.6495, "upper": 0.6496, "enclosure": "[0.6495, 0.6496]", "unbounded": False}
     assert _kf_summary({**base, "exact": "3*sqrt(3)/8", "exact_digits": "0.64951905283832898507"}) == "3*sqrt(3)/8"
     assert _kf_summary({**base, "exact": long, "exact_digits": "0.64951905283832876857"}) == "0.64951905283832877..."
     # 2 sqrt(1 + 2e-16): the digits show that it is not 2 (a double would round it to 2.0000000000000004)
@@ -493,7 +493,7 @@ def test_a_long_exact_kf_shows_its_digits_in_the_summary():
     assert _kf_summary({**base, "exact": long, "exact_digits": "1.4285714285714285966e-31"}) == \
         "1.4285714285714286e-31..."
     assert _kf_summary({**base, "exact": None, "exact_digits": None}) == "~0.6496"
-    # an integer kf has no exact_digits (it is its own digits); 3 * 10**150 + 7 once raised a TypeError
+    # an integer kf written out has no exact_digits (it is its own digits); 3 * 10**150 + 7 once raised a TypeError
     assert _kf_summary({**base, "exact": str(3 * 10**150 + 7), "exact_digits": None}) == "3.0000000000000000e+150..."
 
 
@@ -619,3 +619,32 @@ def test_a_cache_hit_certificate_names_the_file_given_and_an_unwritable_cache_is
     assert proc.returncode == 0, describe(proc)
     assert proc.stderr.startswith(f"uwmr-verify: warning: the cache folder {tmp_path / 'afile'} cannot be written "
                                   f"(File exists); results are not cached") and proc.stderr.count("\n") == 1
+
+
+def test_kf_at_any_scale_in_the_summary_and_the_cache(tmp_path):
+    """Red team 15a.  By hand: f = c log(1 + rho)/2 has kf = c/2 (F' = c s/(1 + s^2), largest at s = 1).
+    c = 2.4691357802469134e100: kf = 123456789012345670... *10^83, exact, which the summary table parsed with
+    Decimal (a traceback with -q, junit, github); 10^-400 (rho/(1 + rho) + log(1 + rho)): F' = 2s/(1 + s^2)^2 +
+    2s/(1 + s^2), largest at s = 0.7493682758 (mpmath's findroot of F''), kf = 1.5744006471e-400, enclosed,
+    which the summary, JUnit and GitHub printed as its double, ~4.94e-324;
+    c = 1e-25: kf = 1/(2·10^25) exactly, never served from the cache (its printed form was compared with
+    str() of the value)."""
+    folder = tmp_path / "d"
+    folder.mkdir()
+    head = "import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+    gains = "gains = {'circle': dict(k1=0.25, k2=0.7, lam=0.3, Vmax=0.75, Wmax=2.0, Vr_max=0.5, Wr_max=1.0)}\n"
+    (folder / "a_int.py").write_text(head + "f = 2.4691357802469134e100*sp.log(1 + rho)/2\n" + gains)
+    (folder / "b_tiny.py").write_text(head + "f = sp.Float('1e-400')*(rho/(1 + rho) + sp.log(1 + rho))\n" + gains)
+    (folder / "c_small.py").write_text(head + "f = 1e-25*sp.log(1 + rho)/2\n" + gains)
+    files = sorted(folder.glob("*.py"))
+    cold = run([*files, "-q"], tmp_path / "cache")
+    rows = {line.split()[0].rsplit("/", 1)[-1]: line.split() for line in cold.stdout.splitlines() if "/d/" in line}
+    assert rows["a_int.py"][2] == "1.2345678901234567e+100..."
+    shown = rows["b_tiny.py"][2]            # the enclosure's upper end, rounded up
+    assert shown.startswith("~") and shown.endswith("e-400") and 0 <= float(shown[1:-5]) - 1.5744006471 < 1e-6
+    assert rows["c_small.py"][2] == "1/(2*10**25)"
+    for fmt in ("junit", "github"):
+        out = run([*files, "--format", fmt, "--no-cache"], tmp_path / "cache").stdout
+        assert "4.94065646e-324" not in out and "e-400" in out
+    warm = json.loads(run([*files, "--format", "json"], tmp_path / "cache").stdout)
+    assert [d["cached"] for d in warm] == [True, True, True]

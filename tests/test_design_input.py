@@ -185,3 +185,35 @@ def test_a_sympy_float_no_double_holds_is_read_as_written():
     tiny = sp.N(sp.exp(-1000))          # a 53-bit Float of 5.08e-435
     assert exact_float(tiny) == sp.Rational(5075958897549457, 10 ** 450)
     assert sp.Float(exact_float(tiny), precision=53) == tiny
+
+
+def test_numbers_of_every_kind_in_params_and_gains_are_read_exactly():
+    """Red team 15a: params and gains went through float() for mpmath, numpy
+    longdouble and numpy integers (mpf('1e-400') as 0: log(1 + rho)/2 + c had
+    P2 "proved"; int64(2^53 + 1) as 2^53), numpy's float64 was an internal
+    error (its repr is 'np.float64(...)'), Decimal was refused, and 10^5000 a
+    traceback."""
+    import decimal
+    import fractions
+
+    import mpmath
+    import numpy as np
+    from uwmr_symbolic.design import exact_number
+    mpmath.mp.prec = 53
+    cases = [(mpmath.mpf("1e-400"), sp.Rational(1, 10 ** 400)), (np.int64(2 ** 53 + 1), sp.Integer(2 ** 53 + 1)),
+             (np.uint64(2 ** 64 - 1), sp.Integer(2 ** 64 - 1)), (np.float64(0.25), sp.Rational(1, 4)),
+             (np.float64(0.1), sp.Rational(1, 10)), (decimal.Decimal("0.1"), sp.Rational(1, 10)),
+             (np.float32(0.5), sp.Rational(1, 2)), (fractions.Fraction(1, 3), sp.Rational(1, 3))]
+    for value, read in cases:
+        assert exact_number(value, "c") == read, value
+    assert exact_number(np.longdouble(1) + np.longdouble(2) ** -60, "c") == 1 + sp.Rational(1, 2 ** 60)
+    assert exact_number(np.longdouble("1e-400"), "c") > 0
+    try:
+        mpmath.mp.prec = 100
+        assert exact_number(mpmath.mpf(1) + mpmath.mpf(2) ** -60, "c") == 1 + sp.Rational(1, 2 ** 60)
+    finally:
+        mpmath.mp.prec = 53
+    for bad, why in ((10 ** 5000, "more than 4,200 digits"), (mpmath.mpf("inf"), "not a finite number"),
+                     (decimal.Decimal("NaN"), "not a finite number"), (np.float64("nan"), "not a finite number")):
+        with pytest.raises(DesignError, match=why):
+            exact_number(bad, "c")

@@ -48,3 +48,22 @@ def test_gains_beyond_the_doubles_are_printed_not_lost(tmp_path):
     row = next(line for line in render_text(d).splitlines() if line.startswith("  circle"))
     assert row.split() == ["circle", "0.5", "+1.000e+400", "PASS", "5.0000000e+401", "-5.000e+401", "FAIL", "0.6"]
     assert "+1.000e+400" in report_html(verify_design(path))
+
+
+def test_a_margin_sympy_cannot_sign_leaves_the_scenario_undecided(tmp_path):
+    """Red team 15a: Vmax = atan(1/2) + atan(1/3) (= pi/4 exactly) and Vr_max =
+    k1 = pi/8 give a |V| margin that is 0 in disguise; bool(margin >= 0) was an
+    internal error.  Now the |V| part is undecided ("????", exit status 3,
+    not a failure), and its margin prints as "?", not SymPy's noise."""
+    from uwmr_symbolic.report import render_text, to_dict
+    from uwmr_symbolic.verify import verify_design
+    path = tmp_path / "disguised.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nf = sp.log(1 + e1**2 + e2**2)\n"
+                    "z = sp.atan(sp.Rational(1, 2)) + sp.atan(sp.Rational(1, 3))\n"
+                    "gains = {'circle': dict(k1=sp.pi/8, k2=0.7, lam=0.3, Vmax=z, Wmax=2.0, Vr_max=sp.pi/8, Wr_max=1.0)}\n")
+    report = verify_design(path)
+    g = report.gains["circle"]
+    assert g.V_ok is None and g.W_ok is True and report.exit_status == 3
+    row = next(line for line in render_text(report).splitlines() if line.startswith("  circle"))
+    assert row.split()[1:4] == ["0.78539816", "?", "????"]
+    assert to_dict(report)["gains"]["circle"]["text"]["V_margin"] == "?"

@@ -22,6 +22,7 @@ from . import design_certificate as certificates
 from .cache import ResultCache, design_key, source_hash
 from .gains import check_gains
 from .interval import Interval
+from .kf import exact_text
 from .report import design_fields, gains_dict, to_dict
 from .properties import PROPERTIES
 from .replay import replay
@@ -113,17 +114,22 @@ def _checked_kf(cert: dict, kernel: dict, shown: dict, kernel_only: bool) -> tup
     values = (shown.get("exact"), shown.get("lower"), shown.get("upper"), bool(shown.get("unbounded")))
     if "kf" in kernel["checked"] and entry.get("exact") is not None:
         exact = certificates.parse(entry["exact"])
-        inside = None not in values[1:3] and values[1] <= float(exact) <= values[2]
-        return (exact, True, None) if values[0] == str(exact) and inside and not values[3] else None
+        box = Interval.point(exact)         # (as `kf.exact_certificate` and `report.to_dict` print it)
+        shown_exact = (exact_text(exact), _floats(box.lower_fraction(), box.upper_fraction()), False)
+        return (exact, True, None) if (values[0], values[1:3], values[3]) == shown_exact else None
     if "kf" in kernel["checked"]:
         L, U = certificates.parse(entry["lower"]), certificates.parse(entry["upper"])
-        enclosure = (None, Interval.point(L).lower_float(), Interval.point(U).upper_float(), False)
-        return (U, True, L) if values == enclosure else None
+        return (U, True, L) if values == (None, *_floats(L, U), False) else None
     if "P1" in kernel["checked"] and (p1.get("witness") or {}).get("kind") == "unbounded":
         return (None, True, None) if values == (None, None, None, True) else None
     # kf rests on the search: by default bound (10) does not use it (W undecided) and the report
     # says so; with --trust-search it does, and it is computed again
     return (None, False, None) if kernel_only or values == (None, None, None, False) else None
+
+
+def _floats(lower, upper) -> tuple:
+    """kf's "lower" and "upper" of `report.to_dict`: doubles rounded outward."""
+    return Interval.point(lower).lower_float(), Interval.point(upper).upper_float()
 
 
 def _internal_error(path: str, exc: BaseException) -> dict:

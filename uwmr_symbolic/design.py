@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import ast
 import contextlib
+import decimal
 import fractions
 import math
 import numbers
@@ -80,16 +81,39 @@ def exact_float(x: sp.Float) -> sp.Rational:
 
 
 def exact_number(value, what: str) -> sp.Expr:
-    """A number from a design file as an exact SymPy number (floats: see
-    `exact_float`)."""
+    """A number from a design file (params, gains) as an exact SymPy number:
+    floats of a double's precision or less (Python, numpy, mpmath, SymPy) as
+    `exact_float` reads them, a numpy float finer than a double (longdouble)
+    that no double holds as its exact binary value, integers (numpy's too),
+    Fractions and Decimals exactly; at most 4,200 digits (what Python prints)."""
+    value = _exact_number(value, what)
+    if any(max(abs(r.p), r.q).bit_length() > 14_000 for r in value.atoms(sp.Rational)):
+        raise DesignError(f"{what} holds a number of more than 4,200 digits, which cannot be printed into a "
+                          f"certificate or code; use a smaller one")
+    return value
+
+
+def _exact_number(value, what: str) -> sp.Expr:
     if isinstance(value, bool):
         raise DesignError(f"{what} is a boolean, not a number")
-    if isinstance(value, float):
-        if value != value or value in (float("inf"), float("-inf")):
-            raise DesignError(f"{what} is {value}, not a finite number")
-        return exact_float(value)
-    if isinstance(value, (int, fractions.Fraction)):
+    if isinstance(value, numbers.Integral) and not isinstance(value, sp.Basic):     # (numpy integers too)
+        return sp.Integer(int(value))
+    if isinstance(value, fractions.Fraction):
         return sp.Rational(value)
+    if isinstance(value, (float, decimal.Decimal, mpmath.mpf)) or \
+            isinstance(value, numbers.Real) and not isinstance(value, sp.Basic):    # numpy floats
+        if not (value == value and abs(value) != float("inf")):
+            raise DesignError(f"{what} is {value}, not a finite number")
+        if isinstance(value, float):
+            return exact_float(float(value))        # (repr of numpy's float64 is 'np.float64(...)')
+        if isinstance(value, decimal.Decimal):
+            return sp.Rational(fractions.Fraction(value))
+        if isinstance(value, mpmath.mpf):           # its own precision: 53 bits or more
+            return exact_float(sp.Float(value, precision=max(53, int(value.man).bit_length())))
+        exact = fractions.Fraction(*value.as_integer_ratio())
+        double = float(value)
+        return exact_float(double) if math.isfinite(double) and fractions.Fraction(double) == exact \
+            else sp.Rational(exact)
     if isinstance(value, str):
         try:
             value = sp.sympify(value, rational=True)
@@ -104,8 +128,6 @@ def exact_number(value, what: str) -> sp.Expr:
         if value.is_real is False or value.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
             raise DesignError(f"{what} = {value} is not a finite real number")
         return value
-    if isinstance(value, numbers.Real):   # numpy scalars
-        return exact_number(float(value), what)
     raise DesignError(f"{what} = {value!r} is not a number")
 
 

@@ -9,7 +9,7 @@ import numpy as np
 import sympy as sp
 from matplotlib.figure import Figure
 
-from .report import MARK, status_text, to_dict
+from .report import MARK, kf_upper_text, status_text, to_dict
 
 COLOR = {"proved": "#1a7f37", "refuted": "#cf222e", "unknown": "#9a6700"}
 
@@ -103,4 +103,4 @@ def profile_figure(report, s_max: float = 10.0, points: int = 2000) -> Figure:
 
 
 def _short(kf: dict) -> str:
-    return kf["exact"] if kf["exact"] is not None and len(kf["exact"]) <= 12 else f"{kf['upper']:.6g}"
+    return kf["exact"] if kf["exact"] is not None and len(kf["exact"]) <= 12 else kf_upper_text(kf)

@@ -25,18 +25,34 @@ class GainCheck:
     W_margin_lower: sp.Expr | None = None   # the margin with kf's certified lower bound
 
     @property
-    def V_ok(self) -> bool:
-        return bool(self.V_margin >= 0)
+    def V_ok(self) -> bool | None:
+        """|V| bound within Vmax; None when the margin's sign is undecided
+        (gains such as pi/8 whose margin is 0 in disguise)."""
+        return _nonnegative(self.V_margin)
 
     @property
     def W_ok(self) -> bool | None:
         if not self.kf_known:
             return None
-        if self.W_margin is not None and bool(self.W_margin >= 0):
-            return True
-        if self.W_margin_lower is not None and bool(self.W_margin_lower >= 0):
+        if self.W_margin is None:       # kf infinite
+            return False
+        ok = _nonnegative(self.W_margin)
+        if ok is not False:             # (None: the margin's sign undecided)
+            return ok
+        if self.W_margin_lower is not None and _nonnegative(self.W_margin_lower) is not False:
             return None         # the limit lies inside kf's enclosure: undecided, not a violation
         return False
+
+
+def _nonnegative(x) -> bool | None:
+    """x >= 0 for an exact real number: SymPy's comparison, else the sign by
+    `univariate.exact_sign`; None when neither decides."""
+    r = x >= 0
+    if r in (sp.true, sp.false):
+        return bool(r)
+    from .univariate import exact_sign
+    sign = exact_sign(x)
+    return None if sign is None else sign >= 0
 
 
 def check_gains(gains: dict, kf_upper, kf_known: bool = True, kf_lower=None) -> dict[str, GainCheck]:

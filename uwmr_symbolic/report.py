@@ -84,8 +84,8 @@ def to_dict(r: Report) -> dict:
                            **_jsonable({k: x for k, x in v.details.items() if k != "kernel"})}
                        for p, v in r.properties.items()},
         "kf": {"exact": None if kf is None or kf.exact is None else exact_text(kf.exact),
-               "exact_digits": None if kf is None or kf.exact is None or kf.exact.is_Integer
-               else str(sp.N(kf.exact, 20)),
+               "exact_digits": None if kf is None or kf.exact is None   # (an integer written out has none)
+               or kf.exact.is_Integer and exact_text(kf.exact) == str(kf.exact) else str(sp.N(kf.exact, 20)),
                "lower": None if kf is None or kf.lower is None else Interval.point(kf.lower).lower_float(),
                "upper": None if kf is None or kf.upper is None else Interval.point(kf.upper).upper_float(),
                "enclosure": None if kf is None or kf.lower is None or kf.upper is None
@@ -106,16 +106,21 @@ def to_dict(r: Report) -> dict:
     return d
 
 
-def _text(x, spec: str) -> str | None:
+def number_text(x, spec: str) -> str | None:
     """x (an exact number, None: none) in the format spec ('.8g', '+.3e'),
     through a float where a normal double holds it, else SymPy's digits (a
-    gain of 10^-400 is not 0, nor 10^400 inf)."""
+    gain of 10^-400 is not 0, nor 10^400 inf); "?" when SymPy cannot tell
+    x from 0 (pi/4 - atan(1/2) - atan(1/3))."""
     if x is None:
         return None
-    v = _num(x)
-    if v is not None and (v == 0) == (x == 0) and (v == 0 or abs(v) >= 1e-300):
+    try:
+        value = sp.N(x, 30, strict=True)
+    except sp.core.evalf.PrecisionExhausted:
+        return "?"
+    v = float(value) if abs(value) < sp.Float("1e300") else math.inf
+    if value == 0 or 1e-300 <= abs(v) < math.inf:
         return format(v, spec)
-    text = str(sp.N(x, int(re.search(r"\d+", spec).group()) + ("e" in spec)))
+    text = str(sp.N(value, int(re.search(r"\d+", spec).group()) + ("e" in spec)))
     return ("+" if "+" in spec and not text.startswith("-") else "") + text
 
 
@@ -127,9 +132,9 @@ def gains_dict(gains: dict) -> dict:
                    "V_margin_float": _num(g.V_margin), "W_margin_float": _num(g.W_margin),
                    "V_ok": g.V_ok, "W_ok": g.W_ok, "lam_max": _num(g.lam_max),
                    "lam_max_exact": None if g.lam_max is None else str(g.lam_max),
-                   "text": {"V_bound": _text(g.V_bound, ".8g"), "W_bound": _text(g.W_bound, ".8g"),
-                            "V_margin": _text(g.V_margin, "+.3e"), "W_margin": _text(g.W_margin, "+.3e"),
-                            "lam_max": _text(g.lam_max, ".8g")}}
+                   "text": {k: number_text(getattr(g, k), spec) for k, spec in
+                            (("V_bound", ".8g"), ("W_bound", ".8g"), ("V_margin", "+.3e"), ("W_margin", "+.3e"),
+                             ("lam_max", ".8g"))}}
             for name, g in gains.items()}
 
 
@@ -173,8 +178,7 @@ def render_text(r) -> str:
         lines.append("")
         lines.append("  bound (10)     |V| bound  margin          |W| bound  margin          lam_max")
         for name, g in d["gains"].items():
-            v_ok = "PASS" if g["V_ok"] else "FAIL"
-            w_ok = {True: "PASS", False: "FAIL", None: "????"}[g["W_ok"]]
+            v_ok, w_ok = ({True: "PASS", False: "FAIL", None: "????"}[g[k]] for k in ("V_ok", "W_ok"))
             t = g["text"]
             lines.append(f"  {name:<12} {t['V_bound']:>10}  {t['V_margin']} {v_ok}  {t['W_bound'] or 'inf':>10}  "
                          f"{t['W_margin'] or '—'} {w_ok}  {t['lam_max'] or '?'}")
@@ -221,15 +225,31 @@ def _kf_summary(kf: dict) -> str:
         return "infinite" if kf.get("unbounded") else "undecided"
     if kf["exact"] is not None and len(kf["exact"]) <= 20:
         return kf["exact"]
-    if kf["exact"] is not None:     # exact, too long for the column: its leading 17 digits, as decimals
-        return f"{Decimal(kf['exact_digits'] or kf['exact']):.17g}..."  # (an integer has no exact_digits)
-    return f"~{kf['upper']:.9g}"
+    if kf["exact"] is not None:     # exact, too long for the column: its leading 17 digits
+        return f"{Decimal(kf['exact_digits'] or kf['exact']):.17g}..."   # (an integer written out has no digits)
+    return f"~{kf_upper_text(kf)}"
+
+
+def kf_upper_text(kf: dict) -> str:
+    """The upper end of kf's enclosure as printed (rounded up, at any scale:
+    the float `upper` is 5e-324 for a kf of 10^-400)."""
+    return kf["enclosure"].strip("[]").split(", ")[1]
+
+
+def _undecided_text(g: dict, name: str) -> str:
+    """Why bound (10) of scenario `name` is unchecked."""
+    if g["V_ok"] is None:
+        return f"the sign of the |V| margin of scenario {name}, {g['V_margin']}, is undecided"
+    if g["W_margin"] is None:
+        return f"kf undecided: |W| bound of scenario {name} unchecked"
+    return (f"the |W| margin of scenario {name} is undecided (Wmax lies within the bounds that kf's enclosure "
+            f"gives, or the sign of {g['W_margin']} is undecided)")
 
 
 def _gain_word(g: dict) -> str:
-    if not g["V_ok"] or g["W_ok"] is False:
+    if g["V_ok"] is False or g["W_ok"] is False:
         return "FAIL"
-    return "ok" if g["W_ok"] else "?"
+    return "ok" if g["V_ok"] and g["W_ok"] else "?"
 
 
 def render_summary(results: list[dict]) -> str:
@@ -307,7 +327,7 @@ def _testcases(d: dict):
             which = " and ".join(w for w, ok in (("|V|", g["V_ok"]), ("|W|", g["W_ok"])) if ok is False)
             yield f"gains[{name}]", "failure", "refuted", f"bound (10) fails for {which} in scenario {name}", text
         else:
-            yield f"gains[{name}]", "failure", "unknown", f"kf undecided: |W| bound of scenario {name} unchecked", text
+            yield f"gains[{name}]", "failure", "unknown", _undecided_text(g, name), text
     failures = simulation_failures(d)
     for name in d.get("simulation") or {}:
         why = failures.get(name)
@@ -429,7 +449,7 @@ def render_github(results: list[dict]) -> str:
                                        f"largest lam within the limits: {g['lam_max_exact']}"))
             elif word == "?":
                 out.append(_annotation("warning", path, gains_line, f"uwmr-verify bound (10) unchecked ({name}, {scen})",
-                                       "kf undecided, so the |W| bound cannot be checked"))
+                                       _undecided_text(g, scen)))
         for scen, why in simulation_failures(d).items():
             if not why.startswith("skipped"):
                 out.append(_annotation("error", path, gains_line, f"uwmr-verify simulation fails ({name}, {scen})", why))

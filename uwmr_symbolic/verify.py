@@ -77,11 +77,11 @@ class Report:
         if self.error is not None:
             return EXIT_UNUSABLE
         verdicts = list(self.properties.values())
-        gains_fail = any(not g.V_ok or g.W_ok is False for g in self.gains.values())
+        gains_fail = any(g.V_ok is False or g.W_ok is False for g in self.gains.values())
         if any(v.refuted for v in verdicts) or gains_fail:
             return EXIT_REFUTED
         if all(v.proved for v in verdicts) and self.proof_replay.get("ok") \
-                and all(g.W_ok for g in self.gains.values()):
+                and all(g.V_ok and g.W_ok for g in self.gains.values()):
             return EXIT_OK
         return EXIT_INCONCLUSIVE
 

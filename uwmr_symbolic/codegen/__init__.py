@@ -180,19 +180,23 @@ def _model(design_path, force, report, precisions=("double", "float")) -> tuple[
 def _gain_notes(gains: dict) -> list[str]:
     """The design file's gain scenarios that break bound (10) or leave it
     undecided: the gains are passed in at run time, so the banner warns."""
+    from ..report import number_text         # (numbers at any scale: a gain may be 10^400)
     notes = []
     for name, g in gains.items():
-        broken = [f"|V| bound {float(g.V_bound):.9g} > Vmax (margin {float(g.V_margin):+.3e})"] if not g.V_ok else []
+        over = lambda w, bound, margin: f"|{w}| bound {number_text(bound, '.9g')} > {w}max " \
+            f"(margin {number_text(margin, '+.3e')})"     # noqa: E731
+        broken = [over("V", g.V_bound, g.V_margin)] if g.V_ok is False else []
         if g.W_ok is False:
             broken.append("kf is infinite, so |W| has no bound" if g.W_margin is None else
-                          f"|W| bound {float(g.W_bound):.9g} > Wmax (margin {float(g.W_margin):+.3e})")
-        elif broken and g.W_ok is None:
-            broken.append("the |W| part is undecided")
+                          over("W", g.W_bound, g.W_margin))
+        undecided = [part for part, ok in (("|V|", g.V_ok), ("|W|", g.W_ok)) if ok is None]
         if broken:
-            notes.append(f"the design file's gains {name!r} break bound (10): {'; '.join(broken)}; "
+            notes.append(f"the design file's gains {name!r} break bound (10): "
+                         f"{'; '.join(broken + [f'the {part} part is undecided' for part in undecided])}; "
                          f"with them the commands are not promised to stay within the limits.")
-        elif g.W_ok is None:
-            notes.append(f"the design file's gains {name!r}: the |W| part of bound (10) is undecided.")
+        elif undecided:
+            notes.append(f"the design file's gains {name!r}: the {' and '.join(undecided)} part of bound (10) "
+                         f"is undecided.")
     return notes
 
 
