@@ -53,7 +53,7 @@ def report_html(report) -> str:
         word = {True: "PASS", False: "FAIL", None: "unchecked"}
         grows = "".join(
             f"<tr><td>{esc(n)}</td><td>{t['V_bound']}</td><td>{t['V_margin']} {word[g['V_ok']]}</td>"
-            f"<td>{t['W_bound'] or '∞'}</td><td>{t['W_margin'] or '—'} {word[g['W_ok']]}</td>"
+            f"<td>{t['W_bound'] or ('∞' if g['W_ok'] is False else '?')}</td><td>{t['W_margin'] or '—'} {word[g['W_ok']]}</td>"
             f"<td>{t['lam_max'] or '?'}</td></tr>"
             for n, g in d["gains"].items() for t in [g["text"]])
         parts.append("<table><tr><th>bound (10)</th><th>|V| bound</th><th>margin</th><th>|W| bound</th>"

@@ -180,7 +180,7 @@ def render_text(r) -> str:
         for name, g in d["gains"].items():
             v_ok, w_ok = ({True: "PASS", False: "FAIL", None: "????"}[g[k]] for k in ("V_ok", "W_ok"))
             t = g["text"]
-            lines.append(f"  {name:<12} {t['V_bound']:>10}  {t['V_margin']} {v_ok}  {t['W_bound'] or 'inf':>10}  "
+            lines.append(f"  {name:<12} {t['V_bound']:>10}  {t['V_margin']} {v_ok}  {t['W_bound'] or _no_w_bound(g):>10}  "
                          f"{t['W_margin'] or '—'} {w_ok}  {t['lam_max'] or '?'}")
     if d.get("kernel") is not None:
         lines.append("")
@@ -234,6 +234,11 @@ def kf_upper_text(kf: dict) -> str:
     """The upper end of kf's enclosure as printed (rounded up, at any scale:
     the float `upper` is 5e-324 for a kf of 10^-400)."""
     return kf["enclosure"].strip("[]").split(", ")[1]
+
+
+def _no_w_bound(g: dict) -> str:
+    """The |W| bound's place without one: inf for an infinite kf, ? for an undecided one."""
+    return "inf" if g["W_ok"] is False else "?"
 
 
 def _undecided_text(g: dict, name: str) -> str:
@@ -414,7 +419,7 @@ def _bound_text(g: dict, which: str) -> str:
     margin, exact = g["text"][f"{which}_margin"], g[f"{which}_margin"]
     m = "—" if exact is None else (margin or "?") + \
         ("" if exact in (None, "0") or "/" not in exact and "sqrt" not in exact else f" = {exact}")
-    return f"|{which}| bound {g['text'][f'{which}_bound'] or 'inf'} {word}, margin {m}"
+    return f"|{which}| bound {g['text'][f'{which}_bound'] or _no_w_bound(g)} {word}, margin {m}"
 
 
 def render_github(results: list[dict]) -> str:
