@@ -530,3 +530,27 @@ def test_every_operation_rounds_outward(op):
             # and the enclosure is not trivially wide (inputs rounded to 64 bits)
             scale = max(abs(a), abs(b), abs(want), abs(a) / abs(b), 1)
             assert box.upper_fraction() - box.lower_fraction() <= scale * Fraction(1, 2 ** 50)
+
+
+def test_sup_bounds_are_rounded_outward_to_53_bits_at_any_scale():
+    """`univariate._rounded`: the branch and bound's bounds, 53 bits from
+    2^-4000 to 2^4000 (a double had flushed 10^-400 to 0); a bound of
+    2^(-10^12) (exp(-e2^2) far out) once asked for a 2^(10^12) integer."""
+    from fractions import Fraction
+    from flint import arb, ctx
+    from uwmr_symbolic.univariate import _rounded
+    for text in ("1e-320", "-1e-320", "1e-400", "-2.5e-1000", "3", "-3", "1e400", "0.1"):
+        prec, ctx.prec = ctx.prec, 200
+        try:
+            x = (arb(text) / 7).mid()               # a mantissa wider than 53 bits
+        finally:
+            ctx.prec = prec
+        m, e = (int(v) for v in x.man_exp())
+        exact = Fraction(m) * Fraction(2) ** e
+        lo, hi = _rounded(x, True), _rounded(x, False)
+        assert lo <= exact <= hi and 0 < (hi - lo) <= abs(exact) / 2 ** 51, text
+        assert max(abs(lo.numerator), lo.denominator).bit_length() <= 4053
+    tiny = arb(2) ** -(10 ** 12)
+    assert _rounded(tiny, True) == 0 and _rounded(tiny, False) == Fraction(1, 2 ** 4000)
+    assert _rounded(-tiny, True) == -Fraction(1, 2 ** 4000) and _rounded(-tiny, False) == 0
+    assert _rounded(arb(2) ** 5000, False) is None and _rounded(arb(3), True) == 3

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import heapq
 import math
+import sys
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import lru_cache
@@ -912,7 +913,8 @@ def _rounded(x, down: bool) -> Fraction | None:
     shift = max(m.bit_length() - 53, -4000 - e, 0)
     if shift:
         q = m >> shift                              # floor
-        m, e = (q if down or q << shift == m else q + 1), e + shift
+        exact = m == 0 if shift >= m.bit_length() else q << shift == m   # (no 2^shift for a tiny x)
+        m, e = (q if down or exact else q + 1), e + shift
     return None if e > 4000 else Fraction(m) * Fraction(2) ** e
 
 
@@ -945,11 +947,12 @@ def _mean_value_upper(fn, dfn, u, v):
 
 def _ordering(x: Fraction) -> float:
     """x as a double for ordering the boxes only (x scaled by `enclose_sup`):
-    +-inf beyond the doubles."""
+    +-DBL_MAX beyond the doubles, so that a box without a bound (-inf in the
+    heap) always comes first."""
     try:
-        return float(x)
+        return max(min(float(x), sys.float_info.max), -sys.float_info.max)
     except OverflowError:
-        return math.inf if x > 0 else -math.inf
+        return sys.float_info.max if x > 0 else -sys.float_info.max
 
 
 def enclose_sup(expr, var, lo, hi, rel_tol=1e-8, budget=6000, floor=None) -> SupEnclosure:
