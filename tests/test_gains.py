@@ -67,3 +67,4 @@ def test_a_margin_sympy_cannot_sign_leaves_the_scenario_undecided(tmp_path):
     row = next(line for line in render_text(report).splitlines() if line.startswith("  circle"))
     assert row.split()[1:4] == ["0.78539816", "?", "????"]
     assert to_dict(report)["gains"]["circle"]["text"]["V_margin"] == "?"
+    assert to_dict(report)["gains"]["circle"]["V_margin_float"] is None      # (not SymPy's noise, 2e-165)

@@ -28,10 +28,14 @@ PROPS = ("P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8")
 
 
 def _num(x):
-    """A float for JSON (None for infinite/undecided)."""
+    """A float for JSON (None for infinite/undecided, and where SymPy cannot
+    tell x from 0: its digits would be noise)."""
     if x is None:
         return None
-    v = float(sp.N(x, 30)) if isinstance(x, sp.Basic) else float(x)
+    try:
+        v = float(sp.N(x, 30, strict=True)) if isinstance(x, sp.Basic) else float(x)
+    except sp.core.evalf.PrecisionExhausted:
+        return None
     return v if math.isfinite(v) else None
 
 
