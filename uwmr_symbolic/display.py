@@ -9,7 +9,7 @@ import numpy as np
 import sympy as sp
 from matplotlib.figure import Figure
 
-from .report import MARK, kf_upper_text, status_text, to_dict
+from .report import MARK, kf_upper_text, no_w_bound, status_text, to_dict
 
 COLOR = {"proved": "#1a7f37", "refuted": "#cf222e", "unknown": "#9a6700"}
 
@@ -53,7 +53,7 @@ def report_html(report) -> str:
         word = {True: "PASS", False: "FAIL", None: "unchecked"}
         grows = "".join(
             f"<tr><td>{esc(n)}</td><td>{t['V_bound']}</td><td>{t['V_margin']} {word[g['V_ok']]}</td>"
-            f"<td>{t['W_bound'] or ('∞' if g['W_ok'] is False else '?')}</td><td>{t['W_margin'] or '—'} {word[g['W_ok']]}</td>"
+            f"<td>{t['W_bound'] or no_w_bound(g, '∞')}</td><td>{t['W_margin'] or '—'} {word[g['W_ok']]}</td>"
             f"<td>{t['lam_max'] or '?'}</td></tr>"
             for n, g in d["gains"].items() for t in [g["text"]])
         parts.append("<table><tr><th>bound (10)</th><th>|V| bound</th><th>margin</th><th>|W| bound</th>"

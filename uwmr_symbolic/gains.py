@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .interval import Interval, Undefined
+from .limits import interval_sign
 
 
 @dataclass
@@ -48,16 +48,13 @@ class GainCheck:
 
 def _nonnegative(x) -> bool | None:
     """x >= 0 for an exact real number: SymPy's comparison, else the sign of
-    x's Arb enclosure; None when neither decides (a zero in disguise: no
-    simplification is taken on faith for a margin)."""
+    x's Arb enclosure (`limits.interval_sign`); None when neither decides (a
+    zero in disguise: no simplification is taken on faith for a margin)."""
     r = x >= 0
     if r in (sp.true, sp.false):
         return bool(r)
-    try:
-        box = Interval.point(x)
-    except (Undefined, TypeError, ValueError):
-        return None
-    return True if box.is_positive() else False if box.is_negative() else None
+    sign = interval_sign(x)
+    return None if sign is None else sign > 0
 
 
 def check_gains(gains: dict, kf_upper, kf_known: bool = True, kf_lower=None) -> dict[str, GainCheck]:

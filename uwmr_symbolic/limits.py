@@ -37,6 +37,16 @@ class Lim:
         return self.value in (sp.oo, -sp.oo)
 
 
+def interval_sign(value) -> int | None:
+    """Sign of a nonzero exact real constant from its Arb enclosure; None
+    when the enclosure holds 0 or there is none."""
+    try:
+        box = Interval.point(value)
+    except (Undefined, TypeError, ValueError):
+        return None
+    return 1 if box.is_positive() else -1 if box.is_negative() else None
+
+
 def exact_sign(value) -> int | None:
     """Sign of an exact real constant: interval arithmetic, or a symbolic
     zero; None when neither decides (or there is no value: None)."""
@@ -44,14 +54,9 @@ def exact_sign(value) -> int | None:
         return None
     if value == 0:
         return 0
-    try:
-        box = Interval.point(value)
-        if box.is_positive():
-            return 1
-        if box.is_negative():
-            return -1
-    except (Undefined, TypeError, ValueError):
-        pass
+    sign = interval_sign(value)
+    if sign is not None:
+        return sign
     # a symbolic zero test, only for small constants: SymPy's simplify can
     # spend minutes (minimal polynomials of nested radicals) on big ones
     if sp.count_ops(value) > 60:

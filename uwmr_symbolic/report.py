@@ -184,8 +184,8 @@ def render_text(r) -> str:
         for name, g in d["gains"].items():
             v_ok, w_ok = ({True: "PASS", False: "FAIL", None: "????"}[g[k]] for k in ("V_ok", "W_ok"))
             t = g["text"]
-            lines.append(f"  {name:<12} {t['V_bound']:>10}  {t['V_margin']} {v_ok}  {t['W_bound'] or _no_w_bound(g):>10}  "
-                         f"{t['W_margin'] or '—'} {w_ok}  {t['lam_max'] or '?'}")
+            lines.append(f"  {name:<12} {t['V_bound']:>10}  {t['V_margin']} {v_ok}  "
+                         f"{t['W_bound'] or no_w_bound(g):>10}  {t['W_margin'] or '—'} {w_ok}  {t['lam_max'] or '?'}")
     if d.get("kernel") is not None:
         lines.append("")
         lines.append(f"  {kernel_text(d['kernel'])}")
@@ -240,9 +240,10 @@ def kf_upper_text(kf: dict) -> str:
     return kf["enclosure"].strip("[]").split(", ")[1]
 
 
-def _no_w_bound(g: dict) -> str:
-    """The |W| bound's place without one: inf for an infinite kf, ? for an undecided one."""
-    return "inf" if g["W_ok"] is False else "?"
+def no_w_bound(g: dict, infinite: str = "inf") -> str:
+    """The |W| bound's place without one: `infinite` for an infinite kf, ?
+    for an undecided one."""
+    return infinite if g["W_ok"] is False else "?"
 
 
 def _undecided_text(g: dict, name: str) -> str:
@@ -423,7 +424,7 @@ def _bound_text(g: dict, which: str) -> str:
     margin, exact = g["text"][f"{which}_margin"], g[f"{which}_margin"]
     m = "—" if exact is None else (margin or "?") + \
         ("" if exact in (None, "0") or "/" not in exact and "sqrt" not in exact else f" = {exact}")
-    return f"|{which}| bound {g['text'][f'{which}_bound'] or _no_w_bound(g)} {word}, margin {m}"
+    return f"|{which}| bound {g['text'][f'{which}_bound'] or no_w_bound(g)} {word}, margin {m}"
 
 
 def render_github(results: list[dict]) -> str:

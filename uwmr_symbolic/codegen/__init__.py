@@ -181,10 +181,11 @@ def _gain_notes(gains: dict) -> list[str]:
     """The design file's gain scenarios that break bound (10) or leave it
     undecided: the gains are passed in at run time, so the banner warns."""
     from ..report import number_text         # (numbers at any scale: a gain may be 10^400)
+    def over(w, bound, margin):
+        return f"|{w}| bound {number_text(bound, '.9g')} > {w}max (margin {number_text(margin, '+.3e')})"
+
     notes = []
     for name, g in gains.items():
-        over = lambda w, bound, margin: f"|{w}| bound {number_text(bound, '.9g')} > {w}max " \
-            f"(margin {number_text(margin, '+.3e')})"     # noqa: E731
         broken = [over("V", g.V_bound, g.V_margin)] if g.V_ok is False else []
         if g.W_ok is False:
             broken.append("kf is infinite, so |W| has no bound" if g.W_margin is None else
