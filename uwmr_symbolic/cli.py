@@ -249,7 +249,7 @@ def run_simulations(results, args, refs: dict, reports: Reports) -> int:
                                       seed=args.seed or 0, references=refs or None, delay=args.delay)
         except CodegenInvalid as exc:
             # the simulator runs the generated code, which the validation gate refused (--force or not)
-            print(f"{d['design']}: not simulated, the generated code failed its validation: {exc.reasons[0]}",
+            print(f"{d['design']}: not simulated, {exc.what}: {exc.reasons[0]}",
                   file=sys.stderr)
             status = 1
             continue
@@ -284,7 +284,7 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
                 raise CodegenRefused(unproved)
             written = generate(path, target, force=force, report=reports(path))
         except CodegenInvalid as exc:
-            print(f"{path}: no code generated, the generated code failed its validation: {exc.reasons[0]}",
+            print(f"{path}: no code generated, {exc.what}: {exc.reasons[0]}",
                   file=sys.stderr)
             status = 1
             continue

@@ -47,9 +47,16 @@ class CodegenInvalid(CodegenRefused):
     validation against the exact law (`validate`); `reasons[0]` is one line
     naming the design, the target, the input and both values."""
 
-    def __init__(self, reason: str):
+    def __init__(self, reason: str, unprintable: bool = False):
         self.reasons = [reason]
+        self.unprintable = unprintable
         Exception.__init__(self, "code generation refused: " + reason)
+
+    @property
+    def what(self) -> str:
+        """What went wrong, for the CLI's one-line message."""
+        return ("the controller cannot be written in the target's arithmetic" if self.unprintable
+                else "the generated code failed its validation")
 
 
 def _env() -> jinja2.Environment:
@@ -207,7 +214,7 @@ def _check_stem(stem: str) -> None:
     bad = next((ch for ch in stem if ch in '"\\$;' or not ch.isprintable()), None)
     if bad is not None:
         raise CodegenInvalid(f"{stem}: the design file's name holds {bad!r}, which the generated #include and "
-                             f"CMakeLists.txt cannot quote; rename the file (letters, digits, '_', '-', '.', spaces)")
+                             f"CMakeLists.txt cannot quote; rename the file (letters, digits, '_', '-', '.', spaces)", unprintable=True)
 
 
 def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, str]]:
@@ -237,7 +244,7 @@ def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, st
         files.update(python_backend.render(env, model, ctx))
         files.update(c_backend.render(env, model, ctx))
     except Unsupported as exc:
-        raise CodegenInvalid(f"{model.stem}: {exc}") from None
+        raise CodegenInvalid(f"{model.stem}: {exc}", unprintable=True) from None
     return model, files
 
 
