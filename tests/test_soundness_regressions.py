@@ -3,6 +3,7 @@ checking designs nobody here wrote (issue 9).  Every expected verdict is
 derived by hand in the comment beside it; "not refuted" is asserted where the
 truth is "holds" but the verifier may honestly say "unknown"."""
 import math
+import re
 import textwrap
 from decimal import Decimal
 from fractions import Fraction
@@ -20,6 +21,7 @@ pytestmark = pytest.mark.slow        # more than a few seconds: not in make test
 
 HEADER = """\
 import math
+import re
 import sympy as sp
 from sympy import Piecewise, Eq, Max, Rational, log, sqrt, atan
 e1, e2 = sp.symbols("e1 e2", real=True)
@@ -1118,3 +1120,22 @@ def test_a_kf_below_the_normal_doubles_is_enclosed_to_its_relative_width(tmp_pat
         kf = Fraction(str(mpmath.nstr(top, 30))) / 10 ** k
         assert set(v.values()) == {"proved"} and "kf" in report.kernel["checked"]
         assert report.kf.lower <= kf <= report.kf.upper and report.kf.upper - report.kf.lower < kf / 10 ** 6
+
+
+def test_a_sup_of_the_p6_quotient_near_the_origin_is_enclosed_narrowly(tmp_path):
+    # Red team 15b: F = s atan(s) - log(1 + s^2)/2 + (atan(K (s^2 - a)) + atan(K a))/(2K), K = 10^5, a = 0.0036.
+    # By hand F' = atan(s) + s/(1 + K^2 (s^2 - a)^2), so F'(s)/s = atan(s)/s + 1/(1 + K^2 (s^2 - a)^2) has a
+    # spike to about 2 at s = 0.06, inside (0, 1/8] where the search bounded it by sup F'' only: the report
+    # read sup F'(s)/s in [0.995, 468.65] and took k = 530.  Bisection on mpmath's derivative below.
+    report, v = verify(tmp_path, "K, a = 10**5, Rational(36, 10**4)\n"
+                                 "f = sqrt(rho)*atan(sqrt(rho)) - log(1 + rho)/2 + (atan(K*(rho - a)) + atan(K*a))/(2*K)\n")
+    E = lambda s: mpmath.atan(s) / s + 1 / (1 + 10 ** 10 * (s ** 2 - mpmath.mpf(36) / 10 ** 4) ** 2)
+    lo, hi = mpmath.mpf("0.0599"), mpmath.mpf("0.0601")
+    for _ in range(100):
+        lo, hi = ((lo + hi) / 2, hi) if mpmath.diff(E, (lo + hi) / 2) > 0 else (lo, (lo + hi) / 2)
+    top = Fraction(str(mpmath.nstr(E(lo), 30)))
+    assert v["P6"] == "proved" and "P6" in report.kernel["checked"]
+    low, up = (Fraction(x) for x in re.search(r"sup F'\(s\)/s = \[([0-9.]+), ([0-9.]+)\]",
+                                               report.properties["P6"].reason).groups())
+    assert low <= top <= up and up - low < Fraction(1, 10 ** 6)
+    assert sp.Rational(top) <= sp.sympify(report.properties["P6"].reason.split()[2]) <= 3

@@ -279,17 +279,12 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
     early = far_out_trend(exprs[-1], S) >= 0     # else the limit at oo only if no bound is found (it is slow)
     if early and (unbounded := _unbounded_at_infinity(exprs[-1], name)):
         return unbounded
-    lower, upper, top, box = None, Fraction(0), None, None
+    lower, upper, top, near = None, Fraction(0), None, None
     floor = _quick_lower(exprs, pieces) if len(pieces) > 2 else None   # pieces below it need no tight sup
     for i, (E, piece) in enumerate(zip(exprs, pieces)):
         lo = piece.lo
         if i == 0 and exact_value(E, S, 0) is None and (piece.hi == sp.oo or piece.hi > NEAR_ZERO):
-            if near_zero is not None:
-                near = enclose_sup(prepare(near_zero), S, 0, sp.Rational(NEAR_ZERO), rel_tol=REL_WIDTH).upper
-            if near_zero is None or near is None:     # E (or F'') itself 0/0 at 0 (F' of sinh(s^2)/s^2 - 1):
-                box = quotient_near_zero(prepare(near_zero if near_zero is not None else E), S,   # by Taylor
-                                         sp.Rational(NEAR_ZERO))
-                near = None if box is None else box.upper_fraction()
+            near = _near_zero_upper(E, near_zero, Fraction(NEAR_ZERO))
             if near is None:
                 upper = None
             elif upper is not None:
@@ -303,8 +298,8 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
             upper = None
         elif upper is not None:
             upper = max(upper, enc.upper)
-    if box is not None and near_zero is None and upper is not None and lower is not None and lower < upper == near:
-        upper = _narrower_near_zero(exprs[0], lower, upper)
+    if near is not None and upper is not None and lower is not None and lower < upper == near:
+        lower, upper = _narrower_near_zero(exprs[0], near_zero, lower, upper)
     if upper is None or lower is None:
         return _unbounded_at_infinity(exprs[-1], name, limit=not early, growth=True) or \
             SupCertificate(lower, None, None, None, f"branch and bound found no finite bound for {name}")
@@ -336,25 +331,40 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
                           point=enc.point)
 
 
-def _narrower_near_zero(E, lower, upper):
-    """The sup bound `upper` of E over (0, oo) when the Taylor quotient bound
-    on (0, NEAR_ZERO] (`quotient_near_zero`) set it above the sup `lower`
+def _near_zero_upper(E, near_zero, w: Fraction):
+    """An upper bound of E on (0, w] (see `certify_sup`): sup F'' there when
+    the caller passes F'' (mean value theorem), else, or where that sup has
+    no bound (F'' itself 0/0 at 0: F' of sinh(s^2)/s^2 - 1), the Taylor
+    quotient bound `quotient_near_zero`; None if neither gives one."""
+    if near_zero is not None:
+        up = enclose_sup(prepare(near_zero), S, 0, sp.Rational(w), rel_tol=REL_WIDTH).upper
+        if up is not None:
+            return up
+    box = quotient_near_zero(prepare(near_zero if near_zero is not None else E), S, sp.Rational(w))
+    return None if box is None else box.upper_fraction()
+
+
+def _narrower_near_zero(E, near_zero, lower, upper):
+    """The sup bounds (lower, upper) of E over (0, oo) when the bound on
+    (0, NEAR_ZERO] (`_near_zero_upper`) set `upper` above the sup `lower`
     seen: that bound on (0, w] for w = NEAR_ZERO/8, /64, /512 with the branch
     and bound between w and NEAR_ZERO (a short one: the cancellation near 0
-    makes it slow), the first at or below `lower`; else the smallest found."""
+    makes it slow; its lower bound raises `lower`), the first at or below
+    `lower`; else the smallest found."""
     top, w = Fraction(NEAR_ZERO), Fraction(NEAR_ZERO)
     for _ in range(3):
         w /= 8
-        box = quotient_near_zero(E, S, sp.Rational(w))
-        if box is None or box.upper_fraction() >= upper:
+        near = _near_zero_upper(E, near_zero, w)
+        if near is None or near >= upper:
             break
         mid = enclose_sup(E, S, sp.Rational(w), sp.Rational(top), rel_tol=REL_WIDTH, floor=lower, budget=1500)
         if mid.upper is None:
             break
-        upper = min(upper, max(box.upper_fraction(), mid.upper, lower))
+        lower = lower if mid.lower is None else max(lower, mid.lower)
+        upper = min(upper, max(near, mid.upper, lower))
         if upper <= lower:
             break
-    return upper
+    return lower, upper
 
 
 def _with_kernel(cert: SupCertificate, analysis, side=None) -> SupCertificate:
