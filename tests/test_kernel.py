@@ -224,6 +224,14 @@ def test_sign_by_sturm():
     rejects(sturm, (x ** 2 - 1) / (x - 1), x, 0, 2)                      # undefined at 1 (= x + 1 elsewhere)
     rejects(sturm, sp.sqrt(2) * x, x, 1, 2)
     rejects(sturm, x ** 2 + 1, x, 0, 1, want=-1)
+    # irrational ends: a rational within 2^-22 beside each, found exactly (no float of the end)
+    sturm(x ** 2 - 2, x, sp.sqrt(2), 2, lo_open=True)
+    rejects(sturm, x ** 2 - 2, x, sp.sqrt(2), 2)                          # the closed end is a root
+    sturm(x - 3, x, sp.E, 3, hi_open=True, want=-1)
+    rejects(sturm, x - 3, x, sp.E, sp.pi, want=-1)                        # 3 < pi: a root inside
+    sturm(x - 2 ** 80, x, sp.exp(60), sp.oo, hi_open=True)                # e^60 = 1.14e26 > 2^80 = 1.21e24
+    rejects(sturm, x - 2 ** 90, x, sp.exp(60), sp.oo, hi_open=True)       # 2^90 = 1.24e27 > e^60
+    rejects(sturm, x, x, 1, sp.exp(2000))       # red team 16a: an OverflowError (float of e^2000), now refused
 
 
 def test_sign_of_product():
@@ -368,6 +376,10 @@ def test_limit_rules():
     moved = K.limit_of_product(lim_tanh, lim_E, expr=sp.sqrt(3) * sp.sinh(s) * s / (sp.cosh(s) * sp.sqrt(s ** 2 + 1)))
     assert parse(moved.claim.other) == sp.sqrt(3)
     rejects(K.limit_of_product, lim_tanh, lim_E, expr=sp.sinh(s) * s / sp.sqrt(s ** 2 + 1))   # no cosh
+    # red team 16a: u = cosh^2 - sinh^2 is 1, so tanh(s) (u^2 - 1)/((u - 1)(u + 1)) is 0/0 at every s; over Q
+    # with cosh, sinh generalised it cancels to tanh(s), and "E -> 1" (then sup E >= 1) had been accepted
+    u = sp.cosh(s) ** 2 - sp.sinh(s) ** 2
+    rejects(K.limit_of_product, lim_tanh, expr=sp.tanh(s) * (u ** 2 - 1) / ((u - 1) * (u + 1)))
     low = K.sup_lower_from_limit(prod, lo=ZERO, lo_open=True)
     assert (low.claim.kind, low.claim.lo, low.claim.hi, parse(low.claim.other)) == ("sup_lower", sp.srepr(ZERO), "oo", 3)
     rejects(K.sup_lower_from_limit, ident, lo=ZERO, lo_open=True)

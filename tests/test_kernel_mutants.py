@@ -1411,6 +1411,8 @@ def test_certificate_checker_messages():
     assert refused(lambda c: c.update(assumptions=["arb", "sympy-core"])) == (
         "the certificate rests on ['arb', 'flint-polys', 'sympy-core', 'sympy-polys'], it lists ['arb', 'sympy-core']")
     assert refused(lambda c: "{") .startswith("not JSON: ")
+    assert refused(lambda c: c.update(assumptions=[1, "arb"])) == (      # red team 16a: sorted() raised TypeError
+        "the certificate rests on ['arb', 'flint-polys', 'sympy-core', 'sympy-polys'], it lists [1, 'arb']")
     # the listed assumptions may come in any order; only the last conclusion may be named
     ok = copy.deepcopy(good)
     ok["assumptions"] = list(reversed(ok["assumptions"]))
@@ -1429,22 +1431,32 @@ def test_command_line(tmp_path, capsys):
     (th, vs), _ = small_proof()
     up = K.sup_upper_by_sign(sturm(1 - x, x, 0, 1, strict=False), expr=x, bound=I1)
     ho = sturm(x + 1, x, 0, 1, hi_open=True)
+    # a limit at oo and a plane identity have no interval (red team 16a: the command stopped on their "")
+    half = K.sign_by_sturm(expr=sp.Rational(1, 2), var=x, lo=sp.Integer(1), hi=sp.oo, lo_open=False, hi_open=True,
+                           want=1, strict=False)
+    lim = K.limit_of_bounded(K.diverges_by_growth(half, expr=x, var=x, R=sp.Integer(1), rate="linear",
+                                                  k=sp.Rational(1, 2)), expr=sp.tanh(x))
+    e1, e2 = sp.symbols("e1 e2", real=True)
+    plane = K.identity_plane(lhs=(e1 + e2) ** 2, rhs=e1 ** 2 + 2 * e1 * e2 + e2 ** 2, x=e1, y=e2)
     good = tmp_path / "good.json"
-    good.write_text(json.dumps(to_certificate([th, vs, up, ho])))
+    good.write_text(json.dumps(to_certificate([th, vs, up, ho, lim, plane])))
     assert main([str(good)]) == 0
     assert capsys.readouterr().out.splitlines() == [
         f"{good}: checked sign tanh(x - 1) want=1 strict=True for x in (1, 2]",
         f"{good}: checked value_sign -1 + sqrt(2) want=1 strict=True",
         f"{good}: checked sup_upper x want=0 strict=False other=1 for x in [0, 1]",
         f"{good}: checked sign x + 1 want=1 strict=True for x in [0, 1)",
-        f"{good}: rests on arb, flint-polys, sympy-core, sympy-polys"]
+        f"{good}: checked limit_oo tanh(x) want=0 strict=False other=1 as x -> oo",
+        f"{good}: checked identity_plane (e1 + e2)**2 want=0 strict=False other=e1**2 + 2*e1*e2 + e2**2 "
+        f"for all (e1, e2)",
+        f"{good}: rests on arb, flint-polys, sympy-core, sympy-diff, sympy-polys"]      # (diverges_by_growth)
     bad = tmp_path / "bad.json"
     bad.write_text("{")
     missing = tmp_path / "missing.json"
     assert main([str(bad), str(good), str(missing)]) == 1
     out = capsys.readouterr().out.splitlines()
-    assert out[0].startswith(f"{bad}: REJECTED: Expecting property name") and len(out) == 7
-    assert out[6].startswith(f"{missing}: REJECTED: [Errno 2]")
+    assert out[0].startswith(f"{bad}: REJECTED: Expecting property name") and len(out) == 9
+    assert out[8].startswith(f"{missing}: REJECTED: [Errno 2]")
     wrong = tmp_path / "wrong.json"
     cert = to_certificate([vs])
     cert["version"] = 7
@@ -1461,7 +1473,7 @@ def test_command_line(tmp_path, capsys):
         assert main() == 0
     finally:
         sys.argv = old
-    assert capsys.readouterr().out.count("checked") == 4
+    assert capsys.readouterr().out.count("checked") == 6
 
 
 

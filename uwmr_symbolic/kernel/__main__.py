@@ -25,8 +25,8 @@ def main(argv=None) -> int:
             continue
         for t in theorems:
             c = t.claim
-            where = f" for {parse(c.var)} in {'(' if c.lo_open else '['}{parse(c.lo)}, " \
-                    f"{parse(c.hi)}{')' if c.hi_open else ']'}" if c.var else ""
+            x, span = c.var and parse(c.var), f"{'(['[not c.lo_open]}{c.lo and parse(c.lo)}, {parse(c.hi or 'oo')}{')]'[not c.hi_open]}"
+            where = "" if not c.var else f" as {x} -> oo" if c.kind == "limit_oo" else f" for {x} in {span}" if c.lo else f" for all {x}"
             print(f"{path}: checked {c.kind} {parse(c.expr)} want={c.want} strict={c.strict}"
                   f"{' other=' + str(parse(c.other)) if c.other else ''}{where}")
         print(f"{path}: rests on {', '.join(sorted(set().union(*[t.assumptions for t in theorems])))}")

@@ -101,6 +101,6 @@ def check_certificate(data) -> list[Theorem]:
         raise CertificateError("conclusions must name theorems of the certificate")
     out = [built[c] for c in concl]
     rests = sorted(set().union(*[t.assumptions for t in out]))
-    if rests != sorted(data["assumptions"]):
+    if not all(isinstance(a, str) for a in data["assumptions"]) or rests != sorted(data["assumptions"]):
         raise CertificateError(f"the certificate rests on {rests}, it lists {data['assumptions']}")
     return out

@@ -17,7 +17,10 @@ Claim semantics (I: an interval of the real line, ends exact):
 * sup_lower:  sup of E over the points of I where it is defined is >= bound
               (for every eps > 0 some x in I has E(x) > bound - eps);
 * identity_plane: lhs(x, y) = rhs(x, y) where both are defined (var: (x, y));
-* limit:      E is continuous on [lo, hi] and E(lo) = other, so E -> other as x -> lo+;
+* limit:      E -> other as x -> lo+, E defined on (lo, hi]: E continuous on
+              [lo, hi] with E(lo) = other (`continuous_at_end`), or E(lo)
+              undefined, a removable 0/0 (`limit_by_taylor`);
+* limit_oo:   E is defined on some [X, oo) and E(x) -> other as x -> oo;
 * continuous: E is defined and continuous at every point of (lo, hi), or
               of the plane when var is (x, y);
 * pieces:     on each open interval between lo, the cut points listed in
@@ -37,7 +40,6 @@ import contextlib
 import dataclasses
 import functools
 import json
-import math
 from dataclasses import dataclass, field
 
 import sympy as sp
@@ -372,7 +374,7 @@ def sign_by_cover(*, expr, var, cuts, want, strict=True, mean_value=False):
     E over [ci, c(i+1)] has that sign.  The closed boxes share their ends,
     so they tile [c0, cn] with no gap; range evaluation shows E defined on each.
     `mean_value`: a box whose range enclosure has no sign may show it by the
-    mean value form E(m) + E'(B)(B - m) (`arb.centered`), E' = sympy.diff(E)
+    mean value form E(m) + E'(B)(B - m) (`arb.centered`), E' = `derivative`(E)
     evaluable on the closed box B.  Every function the evaluator supports is
     differentiable, with SymPy's derivative, wherever that derivative's
     formula is evaluable (that of |u|, sign(u) u', only where u has one
@@ -400,7 +402,7 @@ def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
     """Taylor with the Lagrange remainder, one-sided.  Premises: E(c) = E'(c)
     = ... = E^(m-1)(c) = 0 exactly (`_const_sign`, confirmed by an Arb
     enclosure containing 0); E, ..., E^(m)
-    (`sympy.diff` applied k times) are all defined, hence continuous, on the
+    (`derivative` applied k times) are all defined, hence continuous, on the
     closed box B = [c, c+w] (side +1) or [c-w, c] (side -1); E^(m) has one
     strict sign sigma on every closed sub-box of B (cut at the optional exact
     increasing `cuts` from one end of B to the other).  Then for x in B,
@@ -422,7 +424,7 @@ def sign_by_taylor(*, expr, var, c, side, width, order, cuts=None):
 
 def _vanishing_to_order(e, var, c, cuts, m):
     """(E^(m), its strict sign on every closed box between the `cuts`, or 0)
-    once E, ..., E^(m) (`sympy.diff` applied k times) are shown defined,
+    once E, ..., E^(m) (`derivative` applied k times) are shown defined,
     hence continuous, on [cuts[0], cuts[-1]] and E(c) = ... = E^(m-1)(c) =
     0 exactly (`_const_sign`, confirmed by an Arb enclosure containing 0)."""
     for k in range(m + 1):
@@ -1244,7 +1246,9 @@ def _rational_beyond(c, side):
     certified by Arb."""
     if c in (OO, -OO) or c.is_Rational:
         return c
-    q = sp.Rational(math.floor(float(c) * 2 ** 24) + side * 2, 2 ** 24)
+    man, exp = evaluate(c, bits=256).lo.mid().man_exp()     # c within 2^-250 |c| (a float of c may overflow)
+    _need(exp < 1000, lambda: f"no rational bound found for {c}")
+    q = sp.Rational(sp.floor(int(man) * sp.Rational(2) ** (int(exp) + 24)) + side * 2, 2 ** 24)
     q = max(q, sp.Integer(0)) if side < 0 and _lt(0, c) else q
     _need(_lt(q, c) if side < 0 else _lt(c, q), lambda: f"no rational bound found for {c}")
     return q
@@ -1305,7 +1309,7 @@ def sign_by_substitution(outer, *bounds, inner):
 
 def sign_by_monotone(deriv, *, expr, var, R):
     """Mean value theorem on [R, oo), R > 0: want*E(R) > 0 (Arb at the exact
-    point R) and want*E' >= 0 on [R, oo) (premise about sympy.diff(E)), E
+    point R) and want*E' >= 0 on [R, oo) (premise about `derivative`(E)), E
     defined for every x > R (`defined_for_positive`) => for x >= R,
     want*E(x) = want*E(R) + want*E'(xi)(x - R) > 0."""
     d, _ = _is_sign(deriv)
@@ -1657,7 +1661,7 @@ def continuous_on_positive(*, expr, var):
 def diverges_by_growth(lower, *, expr, var, R, rate, k):
     """E(x) -> +oo as x -> oo.  Premise: G - k >= 0 on [R, oo), with k > 0
     exact and G = E' (rate "linear"), G = x E' (rate "log") or G = x^(1-p) E'
-    (rate a rational p, 0 < p < 1), E' being `sympy.diff(E)`; E defined for
+    (rate a rational p, 0 < p < 1), E' being `derivative`(E); E defined for
     every x >= R (`_defined`), R > 0.  By the mean value theorem
     E(x) >= E(R) + k (x - R); integrating E' >= k/x, resp. E' >= k x^(p-1),
     E(x) >= E(R) + k log(x/R), resp. E(R) + (k/p)(x^p - R^p); all tend to +oo."""
@@ -1786,7 +1790,9 @@ def limit_of_bounded(div, *, expr):
 def limit_of_product(*premises, expr):
     """E = k * E1 * ... * En for an exact constant k (E over the product, its
     non-rational subterms generalised, cancels to k over Q) with Ei -> ci as
-    x -> oo: E -> k c1 ... cn."""
+    x -> oo, and E defined for all x > 0 (`_defined`: the cancellation may
+    drop a 0/0 factor that leaves E defined nowhere): where E and every Ei
+    are defined, E = k E1 ... En, so E -> k c1 ... cn."""
     _need(premises and all(p.claim.kind == "limit_oo" for p in premises), "premises must be limits at oo")
     var = premises[0].claim.x()
     _need(all(p.claim.var == _s(var) for p in premises), "premises about one variable")
@@ -1795,7 +1801,8 @@ def limit_of_product(*premises, expr):
     k = sp.cancel(sp.together(g)).xreplace({d: u for u, d in fresh.items()})
     _need(not k.has(var, *fresh.values()) and _number(k) not in (OO, -OO),
           lambda: f"{e} is not a constant times the premises' product")
-    return Claim("limit_oo", _s(e), _s(var), hi="oo", other=_s(k * sp.Mul(*(parse(p.claim.other) for p in premises))))
+    c = k * sp.Mul(*(parse(p.claim.other) for p in premises))
+    return Claim("limit_oo", _s(e), _s(var), hi="oo", other=_s(c)), _defined(e, var)
 
 
 def sup_lower_from_limit(lim, *, lo, lo_open):
