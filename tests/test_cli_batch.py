@@ -558,7 +558,7 @@ def test_unusable_options_end_before_anything_is_verified_or_written(tmp_path):
         assert proc.stdout == "", args
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a", "b", "empty", "line.csv"]
     from uwmr_symbolic.cli import load_references
-    ref = load_references([f"line={tmp_path / 'line.csv'}"])["line"]
+    ref = load_references([f"line={tmp_path / 'line.csv'}"], 60)["line"]
     assert (ref.t0, ref.t1) == (0.0, 60.0)
 
 
@@ -598,6 +598,13 @@ def test_a_failed_simulation_shows_in_every_format(tmp_path):
     assert "title=uwmr-verify simulation fails (Design 1 (Jiang et al.)%2C circle)::continuous: convergence, " \
            "Lyapunov" in render_github([d])
     assert "circle:ok lemniscate:ok sim:circle:FAIL" in render_summary([d])
+    # the verdict line says what failed: nothing is refuted, no gain check fails (red team 16b: it read
+    # "REFUTED or a gain check fails", which the simulation's exit status 1 had set)
+    from uwmr_symbolic.report import status_text
+    d["exit_status"] = 1
+    assert status_text(d) == "a simulation check fails (nothing refuted, no gain check failed)"
+    d["properties"]["P3"] = dict(d["properties"]["P3"], verdict="refuted")
+    assert status_text(d) == "REFUTED or a gain check fails"
 
 
 def test_a_cache_hit_certificate_names_the_file_given_and_an_unwritable_cache_is_said(tmp_path):

@@ -130,6 +130,44 @@ def test_bad_reference_is_a_one_line_usage_error(tmp_path):
     assert len(run.stderr.strip().splitlines()) == 1 and "ref.csv" in run.stderr
 
 
+def test_reference_files_get_one_line_that_names_the_column_or_the_limit(tmp_path):
+    """Red team 16b: NaN in column x was reported as scipy's "`y` must contain
+    only finite values", a header-only file as numpy's warning and "found 1"
+    columns, a byte-order mark as a bad number, a Python reference that
+    loops for ever hung whatever --timeout said, and a reference faster than
+    the scenario's Vr_max was simulated, its V limit failure read as the
+    controller's.  Each is now one line on stderr with exit status 2."""
+    import numpy as np
+    src = (ROOT / "designs/design1_jiang.py").read_text()
+    (tmp_path / "d.py").write_text(src[:src.index("gains = {")] + (
+        "gains = {'custom': dict(k1=0.25, k2=0.7, lam=1.2, Vmax=0.75, Wmax=2.0, Vr_max=0.5, Wr_max=1.0)}\n"))
+    t = np.linspace(0, 30, 301)
+    x, y = 0.5 * np.sin(t / 2), 0.5 - 0.5 * np.cos(t / 2)         # a circle at 0.25 m/s
+    lines = [f"{float(a)!r},{float(b)!r},{float(c)!r}" for a, b, c in zip(t, x, y)]
+    rows = "\n".join(lines)
+    files = {"nan_x.csv": "t,x,y\n" + "\n".join(lines[:5] + ["0.5,nan,0"] + lines[6:]),
+             "header.csv": "t,x,y\n",
+             "fast.csv": "\n".join(f"{float(a)!r},{float(4 * b)!r},{float(4 * c)!r}" for a, b, c in zip(t, x, y)),
+             "hang.py": "while True:\n    pass\n"}          # fast.csv: the circle at 1 m/s > Vr_max = 0.5
+    for name, text in files.items():
+        (tmp_path / name).write_text(text)
+    (tmp_path / "latin.csv").write_bytes(b"t,x,y\n0,0,\xff\n")
+    expect = {"nan_x.csv": "column x is not a finite number in waypoint 6",
+              "header.csv": "no waypoints: expected rows t,x,y",
+              "fast.csv": "beyond Vr_max = 0.5 (bound (10) holds only for a reference within",
+              "hang.py": "the reference did not load within --timeout (3 s)",
+              "latin.csv": "not UTF-8 text (invalid start byte at byte 10); save it as UTF-8"}
+    for name, message in expect.items():
+        run = cli(tmp_path / "d.py", "--simulate", "--timeout", "3", "--no-cache", "--reference",
+                  f"custom={tmp_path / name}")
+        assert run.returncode == 2 and len(run.stderr.strip().splitlines()) == 1, (name, run.stderr)
+        assert message in run.stderr and "Traceback" not in run.stderr, (name, run.stderr)
+    # a byte-order mark before the header is no column name: read as the plain file
+    (tmp_path / "bom.csv").write_bytes(b"\xef\xbb\xbft,x,y\n" + rows.encode())
+    run = cli(tmp_path / "d.py", "--simulate", "--no-cache", "--reference", f"custom={tmp_path / 'bom.csv'}", "-q")
+    assert run.returncode == 0, run.stderr
+
+
 def test_codegen_refuses_an_unproved_design_without_verifying_it_again(tmp_path, capsys):
     """The batch's result says P3 is unknown: --codegen refused it only after
     a second verification in this process, which a red team saw run for

@@ -231,3 +231,58 @@ def test_monte_carlo_batch():
     assert not bad["ok"] and bad["witnesses"]
     w = bad["witnesses"][0]
     assert w["pose"] == pytest.approx(list(poses[w["index"]])) and "|W| > Wmax" in w["why"]
+
+
+def test_f_numeric_takes_what_numpy_lacks_and_what_overflows():
+    """U = lam f + e3^2/2 along a run (red team 16b): lambdify's numpy module
+    sent erf to math.erf, which takes no array (--simulate stopped with a
+    traceback on a proved design), and log cosh(300 |e|)/300 overflowed to
+    inf at |e| = 2.8, so the Lyapunov check was skipped in silence.  Values
+    against mpmath at 30 digits; an f nothing evaluates gives NaN."""
+    import mpmath
+    import sympy as sp
+    from uwmr_symbolic import e1, e2
+    from uwmr_symbolic.simulation.metrics import f_numeric
+    rho = e1 ** 2 + e2 ** 2
+    a, b = np.array([0.0, 0.3, 2.0, -5.0]), np.array([0.0, -0.4, 2.0, 1e3])
+    got = f_numeric(sp.erf(rho) + sp.sqrt(1 + rho) - 1)(a, b)
+    want = [mpmath.erf(x * x + y * y) + mpmath.sqrt(1 + x * x + y * y) - 1 for x, y in zip(a, b)]
+    assert np.allclose(got, [float(w) for w in want], rtol=1e-15, atol=0)
+    got = f_numeric(sp.log(sp.cosh(300 * sp.sqrt(rho))) / 300)(a, b)
+    with mpmath.workdps(30):
+        want = [mpmath.log(mpmath.cosh(300 * mpmath.sqrt(x * x + y * y))) / 300 for x, y in zip(a, b)]
+    assert np.all(np.isfinite(got)) and np.allclose(got, [float(w) for w in want], rtol=1e-14, atol=0)
+    t = sp.Symbol("t")
+    assert np.all(np.isnan(f_numeric(sp.Integral(sp.exp(-t ** 2 * rho), (t, 0, sp.Function("g")(e1))))(a, b)))
+
+
+def test_reference_speeds_against_the_declared_limits():
+    """The reference's largest |vr|, |wr| on a 1 ms grid against a scenario's
+    Vr_max, Wr_max (red team 16b: a circle scenario declaring Vr_max = 0.3
+    ran the paper's circle at 0.5 m/s, and the V limit failure it caused
+    read as the controller's).  The paper's lemniscate reaches
+    9 pi sqrt(5)/100 = 0.6322330 at t = 0, above the 0.6322 of its Table 1."""
+    from uwmr_symbolic.simulation.api import reference_speeds
+    ok = reference_speeds(circle(), {"Vr_max": 0.5, "Wr_max": 1.0})
+    assert ok["within"] and ok["beyond"] is None and ok["max_abs_vr"] == pytest.approx(0.5, rel=1e-12)
+    low = reference_speeds(circle(), {"Vr_max": 0.3, "Wr_max": 1.0})
+    assert not low["within"] and low["beyond"].startswith("|vr| reaches 0.5 at t = 0 s, beyond Vr_max = 0.3")
+    lem = reference_speeds(lemniscate(), {"Vr_max": 0.6322, "Wr_max": 1.8320})
+    assert lem["max_abs_vr"] == pytest.approx(9 * math.pi * math.sqrt(5) / 100, rel=1e-9)
+    assert not lem["within"] and "|wr|" not in lem["beyond"]
+
+
+def test_a_design_whose_scenario_understates_the_reference_says_so(tmp_path):
+    """Design 1 with Vmax = 0.55, Wmax = 1.25 and Vr_max = 0.3, Wr_max = 0.2
+    declared for the circle (bound (10) passes for them: 0.3 + 0.25 <= 0.55,
+    0.2 + 1.2 0.3 1/2 + 0.7 = 1.08 <= 1.25): the paper's circle runs at
+    0.5 m/s, 1 rad/s, the commands leave Vmax, and the report says the
+    reference is beyond the declared limits rather than only "V limit"."""
+    src = (DESIGNS / "design1_jiang.py").read_text()
+    (tmp_path / "d.py").write_text(src[:src.index("gains = {")] + (
+        "gains = {'circle': dict(k1=0.25, k2=0.7, lam=1.2, Vmax=0.55, Wmax=1.25, Vr_max=0.3, Wr_max=0.2)}\n"))
+    res = simulate_design(tmp_path / "d.py", baseline=False)["circle"]
+    assert not res["reference_speeds"]["within"] and not res["ok"]
+    assert res["continuous"]["failed"][0] == "V limit (the reference exceeds Vr_max or Wr_max)"
+    assert "the reference is beyond the scenario's declared limits: |vr| reaches 0.5" in render_simulation_text(
+        {"circle": res})

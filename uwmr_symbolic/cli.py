@@ -174,11 +174,13 @@ class UsageError(Exception):
     """A command-line argument cannot be used (exit 2, one line)."""
 
 
-def load_references(specs) -> dict:
-    """--reference SCENARIO=FILE: waypoints (CSV t,x,y) or pose(t) from a Python file."""
+def load_references(specs, timeout: float) -> dict:
+    """--reference SCENARIO=FILE: waypoints (CSV t,x,y) or pose(t) from a Python file,
+    each read (and checked against (2)) within `timeout` seconds."""
     import numpy as np
     import runpy
     from .simulation import ReferenceError, from_function, from_waypoints
+    from .timeouts import TimeLimit, time_limit
     refs = {}
     for spec in specs:
         name, sep, file = spec.partition("=")
@@ -186,19 +188,10 @@ def load_references(specs) -> dict:
             raise UsageError(f"--reference {spec!r}: expected SCENARIO=FILE")
         path = Path(file)
         try:
-            if path.suffix == ".csv":
-                lines = path.read_text(encoding="utf-8").splitlines()
-                header = next((i for i, line in enumerate(lines) if line.strip() and not line.startswith("#")), 0)
-                named = lines and "".join(lines[header].split()).lower() == "t,x,y"    # the columns' names
-                data = np.loadtxt(lines[header + 1:] if named else lines, delimiter=",", ndmin=2, comments="#")
-                if data.shape[1] != 3:
-                    raise UsageError(f"{path}: expected three columns t,x,y, found {data.shape[1]}")
-                refs[name] = from_waypoints(data[:, 0], data[:, 1], data[:, 2], name=name)
-            else:
-                ns = runpy.run_path(str(path))
-                if not callable(ns.get("pose")) or "duration" not in ns:
-                    raise UsageError(f"{path}: define pose(t) -> (xr, yr, thr, vr, wr) and duration")
-                refs[name] = from_function(ns["pose"], 0.0, float(ns["duration"]), name=name)
+            with time_limit(timeout):
+                refs[name] = _read_reference(path, name, np, runpy, from_function, from_waypoints)
+        except TimeLimit:
+            raise UsageError(f"{path}: the reference did not load within --timeout ({timeout:g} s)") from None
         except UsageError:
             raise
         except (OSError, ValueError, ReferenceError) as exc:
@@ -206,6 +199,40 @@ def load_references(specs) -> dict:
         except Exception as exc:  # the user's file raised
             raise UsageError(f"{path}: raised {exc.__class__.__name__}: {exc}") from None
     return refs
+
+
+def _read_reference(path, name, np, runpy, from_function, from_waypoints):
+    """One --reference file as a Reference (see `load_references`): a CSV's
+    columns checked by name (finite numbers, some rows) before the spline."""
+    import warnings
+    if path.suffix != ".csv":
+        ns = runpy.run_path(str(path))
+        if not callable(ns.get("pose")) or "duration" not in ns:
+            raise UsageError(f"{path}: define pose(t) -> (xr, yr, thr, vr, wr) and duration")
+        return from_function(ns["pose"], 0.0, float(ns["duration"]), name=name)
+    try:
+        lines = path.read_text(encoding="utf-8-sig").splitlines()      # (a byte-order mark is no column name)
+    except UnicodeDecodeError as exc:
+        raise UsageError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start}); save it as UTF-8") from None
+    header = next((i for i, line in enumerate(lines) if line.strip() and not line.startswith("#")), 0)
+    named = lines and "".join(lines[header].split()).lower() == "t,x,y"    # the columns' names
+    rows = [line for line in (lines[header + 1:] if named else lines) if line.strip() and not line.startswith("#")]
+    if not rows:
+        raise UsageError(f"{path}: no waypoints: expected rows t,x,y (numbers) after the optional header")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")         # numpy's and scipy's warnings: the checks below say it in one line
+        try:
+            data = np.loadtxt(rows, delimiter=",", ndmin=2, comments="#")
+        except ValueError as exc:   # (numpy's hint about `usecols` does not apply here)
+            raise UsageError(f"{path}: expected comma-separated numbers t,x,y in every waypoint row: "
+                             f"{str(exc).split('; use ')[0].rstrip('.')}") from None
+        if data.shape[1] != 3:
+            raise UsageError(f"{path}: expected three columns t,x,y, found {data.shape[1]}")
+        for j, column in enumerate("txy"):
+            bad = np.flatnonzero(~np.isfinite(data[:, j]))
+            if bad.size:
+                raise UsageError(f"{path}: column {column} is not a finite number in waypoint {bad[0] + 1}")
+        return from_waypoints(data[:, 0], data[:, 1], data[:, 2], name=name)
 
 
 class Reports:
@@ -228,9 +255,11 @@ class Reports:
 def run_simulations(results, args, refs: dict, reports: Reports) -> int:
     """--simulate: attach result["simulation"]; 1 if a check failed, 3 if a
     design's simulations did not finish within the larger of --timeout and
-    SIMULATION_SECONDS."""
+    SIMULATION_SECONDS, 2 if a --reference leaves a scenario's Vr_max or
+    Wr_max (that design is not simulated)."""
     from .codegen import CodegenInvalid
     from .simulation import simulate_design
+    from .simulation.api import reference_speeds
     from .timeouts import TimeLimit, time_limit
     status = 0
     for d in results:
@@ -242,6 +271,14 @@ def run_simulations(results, args, refs: dict, reports: Reports) -> int:
         report = reports(d["design"])
         if report.design is None or not report.design.gains:
             print(f"{d['design']}: not simulated: the design has no gain scenarios", file=sys.stderr)
+            continue
+        speeds = {n: reference_speeds(refs[n], g) for n, g in report.design.gains.items() if n in refs}
+        beyond = [f"--reference {n}: {v['beyond']}" for n, v in speeds.items() if not v["within"]]
+        if beyond:      # bound (10) was checked for references within the scenario's Vr_max and Wr_max
+            print(f"{d['design']}: not simulated: {'; '.join(beyond)} (bound (10) holds only for a reference "
+                  f"within the scenario's Vr_max and Wr_max: raise them in the design's gains or slow the "
+                  f"reference)", file=sys.stderr)
+            status = worst_status([status, 2])
             continue
         try:
             with time_limit(max(args.timeout, SIMULATION_SECONDS)):
@@ -427,7 +464,7 @@ def _main(args) -> int:
             if other != path:
                 raise UsageError(f"{other} and {path} have the same name {Path(path).stem!r}, and --codegen and "
                                  f"--certificate write one folder or file per name; rename one")
-    refs = load_references(args.reference) if simulate else {}      # before anything is verified or written
+    refs = load_references(args.reference, args.timeout) if simulate else {}      # before anything is verified or written
     cache = None if args.no_cache else ResultCache(args.cache_dir)
     why = cache and cache.unwritable()
     if why:

@@ -65,7 +65,9 @@ extern "C" {
  * number, within 4 ulps plus that term, at most 2.3e-308 KF in double,
  * 1.2e-38 KF in float); it was also checked against it (see below).
  * Choose the gains so that |vr|max + k1 <= Vmax and |wr|max + lam |vr|max
- * KF + k2 <= Wmax: the commands then stay within the limits (6).
+ * KF + k2 <= Wmax: the commands then stay within the limits (6) up to
+ * that rounding (where a margin of bound (10) is 0, |v| may exceed Vmax by
+ * an ulp or two; keep a margin of a few ulps where that matters).
  *
  * Return value: UWMR_OK (0) on success, otherwise one of the codes below.
  * On every nonzero return the outputs are set to 0 (a safe stop: v = w = 0,

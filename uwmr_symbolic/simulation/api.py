@@ -28,8 +28,9 @@ import numpy as np
 from . import reference as refs
 from .controllers import load_controllers
 from .loop import run_continuous, run_digital
-from .metrics import POS_TOL, ANG_TOL, metrics
+from .metrics import ANG_TOL, POS_TOL, f_numeric, metrics
 
+REFERENCE_SLACK = 1e-9
 BASELINE = Path(__file__).resolve().parents[2] / "designs" / "unsaturated_baseline.py"
 
 
@@ -84,10 +85,22 @@ def _float_gains(g: dict) -> dict:
     return {k: float(v) for k, v in g.items()}
 
 
-def _f_numeric(design):
-    import sympy as sp
-    from .. import e1, e2
-    return sp.lambdify((e1, e2), design.f, modules="numpy")
+def reference_speeds(ref: refs.Reference, gains: dict, dt: float = 1e-3) -> dict:
+    """The reference's largest |vr| and |wr| on a grid of step dt (a lower
+    bound of each sup) against the scenario's Vr_max and Wr_max, with which
+    bound (10) was checked: `within` is false when the grid shows the
+    reference beyond them by more than REFERENCE_SLACK (relative: the
+    rounding of a spline's derivative through long or far waypoints), and
+    `beyond` then says so in one line."""
+    t = np.linspace(ref.t0, ref.t1, max(2, int(math.ceil((ref.t1 - ref.t0) / dt)) + 1))
+    _, _, _, vr, wr = ref(t)
+    out = dict(max_abs_vr=float(np.max(np.abs(vr))), max_abs_wr=float(np.max(np.abs(wr))),
+               Vr_max=float(gains["Vr_max"]), Wr_max=float(gains["Wr_max"]))
+    beyond = [f"|{n}| reaches {out['max_abs_' + n]:.9g} at t = {t[np.argmax(np.abs(a))]:.6g} s, beyond "
+              f"{n.capitalize()}_max = {out[n.capitalize() + '_max']:.6g}"
+              for n, a in (("vr", vr), ("wr", wr)) if out["max_abs_" + n] > out[n.capitalize() + "_max"] * (1 + REFERENCE_SLACK)]
+    out.update(within=not beyond, beyond="; ".join(beyond) or None)
+    return out
 
 
 def _verified(report) -> bool:
@@ -104,7 +117,7 @@ def run_pair(ctl, kind, sc, gains, backends=("c", "python"), **kw):
 def simulate_scenario(ctl, design, sc: Scenario, gains: dict, verified=True, backends=("c", "python"),
                       delay=0, noise=None, seed=0, kinds=("continuous", "digital"), keep=False) -> dict:
     g = _float_gains(gains)
-    f_num = _f_numeric(design)
+    f_num = f_numeric(design.f)
     out = {}
     for kind in kinds:
         kw = dict(delay=delay, noise=noise, seed=seed) if kind == "digital" else {}
@@ -130,7 +143,7 @@ def simulate_38(base_design, sc: Scenario, gains, keep=False) -> dict:
     from .controllers import unsaturated_38
     g = _float_gains(gains)
     tr = run_continuous(unsaturated_38, sc.reference, sc.pose0, g)
-    m = metrics(tr, g, sc.window, f_num=_f_numeric(base_design), lam=g["lam"], verified=False)
+    m = metrics(tr, g, sc.window, f_num=f_numeric(base_design.f), lam=g["lam"], verified=False)
     m["backend"] = "(38) as printed, numpy"
     m["integrator"] = dict(method=tr.info["method"], rtol=tr.info["rtol"], atol=tr.info["atol"],
                            nfev=tr.info["nfev"])
@@ -192,6 +205,11 @@ def simulate_design(design_path, report=None, monte_carlo=0, seed=0, references=
         entry["scenario"] = dict(description=sc.description, initial_pose=list(sc.pose0),
                                  duration=sc.duration, rms_window=list(sc.window),
                                  reference=sc.reference.description)
+        entry["reference_speeds"] = speeds = reference_speeds(sc.reference, gains)
+        for kind in ("continuous", "digital"):      # a limit exceeded is not the controller's fault alone
+            if not speeds["within"]:
+                entry[kind]["failed"] = [f"{c} (the reference exceeds Vr_max or Wr_max)" if c in ("V limit", "W limit")
+                                         else c for c in entry[kind]["failed"]]
         if monte_carlo:
             entry["monte_carlo"] = monte_carlo_scenario(ctl, sc, gains, monte_carlo, seed=seed,
                                                         progress=progress, delay=delay)
@@ -276,6 +294,12 @@ def render_simulation_text(result: dict) -> str:
                 f"{math.hypot(fe['x'], fe['y']):>9.2e} {'yes' if m['converged'] else 'no':>4} "
                 f"{_num(m['max_lyapunov_increase'], '{:.1e}'):>8} {_num(m['c_python_max_diff'], '{:.1e}'):>8}  "
                 + ("ok" if m["ok"] else "FAILED: " + ", ".join(m["failed"])) + ("  (comparison only)" if kind.startswith("baseline") else ""))
+        if not entry["reference_speeds"]["within"]:
+            lines.append(f"  the reference is beyond the scenario's declared limits: {entry['reference_speeds']['beyond']} "
+                         f"(bound (10) was checked with them, so it does not cover this run)")
+        for kind in ("continuous", "baseline"):
+            if (entry.get(kind) or {}).get("lyapunov_note"):
+                lines.append(f"  {kind}: {entry[kind]['lyapunov_note']}: max dU unchecked")
         m = entry["continuous"]
         lines.append(f"  limits Vmax = {m['Vmax']}, Wmax = {m['Wmax']} ('!' = exceeded); RMS over "
                      f"{sc['rms_window'][0]:g}-{sc['rms_window'][1]:g} s; converged: final |(xt, yt)| <= "

@@ -20,6 +20,7 @@
 """
 from __future__ import annotations
 
+import contextlib
 import math
 
 import numpy as np
@@ -28,6 +29,40 @@ POS_TOL, ANG_TOL = 0.01, 0.01
 LIMIT_SLACK = 1e-12
 LYAP_REL_TOL = 1e-7
 C_PY_TOL = {"continuous": 1e-6, "digital": 1e-9}
+SLOW_POINTS = 20_000        # at most this many points of a run evaluated by mpmath (see `f_numeric`)
+
+
+def f_numeric(f):
+    """f(e1, e2) on arrays, as doubles, for U = lam f + e3^2/2 (15): numpy
+    with scipy.special (erf, gamma and the like, which numpy lacks), and, at
+    points where that gives no finite value (an overflow inside the formula:
+    log cosh(300 |e|) at |e| = 3) or cannot take f at all, mpmath at 30
+    digits, point by point (at most SLOW_POINTS of them).  NaN where neither
+    gives a finite value."""
+    import mpmath
+    import sympy as sp
+
+    from .. import e1, e2
+    fast = slow = None
+    with contextlib.suppress(Exception):
+        fast = sp.lambdify((e1, e2), f, modules=["numpy", "scipy"])
+    with contextlib.suppress(Exception):
+        slow = sp.lambdify((e1, e2), f, modules="mpmath")
+
+    def values(a, b):
+        a, b = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(b, dtype=float))
+        out = np.full(a.shape, np.nan)
+        if fast is not None:
+            with np.errstate(all="ignore"), contextlib.suppress(Exception):
+                out = np.asarray(fast(a, b), dtype=float) * np.ones(a.shape)
+        bad = np.flatnonzero(~np.isfinite(out))
+        if slow is not None and 0 < bad.size <= SLOW_POINTS:
+            with mpmath.workdps(30):
+                for i in bad:
+                    with contextlib.suppress(Exception):
+                        out.flat[i] = float(slow(mpmath.mpf(a.flat[i]), mpmath.mpf(b.flat[i])))   # (complex: NaN)
+        return out
+    return values
 
 
 def _f(x) -> float | None:
@@ -73,8 +108,12 @@ def metrics(tr, limits: dict, window, f_num=None, lam=None, other=None, verified
                c_python_max_diff=None, c_python_ok=None)
     if tr.kind == "continuous" and f_num is not None:
         with np.errstate(all="ignore"):
-            U = lam * np.asarray(f_num(e1, e2), dtype=float) * np.ones_like(e1) + 0.5 * e3 * e3
-        if np.all(np.isfinite(U)):
+            U = lam * f_num(e1, e2) + 0.5 * e3 * e3
+        if not np.all(np.isfinite(U)):      # said, not skipped in silence
+            j = int(np.flatnonzero(~np.isfinite(U))[0])
+            out["lyapunov_note"] = (f"U = lam f(e1, e2) + e3^2/2 has no finite double value (or f could not be evaluated) at "
+                                    f"{int(np.count_nonzero(~np.isfinite(U)))} points, first t = {float(tr.t[j]):g} s")
+        else:
             inc = float(np.max(U - np.minimum.accumulate(U)))
             tol = LYAP_REL_TOL * (1.0 + abs(float(U[0])))
             out.update(max_lyapunov_increase=inc, lyapunov_tol=tol,

@@ -201,7 +201,11 @@ def from_waypoints(t, x, y, name: str = "waypoints") -> Reference:
     t = np.asarray(t, dtype=float)
     if t.ndim != 1 or len(t) < 4 or np.any(np.diff(t) <= 0):
         raise ReferenceError("waypoints: need at least 4 samples with strictly increasing times")
-    sx, sy = CubicSpline(t, np.asarray(x, dtype=float)), CubicSpline(t, np.asarray(y, dtype=float))
+    try:
+        sx, sy = CubicSpline(t, np.asarray(x, dtype=float)), CubicSpline(t, np.asarray(y, dtype=float))
+    except ValueError as exc:       # scipy names its own arguments (`dydx`), not the columns
+        raise ReferenceError(f"waypoints: no cubic spline through them in double precision ({exc}); "
+                             f"give times and positions of moderate size") from None
     return from_path(name, lambda s: (sx(s), sy(s)), lambda s: (sx(s, 1), sy(s, 1)),
                      lambda s: (sx(s, 2), sy(s, 2)), float(t[0]), float(t[-1]),
                      f"cubic spline through {len(t)} waypoints")

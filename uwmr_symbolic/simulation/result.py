@@ -62,13 +62,10 @@ class SimulationResult:
     def lyapunov(self, kind: str = "continuous") -> tuple[np.ndarray, np.ndarray]:
         """(t, U(t)) with U = lam f(e1, e2) + e3^2/2, the function (15) whose
         derivative (19) is <= 0 along the closed loop."""
-        from .. import e1, e2
+        from .metrics import f_numeric
         tr = self.trajectories[kind]
-        f_num = sp.lambdify((e1, e2), self.f, modules="numpy")
         a, b, c = tr.e
-        with np.errstate(all="ignore"):
-            U = self.gains["lam"] * np.asarray(f_num(a, b), dtype=float) * np.ones_like(a) + 0.5 * c * c
-        return tr.t, U
+        return tr.t, self.gains["lam"] * f_numeric(self.f)(a, b) + 0.5 * c * c
 
     def to_dict(self) -> dict:
         """The checks as plain JSON-able data (no trajectories)."""
