@@ -1128,7 +1128,8 @@ def test_a_sup_of_the_p6_quotient_near_the_origin_is_enclosed_narrowly(tmp_path)
     # spike to about 2 at s = 0.06, inside (0, 1/8] where the search bounded it by sup F'' only: the report
     # read sup F'(s)/s in [0.995, 468.65] and took k = 530.  Bisection on mpmath's derivative below.
     report, v = verify(tmp_path, "K, a = 10**5, Rational(36, 10**4)\n"
-                                 "f = sqrt(rho)*atan(sqrt(rho)) - log(1 + rho)/2 + (atan(K*(rho - a)) + atan(K*a))/(2*K)\n")
+                                 "f = sqrt(rho)*atan(sqrt(rho)) - log(1 + rho)/2 + "
+                                 "(atan(K*(rho - a)) + atan(K*a))/(2*K)\n")
     E = lambda s: mpmath.atan(s) / s + 1 / (1 + 10 ** 10 * (s ** 2 - mpmath.mpf(36) / 10 ** 4) ** 2)
     lo, hi = mpmath.mpf("0.0599"), mpmath.mpf("0.0601")
     for _ in range(100):

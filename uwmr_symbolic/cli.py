@@ -464,7 +464,7 @@ def _main(args) -> int:
             if other != path:
                 raise UsageError(f"{other} and {path} have the same name {Path(path).stem!r}, and --codegen and "
                                  f"--certificate write one folder or file per name; rename one")
-    refs = load_references(args.reference, args.timeout) if simulate else {}      # before anything is verified or written
+    refs = load_references(args.reference, args.timeout) if simulate else {}  # before anything is verified or written
     cache = None if args.no_cache else ResultCache(args.cache_dir)
     why = cache and cache.unwritable()
     if why:

@@ -214,7 +214,8 @@ def _check_stem(stem: str) -> None:
     bad = next((ch for ch in stem if ch in '"\\$;' or not ch.isprintable()), None)
     if bad is not None:
         raise CodegenInvalid(f"{stem}: the design file's name holds {bad!r}, which the generated #include and "
-                             f"CMakeLists.txt cannot quote; rename the file (letters, digits, '_', '-', '.', spaces)", unprintable=True)
+                             f"CMakeLists.txt cannot quote; rename the file (letters, digits, '_', '-', '.', spaces)",
+                             unprintable=True)
 
 
 def build(design_path, force=False, report=None) -> tuple[LawModel, dict[str, str]]:

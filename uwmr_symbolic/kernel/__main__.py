@@ -23,10 +23,10 @@ def main(argv=None) -> int:
             print(f"{path}: REJECTED: {exc}")
             status = 1
             continue
-        for t in theorems:
-            c = t.claim
-            x, span = c.var and parse(c.var), f"{'(['[not c.lo_open]}{c.lo and parse(c.lo)}, {parse(c.hi or 'oo')}{')]'[not c.hi_open]}"
-            where = "" if not c.var else f" as {x} -> oo" if c.kind == "limit_oo" else f" for {x} in {span}" if c.lo else f" for all {x}"
+        for c in [t.claim for t in theorems]:
+            x, lo, hi = c.var and parse(c.var), c.lo and parse(c.lo), parse(c.hi or "oo")
+            span = f" for {x} in {'(['[not c.lo_open]}{lo}, {hi}{')]'[not c.hi_open]}" if c.lo else f" for all {x}"
+            where = "" if not x else f" as {x} -> oo" if c.kind == "limit_oo" else span
             print(f"{path}: checked {c.kind} {parse(c.expr)} want={c.want} strict={c.strict}"
                   f"{' other=' + str(parse(c.other)) if c.other else ''}{where}")
         print(f"{path}: rests on {', '.join(sorted(set().union(*[t.assumptions for t in theorems])))}")

@@ -97,8 +97,9 @@ def reference_speeds(ref: refs.Reference, gains: dict, dt: float = 1e-3) -> dict
     out = dict(max_abs_vr=float(np.max(np.abs(vr))), max_abs_wr=float(np.max(np.abs(wr))),
                Vr_max=float(gains["Vr_max"]), Wr_max=float(gains["Wr_max"]))
     beyond = [f"|{n}| reaches {out['max_abs_' + n]:.9g} at t = {t[np.argmax(np.abs(a))]:.6g} s, beyond "
-              f"{n.capitalize()}_max = {out[n.capitalize() + '_max']:.6g}"
-              for n, a in (("vr", vr), ("wr", wr)) if out["max_abs_" + n] > out[n.capitalize() + "_max"] * (1 + REFERENCE_SLACK)]
+              f"{n.capitalize()}_max = {limit:.6g}"
+              for n, a, limit in (("vr", vr, out["Vr_max"]), ("wr", wr, out["Wr_max"]))
+              if out["max_abs_" + n] > limit * (1 + REFERENCE_SLACK)]
     out.update(within=not beyond, beyond="; ".join(beyond) or None)
     return out
 
@@ -295,8 +296,9 @@ def render_simulation_text(result: dict) -> str:
                 f"{_num(m['max_lyapunov_increase'], '{:.1e}'):>8} {_num(m['c_python_max_diff'], '{:.1e}'):>8}  "
                 + ("ok" if m["ok"] else "FAILED: " + ", ".join(m["failed"])) + ("  (comparison only)" if kind.startswith("baseline") else ""))
         if not entry["reference_speeds"]["within"]:
-            lines.append(f"  the reference is beyond the scenario's declared limits: {entry['reference_speeds']['beyond']} "
-                         f"(bound (10) was checked with them, so it does not cover this run)")
+            lines.append(f"  the reference is beyond the scenario's declared limits: "
+                         f"{entry['reference_speeds']['beyond']} (bound (10) was checked with them, so it does not "
+                         f"cover this run)")
         for kind in ("continuous", "baseline"):
             if (entry.get(kind) or {}).get("lyapunov_note"):
                 lines.append(f"  {kind}: {entry[kind]['lyapunov_note']}: max dU unchecked")

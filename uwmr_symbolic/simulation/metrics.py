@@ -111,8 +111,9 @@ def metrics(tr, limits: dict, window, f_num=None, lam=None, other=None, verified
             U = lam * f_num(e1, e2) + 0.5 * e3 * e3
         if not np.all(np.isfinite(U)):      # said, not skipped in silence
             j = int(np.flatnonzero(~np.isfinite(U))[0])
-            out["lyapunov_note"] = (f"U = lam f(e1, e2) + e3^2/2 has no finite double value (or f could not be evaluated) at "
-                                    f"{int(np.count_nonzero(~np.isfinite(U)))} points, first t = {float(tr.t[j]):g} s")
+            out["lyapunov_note"] = (f"U = lam f(e1, e2) + e3^2/2 has no finite double value (or f could not be "
+                                    f"evaluated) at {int(np.count_nonzero(~np.isfinite(U)))} points, first t = "
+                                    f"{float(tr.t[j]):g} s")
         else:
             inc = float(np.max(U - np.minimum.accumulate(U)))
             tol = LYAP_REL_TOL * (1.0 + abs(float(U[0])))
