@@ -1140,3 +1140,30 @@ def test_a_sup_of_the_p6_quotient_near_the_origin_is_enclosed_narrowly(tmp_path)
                                                report.properties["P6"].reason).groups())
     assert low <= top <= up and up - low < Fraction(1, 10 ** 6)
     assert sp.Rational(top) <= sp.sympify(report.properties["P6"].reason.split()[2]) <= 3
+
+
+def test_the_p6_narrowing_near_the_origin_keeps_the_bound_beyond_it(tmp_path):
+    # Red team 17: narrowing the bound of F'(s)/s on (0, 1/8] dropped the branch and bound's upper bound beyond
+    # 1/8, so the enclosure shrank to [lower, lower] below a sup that lies beyond 1/8.
+    # (1) f = rho + (1 - sin(133 rho)/(133 rho))/133 (0 at the origin): by hand F'(s)/s = 2 dF/drho
+    #     = 2 (1 - phi'(133 rho)), phi(x) = sin(x)/x, so sup = 2 (1 - min phi'), at phi''(x) = 0 near x = 2.08,
+    #     s = sqrt(x/133) = 0.1251 (bisection below).  It had printed [2.872363624, 2.872363625], 9.5e-9 low.
+    report, v = verify(tmp_path, "f = Piecewise((0, Eq(rho, 0)), (rho + (1 - sp.sin(133*rho)/(133*rho))/133, True))\n",
+                       kernel_only=False)
+    d1 = lambda x: (x * mpmath.cos(x) - mpmath.sin(x)) / x ** 2
+    d2 = lambda x: mpmath.diff(d1, x)
+    lo, hi = mpmath.mpf(1), mpmath.mpf(3)
+    for _ in range(100):
+        lo, hi = ((lo + hi) / 2, hi) if d2((lo + hi) / 2) < 0 else (lo, (lo + hi) / 2)
+    top = Fraction(str(mpmath.nstr(2 * (1 - d1(lo)), 30)))
+    low, up = (Fraction(x) for x in re.search(r"sup F'\(s\)/s = \[([0-9.]+), ([0-9.]+)\]",
+                                               report.properties["P6"].reason).groups())
+    assert v["P6"] == "proved" and low <= top <= up
+    # (2) the same with a sup approached only at infinity: F'(s)/s = 2 (11/10 - 1/l + rho/((1 + rho) l^2))
+    #     - phi(Om rho)/5, l = 1 + log(1 + rho), tends to 11/5 from below like 1/log s (Om = 8526); k had been
+    #     2.199759 < 11/5, so h = F'(s)/(k s) > 1 far out (2.1998 at s = e^5000).
+    report, v = verify(tmp_path, "l, Om = 1 + log(1 + rho), 8526\n"
+                                 "f = Piecewise((0, Eq(rho, 0)), (rho/10 + rho - rho/l + "
+                                 "Rational(1, 10)*(1 - sp.sin(Om*rho)/(Om*rho))/Om, True))\n", kernel_only=False)
+    k = sp.sympify(report.properties["P6"].reason.split()[2])
+    assert v["P6"] == "proved" and k >= sp.Rational(11, 5)

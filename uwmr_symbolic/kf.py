@@ -279,7 +279,7 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
     early = far_out_trend(exprs[-1], S) >= 0     # else the limit at oo only if no bound is found (it is slow)
     if early and (unbounded := _unbounded_at_infinity(exprs[-1], name)):
         return unbounded
-    lower, upper, top, near = None, Fraction(0), None, None
+    lower, upper, top, near, far = None, Fraction(0), None, None, Fraction(0)   # far: the pieces' bounds beyond
     floor = _quick_lower(exprs, pieces) if len(pieces) > 2 else None   # pieces below it need no tight sup
     for i, (E, piece) in enumerate(zip(exprs, pieces)):
         lo = piece.lo
@@ -297,9 +297,9 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
         if enc.upper is None:
             upper = None
         elif upper is not None:
-            upper = max(upper, enc.upper)
+            upper, far = max(upper, enc.upper), max(far, enc.upper)
     if near is not None and upper is not None and lower is not None and lower < upper == near:
-        lower, upper = _narrower_near_zero(exprs[0], near_zero, lower, upper)
+        lower, upper = _narrower_near_zero(exprs[0], near_zero, lower, upper, far)
     if upper is None or lower is None:
         return _unbounded_at_infinity(exprs[-1], name, limit=not early, growth=True) or \
             SupCertificate(lower, None, None, None, f"branch and bound found no finite bound for {name}")
@@ -344,13 +344,15 @@ def _near_zero_upper(E, near_zero, w: Fraction):
     return None if box is None else box.upper_fraction()
 
 
-def _narrower_near_zero(E, near_zero, lower, upper):
+def _narrower_near_zero(E, near_zero, lower, upper, far):
     """The sup bounds (lower, upper) of E over (0, oo) when the bound on
     (0, NEAR_ZERO] (`_near_zero_upper`) set `upper` above the sup `lower`
     seen: that bound on (0, w] for w = NEAR_ZERO/8, /64, /512 with the branch
     and bound between w and NEAR_ZERO (a short one: the cancellation near 0
-    makes it slow; its lower bound raises `lower`), the first at or below
-    `lower`; else the smallest found."""
+    makes it slow; its lower bound raises `lower`) and `far`, the bound of E
+    beyond NEAR_ZERO (red team 17: without it the enclosure of a sup at
+    s > NEAR_ZERO shrank to [lower, lower], below the true sup), the first
+    at or below `lower`; else the smallest found."""
     top, w = Fraction(NEAR_ZERO), Fraction(NEAR_ZERO)
     for _ in range(3):
         w /= 8
@@ -361,7 +363,7 @@ def _narrower_near_zero(E, near_zero, lower, upper):
         if mid.upper is None:
             break
         lower = lower if mid.lower is None else max(lower, mid.lower)
-        upper = min(upper, max(near, mid.upper, lower))
+        upper = min(upper, max(near, mid.upper, far, lower))
         if upper <= lower:
             break
     return lower, upper
