@@ -298,7 +298,8 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
             upper = None
         elif upper is not None:
             upper, far = max(upper, enc.upper), max(far, enc.upper)
-    if near is not None and upper is not None and lower is not None and lower < upper == near:
+    narrow = near is not None and upper is not None and lower is not None and lower < upper == near
+    if narrow and near_zero is None:        # the Taylor quotient's bound: narrowed before the exact candidates
         lower, upper = _narrower_near_zero(exprs[0], near_zero, lower, upper, far)
     if upper is None or lower is None:
         return _unbounded_at_infinity(exprs[-1], name, limit=not early, growth=True) or \
@@ -326,6 +327,8 @@ def certify_sup(analysis, exprs, name: str, near_zero=None, bound_by=None) -> Su
         where = f"at s = {point}" if point is not None else "approached as s -> oo"
         return exact_certificate(value, attained,
                               f"sup {name} = {value} {where}, proved by {value} - {name} >= 0 on [0, oo)")
+    if narrow and near_zero is not None:    # the bound by sup F'' near 0: narrowed only for an enclosure (slow)
+        lower, upper = _narrower_near_zero(exprs[0], near_zero, lower, upper, far)
     return SupCertificate(lower, upper, None, None,
                           f"interval branch and bound: sup {name} in {show_interval(lower, upper)}",
                           point=enc.point)
