@@ -177,9 +177,7 @@ class UsageError(Exception):
 def load_references(specs, timeout: float) -> dict:
     """--reference SCENARIO=FILE: waypoints (CSV t,x,y) or pose(t) from a Python file,
     each read (and checked against (2)) within `timeout` seconds."""
-    import numpy as np
-    import runpy
-    from .simulation import ReferenceError, from_function, from_waypoints
+    from .simulation import ReferenceError
     from .timeouts import TimeLimit, time_limit
     refs = {}
     for spec in specs:
@@ -189,7 +187,7 @@ def load_references(specs, timeout: float) -> dict:
         path = Path(file)
         try:
             with time_limit(timeout):
-                refs[name] = _read_reference(path, name, np, runpy, from_function, from_waypoints)
+                refs[name] = _read_reference(path, name)
         except TimeLimit:
             raise UsageError(f"{path}: the reference did not load within --timeout ({timeout:g} s)") from None
         except UsageError:
@@ -201,10 +199,15 @@ def load_references(specs, timeout: float) -> dict:
     return refs
 
 
-def _read_reference(path, name, np, runpy, from_function, from_waypoints):
+def _read_reference(path, name):
     """One --reference file as a Reference (see `load_references`): a CSV's
     columns checked by name (finite numbers, some rows) before the spline."""
+    import runpy
     import warnings
+
+    import numpy as np
+
+    from .simulation import from_function, from_waypoints
     if path.suffix != ".csv":
         ns = runpy.run_path(str(path))
         if not callable(ns.get("pose")) or "duration" not in ns:

@@ -207,8 +207,8 @@ def simulate_design(design_path, report=None, monte_carlo=0, seed=0, references=
                                  duration=sc.duration, rms_window=list(sc.window),
                                  reference=sc.reference.description)
         entry["reference_speeds"] = speeds = reference_speeds(sc.reference, gains)
-        for kind in ("continuous", "digital"):      # a limit exceeded is not the controller's fault alone
-            if not speeds["within"]:
+        if not speeds["within"]:                    # a limit exceeded is not the controller's fault alone
+            for kind in ("continuous", "digital"):
                 entry[kind]["failed"] = [f"{c} (the reference exceeds Vr_max or Wr_max)" if c in ("V limit", "W limit")
                                          else c for c in entry[kind]["failed"]]
         if monte_carlo:
