@@ -219,6 +219,11 @@ def test_cli_writes_and_rechecks_a_certificate(tmp_path):
     ok = run_cli(["--check-certificate", str(out)])
     assert ok.returncode == 0, ok.describe()
     assert "P2: proved; 1 kernel theorem(s) re-checked (rests on arb, sympy-core); kernel-checked" in ok.stdout
+    # which f was checked, the certified k of P6 (F'(s)/s = 1/(1 + s^2) <= 1) and kf = sup s/(1 + s^2) = 1/2
+    head = (f"{out}: certificate re-checked for the f it holds, f = log(e1**2 + e2**2 + 1)/2 (it names the design "
+            f"'Design 1 (Jiang et al.)', file {DESIGN1})")
+    assert ok.stdout.splitlines()[0] == head and "  P6: proved (k = 1); 4 kernel" in ok.stdout
+    assert "  kf: proved (kf = 1/2); " in ok.stdout
     data = json.loads(out.read_text())
     data["properties"]["P2"]["kernel"]["theorems"][0]["claim"]["want"] = 1     # f(0, 0) > 0: false
     bad = tmp_path / "bad.json"
@@ -230,7 +235,7 @@ def test_cli_writes_and_rechecks_a_certificate(tmp_path):
     # several files are checked in parallel and reported in the order given; the worst status wins
     both = run_cli(["--check-certificate", str(out), str(bad), str(out), "--jobs", "2"])
     assert both.returncode == 1 and both.stderr.startswith(f"{bad}: the certificate does not check"), both.describe()
-    assert [ln for ln in both.stdout.splitlines() if not ln.startswith(" ")] == [f"{out}: certificate re-checked"] * 2
+    assert [ln for ln in both.stdout.splitlines() if not ln.startswith(" ")] == [head] * 2
     # --timeout bounds a check too: a file whose check outlives it does not check (one line, exit 1)
     slow = run_cli(["--check-certificate", str(out), "--timeout", "0.001"])
     assert slow.returncode == 1 and slow.stderr == (f"{out}: the certificate does not check: not finished within "
@@ -329,6 +334,66 @@ def test_cache_hit_derives_kf_gains_replay_and_exit_status_again(tmp_path):
         cache.path_for(key).write_text(json.dumps(entry))
         again = check_file(str(design2), 60, str(tmp_path))
         assert again["cached"] is False and again["kf"]["exact"] == "1", edit
+
+
+
+def _edit_entry(cache_dir, design, edit):
+    """Apply edit(result) to the cached entry of `design` (a path)."""
+    cache = ResultCache(cache_dir)
+    path = cache.path_for(design_key(load_design(design)))
+    entry = json.loads(path.read_text())
+    edit(entry["result"])
+    path.write_text(json.dumps(entry))
+
+
+def test_a_tampered_entry_is_not_served(tmp_path):
+    """Red team 18a's cache attacks.  Design 4 (33) jumps on the circle
+    |e| = sqrt((1 + pi)^2 - 1), so P1, P5, P6, P7 are refuted (exit 1); an
+    entry without them, in its verdicts and its certificate, kernel summary
+    to match, had been served as "all properties proved", exit 0.  Design 1
+    (f = log(1 + rho)/2): P6 holds with k = 1 (F'(s)/s = 1/(1 + s^2) <= 1),
+    kf = 1/2 = 0.5 exactly (F' = s/(1 + s^2), at s = 1); an entry's k = 3,
+    kf digits 0.7071..., and keys no result has (a "simulation") had been
+    served as stored."""
+    design4 = ROOT / "designs" / "design4_cosine.py"
+    first = check_file(str(design4), 60, str(tmp_path))
+    refuted = [p for p, v in first["properties"].items() if v["verdict"] == "refuted"]
+    assert refuted == ["P1", "P5", "P6", "P7"] and first["exit_status"] == 1
+
+    def drop(result):
+        for p in refuted:
+            del result["properties"][p], result["certificate"]["properties"][p]
+        result["kernel"] = {"checked": [p for p in result["kernel"]["checked"] if p not in refuted], "search": []}
+    _edit_entry(tmp_path, design4, drop)
+    again = check_file(str(design4), 60, str(tmp_path))
+    assert again["cached"] is False and again["exit_status"] == 1 and again["properties"]["P1"]["verdict"] == "refuted"
+
+    first = check_file(str(DESIGN1), 60, str(tmp_path))
+    assert first["properties"]["P6"]["k"] == "1" and first["kf"]["exact_digits"] == "0.50000000000000000000"
+    _edit_entry(tmp_path, DESIGN1, lambda r: r["properties"]["P6"].update(k="3", k_float=3.0))
+    assert check_file(str(DESIGN1), 60, str(tmp_path))["cached"] is False
+    _edit_entry(tmp_path, DESIGN1, lambda r: r.update(simulation={"circle": {"ok": True}}))
+    _edit_entry(tmp_path, DESIGN1, lambda r: r["kf"].update(exact_digits="0.70710678118654752440"))
+    hit = check_file(str(DESIGN1), 60, str(tmp_path))
+    assert hit["cached"] is True and "simulation" not in hit and hit["kf"]["exact_digits"] == "0.50000000000000000000"
+
+
+def test_a_kf_the_kernel_did_not_check_is_not_served(tmp_path):
+    """f = (e1^2 + e1^4)^(1/4) + log(1 + e2^2): df/de2 = 2 e2/(1 + e2^2), so
+    kf = 1 (at e2 = 1), while df/de1(h, 0) ~ h^(-1/2)/2 -> oo (P1 refuted).
+    The verifier leaves kf undecided; an entry claiming kf = 1/10, or kf
+    infinite, rests on nobody's proof and is computed again."""
+    design = tmp_path / "cusp.py"
+    design.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\n"
+                      "f = (e1**2 + e1**4)**sp.Rational(1, 4) + sp.log(1 + e2**2)\n")
+    cache_dir = tmp_path / "cache"
+    first = check_file(str(design), 60, str(cache_dir))
+    assert first["kf"]["upper"] is None and first["kf"]["unbounded"] is False
+    for edit in ({"exact": "1/10", "lower": 0.1, "upper": 0.1, "attained": True}, {"unbounded": True}):
+        _edit_entry(cache_dir, design, lambda r: r["kf"].update(edit))
+        again = check_file(str(design), 60, str(cache_dir))
+        assert again["cached"] is False and again["kf"]["upper"] is None and not again["kf"]["unbounded"], edit
+    assert check_file(str(design), 60, str(cache_dir))["cached"] is True
 
 
 # ---------------------------------------------------------------- refuted designs

@@ -424,3 +424,24 @@ def test_named_constants_are_read_by_the_kernel(tmp_path, constant, value):
     with mp.workdps(50):
         lo, hi = (mp.mpf(x.numerator) / x.denominator for x in (report.kf.lower, report.kf.upper))
         assert lo <= value() <= hi and hi - lo < 1e-12
+
+
+def test_a_report_without_every_property_is_not_proved_and_an_unchecked_kf_says_so():
+    """Exit 0 needs all of P1-P8 proved: a report that leaves one out (as a
+    tampered cache entry did, red team 18a) is inconclusive.  A kf shown in
+    the text that the kernel did not check says so, also when the
+    certificate has no kf entry (then kf is in neither list)."""
+    from uwmr_symbolic.report import render_text
+    from uwmr_symbolic.verify import EXIT_INCONCLUSIVE, EXIT_OK, Report
+    from uwmr_symbolic.verdict import PROPERTIES, proved
+    ok = {"ok": True, "steps": {}}
+    assert Report(Path("d.py"), None, {p: proved("") for p in PROPERTIES}, None, {}, ok).exit_status == EXIT_OK
+    seven = {p: proved("") for p in PROPERTIES if p != "P5"}
+    assert Report(Path("d.py"), None, seven, None, {}, ok).exit_status == EXIT_INCONCLUSIVE
+    kf = {"exact": "1/10", "exact_digits": "0.1", "lower": 0.1, "upper": 0.1, "enclosure": "[0.1, 0.1]",
+          "attained": True, "unbounded": False, "reason": "the search's"}
+    d = {"design": "d.py", "name": "d", "f": "f", "properties": {}, "kf": kf, "gains": {}, "seconds": 0.1,
+         "proof_replay": ok, "exit_status": 3, "kernel": {"checked": ["P2"], "search": []}}
+    assert "kf = 1/10 = 0.1...  (attained; the search's, not re-checked by the kernel)" in render_text(d)
+    d["kernel"] = {"checked": ["P2", "kf"], "search": []}
+    assert "kf = 1/10 = 0.1...  (attained)" in render_text(d)

@@ -13,6 +13,7 @@ import multiprocessing
 import os
 import sys
 import time
+from fractions import Fraction
 import multiprocessing.connection
 from pathlib import Path
 
@@ -22,14 +23,18 @@ from . import design_certificate as certificates
 from .cache import ResultCache, design_key, source_hash
 from .gains import check_gains
 from .interval import Interval
-from .kf import exact_text
-from .report import design_fields, gains_dict, to_dict
+from .kf import exact_text, show_interval
+from .report import design_fields, exact_digits, gains_dict, to_dict
 from .properties import PROPERTIES
 from .replay import replay
 from .verdict import Status, Verdict, unknown
-from .verify import Report, kernel_summary, load_with_limit, verify_loaded
+from .verify import Report, kernel_summary, kf_checked, load_with_limit, verify_loaded
 
 GLOB_CHARS = set("*?[")
+# what `report.to_dict` gives (and a served entry, nothing else), and its kf
+RESULT_KEYS = ("design", "name", "f", "properties", "kf", "gains", "proof_replay", "kernel", "seconds", "exit_status",
+               "f_line", "gains_line", "certificate")
+KF_FIELDS = {"exact", "exact_digits", "lower", "upper", "enclosure", "attained", "unbounded", "reason"}
 
 
 def expand_paths(args: list[str]) -> list[str]:
@@ -63,7 +68,8 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
         hit = cache.get(key, timeout)     # not if computed with less time while a limit expired
         hit = served(hit, design, kernel_only) if hit is not None else None
         if hit is not None:
-            return {**hit, **design_fields(design), "cached": True}
+            hit |= design_fields(design)
+            return {**{key: hit[key] for key in RESULT_KEYS}, "cached": True}       # in `to_dict`'s order
     report = verify_loaded(design, timeout, start, kernel_only)
     result = {**to_dict(report), "certificate": report.certificate}
     if cache is not None and report.certificate is not None and not {"error", "stopped", "failed"} & set(report.kernel):
@@ -75,13 +81,16 @@ def served(hit: dict, design, kernel_only: bool = True) -> dict | None:
     """The cached result to serve, or None (a miss).  Its design certificate
     must re-check in the kernel, be about this design's f and agree with the
     cached verdicts (each the certificate's, or, with `kernel_only`, unknown
-    where the kernel did not check it), and its kf must be the one the kernel
-    checked (exact, enclosed, or infinite by a checked witness; one that
-    rests on the search is shown, not used, by default; with --trust-search
-    a result with any verdict resting on the search is computed again: what
-    an entry says the search found could be anybody's).  Bound (10) per scenario, the
-    proof replay (11)-(19) and the exit status are derived again from the
-    certificate and the design, so a cache entry is never taken on trust."""
+    where the kernel did not check it) on all of P1-P8, P6's k must be the
+    one the kernel checked h <= 1 with, and kf must be the one the kernel
+    checked (exact, enclosed, or infinite by a checked witness) or none.  A
+    kf resting on the search, or with --trust-search any verdict resting on
+    it, is computed again: what an entry says the search found could be
+    anybody's.  Bound (10) per scenario, the proof replay (11)-(19), the exit
+    status and kf's digits or enclosure are derived again from the
+    certificate and the design, and an entry's other fields are dropped.
+    The texts that explain the verdicts (reasons, witnesses' descriptions,
+    P6's h, whether kf is attained) are served as stored."""
     cert = hit.get("certificate")
     try:
         checks = certificates.check(cert)
@@ -92,25 +101,41 @@ def served(hit: dict, design, kernel_only: bool = True) -> dict | None:
         return None
     statuses = {p: e.get("status") for p, e in cert["properties"].items() if p in PROPERTIES}
     expected = {p: "unknown" if kernel_only and p in kernel["search"] else s for p, s in statuses.items()}
-    verdicts = {p: str(v.get("verdict")) for p, v in hit.get("properties", {}).items()}
-    if cert["design"]["f"] != sp.srepr(design.f) or hit.get("kernel") != kernel or verdicts != expected:
+    props, shown_kf = hit.get("properties"), hit.get("kf")
+    if not (isinstance(props, dict) and all(isinstance(v, dict) and isinstance(v.get("reason"), str)
+                                            for v in props.values())
+            and isinstance(shown_kf, dict) and set(shown_kf) == KF_FIELDS and shown_kf["attained"] in (True, False, None)
+            and isinstance(shown_kf["reason"], str) and isinstance(hit.get("seconds"), (int, float))):
         return None
-    kf = _checked_kf(cert, kernel, hit.get("kf") or {}, kernel_only)
+    verdicts = {p: str(v.get("verdict")) for p, v in props.items()}
+    if cert["design"]["f"] != sp.srepr(design.f) or hit.get("kernel") != kernel or verdicts != expected \
+            or set(verdicts) != set(PROPERTIES):        # (a property left out is no property proved)
+        return None
+    k6 = next(c.value for c in checks if c.name == "P6")
+    if "P6" in kernel["checked"] and verdicts["P6"] == "proved" and props["P6"].get("k") != str(k6):
+        return None             # P6's k is the one the kernel checked h <= 1 with
+    kf = _checked_kf(cert, kernel, shown_kf)
     if kf is None:
         return None
     gains = check_gains(design.gains, *kf)
     proof = replay(design.f, statuses.get("P4") == "proved")
-    props = {p: Verdict(Status(v), "") for p, v in verdicts.items()}
-    status = Report(design.path, design, props, None, gains, proof).exit_status
+    status = Report(design.path, design, {p: Verdict(Status(v), "") for p, v in verdicts.items()}, None, gains,
+                    proof).exit_status
     here = {**cert, "design": {**cert["design"], "file": str(design.path), "name": design.name}}   # (a copy's entry)
-    return {**hit, "certificate": here, "gains": gains_dict(gains), "proof_replay": proof, "exit_status": status}
+    shown_kf = dict(shown_kf)
+    if kf[0] is not None:       # kf's digits and enclosure printed from the numbers checked above, not as stored
+        if kf[2] is not None:
+            shown_kf["enclosure"] = show_interval(Fraction(str(kf[2])), Fraction(str(kf[0])), 12)
+        else:
+            shown_kf["exact_digits"] = exact_digits(kf[0])
+    return {"properties": props, "kf": shown_kf, "kernel": kernel, "seconds": hit["seconds"], "certificate": here,
+            "gains": gains_dict(gains), "proof_replay": proof, "exit_status": status}
 
 
-def _checked_kf(cert: dict, kernel: dict, shown: dict, kernel_only: bool) -> tuple | None:
+def _checked_kf(cert: dict, kernel: dict, shown: dict) -> tuple | None:
     """(kf_upper, kf_known, kf_lower) for `gains.check_gains` from what the
     kernel checked of kf, if the cached `shown` kf is that one; else None."""
     entry = cert["properties"].get("kf") or {}
-    p1 = cert["properties"].get("P1") or {}
     values = (shown.get("exact"), shown.get("lower"), shown.get("upper"), bool(shown.get("unbounded")))
     if "kf" in kernel["checked"] and entry.get("exact") is not None:
         exact = certificates.parse(entry["exact"])
@@ -120,11 +145,11 @@ def _checked_kf(cert: dict, kernel: dict, shown: dict, kernel_only: bool) -> tup
     if "kf" in kernel["checked"]:
         L, U = certificates.parse(entry["lower"]), certificates.parse(entry["upper"])
         return (U, True, L) if values == (None, *_floats(L, U), False) else None
-    if "P1" in kernel["checked"] and (p1.get("witness") or {}).get("kind") == "unbounded":
+    if kf_checked(cert, kernel):        # infinite, by a checked P1 witness df/de2 -> oo
         return (None, True, None) if values == (None, None, None, True) else None
-    # kf rests on the search: by default bound (10) does not use it (W undecided) and the report
-    # says so; with --trust-search it does, and it is computed again
-    return (None, False, None) if kernel_only or values == (None, None, None, False) else None
+    # kf undecided, or resting on the search: what an entry says the search found could be anybody's
+    # (bound (10) does not use it by default, but the report shows it), so such an entry is computed again
+    return (None, False, None) if values == (None, None, None, False) else None
 
 
 def _floats(lower, upper) -> tuple:

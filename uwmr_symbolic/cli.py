@@ -351,7 +351,7 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
 
 def _check_one_certificate(name: str, timeout: float = DEFAULT_TIMEOUT) -> tuple[int, str, str]:
     """(status, stdout text, stderr text) of `--check-certificate` for one file."""
-    from .design_certificate import CertificateError, check
+    from .design_certificate import CertificateError, check, parse
     from .timeouts import TimeLimit, time_limit
     from .verdict import PROPERTIES
     try:
@@ -371,7 +371,10 @@ def _check_one_certificate(name: str, timeout: float = DEFAULT_TIMEOUT) -> tuple
                                           for p in PROPERTIES if p not in present]
     if "kf" not in present:
         lines.append("kf: absent (a certificate holds kf only when the verifier certified a finite kf)")
-    return 0, "\n".join([f"{name}: certificate re-checked", *("  " + line for line in lines)]), ""
+    design = json.loads(text)["design"]         # (read by `check`: f parses)
+    head = (f"{name}: certificate re-checked for the f it holds, f = {parse(design['f'], design=True)} "
+            f"(it names the design {design.get('name')!r}, file {design.get('file')})")
+    return 0, "\n".join([head, *("  " + line for line in lines)]), ""
 
 
 def check_certificates(files, jobs: int | None = None, timeout: float = DEFAULT_TIMEOUT) -> int:

@@ -100,6 +100,7 @@ class PropertyCheck:
     unchecked: list = field(default_factory=list)
 
     witness: str = ""           # refuted: what the kernel's conclusions show about f
+    value: object = None        # proved: P6's k (the bound of its sup claims); kf's exact value, or (lower, upper)
 
     @property
     def kernel_checked(self) -> bool:
@@ -114,7 +115,9 @@ class PropertyCheck:
     def line(self) -> str:
         if self.status not in ("proved", "refuted"):
             return f"{self.name}: {self.status} (nothing to check)"
-        head = (f"{self.name}: {self.status}; {self.theorems} kernel theorem(s) re-checked"
+        shown = "" if self.value is None else f" (kf in [{self.value[0]}, {self.value[1]}])" \
+            if isinstance(self.value, tuple) else f" ({'k' if self.name == 'P6' else 'kf'} = {self.value})"
+        head = (f"{self.name}: {self.status}{shown}; {self.theorems} kernel theorem(s) re-checked"
                 f" (rests on {', '.join(self.assumptions)})" if self.theorems else f"{self.name}: {self.status}")
         if not self.unchecked:
             return head + "; kernel-checked" + (f": {self.witness}" if self.witness else "")
@@ -979,6 +982,11 @@ def _check_property(name, entry, f) -> PropertyCheck:
                 raise CertificateError(f"kf: [{bounds[0]}, {bounds[1]}] is not an enclosure by finite numbers")
             pc.unchecked += [u for u in _link(name, f, theorems, bounds)     # (a note may say more)
                              if not any(x.startswith(u) for x in pc.unchecked)]
+            ks = {t.claim.other for t in theorems if t.claim.kind == "sup_upper"}
+            if name == "P6" and len(ks) == 1:       # (each link asks one k of every sup claim of h)
+                pc.value = parse(ks.pop())
+            elif name == "kf":
+                pc.value = bounds[0] if bounds[0] == bounds[1] else bounds
             if name not in ("P2", "P4"):        # the link differentiates F itself
                 pc.assumptions = sorted(set(pc.assumptions) | {"sympy-diff"})
         else:

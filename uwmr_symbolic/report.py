@@ -88,8 +88,7 @@ def to_dict(r: Report) -> dict:
                            **_jsonable({k: x for k, x in v.details.items() if k != "kernel"})}
                        for p, v in r.properties.items()},
         "kf": {"exact": None if kf is None or kf.exact is None else exact_text(kf.exact),
-               "exact_digits": None if kf is None or kf.exact is None   # (an integer written out has none)
-               or kf.exact.is_Integer and exact_text(kf.exact) == str(kf.exact) else str(sp.N(kf.exact, 20)),
+               "exact_digits": None if kf is None or kf.exact is None else exact_digits(kf.exact),
                "lower": None if kf is None or kf.lower is None else Interval.point(kf.lower).lower_float(),
                "upper": None if kf is None or kf.upper is None else Interval.point(kf.upper).upper_float(),
                "enclosure": None if kf is None or kf.lower is None or kf.upper is None
@@ -108,6 +107,11 @@ def to_dict(r: Report) -> dict:
     else:
         d["f_line"] = d["gains_line"] = 1
     return d
+
+
+def exact_digits(x: sp.Expr) -> str | None:
+    """kf's first 20 digits in the reports (None for an integer written out)."""
+    return None if x.is_Integer and exact_text(x) == str(x) else str(sp.N(x, 20))
 
 
 def number_text(x, spec: str) -> str | None:
@@ -172,7 +176,7 @@ def render_text(r) -> str:
     else:
         att = {True: "attained", False: "approached at infinity, not attained", None: "attainment undecided"}
         how = att[kf["attained"]] + ("; the search's, not re-checked by the kernel"
-                                     if "kf" in (d.get("kernel") or {}).get("search", ()) else "")
+                                     if "kf" not in (d.get("kernel") or {"checked": ["kf"]})["checked"] else "")
         if kf["exact"] is not None:
             digits = f" = {kf['exact_digits']}..." if kf.get("exact_digits") else ""
             lines.append(f"  kf = {kf['exact']}{digits}  ({how})")

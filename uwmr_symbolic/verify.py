@@ -80,7 +80,7 @@ class Report:
         gains_fail = any(g.V_ok is False or g.W_ok is False for g in self.gains.values())
         if any(v.refuted for v in verdicts) or gains_fail:
             return EXIT_REFUTED
-        if all(v.proved for v in verdicts) and self.proof_replay.get("ok") \
+        if set(self.properties) == set(PROPERTIES) and all(v.proved for v in verdicts) and self.proof_replay.get("ok") \
                 and all(g.V_ok and g.W_ok for g in self.gains.values()):
             return EXIT_OK
         return EXIT_INCONCLUSIVE
@@ -200,7 +200,7 @@ def kernel_verdict(name: str, v: Verdict, kernel: dict) -> Verdict:
     return unknown(f"{SEARCH_ONLY}{v.status}, which counts only with --trust-search: {v.reason})")
 
 
-def _kf_checked(certificate: dict | None, kernel: dict) -> bool:
+def kf_checked(certificate: dict | None, kernel: dict) -> bool:
     """The kernel checked kf: its value, or that it is infinite, by a checked
     refutation of P1 whose witness is df/de2 -> oo (kind "unbounded", var
     e2: df/de1 -> oo says nothing of kf = sup |df/de2| unless f is radial)."""
@@ -287,7 +287,7 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Tr
         props = {p: kernel_verdict(p, v, kernel) for p, v in props.items()}
     checked_kf = kf
     if kernel_only:     # the kernel's kf: exact, infinite, or its own enclosure (`kf.kernel_bounds`)
-        checked_kf = kf if _kf_checked(certificate, kernel) else None
+        checked_kf = kf if kf_checked(certificate, kernel) else None
         if checked_kf is not None and kf.exact is None and kf.kernel_bounds is not None:
             L, U = kf.kernel_bounds
             checked_kf = replace(kf, lower=L, upper=U, reason=f"the kernel's enclosure: sup |F'| in "
