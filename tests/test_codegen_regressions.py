@@ -692,3 +692,51 @@ def test_a_tolerance_scale_beyond_every_number_is_inf():
     from uwmr_symbolic.codegen.reference import _to_float
     assert _to_float(flint.arb("inf")) == math.inf and _to_float(-flint.arb("inf")) == -math.inf
     assert _to_float(flint.arb(2) ** 1100) == math.inf and _to_float(flint.arb(3) / 4) == 0.75
+
+
+@pytest.mark.parametrize("condition", ["sp.Eq(e1, 0) & sp.Eq(e2, 0)", "sp.Not(sp.Ne(e1, 0) | sp.Ne(e2, 0))"])
+def test_a_point_branch_given_by_and_or_not_is_generated(tmp_path, condition):
+    """Red team 18b: f = 0 at the origin, log(1 + rho) elsewhere, is log(1 +
+    rho) (proved P1-P8), but its validation stopped ("'And' object has no
+    attribute 'lhs'"): the Arb reference read relations only.  It now reads
+    Eq, Ne, And, Or, Not; the law is w = lam vr 2 e2/(1 + rho) exactly."""
+    path = tmp_path / "point_branch.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\n"
+                    f"f = sp.Piecewise((0, {condition}), (sp.log(1 + e1**2 + e2**2), True))\n")
+    pairs = [(0.0, 0.0), (-0.0, 1.0), (0.0, -1.0), (1e-300, 0.0), (3.0, 4.0), (0.0, 1e-170), (-2.5, 1e150)]
+    _, mod, _ = _check_all(path, tmp_path, _law_rows(pairs), _law_rows(pairs[:5]))
+    v, w, st = mod.control_status(*_law_rows([(0.0, 1.0), (3.0, 4.0)]).T)
+    assert list(st) == [0, 0] and w[0] == 1.0 and abs(w[1] - 8 / 26) < 1e-15
+
+
+def test_the_reference_reads_every_kind_of_condition():
+    """`reference._arb_cond` at exact points: Eq, Ne, the four orders, And,
+    Or, Not, and an And whose undecidable part does not matter."""
+    import flint
+    import sympy as sp
+    e1, e2 = sp.symbols("e1 e2", real=True)
+    at = lambda cond, a, b: reference._arb_cond(cond)(flint.arb(a), flint.arb(b))
+    assert at(sp.Eq(e1, 0), 0, 5) and not at(sp.Eq(e1, 0), 1, 5) and at(sp.Ne(e2, 1), 0, 2) and not at(sp.Ne(e2, 1), 0, 1)
+    assert at(e1 >= 1, 1, 0) and not at(e1 > 1, 1, 0) and at(e1 <= 1, 1, 0) and not at(e1 < 1, 1, 0)
+    assert at(sp.And(e1 > 0, e2 > 0), 1, 1) and not at(sp.And(e1 > 0, e2 > 0), 1, -1)
+    assert at(sp.Or(e1 > 0, e2 > 0), -1, 1) and not at(sp.Or(e1 > 0, e2 > 0), -1, -1)
+    assert at(sp.Not(e1 > 0), -1, 0) and not at(sp.Not(e1 > 0), 1, 0)
+    third = flint.arb(1) / 3      # a ball around 1/3, never exactly 1/3: e1 = 1/3 is undecidable there
+    cond = sp.And(e2 > 0, sp.Eq(3 * e1, 1))
+    assert reference._arb_cond(cond)(third, flint.arb(-1)) is False
+    with pytest.raises(reference.NeedPrecision):
+        reference._arb_cond(cond)(third, flint.arb(1))
+
+
+def test_casadi_reads_every_kind_of_condition():
+    """`casadi_backend.to_casadi` of a Piecewise with Eq, Ne, And, Or, Not
+    conditions, at points on either side of each."""
+    import casadi as ca
+    import sympy as sp
+    from uwmr_symbolic.codegen.casadi_backend import to_casadi
+    e1, e2 = sp.symbols("e1 e2", real=True)
+    x, y = ca.SX.sym("x"), ca.SX.sym("y")
+    pw = sp.Piecewise((1, sp.And(e1 > 0, sp.Ne(e2, 1))), (2, sp.Or(sp.Eq(e1, 0), sp.Not(e2 < 3))), (3, True))
+    fn = ca.Function("pw", [x, y], [to_casadi(pw, {e1: x, e2: y})])
+    got = [float(fn(a, b)) for a, b in ((1, 0), (1, 1), (0, 1), (-1, 3), (-1, 2))]
+    assert got == [1, 3, 2, 2, 3]

@@ -79,10 +79,19 @@ def to_casadi(expr: sp.Expr, env: dict):
             v = to_casadi(value, env)
             out = v if out is None or cond == sp.true else ca.if_else(to_casadi(cond, env), v, out)
         return out
-    if isinstance(expr, (sp.StrictLessThan, sp.LessThan, sp.StrictGreaterThan, sp.GreaterThan)):
+    if isinstance(expr, sp.core.relational.Relational):
         a, b = to_casadi(expr.lhs, env), to_casadi(expr.rhs, env)
-        return {sp.StrictLessThan: a < b, sp.LessThan: a <= b,
-                sp.StrictGreaterThan: a > b, sp.GreaterThan: a >= b}[type(expr)]
+        return {sp.StrictLessThan: lambda: a < b, sp.LessThan: lambda: a <= b, sp.StrictGreaterThan: lambda: a > b,
+                sp.GreaterThan: lambda: a >= b, sp.Equality: lambda: a == b, sp.Unequality: lambda: a != b}[type(expr)]()
+    if isinstance(expr, (sp.And, sp.Or)):
+        parts = [to_casadi(c, env) for c in expr.args]
+        join = ca.logic_and if isinstance(expr, sp.And) else ca.logic_or
+        out = parts[0]
+        for part in parts[1:]:
+            out = join(out, part)
+        return out
+    if isinstance(expr, sp.Not):
+        return ca.logic_not(to_casadi(expr.args[0], env))
     raise NotImplementedError(f"no CasADi translation for {expr.func.__name__}")
 
 

@@ -114,18 +114,44 @@ def _arb_fn(expr: sp.Expr):
 
 
 def _arb_cond(cond):
-    if cond in (True, sp.true):
-        return lambda a, b: True
-    lhs, rhs = _arb_fn(cond.lhs), _arb_fn(cond.rhs)
+    """A Piecewise condition at (a, b): a relation decided by the sign of
+    lhs - rhs (NeedPrecision while the ball holds 0 but is not exactly 0),
+    or And, Or, Not of such (And is false once one part is, whatever the
+    others' precision; Or true once one part is)."""
+    if cond in (True, sp.true, False, sp.false):
+        return lambda a, b, value=bool(cond): value
+    if isinstance(cond, sp.Not):
+        inner = _arb_cond(cond.args[0])
+        return lambda a, b: not inner(a, b)
+    if isinstance(cond, (sp.And, sp.Or)):
+        parts, decisive = [_arb_cond(c) for c in cond.args], isinstance(cond, sp.Or)
 
-    def decide(a, b, op=type(cond)):
+        def either(a, b):
+            undecided = False
+            for part in parts:
+                try:
+                    if part(a, b) == decisive:
+                        return decisive
+                except NeedPrecision:
+                    undecided = True
+            if undecided:
+                raise NeedPrecision
+            return not decisive
+        return either
+    lhs, rhs = _arb_fn(cond.lhs), _arb_fn(cond.rhs)
+    # which of d > 0, d < 0, d = 0 make the relation true
+    holds = {sp.StrictGreaterThan: (True, False, False), sp.GreaterThan: (True, False, True),
+             sp.StrictLessThan: (False, True, False), sp.LessThan: (False, True, True),
+             sp.Equality: (False, False, True), sp.Unequality: (True, True, False)}[type(cond)]
+
+    def decide(a, b):
         d = lhs(a, b) - rhs(a, b)
         if d > 0:
-            return op in (sp.StrictGreaterThan, sp.GreaterThan)
+            return holds[0]
         if d < 0:
-            return op in (sp.StrictLessThan, sp.LessThan)
+            return holds[1]
         if d == 0:    # exactly zero
-            return op in (sp.GreaterThan, sp.LessThan)
+            return holds[2]
         raise NeedPrecision
     return decide
 
