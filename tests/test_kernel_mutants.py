@@ -209,7 +209,7 @@ def test_sign_by_taylor_claims_and_messages():
 def test_sign_by_sturm_claims_and_messages():
     thm = sturm(x ** 2 - 2, x, Q(3, 2), oo, hi_open=True)
     assert thm.claim == sign(x ** 2 - 2, x, Q(3, 2), oo, hi_open=True)
-    assert thm.assumptions == {"sympy-polys", "flint-polys"} and thm.rule == "sign_by_sturm"
+    assert thm.assumptions == {"sympy-core", "sympy-polys", "flint-polys"} and thm.rule == "sign_by_sturm"
     assert sturm(x - 2, x, 1, 2, hi_open=True, want=-1).claim == sign(x - 2, x, 1, 2, hi_open=True, want=-1)
     assert why(sturm, x - 2, x, 1, 2, want=-1) == "factor x - 2 has a root in the interval"
     assert why(sturm, x - 1, x, 1, 2) == "factor x - 1 has a root in the interval"
@@ -348,7 +348,7 @@ def test_sign_by_sturm_of_a_rational_function():
     a removable singularity still refutes: the claim is about e as written."""
     e = (x ** 2 + 1) / (x - 3)
     assert sturm(e, x, 0, 3, hi_open=True, want=-1).claim == sign(e, x, 0, 3, hi_open=True, want=-1)
-    assert sturm(e, x, 0, 3, hi_open=True, want=-1).assumptions == {"sympy-polys", "flint-polys"}
+    assert sturm(e, x, 0, 3, hi_open=True, want=-1).assumptions == {"sympy-core", "sympy-polys", "flint-polys"}
     assert why(sturm, e, x, 0, 3, want=-1) == "factor x - 3 has a root in the interval"     # closed at the pole
     assert why(sturm, e, x, 0, 2) == "p(1) has the wrong sign"
     assert sturm(-1 / (x + 1), x, 0, oo, hi_open=True, want=-1).claim.want == -1   # the sign of D counts
@@ -495,7 +495,7 @@ def test_join_claims_and_messages():
     b = sturm(x + 1, x, 1, 2, lo_open=True, hi_open=True)
     j = K.join(a, b)
     assert j.claim == sign(x + 1, x, 0, 2, True, True, strict=False) and j.rule == "join"
-    assert j.assumptions == {"sympy-polys", "flint-polys"}
+    assert j.assumptions == {"sympy-core", "sympy-polys", "flint-polys"}
     assert K.join(sturm(x + 1, x, 0, 1), b).claim == sign(x + 1, x, 0, 2, hi_open=True)
     assert why(K.join, a, sturm(x + 2, x, 1, 2)) == "different claims"
     assert why(K.join, a, sturm(x + 1, x, 2, 3)) == "not adjacent"
@@ -526,7 +526,7 @@ def test_weaken_claims_and_messages():
     W = K.weaken
     w = W(j, lo=Q(1, 2), hi=I2, lo_open=False, hi_open=True, strict=False)
     assert w.claim == sign(x + 1, x, Q(1, 2), 2, hi_open=True, strict=False) and w.rule == "weaken"
-    assert w.assumptions == {"arb", "sympy-polys", "flint-polys"}
+    assert w.assumptions == {"sympy-core", "arb", "sympy-polys", "flint-polys"}
     # the same interval, and its ends: (0, 2] inside (0, 2], (0, 1) inside; [0, 2] not
     assert W(j, lo=I0, hi=I2, lo_open=True, hi_open=False, strict=True).claim == j.claim
     assert W(j, lo=I0, hi=I1, lo_open=True, hi_open=True, strict=True).claim == sign(x + 1, x, 0, 1, True, True)
@@ -1087,7 +1087,7 @@ def test_sup_upper_rules_claims_and_messages():
     sq = sturm(1 - g, x, -1, 3, lo_open=True, strict=False)         # 1 - (2x - x**2) = (x - 1)**2 >= 0
     thm = S(sq, expr=g, bound=I1)
     assert thm.claim == Claim("sup_upper", R(g), R(x), R(-I1), R(I3), True, False, other=R(I1))
-    assert thm.assumptions == {"sympy-polys", "flint-polys"} and thm.rule == "sup_upper_by_sign"
+    assert thm.assumptions == {"sympy-core", "sympy-polys", "flint-polys"} and thm.rule == "sup_upper_by_sign"
     assert why(S, sq, expr=g, bound=I2) == "premise must be U - E >= 0"
     neg = sturm(-x ** 2 - 1, x, 0, 1, want=-1)                       # 0 - (x**2 + 1) < 0
     assert why(S, neg, expr=x ** 2 + 1, bound=I0) == "premise must be U - E >= 0"

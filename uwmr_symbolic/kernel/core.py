@@ -195,7 +195,7 @@ def _apply(fn, assumes, premises, enc: dict) -> Theorem:
         raise KernelError(f"{fn.__name__}: {exc}") from None
     out = fn(*premises, **data)
     claim, extra = out if isinstance(out, tuple) else (out, ())
-    assumptions = frozenset(assumes).union(extra, *[p.assumptions for p in premises])
+    assumptions = frozenset(assumes).union(("sympy-core",), extra, *[p.assumptions for p in premises])
     return Theorem(claim, fn.__name__, tuple(premises), json.dumps(enc, sort_keys=True), assumptions, _token=_TOKEN)
 
 
@@ -1839,18 +1839,16 @@ def sup_upper_of_abs(up, down):
 
 # Every rule, grouped by what its theorems rest on besides their premises (see the module docstring),
 # made a rule here (`rule`: not as a decorator, for mutation testing).
-_RULE_ASSUMPTIONS = {
-    (): "join sup_upper_by_sign sup_lower_from_limit sup_upper_of_abs",
-    ("arb",): "weaken widen",
-    ("sympy-core",): "sign_through_increasing sign_by_log_bound sign_on_tail sign_by_substitution identity "
-                     "identity_plane continuous_on_plane defined_on_plane continuous_on_positive "
-                     "diverges_through_increasing diverges_by_comparison limit_of_bounded limit_of_product",
-    ("arb", "sympy-core"): "sign_by_cover sign_of_product sign_of_sum sign_below_sup sign_of_increasing_difference "
-                           "sign_below_product join_at_zero join_at_point sign_by_rewrite continuous_at_end "
-                           "value_sign sup_lower_by_point sup_lower_by_limit limit_at_infinity",
-    ("arb", "sympy-core", "sympy-diff"): "sign_by_taylor sign_by_monotone diverges_by_growth",
-    ("arb", "sympy-core", "sympy-polys"): "select_branch piecewise_branches continuous_piecewise",
-    ("arb", "sympy-core", "sympy-diff", "sympy-polys"): "limit_by_taylor",
+_RULE_ASSUMPTIONS = {      # beside "sympy-core", which every rule rests on (`_apply`: data read through SymPy)
+    (): "join sup_upper_by_sign sup_lower_from_limit sup_upper_of_abs sign_through_increasing sign_by_log_bound "
+        "sign_on_tail sign_by_substitution identity identity_plane continuous_on_plane defined_on_plane "
+        "continuous_on_positive diverges_through_increasing diverges_by_comparison limit_of_bounded limit_of_product",
+    ("arb",): "weaken widen sign_by_cover sign_of_product sign_of_sum sign_below_sup sign_of_increasing_difference "
+              "sign_below_product join_at_zero join_at_point sign_by_rewrite continuous_at_end value_sign "
+              "sup_lower_by_point sup_lower_by_limit limit_at_infinity",
+    ("arb", "sympy-diff"): "sign_by_taylor sign_by_monotone diverges_by_growth",
+    ("arb", "sympy-polys"): "select_branch piecewise_branches continuous_piecewise",
+    ("arb", "sympy-diff", "sympy-polys"): "limit_by_taylor",
     ("sympy-polys", "flint-polys"): "sign_by_sturm",
 }
 # Pure functions that the rules call again and again with the same arguments, and their cache sizes.
