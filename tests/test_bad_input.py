@@ -34,6 +34,7 @@ CASES = {
     "e1_declared_positive.py": "e1, e2 declared positive (SymPy simplified f with it)",
     "param_against_assumption.py": "a parameter declared positive given -1",
     "undefined_on_a_line.py": "0/0 on the line e2 = 2 (a zero of a polynomial denominator)",
+    "undefined_on_irrational_lines.py": "0/0 on the lines e2 = +-sqrt(2) (irrational zeros of a denominator)",
     "condition_compares_truth_values.py": "Eq(e1 > 0, e2 > 0) as a condition (a red team's crash)",
 }
 
@@ -49,6 +50,7 @@ FIXES = {
     "e1_declared_positive.py": ["e1 is declared positive=True", "sympy.symbols('e1 e2', real=True)"],
     "param_against_assumption.py": ["params['c'] = -1 does not satisfy positive=True", "give a value that does"],
     "undefined_on_a_line.py": ["f is undefined at (e1, e2) = (0, 2)"],
+    "undefined_on_irrational_lines.py": ["f is undefined at (e1, e2) = (0, -sqrt(2))"],
     "condition_compares_truth_values.py": ["compares truth values", "write it with And, Or and Not"],
 }
 HANGS = "sleep_forever.py"

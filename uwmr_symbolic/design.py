@@ -337,9 +337,12 @@ def _check_real_valued(f: sp.Expr) -> None:
 
 
 def _zeros_of_denominators(f: sp.Expr, lines=(0, 1, -1)) -> list:
-    """Rational points where a denominator of f that is a polynomial over Q
-    in e1, e2 vanishes, on the lines e1 = c and e2 = c (c in `lines`): where
-    f = e2/(e2 - 2) - 2/(e2 - 2) has no value, off the sample points."""
+    """Points where a denominator of f that is a polynomial in e1, e2
+    vanishes, on the lines e1 = c and e2 = c (c in `lines`): where f =
+    e2/(e2 - 2) - 2/(e2 - 2) has no value, off the sample points.  Its real
+    roots in radicals up to degree 4 (f = (e2^2 - 2)/((e2 - sqrt(2))(e2 +
+    sqrt(2))) has none on e2 = +-sqrt(2), red team 18b), its rational roots
+    over Q up to degree 8."""
     out = []
     for p in f.atoms(sp.Pow):
         if not (p.exp.is_Rational and p.exp < 0 and p.base.free_symbols and p.base.is_polynomial(E1, E2)):
@@ -347,9 +350,12 @@ def _zeros_of_denominators(f: sp.Expr, lines=(0, 1, -1)) -> list:
         for c in lines:
             for var, other in ((E1, E2), (E2, E1)):
                 base = sp.Poly(p.base.subs(var, c), other)
-                if base.is_zero or base.degree() > 8 or not base.domain.is_QQ and not base.domain.is_ZZ:
+                rational = base.domain.is_QQ or base.domain.is_ZZ
+                if base.is_zero or base.degree() > (8 if rational else 4):
                     continue
-                out += [(c, r) if var == E1 else (r, c) for r in sp.roots(base, filter="Q")]
+                roots = sp.roots(base, filter="Q") if base.degree() > 4 else \
+                    [r for r in sp.roots(base) if r.is_extended_real]
+                out += [(c, r) if var == E1 else (r, c) for r in roots]
     return out[:20]
 
 
