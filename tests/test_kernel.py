@@ -565,6 +565,11 @@ def test_value_sign():
         assert K.value_sign(value=c - sp.Rational(near)).claim.want == -1, c
         assert K.value_sign(value=c - sp.Rational(near) + sp.Rational(1, 10**30)).claim.want == 1, c
         assert parse(sp.srepr(2 * c)) == 2 * c
+    # a difference of about 10^-300 (log(1 + t) = t - t^2/2 + ...), beyond 256 bits, within 2,048 (red team 18b's
+    # elliptic designs); 10^-700 is beyond both, and its sign stays undecided
+    tiny = sp.log(2 + Q(1, 10 ** 300)) - sp.log(2)
+    assert K.value_sign(value=tiny).claim.want == 1 and K.value_sign(value=-tiny).claim.want == -1
+    rejects(K.value_sign, value=sp.log(2 + Q(1, 10 ** 700)) - sp.log(2))
 
 
 def test_a_sum_of_logarithms_of_rationals_is_exactly_zero():

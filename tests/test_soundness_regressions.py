@@ -251,6 +251,31 @@ def test_non_radial_only_far_out_is_refuted_on_p4(tmp_path):
         sp.Rational(w["point_a"][0]) ** 2 + sp.Rational(w["point_a"][1]) ** 2 >= 2500
 
 
+@pytest.mark.parametrize("body, circle", [
+    # non-radial only on the annulus 10 < |e| < 11: there f(e1, 0) - f(0, e1) = 10^-9 (rho - 100)^3 (121 - rho)^3
+    # e1^2 > 0, at r = 21/2 about 0.05 (red team 18b's M02; its P5, P6 witnesses lay there, P4 stayed unknown)
+    ("f = log(1 + rho) + Piecewise((Rational(1, 10**9)*(rho - 100)**3*(121 - rho)**3*e1**2, (rho > 100) & (rho < 121)), "
+     "(0, True))\n", sp.Rational(21, 2)),
+    # non-radial only beyond e1 = 10^6: f(2*10^6, 0) - f(0, 2*10^6) = 10^18 > 0 (F01)
+    ("f = Piecewise((log(1 + rho), e1 <= 10**6), (log(1 + rho) + (e1 - 10**6)**3, True))\n", 2 * 10 ** 6),
+    # elliptic with r = 1/(1 + 10^-300): f(r, 0) - f(0, r) = log(1 + (1 + 10^-300) r^2) - log(1 + r^2), about
+    # 10^-300 r^2/(1 + r^2) > 0, which 200 bits do not tell from 0 (E19b)
+    ("f = log(1 + (1 + Rational(1, 10**300))*e1**2 + e2**2)\n", None),
+])
+def test_p4_is_refuted_where_f_is_not_radial_only_on_an_annulus_far_out_or_by_10_to_the_minus_300(tmp_path, body,
+                                                                                                   circle):
+    report, v = verify(tmp_path, body)
+    assert v["P4"] == "refuted" and "P4" in report.kernel["checked"], report.properties["P4"].reason
+    w = report.properties["P4"].witness
+    a, b = ([sp.Rational(c) for c in w[k]] for k in ("point_a", "point_b"))
+    assert a[0] ** 2 + a[1] ** 2 == b[0] ** 2 + b[1] ** 2
+    if circle is not None:
+        assert a[0] ** 2 + a[1] ** 2 == circle ** 2
+    f, (x, y) = report.design.f, sorted(report.design.f.free_symbols, key=str)
+    difference = sp.N(f.subs({x: a[0], y: a[1]}) - f.subs({x: b[0], y: b[1]}), 30, maxn=2000)     # SymPy's evalf
+    assert difference < 0 and difference != 0
+
+
 def test_a_vertical_tangent_at_a_boundary_is_no_derivative(tmp_path):
     # F = log(1 + s^2) + (sign(s^2 - 1)|s^2 - 1|^(1/3) + 1)/10 is increasing and
     # continuous, but F' -> +oo at s = 1 from both sides: df/de1 does not exist on

@@ -58,26 +58,27 @@ def verify_radial(f: sp.Expr, F: sp.Expr) -> Verdict:
                               "e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
         except Exception:  # noqa: BLE001 - SymPy failure is just 'not shown'
             continue
-    fn = IntervalFunction(f, [E1, E2], mode="range", prec=200)
-    for r in _RADII:
-        values = []
-        for a, b in _UNIT_CIRCLE:
-            p = (r * a, r * b)
-            try:
-                values.append((p, fn(Interval.point(p[0]), Interval.point(p[1]))))
-            except Undefined:
-                continue
-        for p, vp in values:
-            for q, vq in values:
-                if vp.upper_fraction() is not None and vq.lower_fraction() is not None \
-                        and vp.upper_fraction() < vq.lower_fraction():
-                    return refuted(
-                        f"f is not radial: f{_pt(p)} < f{_pt(q)} on the circle of radius {r}, so "
-                        "e1 df/de2 = e2 df/de1 fails somewhere on the arc between them (or the "
-                        "derivatives do not exist there)",
-                        {"point_a": _pt_json(p), "point_b": _pt_json(q),
-                         "f_a": [vp.lower_float(), vp.upper_float()],
-                         "f_b": [vq.lower_float(), vq.upper_float()]})
+    # 200 bits, then 2,000 for differences such as 10^-300 (the kernel's constant signs reach as far)
+    for fn in (IntervalFunction(f, [E1, E2], mode="range", prec=prec) for prec in (200, 2000)):
+        for r in _RADII + _condition_radii(f):
+            values = []
+            for a, b in _UNIT_CIRCLE:
+                p = (r * a, r * b)
+                try:
+                    values.append((p, fn(Interval.point(p[0]), Interval.point(p[1]))))
+                except Undefined:
+                    continue
+            for p, vp in values:
+                for q, vq in values:
+                    if vp.upper_fraction() is not None and vq.lower_fraction() is not None \
+                            and vp.upper_fraction() < vq.lower_fraction():
+                        return refuted(
+                            f"f is not radial: f{_pt(p)} < f{_pt(q)} on the circle of radius {r}, so "
+                            "e1 df/de2 = e2 df/de1 fails somewhere on the arc between them (or the "
+                            "derivatives do not exist there)",
+                            {"point_a": _pt_json(p), "point_b": _pt_json(q),
+                             "f_a": [vp.lower_float(), vp.upper_float()],
+                             "f_b": [vq.lower_float(), vq.upper_float()]})
     # (e1 df/de2 - e2 df/de1 simplifying to 0 is not used: SymPy differentiates
     # a Piecewise branch by branch and says nothing about its boundaries, and
     # only the identity f = F(|e|) licenses the reduction to F)
@@ -87,6 +88,17 @@ def verify_radial(f: sp.Expr, F: sp.Expr) -> Verdict:
                       "so e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
     except K.KernelError:
         return unknown("could neither prove f radial nor find two points on a circle with different values")
+
+
+def _condition_radii(f) -> list:
+    """Radii for P4's circles from f's Piecewise conditions: each positive
+    number c in them, its square root where rational (a condition may read
+    rho or |e1|), the midpoints between these and twice the largest (f may
+    differ from radial only on an annulus, or only beyond e1 = c)."""
+    conds = [c for pw in f.atoms(sp.Piecewise) for _, c in pw.args if c not in (sp.true, sp.false)]
+    numbers = {abs(n) for c in conds for n in c.atoms(sp.Rational) if n != 0 and abs(n) < 10 ** 30}
+    radii = sorted(numbers | {r for n in numbers for r in [sp.sqrt(n)] if r.is_Rational})[:12]
+    return radii + [(a + b) / 2 for a, b in zip(radii, radii[1:])] + [2 * r for r in radii[-1:]]
 
 
 def elliptic_ratio(f, F):

@@ -269,9 +269,10 @@ def _const_sign(c, zero=False) -> int:
     c = _number(c)
     if c == 0:
         return 0
-    v = evaluate(c, bits=256)
-    if v.positive() or v.negative():
-        return 1 if v.positive() else -1
+    for bits in (256, 2048):        # (2,048 bits tell 10^-300 from 0, a design's tiny difference)
+        v = evaluate(c, bits=bits)
+        if v.positive() or v.negative():
+            return 1 if v.positive() else -1
     _need(zero and _zero_when_generalized(c), lambda: f"sign of {c} not decided")     # 0 as in `identity`
     return 0
 
