@@ -451,6 +451,9 @@ def test_kernel_only_by_default_and_trust_search(tmp_path):
     assert slow["properties"]["P1"]["reason"].startswith(
         "not re-checked by the kernel (the search says proved, which counts only with --trust-search: ")
     assert "P1" in slow["kernel"]["search"] and slow["gains"]["easy"]["W_ok"] is None
+    # JSON says whose kf it shows (red team 18b): the search's here, the kernel's kf = 1/2 of design 1
+    assert slow["kf"]["upper"] is not None and slow["kf"]["kernel_checked"] is False
+    assert one["kf"]["exact"] == "1/2" and one["kf"]["kernel_checked"] is True
     assert slow["exit_status"] == 3 and proc.returncode == 1      # the batch: r09's refutation
     searched = json.loads(run([nested, "--format", "json", "--trust-search"], tmp_path / "cache").stdout)
     assert searched["cached"] is False                            # not the default's entry

@@ -34,7 +34,7 @@ GLOB_CHARS = set("*?[")
 # what `report.to_dict` gives (and a served entry, nothing else), and its kf
 RESULT_KEYS = ("design", "name", "f", "properties", "kf", "gains", "proof_replay", "kernel", "seconds", "exit_status",
                "f_line", "gains_line", "certificate")
-KF_FIELDS = {"exact", "exact_digits", "lower", "upper", "enclosure", "attained", "unbounded", "reason"}
+KF_FIELDS = {"exact", "exact_digits", "lower", "upper", "enclosure", "attained", "unbounded", "kernel_checked", "reason"}
 
 
 def expand_paths(args: list[str]) -> list[str]:
@@ -122,7 +122,7 @@ def served(hit: dict, design, kernel_only: bool = True) -> dict | None:
     status = Report(design.path, design, {p: Verdict(Status(v), "") for p, v in verdicts.items()}, None, gains,
                     proof).exit_status
     here = {**cert, "design": {**cert["design"], "file": str(design.path), "name": design.name}}   # (a copy's entry)
-    shown_kf = dict(shown_kf)
+    shown_kf = dict(shown_kf, kernel_checked=kf[1])
     if kf[0] is not None:       # kf's digits and enclosure printed from the numbers checked above, not as stored
         if kf[2] is not None:
             shown_kf["enclosure"] = show_interval(Fraction(str(kf[2])), Fraction(str(kf[0])), 12)

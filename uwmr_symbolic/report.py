@@ -18,7 +18,7 @@ import sympy as sp
 
 from .interval import Interval
 from .kf import exact_text, show_interval
-from .verify import Report
+from .verify import Report, kf_checked
 
 MARK = {"proved": "proved ", "refuted": "REFUTED", "unknown": "unknown"}
 LETTER = {"proved": "P", "refuted": "R", "unknown": "?"}
@@ -95,6 +95,8 @@ def to_dict(r: Report) -> dict:
                else show_interval(kf.lower, kf.upper, 12),     # (decimals rounded outward, for the text)
                "attained": None if kf is None else kf.attained,
                "unbounded": kf is not None and kf.upper is None and bool(kf.unbounded_witness),
+               # the kernel checked this kf (its value, enclosure or infinity), not the search alone
+               "kernel_checked": kf is not None and r.kernel is not None and kf_checked(r.certificate, r.kernel),
                "reason": "undecided (f not radial or P1 not analysed)" if kf is None else kf.reason},
         "gains": gains_dict(r.gains),
         "proof_replay": r.proof_replay,
