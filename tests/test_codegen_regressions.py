@@ -740,3 +740,19 @@ def test_casadi_reads_every_kind_of_condition():
     fn = ca.Function("pw", [x, y], [to_casadi(pw, {e1: x, e2: y})])
     got = [float(fn(a, b)) for a, b in ((1, 0), (1, 1), (0, 1), (-1, 3), (-1, 2))]
     assert got == [1, 3, 2, 2, 3]
+
+
+def test_a_value_given_on_a_circle_is_no_derivative_there(tmp_path):
+    """Red team 19: f = log(2)/2 on the unit circle (Eq(rho, 1)), log(1 + rho)/2
+    elsewhere, is log(1 + rho)/2 everywhere (proved P1-P8); its g = df/de2 at
+    (0, -1) is e2/(1 + rho) = -1/2, but the validation's reference took the
+    derivative of the circle's branch, 0, and refused the (right) code.
+    Branches taken on a set without inner points are left out before
+    differentiating (`law.partial_e2`)."""
+    path = tmp_path / "circle_value.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\n"
+                    "f = sp.Piecewise((sp.log(2)/2, sp.Eq(e1**2 + e2**2, 1)), (sp.log(1 + e1**2 + e2**2)/2, True))\n")
+    pairs = [(0.0, -1.0), (1.0, 0.0), (0.6, 0.8), (0.0, 1.0), (2.0, 3.0)]
+    _, mod, law = _check_all(path, tmp_path, _law_rows(pairs), _law_rows(pairs))
+    v, w, st = mod.control_status(*_law_rows([(0.0, -1.0), (0.6, 0.8)]).T)
+    assert list(st) == [0, 0] and w[0] == -0.5 and abs(w[1] - 0.4) < 1e-15

@@ -373,9 +373,23 @@ def test_a_tampered_entry_is_not_served(tmp_path):
     _edit_entry(tmp_path, DESIGN1, lambda r: r["properties"]["P6"].update(k="3", k_float=3.0))
     assert check_file(str(DESIGN1), 60, str(tmp_path))["cached"] is False
     _edit_entry(tmp_path, DESIGN1, lambda r: r.update(simulation={"circle": {"ok": True}}))
-    _edit_entry(tmp_path, DESIGN1, lambda r: r["kf"].update(exact_digits="0.70710678118654752440"))
+    _edit_entry(tmp_path, DESIGN1, lambda r: r["kf"].update(exact_digits="0.70710678118654752440", enclosure="[7, 8]"))
+    _edit_entry(tmp_path, DESIGN1, lambda r: r["properties"]["P6"].update(k_float=5.0))
+    _edit_entry(tmp_path, DESIGN1, lambda r: r.update(properties=dict(reversed(r["properties"].items()))))
     hit = check_file(str(DESIGN1), 60, str(tmp_path))
     assert hit["cached"] is True and "simulation" not in hit and hit["kf"]["exact_digits"] == "0.50000000000000000000"
+    assert hit["kf"]["enclosure"] == "[0.5, 0.5]" and hit["properties"]["P6"]["k_float"] == 1.0
+    assert list(hit["properties"]) == PROPS      # in order: the summary's column reads them so (red team 19)
+    # a field no result has, a time no run takes, an entry nested beyond Python's recursion: each a miss
+    for edit in (lambda r: r["properties"]["P1"].update(k="9"), lambda r: r.update(seconds=10 ** 400),
+                 lambda r: r.update(seconds=float("nan"))):
+        _edit_entry(tmp_path, DESIGN1, edit)
+        again = check_file(str(DESIGN1), 60, str(tmp_path))
+        assert again["cached"] is False and "k" not in again["properties"]["P1"] and again["seconds"] < 60
+    cache = ResultCache(tmp_path)
+    path = cache.path_for(design_key(load_design(DESIGN1)))
+    path.write_text(path.read_text()[:-1] + ', "deep": ' + "[" * 100_000 + "]" * 100_000 + "}")
+    assert check_file(str(DESIGN1), 60, str(tmp_path))["cached"] is False
 
 
 def test_a_kf_the_kernel_did_not_check_is_not_served(tmp_path):
@@ -1020,3 +1034,18 @@ def test_a_kf_enclosure_with_an_infinite_end_is_rejected(cert1):
     vacuous["properties"]["kf"].update(exact=None, lower="Mul(Integer(-1), oo)", upper="oo")
     with pytest.raises(DC.CertificateError, match="kf: .* is not an enclosure by finite numbers"):
         DC.check(vacuous)
+
+
+def test_a_value_is_printed_only_where_the_kernel_checked_it():
+    """`--check-certificate` prints P6's k and kf only on a kernel-checked
+    line (red team 19: where the link leaves the claims to the search, they
+    may be about another f), and a number too long for Python's str by its
+    size, not a ValueError."""
+    pc = DC.PropertyCheck("P6", "proved", theorems=4, unchecked=["the split of F"], value=sp.Integer(2))
+    assert pc.line().startswith("P6: proved; 4 kernel theorem(s)")
+    pc.unchecked = []
+    assert pc.line().startswith("P6: proved (k = 2); 4 kernel theorem(s)")
+    enclosed = DC.PropertyCheck("kf", "proved", theorems=3, value=(sp.Rational(1, 3), sp.Rational(1, 2)))
+    assert enclosed.line().startswith("kf: proved (kf in [1/3, 1/2]); 3 kernel theorem(s)")
+    big = DC.PropertyCheck("kf", "proved", theorems=3, value=sp.Integer(10) ** 5000)
+    assert big.line().startswith("kf: proved (a number too long to print); 3 kernel theorem(s)")

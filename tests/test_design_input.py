@@ -217,3 +217,17 @@ def test_numbers_of_every_kind_in_params_and_gains_are_read_exactly():
                      (decimal.Decimal("NaN"), "not a finite number"), (np.float64("nan"), "not a finite number")):
         with pytest.raises(DesignError, match=why):
             exact_number(bad, "c")
+
+
+def test_a_root_of_a_denominator_in_a_branch_not_taken_is_no_refusal(tmp_path):
+    """Red team 19: p = e2^3 + 2 e2 - 5 has one real root r (Cardano's radicals);
+    f = (1 + e1^2) (p^4)^(1/8) times a Piecewise that is 1 for e2 < 2 and
+    p/p beyond is real and defined everywhere (|p|^(1/2)), but SymPy's evalf
+    of the exact 0 of p^4 at (0, r) is noise whose 8th root has an imaginary
+    part of 1e-19, and the loader refused f as not real.  At an irrational
+    root of a denominator only an exact nan or zoo now counts."""
+    path = tmp_path / "root_in_other_branch.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\np = e2**3 + 2*e2 - 5\n"
+                    "f = (1 + e1**2)*sp.expand(p**4)**sp.Rational(1, 8)*sp.Piecewise((1, e2 < 2), (sp.horner(p)/p, True))\n")
+    design = load_design(path)
+    assert design.f.has(sp.Piecewise)

@@ -575,13 +575,15 @@ def test_value_sign():
 def test_a_sum_of_logarithms_of_rationals_is_exactly_zero():
     """log(4)/2 - log(2) is not SymPy's literal 0; read through the primes
     (log 4 = 2 log 2, log(9/4) = 2 log 3 - 2 log 2) it is 0 exactly.  Moved
-    by 10^-90, below what Arb's 256 bits separate, it is neither 0 nor signed.
-    The Taylor rule takes such a value as the zero it needs at c."""
+    by 10^-90 it is signed (at 2,048 bits: 256 do not separate it); by
+    10^-700, beyond 2,048 bits too, it is neither 0 nor signed.  The Taylor
+    rule takes such a value as the zero it needs at c."""
     assert K.value_sign(value=sp.log(4) / 2 - sp.log(2)).claim.want == 0
     assert K.value_sign(value=sp.log(Q(9, 4)) - 2 * sp.log(3) + 2 * sp.log(2)).claim.want == 0
     assert K.value_sign(value=sp.log(6) - sp.log(2) - sp.log(3) + Q(1, 10 ** 9)).claim.want == 1
-    rejects(K.value_sign, value=sp.log(4) / 2 - sp.log(2) + Q(1, 10 ** 90))
-    rejects(K.value_sign, value=sp.log(4) / 3 - sp.log(2) + sp.log(2) / 3 + Q(1, 10 ** 90))
+    assert K.value_sign(value=sp.log(4) / 2 - sp.log(2) - Q(1, 10 ** 90)).claim.want == -1
+    rejects(K.value_sign, value=sp.log(4) / 2 - sp.log(2) + Q(1, 10 ** 700))
+    rejects(K.value_sign, value=sp.log(4) / 3 - sp.log(2) + sp.log(2) / 3 + Q(1, 10 ** 700))
     F = sp.log(4 + x ** 2) / 2 - sp.log(2)             # F(0) = F'(0) = 0, F''(0) = 1/4
     assert K.sign_by_taylor(expr=F, var=x, c=ZERO, side=1, width=Q(1, 2), order=2).claim.want == 1
     rejects(K.sign_by_taylor, expr=F + Q(1, 10 ** 90), var=x, c=ZERO, side=1, width=Q(1, 2), order=2)

@@ -957,18 +957,26 @@ def test_a_supremum_beyond_the_doubles_is_no_crash(tmp_path):
     assert v["P6"] in ("proved", "unknown")      # true: k = 2 10^308 (a bound the search may not enclose)
 
 
-@pytest.mark.parametrize("body", [
-    "f = log(1 + rho) + e2/(e2 - sqrt(2)) - sqrt(2)/(e2 - sqrt(2)) - 1",     # no value on the line e2 = sqrt 2
-    "f = log(1 + rho) + (e1*e2 - sqrt(3)*e2)/(e1 - sqrt(3)) - e2",           # ... on the line e1 = sqrt 3
-    "f = log(1 + rho)*(e1**2 + (e2 - sqrt(2))**2)/(e1**2 + e2**2 - 2*sqrt(2)*e2 + 2)",   # ... at (0, sqrt 2)
-    "f = log(1 + rho)*((sqrt(4 - e2) + 1)**2 - 2*sqrt(4 - e2) - 4 + e2)",    # not real for e2 > 4
+@pytest.mark.parametrize("body, refused", [
+    # no value on the line e2 = sqrt 2, on the line e1 = sqrt 3, at (0, sqrt 2): refused by the loader since red
+    # team 18b (each a real root in radicals of a denominator on a line e1 or e2 = 0, 1, -1)
+    ("f = log(1 + rho) + e2/(e2 - sqrt(2)) - sqrt(2)/(e2 - sqrt(2)) - 1", "(0, sqrt(2))"),
+    ("f = log(1 + rho) + (e1*e2 - sqrt(3)*e2)/(e1 - sqrt(3)) - e2", "(sqrt(3), 0)"),
+    ("f = log(1 + rho)*(e1**2 + (e2 - sqrt(2))**2)/(e1**2 + e2**2 - 2*sqrt(2)*e2 + 2)", "(0, sqrt(2))"),
+    ("f = log(1 + rho)*((sqrt(4 - e2) + 1)**2 - 2*sqrt(4 - e2) - 4 + e2)", None),    # not real for e2 > 4
 ])
-def test_an_f_without_a_value_somewhere_off_the_e1_axis_is_not_proved(tmp_path, body):
+def test_an_f_without_a_value_somewhere_off_the_e1_axis_is_not_proved(tmp_path, body, refused):
     """Found by a red team: each f is log(1 + rho) wherever it has a real
     value (the loader's sample points and the e1 axis miss the bad set; with
-    rational lines, 2 for sqrt 2, the loader now refuses the f), so the
-    identity f = F(|e|) held where both sides are defined and P1-P8 were
+    rational lines, 2 for sqrt 2, the loader refuses the f, and with a line
+    at a real root in radicals of a denominator, sqrt 2 or sqrt 3, too), so
+    the identity f = F(|e|) held where both sides are defined and P1-P8 were
     proved.  The reduction now also needs f defined on the whole plane."""
+    if refused is not None:
+        path = tmp_path / "design.py"
+        path.write_text(HEADER + body + "\n")
+        assert verify_design(path).error == f"f is undefined at (e1, e2) = {refused}"
+        return
     report, got = verify(tmp_path, body)
     assert got["P2"] == "proved"                    # f(0, 0) = 0: the origin is fine
     assert all(got[p] != "proved" for p in ("P1", "P3", "P4", "P5", "P6", "P7", "P8")), got

@@ -23,8 +23,9 @@ from . import design_certificate as certificates
 from .cache import ResultCache, design_key, source_hash
 from .gains import check_gains
 from .interval import Interval
-from .kf import exact_text, show_interval
-from .report import design_fields, exact_digits, gains_dict, to_dict
+from .kf import exact_text
+from .report import design_fields, gains_dict, kf_numbers, to_dict
+from .profile import float_of
 from .properties import PROPERTIES
 from .replay import replay
 from .verdict import Status, Verdict, unknown
@@ -35,6 +36,7 @@ GLOB_CHARS = set("*?[")
 RESULT_KEYS = ("design", "name", "f", "properties", "kf", "gains", "proof_replay", "kernel", "seconds", "exit_status",
                "f_line", "gains_line", "certificate")
 KF_FIELDS = {"exact", "exact_digits", "lower", "upper", "enclosure", "attained", "unbounded", "kernel_checked", "reason"}
+PROPERTY_FIELDS, P6_FIELDS = {"verdict", "reason", "witness", "unchecked"}, {"k", "k_float", "h"}
 
 
 def expand_paths(args: list[str]) -> list[str]:
@@ -101,19 +103,20 @@ def served(hit: dict, design, kernel_only: bool = True) -> dict | None:
         return None
     statuses = {p: e.get("status") for p, e in cert["properties"].items() if p in PROPERTIES}
     expected = {p: "unknown" if kernel_only and p in kernel["search"] else s for p, s in statuses.items()}
-    props, shown_kf = hit.get("properties"), hit.get("kf")
-    if not (isinstance(props, dict) and all(isinstance(v, dict) and isinstance(v.get("reason"), str)
-                                            for v in props.values())
+    props, shown_kf, seconds = hit.get("properties"), hit.get("kf"), hit.get("seconds")
+    if not (isinstance(props, dict) and all(isinstance(v, dict) and isinstance(v.get("reason"), str) and set(v) <= (
+            PROPERTY_FIELDS | (P6_FIELDS if (p, v.get("verdict")) == ("P6", "proved") else set())) for p, v in props.items())
             and isinstance(shown_kf, dict) and set(shown_kf) == KF_FIELDS and shown_kf["attained"] in (True, False, None)
-            and isinstance(shown_kf["reason"], str) and isinstance(hit.get("seconds"), (int, float))):
+            and isinstance(shown_kf["reason"], str) and type(seconds) in (int, float) and 0 <= seconds < 1e7):
         return None
     verdicts = {p: str(v.get("verdict")) for p, v in props.items()}
     if cert["design"]["f"] != sp.srepr(design.f) or hit.get("kernel") != kernel or verdicts != expected \
             or set(verdicts) != set(PROPERTIES):        # (a property left out is no property proved)
         return None
     k6 = next(c.value for c in checks if c.name == "P6")
-    if "P6" in kernel["checked"] and verdicts["P6"] == "proved" and props["P6"].get("k") != str(k6):
+    if verdicts["P6"] == "proved" and (k6 is None or props["P6"].get("k") != str(k6)):
         return None             # P6's k is the one the kernel checked h <= 1 with
+    props = {p: dict(props[p], **({"k_float": float_of(k6)} if "k" in props[p] else {})) for p in PROPERTIES}
     kf = _checked_kf(cert, kernel, shown_kf)
     if kf is None:
         return None
@@ -122,12 +125,15 @@ def served(hit: dict, design, kernel_only: bool = True) -> dict | None:
     status = Report(design.path, design, {p: Verdict(Status(v), "") for p, v in verdicts.items()}, None, gains,
                     proof).exit_status
     here = {**cert, "design": {**cert["design"], "file": str(design.path), "name": design.name}}   # (a copy's entry)
-    shown_kf = dict(shown_kf, kernel_checked=kf[1])
-    if kf[0] is not None:       # kf's digits and enclosure printed from the numbers checked above, not as stored
-        if kf[2] is not None:
-            shown_kf["enclosure"] = show_interval(Fraction(str(kf[2])), Fraction(str(kf[0])), 12)
-        else:
-            shown_kf["exact_digits"] = exact_digits(kf[0])
+    upper, known, lower = kf        # kf's numbers from those checked above, not as stored
+    if upper is None:
+        numbers = kf_numbers(None, None, None, known)
+    elif lower is None:
+        box = Interval.point(upper)
+        numbers = kf_numbers(upper, box.lower_fraction(), box.upper_fraction(), False)
+    else:
+        numbers = kf_numbers(None, Fraction(str(lower)), Fraction(str(upper)), False)
+    shown_kf = dict(shown_kf, **numbers, kernel_checked=known)
     return {"properties": props, "kf": shown_kf, "kernel": kernel, "seconds": hit["seconds"], "certificate": here,
             "gains": gains_dict(gains), "proof_replay": proof, "exit_status": status}
 

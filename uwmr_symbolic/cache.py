@@ -148,7 +148,7 @@ class ResultCache:
         see `serves`)."""
         try:
             entry = json.loads(self.path_for(key).read_text())
-        except (OSError, UnicodeDecodeError, ValueError):
+        except (OSError, UnicodeDecodeError, ValueError, RecursionError):      # (a nested edit: red team 19)
             return None
         if not isinstance(entry, dict) or entry.get("key") != key or not isinstance(entry.get("result"), dict) \
                 or not serves(entry, timeout):

@@ -115,13 +115,22 @@ class PropertyCheck:
     def line(self) -> str:
         if self.status not in ("proved", "refuted"):
             return f"{self.name}: {self.status} (nothing to check)"
-        shown = "" if self.value is None else f" (kf in [{self.value[0]}, {self.value[1]}])" \
-            if isinstance(self.value, tuple) else f" ({'k' if self.name == 'P6' else 'kf'} = {self.value})"
+        shown = "" if self.value is None or not self.kernel_checked else _shown(self.value, self.name)
         head = (f"{self.name}: {self.status}{shown}; {self.theorems} kernel theorem(s) re-checked"
                 f" (rests on {', '.join(self.assumptions)})" if self.theorems else f"{self.name}: {self.status}")
         if not self.unchecked:
             return head + "; kernel-checked" + (f": {self.witness}" if self.witness else "")
         return head + "; still rests on the search for: " + "; ".join(self.unchecked)
+
+
+def _shown(value, name) -> str:
+    """ (k = ...) or (kf = ...), (kf in [L, U]) for a kernel-checked line;
+    a number of more digits than Python prints, by its size."""
+    try:
+        return f" (kf in [{value[0]}, {value[1]}])" if isinstance(value, tuple) else \
+            f" ({'k' if name == 'P6' else 'kf'} = {value})"
+    except ValueError:          # (an integer beyond sys.get_int_max_str_digits)
+        return " (a number too long to print)"
 
 
 @functools.lru_cache(maxsize=256)

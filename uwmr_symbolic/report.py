@@ -87,14 +87,9 @@ def to_dict(r: Report) -> dict:
                            "witness": _jsonable(v.witness),
                            **_jsonable({k: x for k, x in v.details.items() if k != "kernel"})}
                        for p, v in r.properties.items()},
-        "kf": {"exact": None if kf is None or kf.exact is None else exact_text(kf.exact),
-               "exact_digits": None if kf is None or kf.exact is None else exact_digits(kf.exact),
-               "lower": None if kf is None or kf.lower is None else Interval.point(kf.lower).lower_float(),
-               "upper": None if kf is None or kf.upper is None else Interval.point(kf.upper).upper_float(),
-               "enclosure": None if kf is None or kf.lower is None or kf.upper is None
-               else show_interval(kf.lower, kf.upper, 12),     # (decimals rounded outward, for the text)
+        "kf": {**(kf_numbers(None, None, None, False) if kf is None else
+                  kf_numbers(kf.exact, kf.lower, kf.upper, kf.upper is None and bool(kf.unbounded_witness))),
                "attained": None if kf is None else kf.attained,
-               "unbounded": kf is not None and kf.upper is None and bool(kf.unbounded_witness),
                # the kernel checked this kf (its value, enclosure or infinity), not the search alone
                "kernel_checked": kf is not None and r.kernel is not None and kf_checked(r.certificate, r.kernel),
                "reason": "undecided (f not radial or P1 not analysed)" if kf is None else kf.reason},
@@ -111,9 +106,19 @@ def to_dict(r: Report) -> dict:
     return d
 
 
-def exact_digits(x: sp.Expr) -> str | None:
-    """kf's first 20 digits in the reports (None for an integer written out)."""
-    return None if x.is_Integer and exact_text(x) == str(x) else str(sp.N(x, 20))
+def kf_numbers(exact, lower, upper, unbounded: bool) -> dict:
+    """kf's numbers as the reports give them (`to_dict`; a cache hit derives
+    them again from the kf the kernel checked): the exact value and its first
+    20 digits (none for an integer written out), the enclosure's ends as
+    doubles rounded outward and as 12 digits rounded outward (for the text),
+    and whether kf is infinite."""
+    return {"exact": None if exact is None else exact_text(exact),
+            "exact_digits": None if exact is None or exact.is_Integer and exact_text(exact) == str(exact)
+            else str(sp.N(exact, 20)),
+            "lower": None if lower is None else Interval.point(lower).lower_float(),
+            "upper": None if upper is None else Interval.point(upper).upper_float(),
+            "enclosure": None if lower is None or upper is None else show_interval(lower, upper, 12),
+            "unbounded": unbounded}
 
 
 def number_text(x, spec: str) -> str | None:

@@ -96,6 +96,28 @@ def rho_minus_b(e1, e2, bh, bl, split=134217729.0, opaque=lambda s: s):
     return (s - bh) + ((((p1 - (s - z)) + (p2 - z)) + q1 + q2) - bl)
 
 
+
+def _thin(cond) -> bool:
+    """The condition holds on a set without inner points: an equation, an
+    And with one, an Or of such."""
+    if isinstance(cond, sp.Eq):
+        return True
+    if isinstance(cond, sp.And):
+        return any(_thin(c) for c in cond.args)
+    return isinstance(cond, sp.Or) and all(_thin(c) for c in cond.args)
+
+
+def partial_e2(f: sp.Expr) -> sp.Expr:
+    """g = df/de2 of a C^1 f (P1 proved): SymPy's `diff`, branch by branch,
+    after leaving out the Piecewise branches taken on thin sets only (a
+    value on a circle, Eq(rho, 1), or at the origin).  There df/de2 is the
+    limit of its values around (f is C^1), not the derivative of that
+    branch's formula, which SymPy's branch-wise diff would give (0 for a
+    constant; red team 19)."""
+    def keep(pw):
+        return sp.Piecewise(*[(e, c) for e, c in pw.args if not _thin(c)])
+    return sp.diff(f.replace(lambda x: isinstance(x, sp.Piecewise), keep), E2)
+
 @dataclass
 class Branch:
     """expr holds for lo < x < hi (x is rho or t); `hi_closed` says whether
@@ -380,7 +402,7 @@ def build_model(design, analysis, report=None, precisions=("double", "float")) -
         except Exception:  # noqa: BLE001 - split failed: treat as general
             profile = None
     if profile is None:
-        model.general = prepare(sp.diff(design.f, E2))
+        model.general = prepare(partial_e2(design.f))
         model.notes.append("f is not known to be radial: g = df/de2 is evaluated as derived, "
                            "without the overflow-safe radial forms")
         return model

@@ -32,6 +32,7 @@ from sympy.codegen.cfunctions import expm1, log1p
 from .. import e1 as E1, e2 as E2
 from ..interval import NUMBER_SYMBOLS
 from ..univariate import prepare
+from .law import partial_e2
 
 START_PREC, MAX_PREC = 128, 16384
 REL = 2.0 ** -90
@@ -189,7 +190,7 @@ class Law:
 
     @classmethod
     def of(cls, design) -> "Law":
-        return cls(prepare(sp.diff(design.f, E2)))
+        return cls(prepare(partial_e2(design.f)))
 
     def __post_init__(self):
         self._g = _arb_fn(self.g_expr)
@@ -345,7 +346,7 @@ def errors(ref: dict, v, w, precision: str = "double"):
 def mp_g(design, e1: float, e2: float, dps: int = 50):
     """g = df/de2 with mpmath at 50 digits plus the digits that the
     cancellation of rho = e1^2 + e2^2 against 1 costs (1e-300 -> 650 digits)."""
-    expr = prepare(sp.diff(design.f, E2))
+    expr = prepare(partial_e2(design.f))
     fn = sp.lambdify((E1, E2), expr, "mpmath")
     rho = mpmath.mpf(e1) ** 2 + mpmath.mpf(e2) ** 2
     if rho != 0:
