@@ -96,7 +96,6 @@ def rho_minus_b(e1, e2, bh, bl, split=134217729.0, opaque=lambda s: s):
     return (s - bh) + ((((p1 - (s - z)) + (p2 - z)) + q1 + q2) - bl)
 
 
-
 def _thin(cond) -> bool:
     """The condition holds on a set without inner points: an equation, an
     And with one, an Or of such."""
@@ -117,6 +116,7 @@ def partial_e2(f: sp.Expr) -> sp.Expr:
     def keep(pw):
         return sp.Piecewise(*[(e, c) for e, c in pw.args if not _thin(c)])
     return sp.diff(f.replace(lambda x: isinstance(x, sp.Piecewise), keep), E2)
+
 
 @dataclass
 class Branch:
