@@ -23,7 +23,6 @@ from . import design_certificate as certificates
 from .cache import ResultCache, design_key, source_hash
 from .gains import check_gains
 from .interval import Interval
-from .kf import exact_text
 from .report import design_fields, gains_dict, kf_numbers, to_dict
 from .profile import float_of
 from .properties import PROPERTIES
@@ -117,50 +116,38 @@ def served(hit: dict, design, kernel_only: bool = True) -> dict | None:
     if verdicts["P6"] == "proved" and (k6 is None or props["P6"].get("k") != str(k6)):
         return None             # P6's k is the one the kernel checked h <= 1 with
     props = {p: dict(props[p], **({"k_float": float_of(k6)} if "k" in props[p] else {})) for p in PROPERTIES}
-    kf = _checked_kf(cert, kernel, shown_kf)
-    if kf is None:
+    checked = _checked_kf(cert, kernel, shown_kf)
+    if checked is None:
         return None
+    kf, numbers = checked
     gains = check_gains(design.gains, *kf)
     proof = replay(design.f, statuses.get("P4") == "proved")
     status = Report(design.path, design, {p: Verdict(Status(v), "") for p, v in verdicts.items()}, None, gains,
                     proof).exit_status
     here = {**cert, "design": {**cert["design"], "file": str(design.path), "name": design.name}}   # (a copy's entry)
-    upper, known, lower = kf        # kf's numbers from those checked above, not as stored
-    if upper is None:
-        numbers = kf_numbers(None, None, None, known)
-    elif lower is None:
-        box = Interval.point(upper)
-        numbers = kf_numbers(upper, box.lower_fraction(), box.upper_fraction(), False)
-    else:
-        numbers = kf_numbers(None, Fraction(str(lower)), Fraction(str(upper)), False)
-    shown_kf = dict(shown_kf, **numbers, kernel_checked=known)
+    shown_kf = dict(shown_kf, **numbers, kernel_checked=kf[1])      # kf's numbers as checked, not as stored
     return {"properties": props, "kf": shown_kf, "kernel": kernel, "seconds": hit["seconds"], "certificate": here,
             "gains": gains_dict(gains), "proof_replay": proof, "exit_status": status}
 
 
 def _checked_kf(cert: dict, kernel: dict, shown: dict) -> tuple | None:
-    """(kf_upper, kf_known, kf_lower) for `gains.check_gains` from what the
-    kernel checked of kf, if the cached `shown` kf is that one; else None."""
+    """((kf_upper, kf_known, kf_lower) for `gains.check_gains`, kf's numbers
+    as `report.kf_numbers` gives them) from what the kernel checked of kf,
+    if the cached `shown` kf has those numbers; else None."""
     entry = cert["properties"].get("kf") or {}
-    values = (shown.get("exact"), shown.get("lower"), shown.get("upper"), bool(shown.get("unbounded")))
     if "kf" in kernel["checked"] and entry.get("exact") is not None:
         exact = certificates.parse(entry["exact"])
         box = Interval.point(exact)         # (as `kf.exact_certificate` and `report.to_dict` print it)
-        shown_exact = (exact_text(exact), _floats(box.lower_fraction(), box.upper_fraction()), False)
-        return (exact, True, None) if (values[0], values[1:3], values[3]) == shown_exact else None
-    if "kf" in kernel["checked"]:
+        out = (exact, True, None), kf_numbers(exact, box.lower_fraction(), box.upper_fraction(), False)
+    elif "kf" in kernel["checked"]:
         L, U = certificates.parse(entry["lower"]), certificates.parse(entry["upper"])
-        return (U, True, L) if values == (None, *_floats(L, U), False) else None
-    if kf_checked(cert, kernel):        # infinite, by a checked P1 witness df/de2 -> oo
-        return (None, True, None) if values == (None, None, None, True) else None
-    # kf undecided, or resting on the search: what an entry says the search found could be anybody's
-    # (bound (10) does not use it by default, but the report shows it), so such an entry is computed again
-    return (None, False, None) if values == (None, None, None, False) else None
-
-
-def _floats(lower, upper) -> tuple:
-    """kf's "lower" and "upper" of `report.to_dict`: doubles rounded outward."""
-    return Interval.point(lower).lower_float(), Interval.point(upper).upper_float()
+        out = (U, True, L), kf_numbers(None, Fraction(str(L)), Fraction(str(U)), False)
+    elif kf_checked(cert, kernel):        # infinite, by a checked P1 witness df/de2 -> oo
+        out = (None, True, None), kf_numbers(None, None, None, True)
+    else:   # kf undecided, or resting on the search: what an entry says the search found could be anybody's
+        # (bound (10) does not use it by default, but the report shows it), so such an entry is computed again
+        out = (None, False, None), kf_numbers(None, None, None, False)
+    return out if all(shown.get(key) == out[1][key] for key in ("exact", "lower", "upper", "unbounded")) else None
 
 
 def _internal_error(path: str, exc: BaseException) -> dict:

@@ -991,9 +991,9 @@ def _check_property(name, entry, f) -> PropertyCheck:
                 raise CertificateError(f"kf: [{bounds[0]}, {bounds[1]}] is not an enclosure by finite numbers")
             pc.unchecked += [u for u in _link(name, f, theorems, bounds)     # (a note may say more)
                              if not any(x.startswith(u) for x in pc.unchecked)]
-            ks = {t.claim.other for t in theorems if t.claim.kind == "sup_upper"}
-            if name == "P6" and len(ks) == 1:       # (each link asks one k of every sup claim of h)
-                pc.value = parse(ks.pop())
+            if name == "P6":        # (each link asks one k of every sup claim of h)
+                ks = {t.claim.other for t in theorems if t.claim.kind == "sup_upper"}
+                pc.value = parse(ks.pop()) if len(ks) == 1 else None
             elif name == "kf":
                 pc.value = bounds[0] if bounds[0] == bounds[1] else bounds
             if name not in ("P2", "P4"):        # the link differentiates F itself

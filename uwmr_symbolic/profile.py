@@ -59,8 +59,9 @@ def verify_radial(f: sp.Expr, F: sp.Expr) -> Verdict:
         except Exception:  # noqa: BLE001 - SymPy failure is just 'not shown'
             continue
     # 200 bits, then 2,000 for differences such as 10^-300 (the kernel's constant signs reach as far)
+    radii = _RADII + _condition_radii(f)
     for fn in (IntervalFunction(f, [E1, E2], mode="range", prec=prec) for prec in (200, 2000)):
-        for r in _RADII + _condition_radii(f):
+        for r in radii:
             values = []
             for a, b in _UNIT_CIRCLE:
                 p = (r * a, r * b)

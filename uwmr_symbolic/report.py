@@ -182,8 +182,7 @@ def render_text(r) -> str:
         lines.append(f"  kf: {'infinite' if kf.get('unbounded') else 'undecided'} — {kf['reason']}")
     else:
         att = {True: "attained", False: "approached at infinity, not attained", None: "attainment undecided"}
-        how = att[kf["attained"]] + ("; the search's, not re-checked by the kernel"
-                                     if "kf" not in (d.get("kernel") or {"checked": ["kf"]})["checked"] else "")
+        how = att[kf["attained"]] + ("" if kf["kernel_checked"] else "; the search's, not re-checked by the kernel")
         if kf["exact"] is not None:
             digits = f" = {kf['exact_digits']}..." if kf.get("exact_digits") else ""
             lines.append(f"  kf = {kf['exact']}{digits}  ({how})")

@@ -13,7 +13,9 @@ rho or H(rho) may overflow.  A function CasADi lacks (gamma, ...) raises
 NotImplementedError naming it."""
 from __future__ import annotations
 
+import functools
 import math
+import operator
 from dataclasses import dataclass
 
 import casadi as ca
@@ -81,15 +83,11 @@ def to_casadi(expr: sp.Expr, env: dict):
         return out
     if isinstance(expr, sp.core.relational.Relational):
         a, b = to_casadi(expr.lhs, env), to_casadi(expr.rhs, env)
-        return {sp.StrictLessThan: lambda: a < b, sp.LessThan: lambda: a <= b, sp.StrictGreaterThan: lambda: a > b,
-                sp.GreaterThan: lambda: a >= b, sp.Equality: lambda: a == b, sp.Unequality: lambda: a != b}[type(expr)]()
+        return {sp.StrictLessThan: operator.lt, sp.LessThan: operator.le, sp.StrictGreaterThan: operator.gt,
+                sp.GreaterThan: operator.ge, sp.Equality: operator.eq, sp.Unequality: operator.ne}[type(expr)](a, b)
     if isinstance(expr, (sp.And, sp.Or)):
-        parts = [to_casadi(c, env) for c in expr.args]
         join = ca.logic_and if isinstance(expr, sp.And) else ca.logic_or
-        out = parts[0]
-        for part in parts[1:]:
-            out = join(out, part)
-        return out
+        return functools.reduce(join, [to_casadi(c, env) for c in expr.args])
     if isinstance(expr, sp.Not):
         return ca.logic_not(to_casadi(expr.args[0], env))
     raise NotImplementedError(f"no CasADi translation for {expr.func.__name__}")
