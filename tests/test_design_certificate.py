@@ -210,6 +210,11 @@ def test_other_version_gives_a_clear_error(cert1):
     bad = dict(cert1, version=1)        # version 1: P4 without f defined on the plane
     with pytest.raises(DC.CertificateError, match="version 1 is not supported: this checker reads version 2"):
         DC.check(bad)
+    older = copy.deepcopy(cert1)        # kernel certificates of version 1: sympy-core listed for some rules only
+    older["properties"]["P2"]["kernel"]["version"] = 1
+    with pytest.raises(DC.CertificateError, match="^P2: certificate format version 1 is not supported: this kernel "
+                                                  "reads version 2 only; re-create the certificate$"):
+        DC.check(older)
 
 
 def test_cli_writes_and_rechecks_a_certificate(tmp_path):
@@ -232,6 +237,11 @@ def test_cli_writes_and_rechecks_a_certificate(tmp_path):
     assert r.returncode == 1 and r.stderr.count("\n") == 1 and "does not check" in r.stderr, r.describe()
     r = run_cli(["--check-certificate", str(tmp_path / "missing.json")])
     assert r.returncode == 2 and "cannot read the certificate" in r.stderr, r.describe()
+    deep = tmp_path / "deep.json"          # JSON nested past Python's recursion limit: one line, no traceback
+    deep.write_text("[" * 100_000 + "]" * 100_000)
+    r = run_cli(["--check-certificate", str(deep)])
+    assert (r.returncode, r.stderr) == (1, f"{deep}: the certificate does not check: not JSON: nested too deeply\n"), \
+        r.describe()
     # several files are checked in parallel and reported in the order given; the worst status wins
     both = run_cli(["--check-certificate", str(out), str(bad), str(out), "--jobs", "2"])
     assert both.returncode == 1 and both.stderr.startswith(f"{bad}: the certificate does not check"), both.describe()

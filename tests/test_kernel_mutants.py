@@ -1362,7 +1362,7 @@ def test_to_certificate_lists_premises_once_and_first():
     assert [n["premises"] for n in cert["theorems"]] == [[], [0], [], [0, 2], []]   # base listed once
     assert cert["conclusions"] == [1, 3, 4]
     assert cert["assumptions"] == ["arb", "flint-polys", "sympy-core", "sympy-polys"]
-    assert (cert["format"], cert["version"]) == ("uwmr-kernel-certificate", 1)
+    assert (cert["format"], cert["version"]) == ("uwmr-kernel-certificate", 2)
     assert cert["theorems"][1]["claim"] == th.claim.to_json()
     assert [t.claim for t in check_certificate(cert)] == [th.claim, both.claim, vs.claim]
 
@@ -1383,9 +1383,9 @@ def test_certificate_checker_messages():
     assert refused(lambda c: [c]) == "a certificate is a JSON object"
     assert refused(lambda c: c.update(format="other")) == "not a uwmr-kernel-certificate (format = 'other')"
     assert refused(lambda c: c.__delitem__("format")) == "not a uwmr-kernel-certificate (format = None)"
-    assert refused(lambda c: c.update(version=2)) == (
-        "certificate format version 2 is not supported: this kernel reads version 1 only; re-create the certificate")
-    assert refused(lambda c: c.update(version="1")).startswith("certificate format version '1' is not supported")
+    assert refused(lambda c: c.update(version=1)) == (
+        "certificate format version 1 is not supported: this kernel reads version 2 only; re-create the certificate")
+    assert refused(lambda c: c.update(version="2")).startswith("certificate format version '2' is not supported")
     for key in ("theorems", "conclusions", "assumptions"):
         assert refused(lambda c: c.update({key: {}})) == f"'{key}' must be a list"
     shape = "theorem 0: needs id = 0, rule, premises, data, claim"
@@ -1464,7 +1464,7 @@ def test_command_line(tmp_path, capsys):
     wrong.write_text(json.dumps(cert))
     assert main([str(wrong)]) == 1
     assert capsys.readouterr().out == (f"{wrong}: REJECTED: certificate format version 7 is not supported: "
-                                       "this kernel reads version 1 only; re-create the certificate\n")
+                                       "this kernel reads version 2 only; re-create the certificate\n")
     assert main([]) == 2
     assert capsys.readouterr().out.startswith("python -m uwmr_symbolic.kernel CERT.json ...: re-check certificates.")
     import sys

@@ -351,7 +351,7 @@ def write_code(paths, results, out, force, reports: Reports) -> int:
 
 def _check_one_certificate(name: str, timeout: float = DEFAULT_TIMEOUT) -> tuple[int, str, str]:
     """(status, stdout text, stderr text) of `--check-certificate` for one file."""
-    from .design_certificate import CertificateError, check, parse
+    from .design_certificate import CertificateError, check, parse, read_json
     from .timeouts import TimeLimit, time_limit
     from .verdict import PROPERTIES
     try:
@@ -360,7 +360,8 @@ def _check_one_certificate(name: str, timeout: float = DEFAULT_TIMEOUT) -> tuple
         return 2, "", f"{name}: cannot read the certificate: {exc}"
     try:
         with time_limit(timeout):
-            checks = check(text)
+            data = read_json(text)
+            checks = check(data)
     except CertificateError as exc:
         return 1, "", f"{name}: the certificate does not check: {exc}"
     except TimeLimit:
@@ -371,7 +372,7 @@ def _check_one_certificate(name: str, timeout: float = DEFAULT_TIMEOUT) -> tuple
                                           for p in PROPERTIES if p not in present]
     if "kf" not in present:
         lines.append("kf: absent (a certificate holds kf only when the verifier certified a finite kf)")
-    design = json.loads(text)["design"]         # (read by `check`: f parses)
+    design = data["design"]                     # (read by `check`: f parses)
     try:
         f = str(parse(design["f"], design=True))
     except ValueError:                          # an integer beyond sys.get_int_max_str_digits

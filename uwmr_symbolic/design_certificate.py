@@ -37,7 +37,7 @@ import sympy as sp
 
 from . import e1 as E1, e2 as E2
 from .certify import REDUCTION
-from .kernel.certificate import CertificateError, check_certificate, to_certificate  # noqa: F401 (re-exported)
+from .kernel.certificate import CertificateError, check_certificate, read_json, to_certificate  # noqa: F401 (re-exported)
 from .kernel.core import _TRUE_WHEN, _lt, _srepr, derivative    # when a relation l < r (<=, >, >=) holds: the sign of r - l; srepr, cached
 from .kernel.parse import ParseError, parse
 from .profile import S
@@ -1010,11 +1010,7 @@ def _check_property(name, entry, f) -> PropertyCheck:
 def check(data) -> list[PropertyCheck]:
     """Re-check a design certificate (a dict or JSON text).  Raises
     CertificateError naming the first property or step that fails."""
-    if isinstance(data, (str, bytes)):
-        try:
-            data = json.loads(data)
-        except json.JSONDecodeError as exc:
-            raise CertificateError(f"not JSON: {exc}") from None
+    data = read_json(data)
     if not isinstance(data, dict) or data.get("format") != FORMAT:
         raise CertificateError(f"not a design certificate (format must be {FORMAT!r})")
     if data.get("version") != VERSION:

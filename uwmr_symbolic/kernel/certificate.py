@@ -10,7 +10,7 @@ from pathlib import Path
 from .core import RULES, Claim, Theorem
 
 FORMAT = "uwmr-kernel-certificate"
-VERSION = 1
+VERSION = 2         # 2: every theorem lists sympy-core (version 1 did not, for some rules)
 SCHEMA = Path(__file__).with_name("certificate.schema.json")
 
 
@@ -56,17 +56,22 @@ def _shape(data):
             raise CertificateError(f"theorem {i}: needs id = {i}, rule, premises, data, claim")
 
 
+def read_json(data):
+    """data itself, or the JSON value of a text; CertificateError if it is no JSON
+    (or nested past Python's recursion limit)."""
+    try:
+        return json.loads(data) if isinstance(data, (str, bytes)) else data
+    except (json.JSONDecodeError, RecursionError) as exc:
+        raise CertificateError(f"not JSON: {'nested too deeply' if isinstance(exc, RecursionError) else exc}") from None
+
+
 _CHECKED: dict = {}     # (rule, data, premises' claims and assumptions) -> the theorem it gave
 
 
 def check_certificate(data) -> list[Theorem]:
     """Re-apply every step; return the conclusions as kernel theorems.
     Raises CertificateError naming the first step that fails."""
-    if isinstance(data, (str, bytes)):
-        try:
-            data = json.loads(data)
-        except json.JSONDecodeError as exc:
-            raise CertificateError(f"not JSON: {exc}") from None
+    data = read_json(data)
     _shape(data)
     built: list[Theorem] = []
     for node in data["theorems"]:
