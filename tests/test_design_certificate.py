@@ -188,6 +188,38 @@ def test_a_property_whose_kernel_theorems_do_not_recheck_is_left_to_the_search_a
     assert ResultCache(tmp_path).get(key) is None
 
 
+def test_a_proof_that_another_property_s_checked_witness_refutes_is_a_refutation(monkeypatch):
+    """Red team 18a: a certificate calling P1 proved (by the search) beside a
+    kernel-checked refutation of P5 whose witness refutes P1 too was accepted.
+    f = |e|: df/de1 jumps from -1 to 1 across the origin on the e1 axis, which
+    refutes P1 as well as P5 (`_REFUTES["origin_jump"]`).  The checker now
+    refuses such a certificate, and a search that "proves" P1 gets P1 refuted
+    by P5's witness, kernel-checked, also with --trust-search."""
+    from uwmr_symbolic import properties, verify as V
+    from uwmr_symbolic.report import kernel_text
+    norm = ROOT / "tests" / "designs" / "r07_norm.py"
+    cert = DC.build(verify_design(norm))
+    assert cert["properties"]["P1"]["status"] == "refuted"
+    assert cert["properties"]["P5"]["witness"]["kind"] == "origin_jump"
+    cert["properties"]["P1"] = {"status": "proved", "reason": "so the search said", "kernel": None,
+                                "unchecked": [DC.SEARCH_ONLY]}
+    with pytest.raises(DC.CertificateError, match=r"^P1: the certificate says proved, but the kernel-checked "
+                                                  r"witness of P5 refutes P1 too \(df/de1 -> 1 and -1 along the e1 "
+                                                  r"axis on either side of the origin\)$"):
+        DC.check(cert)
+    monkeypatch.setitem(properties.VERIFIERS, "P1", lambda analysis: V.Verdict("proved", "the search's wrong proof"))
+    for kernel_only in (True, False):
+        report = V.verify_design(norm, kernel_only=kernel_only)
+        p1 = report.properties["P1"]
+        assert p1.refuted and p1.reason.startswith("the witness of P5 refutes P1 as well: "), p1.reason
+        assert p1.reason.endswith("(the search had proved P1, wrongly: the search's wrong proof)")
+        assert "P1" in report.kernel["checked"] and report.kernel["refuted_by"] == {"P1": "P5"}
+        assert kernel_text(report.kernel).endswith("; the search proved P1, which the witness of P5 refutes "
+                                                   "(a bug: please report it)")
+        checks = _by_name(DC.check(report.certificate))
+        assert checks["P1"].refutation_checked and checks["P1"].witness == checks["P5"].witness
+
+
 def test_malformed_entries_and_unknown_properties_are_rejected(cert1):
     """Found by a review: an `unchecked` entry that is not a list of texts
     crashed the report; a property the checker does not know ("P9" holding

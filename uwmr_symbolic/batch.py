@@ -73,7 +73,7 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
             return {**{key: hit[key] for key in RESULT_KEYS}, "cached": True}       # in `to_dict`'s order
     report = verify_loaded(design, timeout, start, kernel_only)
     result = {**to_dict(report), "certificate": report.certificate}
-    if cache is not None and report.certificate is not None and not {"error", "stopped", "failed"} & set(report.kernel):
+    if cache is not None and report.certificate is not None and not {"error", "stopped", "failed", "refuted_by"} & set(report.kernel):
         cache.put(key, result, timeout=timeout, timed_out=report.timed_out)
     return {**result, "cached": False}
 

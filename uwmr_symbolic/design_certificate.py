@@ -101,6 +101,7 @@ class PropertyCheck:
 
     witness: str = ""           # refuted: what the kernel's conclusions show about f
     value: object = None        # proved: P6's k (the bound of its sup claims); kf's exact value, or (lower, upper)
+    conclusions: list = field(default_factory=list, repr=False)     # the kernel theorems re-checked
 
     @property
     def kernel_checked(self) -> bool:
@@ -978,7 +979,7 @@ def _check_property(name, entry, f) -> PropertyCheck:
             theorems = check_certificate(entry["kernel"])
         except CertificateError as exc:
             raise CertificateError(f"{name}: {exc}") from None
-        pc.theorems = len(theorems)
+        pc.theorems, pc.conclusions = len(theorems), theorems
         pc.assumptions = sorted(set().union(*[t.assumptions for t in theorems]))
         if pc.status == "refuted":
             pc.witness, diff = link_refutation(name, f, theorems, entry["witness"])
@@ -1005,6 +1006,24 @@ def _check_property(name, entry, f) -> PropertyCheck:
     elif pc.status == "proved" and not pc.unchecked:
         raise CertificateError(f"{name}: proved with neither kernel theorems nor unchecked facts")
     return pc
+
+
+def _refute_contradictions(f, props, out) -> None:
+    """A certificate contradicts itself when it calls a property proved that the
+    kernel-checked witness of another refutes as well (origin_jump refutes P1,
+    P5-P8, `_REFUTES`): CertificateError naming it (`prop`) and the property
+    whose witness refutes it (`refuted_by`)."""
+    for c in (c for c in out if c.refutation_checked):
+        witness = props[c.name]["witness"]
+        for d in (d for d in out if d.status == "proved" and d.name in _REFUTES[witness["kind"]]):
+            try:
+                link_refutation(d.name, f, c.conclusions, witness)
+            except CertificateError:
+                continue
+            error = CertificateError(f"{d.name}: the certificate says proved, but the kernel-checked witness "
+                                     f"of {c.name} refutes {d.name} too ({c.witness})")
+            error.prop, error.refuted_by = d.name, c.name
+            raise error
 
 
 def check(data) -> list[PropertyCheck]:
@@ -1039,6 +1058,7 @@ def check(data) -> list[PropertyCheck]:
                     CertificateError(f"malformed design certificate ({name}): {_malformed(exc)}")
                 error.prop = name               # (`verify._kernel_check` leaves that verdict to the search)
                 raise error from None
+        _refute_contradictions(f, props, out)
         p4 = next((c for c in out if c.name == "P4"), None)
         if p4 is not None and p4.kernel_checked:        # the reduction is the identity P4 rests on
             for c in out:

@@ -214,13 +214,15 @@ def kernel_text(k: dict) -> str:
     why = k.get("error") or k.get("stopped")
     if why:
         return f"kernel: nothing re-checked ({why})"
+    bugs = "".join([f"; the checker rejected the proposer's certificate of {name} (a bug: please report it)"
+                    for name, _ in k.get("failed", ())] +
+                   [f"; the search proved {name}, which the witness of {by} refutes (a bug: please report it)"
+                    for name, by in k.get("refuted_by", {}).items()])
     if not k["search"]:
-        return f"kernel: re-checked {' '.join(k['checked'])} (every decided verdict)"
+        return f"kernel: re-checked {' '.join(k['checked'])} (every decided verdict){bugs}"
     checked = f"re-checked {' '.join(k['checked'])}; " if k["checked"] else ""
-    failed = "".join(f"; the checker rejected the proposer's certificate of {name} (a bug: please report it)"
-                     for name, _ in k.get("failed", ()))
     return (f"kernel: {checked}resting on the search alone: {' '.join(k['search'])} (counted only with "
-            f"--trust-search; --certificate FILE says why){failed}")
+            f"--trust-search; --certificate FILE says why){bugs}")
 
 
 NO_GAINS = "no gain scenarios given, so bound (10) was not checked"

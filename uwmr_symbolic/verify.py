@@ -26,7 +26,7 @@ from .properties import PROPERTIES, VERIFIERS, Analysis
 from .replay import replay
 from . import timeouts
 from .timeouts import TimeLimit, time_limit
-from .verdict import Verdict, unknown
+from .verdict import Verdict, refuted, unknown
 
 DEFAULT_TIMEOUT = 60.0
 
@@ -175,12 +175,18 @@ def _kernel_check(search: Report) -> tuple[dict | None, dict]:
     that fails as a whole leaves every verdict to the search ("error")."""
     from . import design_certificate as certificates
     cert = certificates.build(search)
-    failed = []
+    failed, refuted_by = [], {}
     while True:
         try:
             summary = kernel_summary(certificates.check(cert))
-            return cert, summary | ({"failed": failed} if failed else {})        # [[property, why], ...]
+            return cert, summary | ({"failed": failed} if failed else {}) | (
+                {"refuted_by": refuted_by} if refuted_by else {})          # [[property, why], ...]; {P1: P5}
         except certificates.CertificateError as exc:
+            by = getattr(exc, "refuted_by", None)
+            if by is not None:      # the search proved what another property's checked witness refutes
+                refuted_by[exc.prop] = by
+                cert["properties"][exc.prop] = dict(cert["properties"][by])
+                continue
             entry = cert["properties"].get(getattr(exc, "prop", None))
             if entry is None or entry["kernel"] is None:
                 decided = [p for p, v in search.properties.items() if v.proved or v.refuted]
@@ -280,6 +286,10 @@ def _verify(design: Design, timeout: float, start: float, kernel_only: bool = Tr
     except TimeLimit:
         proof = {"ok": False, "steps": {"replay": {"ok": False, "detail": "timed out"}}}
         timed_out = True
+    for p, by in kernel.get("refuted_by", {}).items():      # (`_kernel_check`)
+        props[p] = refuted(f"the witness of {by} refutes {p} as well: {props[by].reason} (the search had "
+                           f"proved {p}, wrongly: {props[p].reason})", props[by].witness)
+        certificate["properties"][p]["reason"] = props[p].reason
     # a verdict the kernel checked leaves nothing to the search (P4's identity included, `design_certificate.check`)
     props = {p: replace(v, details={**v.details, "unchecked": []}) if p in kernel["checked"] and v.details.get(
         "unchecked") else v for p, v in props.items()}
