@@ -720,6 +720,13 @@ def test_growth_like_a_power_is_tried_at_its_own_rate_first(tmp_path):
     # (bounded by its tail form), the second falling; sup about 1.473 near s = 0.8
     ("f = sqrt(1 + rho) - sp.exp(-rho)\n",
      lambda s: s / mpmath.sqrt(1 + s ** 2) + 2 * s * mpmath.exp(-s ** 2)),
+    # F = 3/4 log(1 + s^2/100) + tanh(s^2)/10 (a usable design the fuzz drew, kf unknown):
+    # F' = 3 s/(2 (s^2 + 100)) + s sech(s^2)^2/5, sup 0.1222293307 at s = 0.7411.  The first term rises
+    # to 3/40 at s = 10: on [4, oo) its tail box gives only 3/8, above the sup, and only from 16R on is
+    # the sum of the terms' bounds below it; by then the sign lemma that shows s sech(s^2)^2 falling
+    # (shown from 4 on) had no pool left.  A term's bound on [R, oo) now serves every later start.
+    ("f = Rational(3, 4)*log(1 + rho/100) + sp.tanh(rho)/10\n",
+     lambda s: 3 * s / (2 * (s ** 2 + 100)) + s / mpmath.cosh(s ** 2) ** 2 / 5),
 ])
 def test_a_sum_with_a_blind_tail_gets_its_kf_from_the_kernel_term_by_term(tmp_path, body, dF):
     report, v = verify(tmp_path, body)

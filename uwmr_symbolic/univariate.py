@@ -1088,6 +1088,7 @@ def _termwise_tail(expr, var, lo, R):
     no interval cover encloses at t = 0), taken only when c is below a value
     expr reaches on [lo, R'] (then the sup is not in the tail); (None, None)
     if there is none."""
+    known = {}      # term -> its bound on the tail of an earlier r
     for r in (R, 4 * R, 16 * R, 64 * R):
         steps = [sp.Rational(k, 16) for k in range(1, 16)] + [sp.Rational(1, 2 ** k) for k in range(5, 12)]
         try:        # (evenly, and closer and closer to lo, where a peak of F' often is)
@@ -1097,9 +1098,10 @@ def _termwise_tail(expr, var, lo, R):
             return None, None
         total = Fraction(0)     # (a product with a factor rational in a log: whole, its sum bounded, not its terms)
         for term in (expr,) if expr.is_Mul and log_factors(expr, var, r) else split_terms(expr):
-            bound = term_bound_on_tail(term, var, r)
+            bound = term_bound_on_tail(term, var, r) or known.get(term)     # (a bound on [R, oo) holds beyond R too)
             if bound is None:
                 break
+            known[term] = bound
             total += bound[0]
         else:
             if total < reached:
