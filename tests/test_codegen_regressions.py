@@ -709,6 +709,26 @@ def test_a_point_branch_given_by_and_or_not_is_generated(tmp_path, condition):
     assert list(st) == [0, 0] and w[0] == 1.0 and abs(w[1] - 8 / 26) < 1e-15
 
 
+def test_a_max_whose_arguments_tie_is_generated(tmp_path):
+    """Red team 21: f = Max(g, g + (rho - 1)^3/(8 (1 + rho)^3)), g = log(1 + rho),
+    the two arguments crossing tangentially (C^2) on the unit circle, has P1-P8
+    proved, but its validation stopped ("a Piecewise condition is undecidable")
+    at (1, 0) and (0, 1): log 2 - log 2 is a ball around 0 at every precision.
+    At a tie the reference now takes the union of the two branches, where they
+    agree (P1: df/de2 is continuous across the circle): df/de2 = 2 e2/(1 + rho)
+    on the circle: 0 at (1, 0), 1 at (0, 1)."""
+    path = tmp_path / "max_tie.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    "g = sp.log(1 + rho)\nf = sp.Max(g, g + (rho - 1)**3/(1 + rho)**3/8)\n")
+    law = reference.Law.of(load_design(path))
+    assert law.g(1.0, 0.0) == 0 and law.g(0.0, 1.0) == 1 and law.g(0.0, -1.0) == -1
+    pairs = [(1.0, 0.0), (0.0, 1.0), (0.6, 0.8), (-0.8, 0.6), (0.5, 0.5), (2.0, 3.0), (1e-200, 1e-200), (0.0, 1e100)]
+    _, mod, _ = _check_all(path, tmp_path, _law_rows(pairs), _law_rows(pairs[:6]))
+    v, w, st = mod.control_status(*_law_rows([(0.0, 1.0), (2.0, 3.0)]).T)
+    g23 = 6 / 14 + 3 * 3 * 144 / (4 * 14 ** 3) - 3 * 3 * 12 ** 3 / (4 * 14 ** 4)      # outside: the second branch
+    assert list(st) == [0, 0] and w[0] == 1.0 and abs(w[1] - g23) < 1e-15
+
+
 def test_the_reference_reads_every_kind_of_condition():
     """`reference._arb_cond` at exact points: Eq, Ne, the four orders, And,
     Or, Not, and an And whose undecidable part does not matter."""

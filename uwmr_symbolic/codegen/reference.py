@@ -105,10 +105,21 @@ def _arb_fn(expr: sp.Expr):
     if isinstance(expr, sp.Piecewise):
         branches = [(_arb_fn(v), _arb_cond(c)) for v, c in expr.args]
 
-        def pw(a, b):
-            for val, cond in branches:
-                if cond(a, b):
-                    return val(a, b)
+        def pw(a, b, start=0):
+            for i, (val, cond) in enumerate(branches[start:], start):
+                try:
+                    if cond(a, b):
+                        return val(a, b)
+                except NeedPrecision:
+                    if flint.ctx.prec < MAX_PREC:
+                        raise
+                    # a tie at the last precision (Max(u, v) where u = v: log 2 - log 2 never shows 0):
+                    # the value is this branch's or a later one's; the union holds both, and is
+                    # taken where they agree to REL (a C^1 join, as P1 has it), else undecidable
+                    both = val(a, b).union(pw(a, b, i + 1))
+                    if both.rad() == 0 or both.rad() <= abs(both.mid()) * REL:
+                        return both
+                    raise
             raise NeedPrecision
         return pw
     raise NotImplementedError(f"reference: no Arb evaluation for {expr.func.__name__}")
