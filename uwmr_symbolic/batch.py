@@ -27,6 +27,7 @@ from .report import design_fields, gains_dict, kf_numbers, to_dict
 from .profile import float_of
 from .properties import PROPERTIES
 from .replay import replay
+from .timeouts import quiet_on_interrupt
 from .verdict import Status, Verdict, unknown
 from .verify import Report, kernel_summary, kf_checked, load_with_limit, verify_loaded
 
@@ -194,6 +195,7 @@ def _timed_out_result(path: str, timeout: float) -> dict:
 
 
 def _child(conn, path, timeout, cache_dir, use_cache, kernel_only):
+    quiet_on_interrupt()
     try:
         result = check_file(path, timeout, cache_dir, use_cache, kernel_only)
     except Exception as exc:  # noqa: BLE001 - a verifier bug must not hide the other files

@@ -146,6 +146,8 @@ class ResultCache:
         """The stored result for `key`, or None (missing, unreadable, corrupt,
         or computed with less time than `timeout` while a time limit expired:
         see `serves`)."""
+        if not self.path_for(key).is_file():      # (missing; a FIFO would block the read)
+            return None
         try:
             entry = json.loads(self.path_for(key).read_text())
         except (OSError, UnicodeDecodeError, ValueError, RecursionError):      # (a nested edit: red team 19)

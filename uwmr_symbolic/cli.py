@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import functools
 import json
 import os
@@ -11,8 +12,9 @@ from pathlib import Path
 from . import __version__, settings
 from .batch import Progress, check_files, expand_paths, worst_status
 from .cache import ResultCache
+from .files import write_text_atomic
 from .report import (render_github, render_json, render_junit, render_markdown_summary, render_summary,
-                     render_text)
+                     render_text, shown)
 from .verify import DEFAULT_TIMEOUT, SEARCH_ONLY
 
 
@@ -115,7 +117,7 @@ def build_parser() -> argparse.ArgumentParser:
                         "each gain scenario (circle, lemniscate or --reference), continuous time and "
                         "100 Hz, beside the unsaturated baseline (38), within max(--timeout, 600 s) per design; "
                         "exit 1 if a check fails, 3 if a simulation does not finish")
-    p.add_argument("--monte-carlo", type=int, default=0, metavar="N",
+    p.add_argument("--monte-carlo", type=int, default=None, metavar="N",
                    help="simulate (implies --simulate) and also N random initial poses per scenario "
                         "(100 Hz, vectorised; at most 100000)")
     p.add_argument("--seed", type=int, default=None,
@@ -174,17 +176,61 @@ class UsageError(Exception):
     """A command-line argument cannot be used (exit 2, one line)."""
 
 
+def in_fork(fn, seconds: float):
+    """fn() in a forked child process, whose answer alone crosses back:
+    ("ok", value); ("raised", "SystemExit: 0") for anything it raised,
+    SystemExit and KeyboardInterrupt included; ("died", exit code) when it
+    ended without an answer (os._exit, a crash in C code); ("late", None)
+    when it outlived `seconds` and was killed.  A --reference file's code
+    runs so, so that its exit cannot end (or pass off as) the command."""
+    import multiprocessing
+
+    from .timeouts import quiet_on_interrupt
+    ctx = multiprocessing.get_context("fork")
+    recv, send = ctx.Pipe(duplex=False)
+
+    def child():
+        quiet_on_interrupt()
+        try:
+            answer = ("ok", fn())
+        except BaseException as exc:        # noqa: BLE001 - whatever the user's code raises, even exit()
+            answer = ("raised", f"{type(exc).__name__}: {exc}".rstrip(": "))
+        try:
+            send.send(answer)
+        except Exception as exc:            # noqa: BLE001 - a value that cannot be pickled
+            send.send(("raised", f"the result could not be sent back ({type(exc).__name__}: {exc})"))
+    proc = ctx.Process(target=child)
+    proc.start()
+    send.close()
+    try:
+        answer = recv.recv() if recv.poll(seconds) else ("late", None)
+    except EOFError:
+        answer = None
+    finally:
+        if proc.is_alive():
+            proc.kill()
+        proc.join()
+        recv.close()
+    return answer or ("died", proc.exitcode)
+
+
 def load_references(specs, timeout: float) -> dict:
     """--reference SCENARIO=FILE: waypoints (CSV t,x,y) or pose(t) from a Python file,
     each read (and checked against (2)) within `timeout` seconds."""
     from .simulation import ReferenceError
     from .timeouts import TimeLimit, time_limit
     refs = {}
+    names = [spec.partition("=")[0] for spec in specs]
+    twice = next((n for n in names if names.count(n) > 1), None)
+    if twice is not None:
+        raise UsageError(f"--reference {twice}=... is given twice; give one file per scenario")
     for spec in specs:
         name, sep, file = spec.partition("=")
         if not sep or not name or not file:
             raise UsageError(f"--reference {spec!r}: expected SCENARIO=FILE")
         path = Path(file)
+        if path.suffix != ".csv":       # the user's code: first in a child process (exit(), os._exit)
+            _probe_reference(path, name, timeout)
         try:
             with time_limit(timeout):
                 refs[name] = _read_reference(path, name)
@@ -199,6 +245,34 @@ def load_references(specs, timeout: float) -> dict:
     return refs
 
 
+def _probe_reference(path, name, timeout):
+    """Load a Python --reference file and check its pose() (as `load_references`
+    does) in a child process first: UsageError if the file ends the process,
+    raises or does not finish, so that its exit() or os._exit() ends neither
+    the command nor passes for its status."""
+    def load():
+        from .timeouts import time_limit
+        with time_limit(timeout):
+            _read_reference(path, name)
+    kind, what = in_fork(load, timeout + 5)
+    if kind == "died":
+        raise UsageError(f"{path}: the reference file ended the process (exit code {what}) while loading or in "
+                         f"pose(); it must define pose(t) and duration and return")
+    if kind == "late":
+        raise UsageError(f"{path}: the reference did not load within --timeout ({timeout:g} s)")
+    if kind == "raised" and what.startswith(("SystemExit", "KeyboardInterrupt")):
+        raise UsageError(f"{path}: the reference file raised {what} while loading or in pose(); it must define "
+                         f"pose(t) and duration and return")
+
+
+def _number(text: str) -> bool:
+    try:
+        float(text)
+        return True
+    except ValueError:
+        return False
+
+
 def _read_reference(path, name):
     """One --reference file as a Reference (see `load_references`): a CSV's
     columns checked by name (finite numbers, some rows) before the spline."""
@@ -208,6 +282,8 @@ def _read_reference(path, name):
     import numpy as np
 
     from .simulation import from_function, from_waypoints
+    if path.is_dir():
+        raise UsageError(f"{path}: is a folder; give a CSV of waypoints or a Python file defining pose(t)")
     if path.suffix != ".csv":
         ns = runpy.run_path(str(path))
         if not callable(ns.get("pose")) or "duration" not in ns:
@@ -219,6 +295,9 @@ def _read_reference(path, name):
         raise UsageError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start}); save it as UTF-8") from None
     header = next((i for i, line in enumerate(lines) if line.strip() and not line.startswith("#")), 0)
     named = lines and "".join(lines[header].split()).lower() == "t,x,y"    # the columns' names
+    if lines and not named and not any(_number(field) for field in lines[header].split(",")):     # names
+        raise UsageError(f"{path}: the header {lines[header].strip()!r} is not t,x,y: the columns are the "
+                         f"time, then x and y, in that order")
     rows = [line for line in (lines[header + 1:] if named else lines) if line.strip() and not line.startswith("#")]
     if not rows:
         raise UsageError(f"{path}: no waypoints: expected rows t,x,y (numbers) after the optional header")
@@ -283,21 +362,39 @@ def run_simulations(results, args, refs: dict, reports: Reports) -> int:
                   f"reference)", file=sys.stderr)
             status = worst_status([status, 2])
             continue
-        try:
-            with time_limit(max(args.timeout, SIMULATION_SECONDS)):
-                sim = simulate_design(d["design"], report=report, monte_carlo=args.monte_carlo,
-                                      seed=args.seed or 0, references=refs or None, delay=args.delay)
-        except CodegenInvalid as exc:
-            # the simulator runs the generated code, which the validation gate refused (--force or not)
-            print(f"{d['design']}: not simulated, {exc.what}: {exc.reasons[0]}",
-                  file=sys.stderr)
+        limit = max(args.timeout, SIMULATION_SECONDS)
+
+        def simulate(path=d["design"], report=report):
+            try:
+                with time_limit(limit):
+                    return "sim", simulate_design(path, report=report, monte_carlo=args.monte_carlo or 0,
+                                                  seed=args.seed or 0, references=refs or None, delay=args.delay)
+            except CodegenInvalid as exc:
+                return "invalid", f"{exc.what}: {exc.reasons[0]}"
+            except TimeLimit:
+                return "late", None
+        # in a child process: a --reference's pose() that calls exit() or os._exit, or generated code
+        # that crashes, ends that child, not the command
+        kind, value = in_fork(simulate, limit + 30)
+        if kind == "ok":
+            kind, value = value
+        if kind == "invalid":       # the simulator runs the generated code, which the validation gate refused
+            print(f"{d['design']}: not simulated, {value}", file=sys.stderr)
             status = 1
             continue
-        except TimeLimit:
-            print(f"{d['design']}: the simulation did not finish within {max(args.timeout, SIMULATION_SECONDS):g} s "
+        if kind == "late":
+            print(f"{d['design']}: the simulation did not finish within {limit:g} s "
                   f"(the larger of --timeout and {SIMULATION_SECONDS} s)", file=sys.stderr)
             status = worst_status([status, 3])
             continue
+        if kind != "sim":
+            why = f"ended without a result (exit code {value})" if kind == "died" else f"raised {value}"
+            blame = ("a --reference file's pose() must return five arrays shaped like t, and never exit" if refs
+                     else "an internal error of uwmr-verify: please report it")
+            print(f"{d['design']}: not simulated: the simulation {why} ({blame})", file=sys.stderr)
+            status = worst_status([status, 2])
+            continue
+        sim = value
         d["simulation"] = sim
         if not all(entry.get("ok", True) for entry in sim.values()):
             status = 1
@@ -387,10 +484,12 @@ def check_certificates(files, jobs: int | None = None, timeout: float = DEFAULT_
     per core (forked: the kernel is imported once), reported in order; a
     file whose check outlives `timeout` seconds does not check."""
     import multiprocessing
+
+    from .timeouts import quiet_on_interrupt
     jobs = max(1, min(jobs or os.cpu_count() or 1, len(files)))
     one = functools.partial(_check_one_certificate, timeout=timeout)
     if jobs > 1 and "fork" in multiprocessing.get_all_start_methods():
-        with multiprocessing.get_context("fork").Pool(jobs) as pool:
+        with multiprocessing.get_context("fork").Pool(jobs, initializer=quiet_on_interrupt) as pool:
             results = pool.map(one, files, chunksize=1)
     else:
         results = [one(name) for name in files]
@@ -414,11 +513,9 @@ def write_certificates(paths, results, target) -> int:
         dest = out / (Path(d["design"]).stem + ".cert.json") if len(paths) > 1 else out
         try:
             dest.parent.mkdir(parents=True, exist_ok=True)
-            tmp = dest.with_name(dest.name + ".tmp")
-            tmp.write_text(json.dumps(cert, indent=1) + "\n", encoding="utf-8")
-            tmp.replace(dest)
+            write_text_atomic(dest, json.dumps(cert, indent=1) + "\n")
         except OSError as exc:
-            print(f"uwmr-verify: cannot write {dest}: {exc}", file=sys.stderr)
+            print(f"uwmr-verify: cannot write {dest}: {exc.strerror or exc}", file=sys.stderr)
             status = 2
     return status
 
@@ -434,6 +531,20 @@ def main(argv=None) -> int:
         return 2
 
 
+def _given(args) -> set[str]:
+    """The options given that change what a command does, as typed
+    ({"--format", ...}; "FILE" for design files): not the cache's, --quiet,
+    --kernel-only (the default), nor --timeout and --jobs (which
+    [tool.uwmr-symbolic] may set for every command)."""
+    given = {"FILE"} if args.files else set()
+    for action in build_parser()._actions:
+        if action.option_strings and action.dest not in ("help", "version", "no_cache", "cache_dir", "timeout",
+                                                         "jobs", "kernel_only_flag", "quiet") \
+                and getattr(args, action.dest, action.default) not in (action.default, None, False):
+            given.add(max(action.option_strings, key=len))
+    return given
+
+
 def _main(args) -> int:
     if not 0 < args.timeout <= settings.MAX_TIMEOUT:        # (nan fails both)
         raise UsageError(f"--timeout must be a number of seconds above 0 and at most {settings.MAX_TIMEOUT:g}, "
@@ -444,6 +555,12 @@ def _main(args) -> int:
     if designs:
         raise UsageError(f"--check-certificate takes certificate files (.json), and {designs[0]} looks like a design "
                          f"file; verify it with `uwmr-verify {designs[0]}`")
+    for mode, flag, takes in (("check_certificate", "--check-certificate", "--timeout and --jobs"),
+                              ("check_generated", "--check-generated", "design files")):
+        given = _given(args) - {flag} - ({"FILE"} if mode == "check_generated" else set())
+        if getattr(args, mode) and given:
+            raise UsageError(f"{flag} does not go with {sorted(given)[0]} (it takes {takes} only); "
+                             f"run the two separately")
     if args.check_certificate:
         return check_certificates(args.check_certificate, args.jobs, args.timeout)
     if args.check_generated:
@@ -455,10 +572,14 @@ def _main(args) -> int:
                          f"before the option (uwmr-verify {args.codegen} --codegen) or write --codegen=DIR")
     if not args.files:
         raise UsageError("no design file given (try: uwmr-verify designs/*.py)")
-    if not 0 <= args.monte_carlo <= MAX_MONTE_CARLO or not 0 <= args.delay <= MAX_DELAY:
+    empty = [flag for flag, value in (("--cache-dir", args.cache_dir), ("--certificate", args.certificate),
+                                      ("--junit-xml", args.junit_xml)) if value == ""]
+    if empty:
+        raise UsageError(f"{empty[0]} needs a path, not an empty text")
+    if not 0 <= (args.monte_carlo or 0) <= MAX_MONTE_CARLO or not 0 <= args.delay <= MAX_DELAY:
         raise UsageError(f"--monte-carlo must be in 0..{MAX_MONTE_CARLO} and --delay in 0..{MAX_DELAY} "
                          f"(samples of the 100 Hz loop)")
-    simulate = args.simulate or args.monte_carlo > 0
+    simulate = args.simulate or args.monte_carlo is not None      # (--monte-carlo 0 simulates too)
     if args.seed is not None and args.seed < 0:
         raise UsageError(f"--seed must be a non-negative integer, not {args.seed}")
     if not simulate and (args.reference or args.delay or args.seed is not None):
@@ -496,7 +617,7 @@ def _main(args) -> int:
     for d in results:
         d.pop("certificate", None)
         if d.get("error") is not None:
-            print(f"{d['design']}: {d['error']}", file=sys.stderr)
+            print(f"{shown(d['design'])}: {d['error']}", file=sys.stderr)
     sim_status = 0
     reports = Reports(args.timeout)
     if simulate:
@@ -521,8 +642,9 @@ def _main(args) -> int:
             try:
                 with open(step_summary, "a", encoding="utf-8") as fh:
                     fh.write(render_markdown_summary(results))
-            except OSError:
-                pass    # the job summary is a nicety; the annotations and exit status are what count
+            except OSError as exc:  # the job summary is a nicety; the annotations and exit status are what count
+                print(f"uwmr-verify: warning: the job summary GITHUB_STEP_SUMMARY={step_summary} cannot be "
+                      f"written ({exc.strerror or exc})", file=sys.stderr)
     else:
         if good and not (many and args.quiet):
             print("\n\n".join(render_text(d) + (("\n\n" + render_simulation_text(d["simulation"]))
@@ -533,8 +655,7 @@ def _main(args) -> int:
             print(render_summary(results))
     if args.junit_xml:
         try:
-            with open(args.junit_xml, "w", encoding="utf-8") as fh:
-                fh.write(render_junit(results) + "\n")
+            write_text_atomic(args.junit_xml, render_junit(results) + "\n")
         except OSError as exc:
             print(f"uwmr-verify: cannot write {args.junit_xml}: {exc}", file=sys.stderr)
             return 2
@@ -547,13 +668,25 @@ def _main(args) -> int:
 def run() -> None:
     """Console entry point: `main`, and a reader that closes the pipe early
     (`uwmr-verify ... | head`) ends the command quietly with status 141, as
-    if killed by SIGPIPE."""
+    if killed by SIGPIPE; Ctrl-C ends it with one line and status 130; an
+    output that cannot be written (a full disk, a closed stdout) with one
+    line and status 2."""
     try:
         status = main()
-        sys.stdout.flush()
+        if sys.stdout is not None:
+            sys.stdout.flush()
     except BrokenPipeError:
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         status = 141
+    except KeyboardInterrupt:
+        print("uwmr-verify: interrupted (Ctrl-C); the files written before are complete, the others were "
+              "not written", file=sys.stderr)
+        status = 130
+    except OSError as exc:          # stdout on a full disk
+        with contextlib.suppress(OSError, ValueError):
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        print(f"uwmr-verify: cannot write the output: {exc.strerror or exc}", file=sys.stderr)
+        status = 2
     sys.exit(status)
 
 

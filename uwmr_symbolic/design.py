@@ -147,6 +147,8 @@ def _f_line(source: str) -> int:
 
 
 def _run_file(path: Path) -> tuple[dict, str]:
+    if path.exists() and not path.is_file() and not path.is_dir():
+        raise DesignError("not a regular file (a FIFO or a device): give the design's .py file")
     try:
         source = path.read_text()
     except FileNotFoundError:
@@ -163,6 +165,8 @@ def _run_file(path: Path) -> tuple[dict, str]:
             namespace = runpy.run_path(str(path), run_name="__uwmr_design__")
     except SystemExit as exc:
         raise DesignError(f"the file called exit({exc.code}) while loading") from None
+    except KeyboardInterrupt:
+        raise DesignError("the file raised KeyboardInterrupt while loading") from None
     except Exception as exc:  # any failure of the user's code is unusable input
         tb = exc.__traceback__
         line = None
@@ -282,6 +286,8 @@ def _parse_gains(raw) -> dict:
         raise DesignError(f"gains must be a dict of scenarios, got {type(raw).__name__}")
     out = {}
     for scenario, entries in raw.items():
+        if not str(scenario).isprintable():     # (a newline would start a line of its own in every report)
+            raise DesignError(f"gain scenario {str(scenario)!r}: a scenario name is one line of printable text")
         if not isinstance(entries, dict):
             raise DesignError(f"gain scenario {scenario!r} must be a dict with {', '.join(GAIN_KEYS)}")
         if "lambda" in entries:      # the paper's name, accepted for lam
@@ -473,6 +479,8 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
                           "or code; scale f (or its parameters) to smaller constants")
     gains = _parse_gains(ns.get("gains"))
     name = ns.get("name") if isinstance(ns.get("name"), str) else path.stem
+    if not name.isprintable():
+        raise DesignError(f"name = {name!r}: a design's name is one line of printable text")
     description = ns.get("description") if isinstance(ns.get("description"), str) else ""
     return Design(path=path, f=f, f_source=f_source, params=params, gains=gains,
                   name=name, description=description, f_line=f_line)

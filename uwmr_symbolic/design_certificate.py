@@ -31,12 +31,12 @@ from __future__ import annotations
 import functools
 import json
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import sympy as sp
 
 from . import e1 as E1, e2 as E2
 from .certify import REDUCTION
+from .files import write_text_atomic
 from .kernel.certificate import CertificateError, check_certificate, read_json, to_certificate  # noqa: F401 (re-exported)
 from .kernel.core import _TRUE_WHEN, _lt, _srepr, derivative    # when a relation l < r (<=, >, >=) holds: the sign of r - l; srepr, cached
 from .kernel.parse import ParseError, parse
@@ -85,10 +85,7 @@ def build(report) -> dict:
 
 def write(report, path) -> None:
     """Write the certificate of `report` to `path` (whole file or nothing)."""
-    path = Path(path)
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(json.dumps(build(report), indent=1) + "\n")
-    tmp.replace(path)
+    write_text_atomic(path, json.dumps(build(report), indent=1) + "\n")
 
 
 @dataclass

@@ -167,8 +167,8 @@ def render_text(r) -> str:
     """The readable report of one design (a `Report` or its dict)."""
     d = _as_dict(r)
     if d.get("error") is not None:
-        return f"{d['design']}: {d['error']}"
-    lines = [f"{d['design']}  —  {d.get('name') or Path(d['design']).name}"]
+        return f"{shown(d['design'])}: {d['error']}"
+    lines = [f"{shown(d['design'])}  —  {d.get('name') or shown(Path(d['design']).name)}"]
     if d.get("f") is not None:
         lines.append(f"  f = {d['f']}")
     lines.append("")
@@ -278,20 +278,26 @@ def _gain_word(g: dict) -> str:
     return "ok" if g["V_ok"] and g["W_ok"] else "?"
 
 
+def shown(path: str) -> str:
+    """A file name as one line: control characters (a newline in a name would
+    start a line of its own, a GitHub workflow command even) as escapes."""
+    return path if path.isprintable() else repr(path)[1:-1]
+
+
 def render_summary(results: list[dict]) -> str:
     """One table for a set of designs, and the count of each outcome."""
-    width = max([len("design")] + [len(d["design"]) for d in results])
+    width = max([len("design")] + [len(shown(d["design"])) for d in results])
     lines = ["Summary (P proved, R refuted, ? unknown; kf certified; bound (10) per scenario)",
              f"{'design':<{width}}  P1..P8    {'kf':<20} {'gains':<30} exit  time"]
     for d in results:
         if d.get("error") is not None:
-            lines.append(f"{d['design']:<{width}}  unusable: {d['error']}")
+            lines.append(f"{shown(d['design']):<{width}}  unusable: {d['error']}")
             continue
         row = "".join(LETTER[d["properties"][p]["verdict"]] for p in d["properties"])
         gains = " ".join(f"{n}:{_gain_word(g)}" for n, g in d["gains"].items()) or "-"
         gains += "".join(f" sim:{n}:FAIL" for n, why in simulation_failures(d).items() if not why.startswith("skip"))
         cached = "  (cached)" if d.get("cached") else ""
-        lines.append(f"{d['design']:<{width}}  {row:<8}  {_kf_summary(d['kf']):<20} {gains:<30} "
+        lines.append(f"{shown(d['design']):<{width}}  {row:<8}  {_kf_summary(d['kf']):<20} {gains:<30} "
                      f"{d['exit_status']:>4}  {d['seconds']:5.2f} s{cached}")
     counts = {s: sum(1 for d in results if d["exit_status"] == s) for s in (0, 1, 3, 2)}
     lines.append(f"{len(results)} design file(s): {counts[0]} proved, {counts[1]} refuted or failing a check, "
@@ -306,11 +312,11 @@ def render_markdown_summary(results: list[dict]) -> str:
     for d in results:
         if d.get("error") is not None:
             error = d["error"].replace("|", "\\|")
-            lines.append(f"| `{d['design']}` | | | | {word[2]}: {error} |")
+            lines.append(f"| `{shown(d['design'])}` | | | | {word[2]}: {error} |")
             continue
         row = "".join(LETTER[v["verdict"]] for v in d["properties"].values())
         gains = " ".join(f"{n}:{_gain_word(g)}" for n, g in d["gains"].items()) or "-"
-        lines.append(f"| `{d['design']}` | `{row}` | {_kf_summary(d['kf'])} | {gains} | {word[d['exit_status']]} |")
+        lines.append(f"| `{shown(d['design'])}` | `{row}` | {_kf_summary(d['kf'])} | {gains} | {word[d['exit_status']]} |")
     return "\n".join(lines) + "\n"
 
 
@@ -415,8 +421,15 @@ def render_junit(results: list[dict]) -> str:
     suite.set("time", f"{total:.3f}")
     root = ET.Element("testsuites", name="uwmr-verify")
     root.append(suite)
+    for el in root.iter():          # what XML 1.0 cannot hold (a file named with \x01): escaped as \x01
+        el.text = el.text and _XML_BAD.sub(lambda m: repr(m.group())[1:-1], el.text)
+        for k, v in el.attrib.items():
+            el.set(k, _XML_BAD.sub(lambda m: repr(m.group())[1:-1], v))
     ET.indent(root)
     return '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(root, encoding="unicode")
+
+
+_XML_BAD = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
 
 
 # ---------------------------------------------------------------- GitHub annotations

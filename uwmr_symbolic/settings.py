@@ -71,6 +71,9 @@ def _table(path: Path) -> dict | None:
         raise SettingsError(f"{path}: cannot read: {exc.strerror or exc}") from None
     except tomllib.TOMLDecodeError as exc:
         raise SettingsError(f"{path}: not valid TOML: {exc}") from None
+    except UnicodeDecodeError as exc:
+        raise SettingsError(f"{path}: not valid TOML: not UTF-8 text ({exc.reason} at byte {exc.start}); "
+                            f"save it as UTF-8") from None
     table = data.get("tool", {}).get(TABLE) if isinstance(data.get("tool"), dict) else None
     if table is not None and not isinstance(table, dict):
         raise SettingsError(f"{path}: tool.{TABLE} must be a table")

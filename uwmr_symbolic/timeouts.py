@@ -207,3 +207,10 @@ def attempt(fn, seconds: float, default=None):
         return default   # an outer limit that also expired fires again at once
     except Exception:  # noqa: BLE001 - SymPy failures mean 'not found'
         return default
+
+
+def quiet_on_interrupt() -> None:
+    """In a forked child process (a pool's or a batch's): Ctrl-C, which
+    reaches the whole process group, ends it at once with status 130 and no
+    traceback; the parent says it once."""
+    signal.signal(signal.SIGINT, lambda *_: os._exit(130))

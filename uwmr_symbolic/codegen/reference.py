@@ -331,7 +331,8 @@ def table_parallel(design_path, inputs: np.ndarray, procs: int = 2) -> dict:
     if procs <= 1:
         parts = [_table_job(j) for j in jobs]
     else:
-        with mp.get_context("fork").Pool(procs) as pool:
+        from ..timeouts import quiet_on_interrupt
+        with mp.get_context("fork").Pool(procs, initializer=quiet_on_interrupt) as pool:
             parts = pool.map(_table_job, jobs)
     return {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
 

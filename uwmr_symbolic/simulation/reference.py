@@ -46,8 +46,26 @@ TOLERANCE_2 = 1e-3
 
 def _shaped(values, t: np.ndarray) -> tuple:
     """The values (xr, yr, thr, vr, wr) at the times t as float arrays of t's
-    shape; a constant may be given as a plain number."""
-    return tuple(np.asarray(a, dtype=float) * np.ones_like(t) for a in values)
+    shape; a constant may be given as a plain number.  ReferenceError saying
+    what pose(t) must return otherwise."""
+    try:
+        values = list(values)               # (a tuple, or an array of five rows)
+    except TypeError:
+        values = None
+    if values is None or len(values) != 5:
+        raise ReferenceError("pose(t) must return five values (xr, yr, thr, vr, wr), each a number or an array "
+                             "shaped like t")
+    out = []
+    for name, a in zip(("xr", "yr", "thr", "vr", "wr"), values):
+        a = np.asarray(a)
+        if np.iscomplexobj(a):
+            raise ReferenceError(f"pose(t) returned complex values for {name}: they must be real numbers")
+        try:
+            out.append(a.astype(float) * np.ones_like(t))
+        except (TypeError, ValueError):
+            raise ReferenceError(f"pose(t) returned {name} of shape {a.shape} for t of shape {t.shape}: each "
+                                 f"value must be a number or an array shaped like t") from None
+    return tuple(out)
 
 
 @dataclass
@@ -220,7 +238,11 @@ def from_function(fn: Callable, t0: float, t1: float, name: str = "user") -> Ref
                              f"give a positive, finite duration")
 
     def shaped(t):          # the loops call fn itself: a constant output may be a plain number there too
-        return _shaped(fn(t), np.asarray(t, dtype=float))
+        try:
+            values = fn(t)
+        except Exception as exc:  # noqa: BLE001 - the user's function: its failure is the reference's
+            raise ReferenceError(f"pose(t) raised {type(exc).__name__}: {exc}") from None
+        return _shaped(values, np.asarray(t, dtype=float))
     ref = Reference(name, shaped, float(t0), float(t1), "user function of t")
     ref.check()
     return ref
