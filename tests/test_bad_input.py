@@ -36,6 +36,7 @@ CASES = {
     "undefined_on_a_line.py": "0/0 on the line e2 = 2 (a zero of a polynomial denominator)",
     "undefined_on_irrational_lines.py": "0/0 on the lines e2 = +-sqrt(2) (irrational zeros of a denominator)",
     "condition_compares_truth_values.py": "Eq(e1 > 0, e2 > 0) as a condition (a red team's crash)",
+    "unevaluated_integral.py": "an unevaluated Integral in f",
 }
 
 #: file -> the words of the one line that name the fix
@@ -52,6 +53,7 @@ FIXES = {
     "undefined_on_a_line.py": ["f is undefined at (e1, e2) = (0, 2)"],
     "undefined_on_irrational_lines.py": ["f is undefined at (e1, e2) = (0, -sqrt(2))"],
     "condition_compares_truth_values.py": ["compares truth values", "write it with And, Or and Not"],
+    "unevaluated_integral.py": ["f holds an unevaluated Integral", "write f in closed form"],
 }
 HANGS = "sleep_forever.py"
 

@@ -318,6 +318,10 @@ def _check_real_valued(f: sp.Expr) -> None:
 
     This is a cheap screen for unusable input, not a proof of anything: each
     failure is a concrete point where f has no real value."""
+    held = next((k.__name__ for k in (sp.Integral, sp.Sum, sp.Product, sp.Limit, sp.Derivative) if f.has(k)), None)
+    if held:
+        raise DesignError(f"f holds an unevaluated {held}; write f in closed form (its .doit(), or the formula "
+                          f"by hand)")
     if f.has(sp.nan) or f.has(sp.zoo) or f.has(sp.oo) or f.has(-sp.oo):
         raise DesignError("f contains nan, zoo or infinity (a division by zero in the formula?)")
     if f.has(sp.I):
