@@ -643,7 +643,8 @@ def _piecewise_p6(a: Analysis, k) -> list:
     its branches, then F and F' continuous on (0, oo)."""
     dF, ends = derivative(a.F, S), a.profile.ends
     positive, _ = piecewise_sign_theorem(dF, ends, S)
-    gap, _ = piecewise_sign_theorem(k - dF / S, ends, S, strict=False) if positive else (None, "")
+    # (k - F'/s on each piece: a quotient by s, with 1/8 of room, took up to twice the default work of a lemma)
+    gap, _ = piecewise_sign_theorem(k - dF / S, ends, S, strict=False, work=6 * WORK) if positive else (None, "")
     upper = sup_upper_theorem(dF / S, k, S, gap) if gap else None
     try:
         return [positive, upper, *continuity_pair(a.F, S, ends)] if upper else []
