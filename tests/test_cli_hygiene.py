@@ -223,3 +223,14 @@ def test_reference_files_in_the_wrong_shape_say_what_is_expected(tmp_path):
         line = one_line(run_cli([tmp_path / "d.py", "--no-cache", "--simulate", "--reference",
                                  f"circle={tmp_path / ref}"]), 2)
         assert line == f"uwmr-verify: {tmp_path / ref}: {message}"
+
+
+def test_a_huge_waypoint_file_is_refused_before_it_is_read(tmp_path):
+    """98 MB of waypoints took 2.8 GB of memory before --timeout stopped it."""
+    (tmp_path / "d.py").write_text(CIRCLE_ONLY)
+    with open(tmp_path / "big.csv", "w") as fh:
+        fh.truncate(21_000_000)             # (a sparse file: its size is what counts)
+    line = one_line(run_cli([tmp_path / "d.py", "--no-cache", "--simulate", "--reference",
+                             f"circle={tmp_path / 'big.csv'}"]), 2)
+    assert line == (f"uwmr-verify: {tmp_path / 'big.csv'}: 21 MB of waypoints, and at most 20 MB are read; "
+                    f"give fewer (the path is a spline through them)")

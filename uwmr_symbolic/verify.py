@@ -120,7 +120,8 @@ def load_with_limit(path, timeout: float = DEFAULT_TIMEOUT, start: float | None 
     except DesignError as exc:
         return Report(path, None, {}, None, error=str(exc), seconds=time.monotonic() - start)
     except TimeLimit:
-        props = {p: _timed_out("loading the design file", timeout) for p in PROPERTIES}
+        what = "loading the design file (running it, then reading f and checking it at sample points)"
+        props = {p: _timed_out(what, timeout) for p in PROPERTIES}
         return Report(path, None, props, None, seconds=time.monotonic() - start, timed_out=True)
 
 
