@@ -124,7 +124,8 @@ def test_interruptions_and_unwritable_output(tmp_path):
     a design raising KeyboardInterrupt, a worker's traceback."""
     proc = subprocess.Popen([sys.executable, "-m", "uwmr_symbolic.cli", DESIGN1, "--no-cache", "--simulate"],
                             cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            start_new_session=True)
+                            start_new_session=True,     # (a shell's background job ignores SIGINT: not this one)
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     time.sleep(8)
     os.killpg(proc.pid, signal.SIGINT)        # as a terminal's Ctrl-C: the whole process group
     out, err = proc.communicate(timeout=120)

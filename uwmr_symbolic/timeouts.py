@@ -212,5 +212,7 @@ def attempt(fn, seconds: float, default=None):
 def quiet_on_interrupt() -> None:
     """In a forked child process (a pool's or a batch's): Ctrl-C, which
     reaches the whole process group, ends it at once with status 130 and no
-    traceback; the parent says it once."""
-    signal.signal(signal.SIGINT, lambda *_: os._exit(130))
+    traceback; the parent says it once.  Where the parent ignores SIGINT (a
+    job started in the background by a shell), the child ignores it too."""
+    if signal.getsignal(signal.SIGINT) is not signal.SIG_IGN:
+        signal.signal(signal.SIGINT, lambda *_: os._exit(130))
