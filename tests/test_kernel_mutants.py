@@ -1381,6 +1381,8 @@ def test_certificate_checker_messages():
             check_certificate(cert if out is None else out)
         return str(err.value)
     assert refused(lambda c: [c]) == "a certificate is a JSON object"
+    assert refused(lambda c: "[" * 100_000 + "]" * 100_000) == "not JSON: nested too deeply"
+    assert refused(lambda c: "{").startswith("not JSON: Expecting property name enclosed in double quotes")
     assert refused(lambda c: c.update(format="other")) == "not a uwmr-kernel-certificate (format = 'other')"
     assert refused(lambda c: c.__delitem__("format")) == "not a uwmr-kernel-certificate (format = None)"
     assert refused(lambda c: c.update(version=1)) == (
