@@ -146,17 +146,18 @@ class ResultCache:
         """The stored result for `key`, or None (missing, unreadable, corrupt,
         or computed with less time than `timeout` while a time limit expired:
         see `serves`)."""
-        if not self.path_for(key).is_file():      # (missing; a FIFO would block the read)
+        path = self.path_for(key)
+        if not path.is_file():      # (missing; a FIFO would block the read)
             return None
         try:
-            entry = json.loads(self.path_for(key).read_text())
+            entry = json.loads(path.read_text())
         except (OSError, UnicodeDecodeError, ValueError, RecursionError):      # (a nested edit: red team 19)
             return None
         if not isinstance(entry, dict) or entry.get("key") != key or not isinstance(entry.get("result"), dict) \
                 or not serves(entry, timeout):
             return None
         try:
-            os.utime(self.path_for(key))      # recently used: evicted last
+            os.utime(path)      # recently used: evicted last
         except OSError:
             pass
         return entry["result"]

@@ -398,8 +398,7 @@ def run_simulations(results, args, refs: dict, reports: Reports) -> int:
             print(f"{d['design']}: not simulated: the simulation {why} ({blame})", file=sys.stderr)
             status = worst_status([status, 2])
             continue
-        sim = value
-        d["simulation"] = sim
+        d["simulation"] = sim = value
         if not all(entry.get("ok", True) for entry in sim.values()):
             status = 1
             d["exit_status"] = worst_status([d["exit_status"], 1])     # the summary, JUnit, GitHub say so too
