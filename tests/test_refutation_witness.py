@@ -547,3 +547,82 @@ def test_e2_limit_witness_of_p8():
     # the witness is not looked for without the search's e2 approach
     theorems, record, why = refutation_theorems("P8", refuted("", {"e1": "1", "e2": "0"}), W)
     assert theorems is None
+
+
+# Max and Min as the loader reads them (Piecewise); the arguments cross where log(1 + x) = x/2, x = 2.5128624...
+MAXC, MINC = (sp.piecewise_fold(m(sp.log(1 + RHO), RHO / 2).rewrite(sp.Piecewise)) for m in (sp.Max, sp.Min))
+R2 = sp.sqrt(2)
+# 3 e1/2 - sqrt(2)/2 + log(1 + e2^2) written as two branches that differ by |e1 - sqrt(2)| terms: smooth,
+# so df/de1 = 3/2 everywhere, although the branches' e1-derivatives, with sign(e1 - sqrt(2))/2 cancelled,
+# differ by 1
+CANCEL = sp.Piecewise((2 * e1 - R2 - sp.Abs(e1 - R2) / 2 + sp.log(1 + e2 ** 2), e1 >= R2),
+                      (e1 - sp.Abs(e1 - R2) / 2 + sp.log(1 + e2 ** 2), True))
+
+
+def test_crossing_of_a_max_refutes_p1_p5_p6():
+    """MAXC on the axis: d(t) = t^2/2 - log(1 + t^2), d' = t (t^2 - 1)/(1 + t^2) > 0 on [3/2, 8/5],
+    d(3/2) = 9/8 - log(13/4) = -0.0537, d(8/5) = 32/25 - log(89/25) = 0.0102: one crossing c = 1.58520 in
+    between, log(1 + t^2) before it, t^2/2 after.  The slopes there are 2t/(1 + t^2) in [0.898, 0.924] and
+    t in [3/2, 8/5]: they differ, so f(t, 0) has a corner at c and df/de1 does not exist at (c, 0)."""
+    for name in ("P1", "P5", "P6"):
+        data = proposed(name, MAXC, {"e1": "1.585", "e2": "0", "crossing": ["3/2", "8/5"]})
+        w = data["properties"][name]["witness"]
+        assert (w["kind"], w["order"], w["points"]) == ("crossing", 1, [["Rational(3, 2)", "Integer(0)"],
+                                                                          ["Rational(8, 5)", "Integer(0)"]])
+        pc = checked(data)
+        assert pc.refutation_checked and pc.theorems == 9
+        assert pc.witness.startswith("df/de1 does not exist where") and "between 3/2 and 8/5" in pc.witness
+    claims = [c["claim"] for c in data["properties"]["P6"]["kernel"]["theorems"]]
+    signs = {(c["kind"], c["want"]) for c in claims if c["kind"] == "value_sign"}
+    assert signs == {("value_sign", -1), ("value_sign", 1)}
+    # the min of the same two crosses at the same point with the same corner
+    assert checked(proposed("P1", MINC, {"e1": "1.585", "e2": "0", "crossing": ["3/2", "8/5"]})).refutation_checked
+    # no crossing in [8/5, 2] (d > 0 at both ends), and at [1, 3/2] d(1) < 0 as well: nothing proposed
+    for bracket in (["8/5", "2"], ["1", "3/2"]):
+        theorems, _, why = refutation_theorems("P1", refuted("", {"e1": "2", "e2": "0", "crossing": bracket}), MAXC)
+        assert theorems is None and "crossing" in why
+
+
+def test_tampered_crossing_witness_is_rejected():
+    data = proposed("P6", MAXC, {"e1": "1.585", "e2": "0", "crossing": ["3/2", "8/5"]})
+    for key, value in (("order", 0), ("order", 2), ("order", True), ("order", None),
+                       ("points", [["Rational(3, 2)", "Integer(0)"], ["Integer(2)", "Integer(0)"]]),
+                       ("points", [["Rational(3, 2)", "Integer(1)"], ["Rational(8, 5)", "Integer(1)"]]),
+                       ("points", [["Rational(8, 5)", "Integer(0)"], ["Rational(3, 2)", "Integer(0)"]])):
+        bad = copy.deepcopy(data)
+        bad["properties"]["P6"]["witness"][key] = value
+        with pytest.raises(DC.CertificateError, match="P6: the kernel's conclusions are not the witness 'crossing'"):
+            DC.check(bad)
+    for drop in (0, 3, 8):          # d' signed, the gap, or that dB/de1 is defined: each is needed
+        bad = copy.deepcopy(data)
+        kernel = bad["properties"]["P6"]["kernel"]
+        kernel["conclusions"] = [c for i, c in enumerate(kernel["conclusions"]) if i != drop]
+        with pytest.raises(DC.CertificateError, match="P6: the kernel's conclusions are not the witness 'crossing'"):
+            DC.check(bad)
+    other = copy.deepcopy(data)          # the same certificate about a design with one more branch
+    other["design"]["f"] = sp.srepr(sp.Piecewise((RHO, RHO < 1), *MAXC.args))
+    with pytest.raises(DC.CertificateError, match="crossing: f is not Piecewise"):
+        DC.check(other)
+    with pytest.raises(DC.CertificateError, match="P7: a witness of kind 'crossing' does not refute P7"):
+        DC.check(as_property(data, "P6", "P7"))
+
+
+def test_a_crossing_needs_each_branch_and_its_slope_defined():
+    """CANCEL is smooth (df/de1 = 3/2), but the difference of its branches' e1-derivatives is 1 on
+    [7/5, 3/2], where e1 >= sqrt(2) switches: without the claims that each part is defined there, a
+    certificate would refute P1.  dA/de1 = 2 - sign(e1 - sqrt(2))/2 has no value of one sign near
+    sqrt(2), so the kernel shows no bound of it, and nothing refutes P1."""
+    d, dd, gap, defined = DC.crossing_parts(CANCEL, 1)
+    assert (dd, gap) == (-1, 1) and len(defined) == 5
+    q1, q2 = sp.Rational(7, 5), sp.Rational(3, 2)
+    theorems = [K.sign_by_cover(expr=dd, var=DC.H, cuts=[q1, q2], want=-1),
+                *[K.value_sign(value=d.xreplace({DC.H: q})) for q in (q1, q2)],
+                K.sign_by_cover(expr=gap, var=DC.H, cuts=[q1, q2], want=1)]
+    record = {"kind": "crossing", "order": 1, "points": [[K._s(q1), "Integer(0)"], [K._s(q2), "Integer(0)"]]}
+    with pytest.raises(DC.CertificateError, match="P1: the kernel's conclusions are not the witness 'crossing'"):
+        DC.check(cert(CANCEL, "P1", theorems, record))
+    with pytest.raises(K.KernelError):
+        K.sign_by_cover(expr=3 - defined[3], var=DC.H, cuts=[q1, q2], want=1, strict=False)
+    theorems, _, why = refutation_theorems("P1", refuted("", {"e1": "1.41", "e2": "0", "crossing": ["7/5", "3/2"]}),
+                                           CANCEL)
+    assert theorems is None

@@ -2053,6 +2053,10 @@ def _witness_candidates(name, witness):
     if name in ("P1", "P7") and p is not None and w.get("jump") == "e2":      # f(e1, t) jumps at t = e2?
         for order in (0, 1) if name == "P1" else (0, 1, 2):
             yield {"kind": "jump", "points": [p], "var": "e2", "order": order}
+    if name in ("P1", "P5", "P6") and "crossing" in w:       # a Max or Min switches between two rationals
+        q1, q2 = (sp.Rational(q) for q in w["crossing"])
+        for order in (1, 0):
+            yield {"kind": "crossing", "points": [(q1, sp.Integer(0)), (q2, sp.Integer(0))], "order": order}
     if name == "P8" and p is not None and w.get("approach") == "e2":       # df/de2(x, h) -> L != 0 as h -> 0+
         yield {"kind": "e2_limit", "points": [p]}
     if str(w.get("e1")) == "0":          # at the origin (P8: e2 -> 0+ along e1 = 0)
@@ -2081,6 +2085,8 @@ def _witness_theorems(f, record):
         return out
     if record["kind"] == "jump":
         return _jump_theorems(f, record)
+    if record["kind"] == "crossing":
+        return _crossing_theorems(f, record)
     if record["kind"] == "e2_limit":
         from .design_certificate import e2_limit_expr
         e = e2_limit_expr(f, record["points"][0][0])
@@ -2171,6 +2177,30 @@ def _jump_theorems(f, record):
                 record.update(branches=branches, width=w, compare=compare)
                 return [*found[0][1], lims[0], *found[1][1], lims[1], th]
     raise NoProof("no branch or no gap found on both sides")
+
+
+def _crossing_theorems(f, record):
+    """The crossing witness (see `design_certificate`): covers of d' and of
+    the gap on [q1, q2] with one strict sign each, d's signs at q1 and q2,
+    and M - E >= 0 for each part E, M an integer above E's Arb enclosure."""
+    from .design_certificate import CertificateError, H, crossing_parts
+    (q1, _), (q2, _) = record["points"]
+    try:
+        d, dd, gap, defined = crossing_parts(f, record["order"])
+        ranges = [evaluate(e, H, q1, q2) for e in (dd, gap)]
+    except (CertificateError, Undefined) as exc:
+        raise NoProof("{}", exc) from None
+    signed = [_cover(e, H, q1, q2, want=1 if v.lo + v.hi > 0 else -1, strict=True) for e, v in zip((dd, gap), ranges)]
+    ends = [_rule(K.value_sign, value=d.xreplace({H: q})) for q in (q1, q2)]
+    bounds = []
+    for e in defined:
+        try:
+            hi = float(evaluate(e, H, q1, q2).hi)
+            top = sp.Integer(math.ceil(hi + abs(hi) * 1e-6) + 1)
+        except (Undefined, OverflowError, ValueError) as exc:
+            raise NoProof("{} on [{}, {}]: {}", e, q1, q2, exc) from None
+        bounds.append(_cover(top - e, H, q1, q2, want=1, strict=False))
+    return [signed[0], *ends, signed[1], *bounds]
 
 
 def _claim_one(options, w):

@@ -625,11 +625,31 @@ DIVERGES = "F(s) -> oo as s -> oo"
 #        rational (var e1; (c, b) for var e2): the same on the line e2 = c
 #        (e1 = c) instead of the axis, so a switch across a line away from the
 #        origin is seen too.
+# crossing  f = Piecewise((A, l REL r), (B, True)), REL one of <, <=, >, >=
+#        (a Max or a Min), both branches and the condition without Piecewise,
+#        Max, Min, sign; rational 0 < q1 < q2 on the e1 axis, d(t) = r - l at
+#        (t, 0).  Kernel sign theorems on the closed [q1, q2]: d' strictly
+#        signed; d(q1), d(q2) of opposite strict signs (`value_sign`); the gap
+#        A - B ("order": 0) or dA/de1 - dB/de1 ("order": 1) strictly signed;
+#        and M - E >= 0, M a number, for each E of d, A, B (and dA/de1, dB/de1
+#        for order 1), all at (t, 0), so that each is defined on [q1, q2] (a
+#        sign claim says so; the gap alone might have cancelled a term that
+#        both branches share).  Then d is C^1 and strictly monotone, with one
+#        root c in (q1, q2): the condition holds on one side of c and fails
+#        on the other, so g(t) = f(t, 0) is A on one side and B on the other.
+#        Were df/de1 to exist at (c, 0), g would be continuous at c, so A(c)
+#        = B(c) (A and B are continuous on [q1, q2]), and differentiable
+#        there, so A'(c) = B'(c) (its one-sided difference quotients; A and
+#        B are C^1 where they and their derivatives are defined).  The gap
+#        says one of these fails at c: df/de1 does not exist at (c, 0), and
+#        P1, P5, P6 fail.  Rests on sympy-diff.  The crossing c need not be
+#        exact (log(1 + rho) = rho/2 at rho = 2.513...).
 
 SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
 _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
             "e2_limit": ("P8",), "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",),
-            "unbounded": ("P1", "P5", "P6", "P7", "P8"), "jump": ("P1", "P5", "P6", "P7")}
+            "unbounded": ("P1", "P5", "P6", "P7", "P8"), "jump": ("P1", "P5", "P6", "P7"),
+            "crossing": ("P1", "P5", "P6")}
 _JUMPS = {("e1", 0): ("P1", "P5", "P6"), ("e1", 1): ("P1", "P5", "P6"), ("e2", 0): ("P1", "P7"), ("e2", 1): ("P1", "P7"),
           ("e2", 2): ("P7",), ("e1", 1, "mixed"): ("P1", "P7"), ("e1", 2, "mixed"): ("P7",)}
 _UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo"), ("P6", "e1", 1, "0"),
@@ -831,6 +851,48 @@ def _link_jump(name, f, claims, witness, bad) -> str:
             + (f", value {value}" if order == 0 else ""))
 
 
+def crossing_parts(f, order):
+    """For the crossing witness of f = Piecewise((A, l REL r), (B, True)):
+    d = r - l, d', the gap (A - B, or their e1-derivatives' for order 1) and
+    the expressions to be shown defined, all at (t, 0) with t = h > 0."""
+    if not (isinstance(f, sp.Piecewise) and len(f.args) == 2 and f.args[1][1] is sp.true
+            and type(f.args[0][1]) in _TRUE_WHEN and not any(x.has(*SMOOTH_ONLY) for x in (*f.args[0], f.args[1][0]))):
+        raise CertificateError("crossing: f is not Piecewise((A, l < r), (B, True)) with smooth parts")
+    on = {E1: H, E2: sp.Integer(0)}
+    (a, cond), (b, _) = f.args
+    d = (cond.rhs - cond.lhs).xreplace(on)
+    parts = [e.xreplace(on) for e in ([a, b] if order == 0 else [derivative(a, E1), derivative(b, E1)])]
+    defined = [d, a.xreplace(on), b.xreplace(on)] + (parts if order else [])
+    return d, derivative(d, H), parts[0] - parts[1], defined
+
+
+def _link_crossing(name, f, claims, witness, bad) -> str:
+    order = witness.get("order")
+    points = [tuple(_real(c) for c in p) for p in witness.get("points", [])]
+    if order not in (0, 1) or type(order) is not int or len(points) != 2 or any(len(p) != 2 or p[1] != 0 for p in points):
+        raise bad
+    (q1, _), (q2, _) = points
+    if not (q1.is_Rational and q2.is_Rational and 0 < q1 < q2):
+        raise bad
+    d, dd, gap, defined = crossing_parts(f, order)
+    on = (_srepr(H), _srepr(q1), _srepr(q2), False, False)
+
+    def sign(c, e=None):        # a sign claim on [q1, q2] (about e if given)
+        return c.kind == "sign" and (c.var, c.lo, c.hi, c.lo_open, c.hi_open) == on and (e is None or c.expr == _srepr(e))
+    if len(claims) != 4 + len(defined) or not (sign(claims[0], dd) and claims[0].strict and sign(claims[3], gap)
+                                               and claims[3].strict):
+        raise bad
+    ends = claims[1:3]
+    if [(c.kind, c.expr) for c in ends] != [("value_sign", _srepr(d.xreplace({H: q}))) for q in (q1, q2)] \
+            or ends[0].want * ends[1].want != -1:
+        raise bad
+    for c, e in zip(claims[4:], defined):       # M - E >= 0 for a number M: E is defined on [q1, q2]
+        if not (sign(c) and c.want == 1 and (parse(c.expr) + e).is_number):
+            raise bad
+    return (f"df/de1 does not exist where {f.args[0][1]} switches on the e1 axis, between {q1} and {q2}: "
+            f"there the branches' {'slopes' if order else 'values'} differ")
+
+
 def witness_values(kind, f, points) -> list:
     """The exact constants whose signs the kernel must claim (kinds value,
     circle, slope, step); the proposer uses this too."""
@@ -930,6 +992,8 @@ def link_refutation(name, f, theorems, witness) -> tuple[str, bool]:
         return f"{what} -> oo as h -> {'oo' if at == 'oo' else '0+'}", True
     if kind == "jump":
         return _link_jump(name, f, claims, witness, bad), bool(witness.get("order", 0))
+    if kind == "crossing":
+        return _link_crossing(name, f, claims, witness, bad), True
     points = [tuple(_real(c) for c in p) for p in witness.get("points", [])]
     if len(points) != (2 if kind in ("circle", "step") else 1) or any(len(p) != 2 for p in points):
         raise bad

@@ -29,7 +29,8 @@ import sympy as sp
 
 from . import e1 as E1, e2 as E2
 from .design import Design
-from .design_certificate import (_JUMPS, SMOOTH_ONLY, H, along_ray, at_point, axis_split, branch_profile, e1_sides,
+from .design_certificate import (_JUMPS, SMOOTH_ONLY, H, CertificateError, along_ray, at_point, axis_split,
+                                 branch_profile, crossing_parts, e1_sides,
                                  half_axes, relations_defined)
 from .interval import Interval, IntervalFunction, Undefined
 from .certify import (REDUCTION, SPENT, WORK, NoProof, continuity_pair, exploring, growth_theorems,
@@ -348,7 +349,47 @@ def _needs_profile(a: Analysis, name: str) -> Verdict | None:
     if not a.reduced:
         return _non_radial(a, name)
     if a.profile is None:
-        return unknown(f"radial, but {a.split[1].reason}")
+        return _switch_on_the_axis(a.f, name) or unknown(f"radial, but {a.split[1].reason}")
+    return None
+
+
+def _switch_on_the_axis(f, name: str) -> Verdict | None:
+    """P1, P5, P6 of f = Piecewise((A, l < r), (B, True)) (a Max or a Min)
+    whose condition switches on the e1 axis where SymPy finds no exact point
+    (log(1 + rho) = rho/2): the kernel's crossing witness on a rational
+    bracket 2^-30 wide (relative) of each of the first three sign changes of
+    r - l on a grid of [1/1000, 10^4], narrowed by bisection in mpmath."""
+    if name not in ("P1", "P5", "P6"):
+        return None
+    try:
+        g = sp.lambdify(H, crossing_parts(f, 0)[0], modules="mpmath")
+    except (CertificateError, TypeError, ValueError):
+        return None
+
+    def sign(t):
+        try:
+            v = g(t)
+        except (ValueError, ZeroDivisionError, TypeError, OverflowError):
+            return 0
+        return int(mpmath.sign(v)) if isinstance(v, mpmath.mpf) else 0
+    with mpmath.workdps(30):
+        grid = [mpmath.mpf(10) ** (mpmath.mpf(k) / 60 - 3) for k in range(421)]
+        signs = [sign(t) for t in grid]
+        brackets = [(a, b) for a, b, sa, sb in zip(grid, grid[1:], signs, signs[1:]) if sa * sb == -1][:3]
+        for a, b in brackets:
+            sa = sign(a)
+            for _ in range(80):
+                m = (a + b) / 2
+                a, b = (m, b) if sign(m) == sa else (a, m)
+            scale = 2 ** (30 - max(0, int(mpmath.floor(mpmath.log(b, 2)))))
+            q1, q2 = (sp.Rational(int(x), scale) for x in (mpmath.floor(a * scale), mpmath.ceil(b * scale)))
+            if not 0 < q1 < q2:
+                continue
+            found = refuted(f"df/de1 does not exist at (c, 0), c = {mpmath.nstr(a, 12)} in [{q1}, {q2}], where "
+                            f"{f.args[0][1]} switches: the two branches meet there at an angle or a step",
+                            {"e1": mpmath.nstr(a, 12), "e2": "0", "crossing": [str(q1), str(q2)]})
+            if refutation_theorems(name, found, f)[0] is not None:
+                return found
     return None
 
 
@@ -738,7 +779,7 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
         found = _e2_limit_not_zero(f)
         if found is not None:
             return found
-    found = _fails_on_a_grid(f, name) or _jump_across_a_line(f, name) or \
+    found = _fails_on_a_grid(f, name) or _jump_across_a_line(f, name) or _switch_on_the_axis(f, name) or \
         {"P1": _p1_along_e2, "P3": _p3_separable, "P5": _p5_along_e1, "P6": _p6_along_e1}.get(name, lambda f: None)(f)
     if found is not None:
         return found
