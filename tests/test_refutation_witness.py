@@ -571,7 +571,7 @@ def test_crossing_of_a_max_refutes_p1_p5_p6():
                                                                           ["Rational(8, 5)", "Integer(0)"]])
         pc = checked(data)
         assert pc.refutation_checked and pc.theorems == 9
-        assert pc.witness.startswith("df/de1 does not exist where") and "between 3/2 and 8/5" in pc.witness
+        assert pc.witness.startswith("df/de1 does not exist where") and "e1 axis, between 3/2 and 8/5" in pc.witness
     claims = [c["claim"] for c in data["properties"]["P6"]["kernel"]["theorems"]]
     signs = {(c["kind"], c["want"]) for c in claims if c["kind"] == "value_sign"}
     assert signs == {("value_sign", -1), ("value_sign", 1)}
@@ -603,8 +603,25 @@ def test_tampered_crossing_witness_is_rejected():
     other["design"]["f"] = sp.srepr(sp.Piecewise((RHO, RHO < 1), *MAXC.args))
     with pytest.raises(DC.CertificateError, match="crossing: f is not Piecewise"):
         DC.check(other)
-    with pytest.raises(DC.CertificateError, match="P7: a witness of kind 'crossing' does not refute P7"):
+    with pytest.raises(DC.CertificateError, match="P7: a crossing on the e1 axis does not refute P7"):
         DC.check(as_property(data, "P6", "P7"))
+    with pytest.raises(DC.CertificateError, match="P3: a witness of kind 'crossing' does not refute P3"):
+        DC.check(as_property(data, "P6", "P3"))
+    # on the e2 axis the same corner refutes P1 and P7 (d2f/de2^2 needs df/de2 at (0, c)), not P5 or P6
+    data = proposed("P7", MAXC, {"e1": "0", "e2": "1.585", "crossing": ["3/2", "8/5"]})
+    w = data["properties"]["P7"]["witness"]
+    assert (w["var"], w["points"]) == ("e2", [["Integer(0)", "Rational(3, 2)"], ["Integer(0)", "Rational(8, 5)"]])
+    assert checked(data).witness.startswith("df/de2 does not exist where")
+    assert checked(as_property(data, "P7", "P1")).refutation_checked
+    with pytest.raises(DC.CertificateError, match="P5: a crossing on the e2 axis does not refute P5"):
+        DC.check(as_property(data, "P7", "P5"))
+    bad = copy.deepcopy(data)
+    bad["properties"]["P7"]["witness"]["var"] = "e1"
+    with pytest.raises(DC.CertificateError, match="P7: a crossing on the e1 axis does not refute P7"):
+        DC.check(bad)
+    bad["properties"]["P7"]["witness"]["var"] = "e3"
+    with pytest.raises(DC.CertificateError, match="P7: a crossing on the e3 axis does not refute P7"):
+        DC.check(bad)
 
 
 def test_a_crossing_needs_each_branch_and_its_slope_defined():

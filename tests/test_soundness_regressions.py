@@ -1226,12 +1226,12 @@ def test_p6_of_a_c2_join_is_kernel_checked_with_room(tmp_path):
 def test_a_max_or_min_crossing_where_sympy_finds_no_point_is_refuted(tmp_path):
     # log(1 + rho) and rho/2 cross at rho = 2.5128624 (no closed form; solveset finds nothing): Max and
     # Min have a corner there (slopes 2t/(1 + t^2) = 0.90 and t = 1.585 along the axis), so df/de1 does
-    # not exist on that circle and P1, P5, P6 fail; P2-P4 hold (f(0) = 0, both arguments > 0 and -> oo,
+    # not exist on that circle and P1, P5, P6 fail (P7 too: d2f/de2^2 needs df/de2 at (0, 1.585)); P2-P4 hold (f(0) = 0, both arguments > 0 and -> oo,
     # radial).  The kernel checks the corner on a rational bracket of the crossing.
     for m in ("Max", "Min"):
         report, v = verify(tmp_path, f"f = sp.{m}(log(1 + rho), rho/2)\n")
-        assert [v[p] for p in ("P1", "P2", "P3", "P4", "P5", "P6")] == ["refuted"] * 1 + ["proved"] * 3 + ["refuted"] * 2
-        assert {"P1", "P2", "P3", "P4", "P5", "P6"} <= set(report.kernel["checked"]), report.kernel
+        assert [v[p] for p in ("P1", "P2", "P3", "P4", "P5", "P6", "P7")] == ["refuted"] + ["proved"] * 3 + ["refuted"] * 3
+        assert {"P1", "P2", "P3", "P4", "P5", "P6", "P7"} <= set(report.kernel["checked"]), report.kernel
         assert report.properties["P1"].witness["crossing"] and "1.5852010652" in report.properties["P1"].reason
     # the same two arguments, but tangent where they meet (their difference is a cube of the same
     # difference): f is C^2 there, and nothing is refuted (P1 holds: kf = sup |F'| is finite)

@@ -2053,10 +2053,12 @@ def _witness_candidates(name, witness):
     if name in ("P1", "P7") and p is not None and w.get("jump") == "e2":      # f(e1, t) jumps at t = e2?
         for order in (0, 1) if name == "P1" else (0, 1, 2):
             yield {"kind": "jump", "points": [p], "var": "e2", "order": order}
-    if name in ("P1", "P5", "P6") and "crossing" in w:       # a Max or Min switches between two rationals
+    if name in ("P1", "P5", "P6", "P7") and "crossing" in w:       # a Max or Min switches between two rationals
         q1, q2 = (sp.Rational(q) for q in w["crossing"])
+        v, zero = "e2" if name == "P7" else "e1", sp.Integer(0)
         for order in (1, 0):
-            yield {"kind": "crossing", "points": [(q1, sp.Integer(0)), (q2, sp.Integer(0))], "order": order}
+            yield {"kind": "crossing", "var": v, "order": order,
+                   "points": [(zero, q1), (zero, q2)] if v == "e2" else [(q1, zero), (q2, zero)]}
     if name == "P8" and p is not None and w.get("approach") == "e2":       # df/de2(x, h) -> L != 0 as h -> 0+
         yield {"kind": "e2_limit", "points": [p]}
     if str(w.get("e1")) == "0":          # at the origin (P8: e2 -> 0+ along e1 = 0)
@@ -2184,9 +2186,10 @@ def _crossing_theorems(f, record):
     the gap on [q1, q2] with one strict sign each, d's signs at q1 and q2,
     and M - E >= 0 for each part E, M an integer above E's Arb enclosure."""
     from .design_certificate import CertificateError, H, crossing_parts
-    (q1, _), (q2, _) = record["points"]
+    v = sp.Symbol(record["var"], real=True)
+    (q1, _), (q2, _) = record["points"] if record["var"] == "e1" else [p[::-1] for p in record["points"]]
     try:
-        d, dd, gap, defined = crossing_parts(f, record["order"])
+        d, dd, gap, defined = crossing_parts(f, record["order"], v)
         ranges = [evaluate(e, H, q1, q2) for e in (dd, gap)]
     except (CertificateError, Undefined) as exc:
         raise NoProof("{}", exc) from None

@@ -643,13 +643,16 @@ DIVERGES = "F(s) -> oo as s -> oo"
 #        B are C^1 where they and their derivatives are defined).  The gap
 #        says one of these fails at c: df/de1 does not exist at (c, 0), and
 #        P1, P5, P6 fail.  Rests on sympy-diff.  The crossing c need not be
-#        exact (log(1 + rho) = rho/2 at rho = 2.513...).
+#        exact (log(1 + rho) = rho/2 at rho = 2.513...).  With "var": "e2" the
+#        same on the e2 axis, at (0, t): df/de2 does not exist at (0, c), so
+#        P1 fails, and so does P7 (d2f/de2^2 at (0, c) is the derivative of
+#        t -> df/de2(0, t) at c).
 
 SMOOTH_ONLY = (sp.Piecewise, sp.Max, sp.Min, sp.sign)
 _REFUTES = {"value": ("P2", "P3"), "circle": ("P4",), "slope": ("P5", "P6"), "step": ("P5", "P6"),
             "e2_limit": ("P8",), "origin_jump": ("P1", "P5", "P6", "P7", "P8"), "bounded": ("P3",),
             "unbounded": ("P1", "P5", "P6", "P7", "P8"), "jump": ("P1", "P5", "P6", "P7"),
-            "crossing": ("P1", "P5", "P6")}
+            "crossing": ("P1", "P5", "P6", "P7")}
 _JUMPS = {("e1", 0): ("P1", "P5", "P6"), ("e1", 1): ("P1", "P5", "P6"), ("e2", 0): ("P1", "P7"), ("e2", 1): ("P1", "P7"),
           ("e2", 2): ("P7",), ("e1", 1, "mixed"): ("P1", "P7"), ("e1", 2, "mixed"): ("P7",)}
 _UNBOUNDED = {("P1", "e2", 1, "oo"), ("P1", "e2", 1, "0"), ("P6", "e1", 1, "oo"), ("P6", "e1", 1, "0"),
@@ -851,30 +854,33 @@ def _link_jump(name, f, claims, witness, bad) -> str:
             + (f", value {value}" if order == 0 else ""))
 
 
-def crossing_parts(f, order):
+def crossing_parts(f, order, v=E1):
     """For the crossing witness of f = Piecewise((A, l REL r), (B, True)):
-    d = r - l, d', the gap (A - B, or their e1-derivatives' for order 1) and
-    the expressions to be shown defined, all at (t, 0) with t = h > 0."""
+    d = r - l, d', the gap (A - B, or their v-derivatives' for order 1) and
+    the expressions to be shown defined, all at h > 0 on the v axis."""
     if not (isinstance(f, sp.Piecewise) and len(f.args) == 2 and f.args[1][1] is sp.true
             and type(f.args[0][1]) in _TRUE_WHEN and not any(x.has(*SMOOTH_ONLY) for x in (*f.args[0], f.args[1][0]))):
         raise CertificateError("crossing: f is not Piecewise((A, l < r), (B, True)) with smooth parts")
-    on = {E1: H, E2: sp.Integer(0)}
+    on = _on_axis(v, 0, 1)
     (a, cond), (b, _) = f.args
     d = (cond.rhs - cond.lhs).xreplace(on)
-    parts = [e.xreplace(on) for e in ([a, b] if order == 0 else [derivative(a, E1), derivative(b, E1)])]
+    parts = [e.xreplace(on) for e in ([a, b] if order == 0 else [derivative(a, v), derivative(b, v)])]
     defined = [d, a.xreplace(on), b.xreplace(on)] + (parts if order else [])
     return d, derivative(d, H), parts[0] - parts[1], defined
 
 
 def _link_crossing(name, f, claims, witness, bad) -> str:
-    order = witness.get("order")
+    order, v = witness.get("order"), witness.get("var", "e1")
+    if name not in {"e1": ("P1", "P5", "P6"), "e2": ("P1", "P7")}.get(v, ()):
+        raise CertificateError(f"{name}: a crossing on the {v} axis does not refute {name}")
+    v = {"e1": E1, "e2": E2}[v]
     points = [tuple(_real(c) for c in p) for p in witness.get("points", [])]
-    if order not in (0, 1) or type(order) is not int or len(points) != 2 or any(len(p) != 2 or p[1] != 0 for p in points):
+    if order not in (0, 1) or type(order) is not int or len(points) != 2 or any(len(p) != 2 for p in points):
         raise bad
-    (q1, _), (q2, _) = points
-    if not (q1.is_Rational and q2.is_Rational and 0 < q1 < q2):
+    (q1, o1), (q2, o2) = points if v == E1 else [p[::-1] for p in points]
+    if not (q1.is_Rational and q2.is_Rational and 0 < q1 < q2 and o1 == o2 == 0):
         raise bad
-    d, dd, gap, defined = crossing_parts(f, order)
+    d, dd, gap, defined = crossing_parts(f, order, v)
     on = (_srepr(H), _srepr(q1), _srepr(q2), False, False)
 
     def sign(c, e=None):        # a sign claim on [q1, q2] (about e if given)
@@ -889,7 +895,7 @@ def _link_crossing(name, f, claims, witness, bad) -> str:
     for c, e in zip(claims[4:], defined):       # M - E >= 0 for a number M: E is defined on [q1, q2]
         if not (sign(c) and c.want == 1 and (parse(c.expr) + e).is_number):
             raise bad
-    return (f"df/de1 does not exist where {f.args[0][1]} switches on the e1 axis, between {q1} and {q2}: "
+    return (f"df/d{v} does not exist where {f.args[0][1]} switches on the {v} axis, between {q1} and {q2}: "
             f"there the branches' {'slopes' if order else 'values'} differ")
 
 

@@ -354,15 +354,16 @@ def _needs_profile(a: Analysis, name: str) -> Verdict | None:
 
 
 def _switch_on_the_axis(f, name: str) -> Verdict | None:
-    """P1, P5, P6 of f = Piecewise((A, l < r), (B, True)) (a Max or a Min)
-    whose condition switches on the e1 axis where SymPy finds no exact point
-    (log(1 + rho) = rho/2): the kernel's crossing witness on a rational
-    bracket 2^-30 wide (relative) of each of the first three sign changes of
-    r - l on a grid of [1/1000, 10^4], narrowed by bisection in mpmath."""
-    if name not in ("P1", "P5", "P6"):
+    """P1, P5, P6 (P7) of f = Piecewise((A, l < r), (B, True)) (a Max or a
+    Min) whose condition switches on the e1 (e2) axis where SymPy finds no
+    exact point (log(1 + rho) = rho/2): the kernel's crossing witness on a
+    rational bracket 2^-30 wide (relative) of each of the first three sign
+    changes of r - l on a grid of [1/1000, 10^4], narrowed by bisection in
+    mpmath."""
+    if name not in ("P1", "P5", "P6", "P7"):
         return None
     try:
-        g = sp.lambdify(H, crossing_parts(f, 0)[0], modules="mpmath")
+        g = sp.lambdify(H, crossing_parts(f, 0, E2 if name == "P7" else E1)[0], modules="mpmath")
     except (CertificateError, TypeError, ValueError):
         return None
 
@@ -385,9 +386,11 @@ def _switch_on_the_axis(f, name: str) -> Verdict | None:
             q1, q2 = (sp.Rational(int(x), scale) for x in (mpmath.floor(a * scale), mpmath.ceil(b * scale)))
             if not 0 < q1 < q2:
                 continue
-            found = refuted(f"df/de1 does not exist at (c, 0), c = {mpmath.nstr(a, 12)} in [{q1}, {q2}], where "
+            at, c = ("(0, c)", "e2") if name == "P7" else ("(c, 0)", "e1")
+            found = refuted(f"df/d{c} does not exist at {at}, c = {mpmath.nstr(a, 12)} in [{q1}, {q2}], where "
                             f"{f.args[0][1]} switches: the two branches meet there at an angle or a step",
-                            {"e1": mpmath.nstr(a, 12), "e2": "0", "crossing": [str(q1), str(q2)]})
+                            {c: mpmath.nstr(a, 12), ("e1" if name == "P7" else "e2"): "0",
+                             "crossing": [str(q1), str(q2)]})
             if refutation_theorems(name, found, f)[0] is not None:
                 return found
     return None
