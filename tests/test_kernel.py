@@ -566,24 +566,26 @@ def test_value_sign():
         assert K.value_sign(value=c - sp.Rational(near) + sp.Rational(1, 10**30)).claim.want == 1, c
         assert parse(sp.srepr(2 * c)) == 2 * c
     # a difference of about 10^-300 (log(1 + t) = t - t^2/2 + ...), beyond 256 bits, within 2,048 (red team 18b's
-    # elliptic designs); 10^-700 is beyond both, and its sign stays undecided
+    # elliptic designs); 10^-700 is beyond both, within 32,768 (a design's f(0, 0) = -10^-400 or -exp(-10^4),
+    # whose P3 witness is near the origin); exp(-30000)/2 = 2^-43281.5 is beyond all three, its sign undecided
     tiny = sp.log(2 + Q(1, 10 ** 300)) - sp.log(2)
     assert K.value_sign(value=tiny).claim.want == 1 and K.value_sign(value=-tiny).claim.want == -1
-    rejects(K.value_sign, value=sp.log(2 + Q(1, 10 ** 700)) - sp.log(2))
+    assert K.value_sign(value=sp.log(2) - sp.log(2 + Q(1, 10 ** 700))).claim.want == -1
+    rejects(K.value_sign, value=sp.log(2 + sp.exp(-30000)) - sp.log(2))
 
 
 def test_a_sum_of_logarithms_of_rationals_is_exactly_zero():
     """log(4)/2 - log(2) is not SymPy's literal 0; read through the primes
     (log 4 = 2 log 2, log(9/4) = 2 log 3 - 2 log 2) it is 0 exactly.  Moved
     by 10^-90 it is signed (at 2,048 bits: 256 do not separate it); by
-    10^-700, beyond 2,048 bits too, it is neither 0 nor signed.  The Taylor
+    exp(-30000), beyond 32,768 bits too, it is neither 0 nor signed.  The Taylor
     rule takes such a value as the zero it needs at c."""
     assert K.value_sign(value=sp.log(4) / 2 - sp.log(2)).claim.want == 0
     assert K.value_sign(value=sp.log(Q(9, 4)) - 2 * sp.log(3) + 2 * sp.log(2)).claim.want == 0
     assert K.value_sign(value=sp.log(6) - sp.log(2) - sp.log(3) + Q(1, 10 ** 9)).claim.want == 1
     assert K.value_sign(value=sp.log(4) / 2 - sp.log(2) - Q(1, 10 ** 90)).claim.want == -1
-    rejects(K.value_sign, value=sp.log(4) / 2 - sp.log(2) + Q(1, 10 ** 700))
-    rejects(K.value_sign, value=sp.log(4) / 3 - sp.log(2) + sp.log(2) / 3 + Q(1, 10 ** 700))
+    rejects(K.value_sign, value=sp.log(4) / 2 - sp.log(2) + sp.exp(-30000))
+    rejects(K.value_sign, value=sp.log(4) / 3 - sp.log(2) + sp.log(2) / 3 + sp.exp(-30000))
     F = sp.log(4 + x ** 2) / 2 - sp.log(2)             # F(0) = F'(0) = 0, F''(0) = 1/4
     assert K.sign_by_taylor(expr=F, var=x, c=ZERO, side=1, width=Q(1, 2), order=2).claim.want == 1
     rejects(K.sign_by_taylor, expr=F + Q(1, 10 ** 90), var=x, c=ZERO, side=1, width=Q(1, 2), order=2)

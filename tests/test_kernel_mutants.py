@@ -61,11 +61,12 @@ def test_rule_data_and_premises_are_checked():
     assert why(K.value_sign, value=sp.Pow(-1, Q(1, 3))) == "not a real constant: (-1)**(1/3): x**(1/3) needs x >= 0"
     assert why(K.value_sign, value=oo) == "a finite constant"
     # (1 + sqrt 2)**2 - 3 - 2 sqrt 2 is exactly 0, though not literally (polynomial arithmetic in
-    # sqrt 2); 10^-90 more it is signed at 2,048 bits; 10^-700 more, its Arb ball still contains 0 at 2,048 bits,
-    # and it is neither 0 nor signed
+    # sqrt 2); 10^-90 more it is signed at 2,048 bits, 10^-700 more at 32,768; exp(-30000) more, its Arb ball
+    # still contains 0 at 32,768 bits, and it is neither 0 nor signed
     c = (1 + sp.sqrt(2)) ** 2 - 3 - 2 * sp.sqrt(2)
     assert K.value_sign(value=c).claim.want == 0 and K.value_sign(value=c + Q(1, 10 ** 90)).claim.want == 1
-    assert why(K.value_sign, value=c + Q(1, 10 ** 700)) == f"sign of {c + Q(1, 10 ** 700)} not decided"
+    assert K.value_sign(value=c - Q(1, 10 ** 700)).claim.want == -1
+    assert why(K.value_sign, value=c + sp.exp(-30000)) == f"sign of {c + sp.exp(-30000)} not decided"
     assert why(K.join, 1, 2) == "join: a premise is not a theorem"
 
 
@@ -1921,9 +1922,9 @@ def test_logarithms_of_rationals_are_read_through_their_primes():
     one fresh symbol per prime: log(3/4) - log 3 + 2 log 2 and log 256 - 8 log 2
     are 0 exactly (Arb alone cannot say so); log 2^64 is not factored (the cost
     bound), so log(2^64) - 64 log 2 stays undecided.  Distinct primes keep
-    distinct symbols: (log 3 - log 2)(sqrt 3 - r), r below sqrt 3 by less
-    than 10^-700, is not 0 although Arb's 2,048 bits cannot sign it (by less
-    than 10^-90 they do: positive)."""
+    distinct symbols: (log 3 - log 2)(log(2 + exp(-30000)) - log 2) is not 0
+    although Arb's 32,768 bits cannot sign it (sqrt 3 - r for r below sqrt 3
+    by less than 10^-90 they do: positive)."""
     V = K.value_sign
     assert V(value=sp.log(Q(3, 4)) - sp.log(3) + 2 * sp.log(2)).claim.want == 0
     assert V(value=sp.log(256) - 8 * sp.log(2)).claim.want == 0
@@ -1931,8 +1932,7 @@ def test_logarithms_of_rationals_are_read_through_their_primes():
     assert why(V, value=big) == f"sign of {big} not decided"
     r = sp.Rational(sp.floor(sp.sqrt(3) * 10 ** 90), 10 ** 90)
     assert V(value=(sp.log(3) - sp.log(2)) * (sp.sqrt(3) - r)).claim.want == 1
-    r = sp.Rational(sp.integer_nthroot(3 * 10 ** 1400, 2)[0], 10 ** 700)      # floor(sqrt(3) 10^700)/10^700
-    c = (sp.log(3) - sp.log(2)) * (sp.sqrt(3) - r)
+    c = (sp.log(3) - sp.log(2)) * (sp.log(2 + sp.exp(-30000)) - sp.log(2))
     assert why(V, value=c) == f"sign of {c} not decided"
 
 

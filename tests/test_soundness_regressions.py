@@ -1237,3 +1237,20 @@ def test_a_max_or_min_crossing_where_sympy_finds_no_point_is_refuted(tmp_path):
     # difference): f is C^2 there, and nothing is refuted (P1 holds: kf = sup |F'| is finite)
     report, v = verify(tmp_path, "L = log(1 + rho)\nf = Max(L, L + (rho - 2*L)**3/(1 + rho)**4)\n")
     assert "refuted" not in v.values(), report.properties
+
+
+def test_f_below_zero_only_within_10_to_the_minus_200_of_the_origin_is_not_positive(tmp_path):
+    # log(1 + rho) - 10^-400 < 0 wherever rho < 10^-400 (log(1 + x) <= x): P3 fails, though only on a
+    # disc of radius 10^-200, at (1/(2 10^200), 0) for instance; the same for a far dip exp(-(rho - 100)^2)
+    # times 3, which is 3 exp(-10^4) at the origin: f(s, 0) < 0 for s = sqrt(3) exp(-5000)/2, where
+    # log(1 + s^2) <= s^2 = (3/4) exp(-10^4) < 3 exp(-(s^2 - 100)^2) (that is 3 exp(-10^4) exp(200 s^2 - s^4)).
+    # (Before, P3 stayed unknown: "cannot decide the sign near s = 0".)
+    report, v = verify(tmp_path, "f = log(1 + rho) - Rational(1, 10**400)\n")
+    assert v["P3"] == "refuted" and "P3" in report.kernel["checked"]
+    assert report.properties["P3"].witness == {"e1": str(sp.Rational(1, 2 * 10 ** 200)), "e2": "0"}
+    report, v = verify(tmp_path, "f = log(1 + rho) - 3*sp.exp(-(rho - 100)**2)\n")
+    assert v["P3"] == "refuted" and "P3" in report.kernel["checked"]
+    assert report.properties["P3"].witness["e1"] == "sqrt(3)*exp(-5000)/2"
+    # f(0, 0) = -exp(-10^6): the witness would need Arb at about 1.4 million bits; P3 stays unknown
+    report, v = verify(tmp_path, "f = sqrt(1 + rho) - 1 - sp.exp(-10**6)\n")
+    assert v["P3"] == "unknown"

@@ -517,6 +517,8 @@ def verify_p3(a: Analysis) -> Verdict:
     pos = _positive_on_pieces(a, 0, "F(s) > 0")
     if pos.refuted:
         return refuted(f"f is not positive: {pos.reason}", pos.witness)
+    if not pos.proved and (found := _negative_near_origin(a)):
+        return found
     defined = a.c0[0]       # F continuous, so defined, on every open piece
     if not defined.proved:
         return unknown(f"f may be undefined somewhere: {defined.reason}")
@@ -545,6 +547,24 @@ def verify_p3(a: Analysis) -> Verdict:
         return pos
     return _lemmas(proved(f"{pos.reason}; F(s) -> oo as s -> oo (limit calculus on F(1/t))"), pos,
                    "F(s) -> oo as s -> oo (limit calculus)", lambda: _growth(a))
+
+
+def _negative_near_origin(a: Analysis) -> Verdict | None:
+    """P3 where F(0+) = L < 0 exactly, however small (log(1 + rho) -
+    10^-400, or - exp(-10^4)): F < 0 on some (0, w), and the kernel's
+    `value` witness at (s, 0) for s = |L|/2^j (a corner at 0) or
+    sqrt(|L|)/2^j (a smooth minimum), exact expressions such as
+    exp(-5000)/2, whose sign Arb decides with up to 32,768 bits."""
+    first = a.profile.pieces[0].expr
+    L = one_sided_value(first, 0, +1)
+    if L is None or L in (sp.oo, -sp.oo) or exact_sign(L) != -1:
+        return None
+    for s in (sp.sqrt(-L) / 2, -L / 2, sp.sqrt(-L) / 16, -L / 16):
+        found = refuted(f"f is not positive: f(s, 0) < 0 for s = {_show(s)}, near the origin, where F tends to "
+                        f"{_show(L)} < 0", {"e1": str(s), "e2": "0"})
+        if refutation_theorems("P3", found, a.f)[0] is not None:
+            return found
+    return None
 
 
 def _bounded_above(f):
