@@ -37,6 +37,8 @@ CASES = {
     "undefined_on_irrational_lines.py": "0/0 on the lines e2 = +-sqrt(2) (irrational zeros of a denominator)",
     "condition_compares_truth_values.py": "Eq(e1 > 0, e2 > 0) as a condition (a red team's crash)",
     "unevaluated_integral.py": "an unevaluated Integral in f",
+    "complex_parts_cancel.py": "logarithms of negative numbers whose imaginary parts cancel",
+    "complex_roots_cancel.py": "square roots of negative numbers whose product is real",
 }
 
 #: file -> the words of the one line that name the fix
@@ -54,6 +56,9 @@ FIXES = {
     "undefined_on_irrational_lines.py": ["f is undefined at (e1, e2) = (0, -sqrt(2))"],
     "condition_compares_truth_values.py": ["compares truth values", "write it with And, Or and Not"],
     "unevaluated_integral.py": ["f holds an unevaluated Integral", "write f in closed form"],
+    "complex_parts_cancel.py": ["f is not real-valued at (e1, e2) = (0, 0)", "its part log(2*e1 - 14)",
+                                "write f with real parts only"],
+    "complex_roots_cancel.py": ["f is not real-valued at (e1, e2) = (0, 0)", "has no real value there"],
 }
 HANGS = "sleep_forever.py"
 

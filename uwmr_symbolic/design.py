@@ -349,6 +349,35 @@ def _check_real_valued(f: sp.Expr) -> None:
         re, im = v.as_real_imag() if rational else (v, 0)
         if im != 0 and abs(im) > 1e-25:
             raise DesignError(f"f is not real-valued at (e1, e2) = ({a}, {b}): f = {sp.N(v, 6)}")
+        for part in _parts_with_a_domain(f) if rational else ():
+            try:
+                w = part.subs({E1: a, E2: b}).evalf(30)
+                im = 0 if w.has(sp.nan, sp.zoo, sp.oo, -sp.oo) else w.as_real_imag()[1]
+            except (OverflowError, RecursionError, ZeroDivisionError, TypeError, ValueError):
+                continue
+            if im != 0 and abs(im) > 1e-25:
+                raise DesignError(f"f is not real-valued at (e1, e2) = ({a}, {b}): its part {part} has no real value "
+                                  "there (f has one only in complex arithmetic); write f with real parts only")
+
+
+def _parts_with_a_domain(f: sp.Expr) -> list:
+    """The logarithms, powers with an exponent that is not an integer and
+    inverse functions of f (outside Piecewise, whose branches may be taken
+    only where they are real): where one of them has no real value neither
+    has f, though SymPy's complex values can cancel (log(2 e1 - 14) -
+    log(e1 - 7) is log 2 at e1 = 0; red team 22)."""
+    out, stack = [], [f]
+    while stack:
+        e = stack.pop()
+        if isinstance(e, sp.Piecewise) or not isinstance(e, sp.Basic):
+            continue
+        if isinstance(e, _DOMAINED) or (e.is_Pow and not e.exp.is_integer):
+            out.append(e)
+        stack.extend(e.args)
+    return out
+
+
+_DOMAINED = (sp.log, sp.asin, sp.acos, sp.acosh, sp.atanh, sp.acoth, sp.asec, sp.acsc, sp.LambertW)
 
 
 def _zeros_of_denominators(f: sp.Expr, lines=(0, 1, -1)) -> list:
