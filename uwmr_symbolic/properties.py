@@ -19,6 +19,7 @@ limit of df/de2; limits along rays via the limit calculus) and says
 "unknown" for the rest."""
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import replace
 from fractions import Fraction
@@ -357,43 +358,50 @@ def _switch_on_the_axis(f, name: str) -> Verdict | None:
     """P1, P5, P6 (P7) of f = Piecewise((A, l < r), (B, True)) (a Max or a
     Min) whose condition switches on the e1 (e2) axis where SymPy finds no
     exact point (log(1 + rho) = rho/2): the kernel's crossing witness on a
-    rational bracket 2^-30 wide (relative) of each of the first three sign
-    changes of r - l on a grid of [1/1000, 10^4], narrowed by bisection in
-    mpmath."""
+    bracket of each switch (`_switches`)."""
     if name not in ("P1", "P5", "P6", "P7"):
         return None
+    c, other = ("e2", "e1") if name == "P7" else ("e1", "e2")
+    for near, q1, q2 in _switches(f, c):
+        found = refuted(f"df/d{c} does not exist on the {c} axis at {c} = {near}, in [{q1}, {q2}], where "
+                        f"{f.args[0][1]} switches: the two branches meet there at an angle or a step",
+                        {c: near, other: "0", "crossing": [str(q1), str(q2)]})
+        if refutation_theorems(name, found, f)[0] is not None:
+            return found
+    return None
+
+
+@functools.lru_cache(maxsize=16)
+def _switches(f, v: str) -> tuple:
+    """(c to 12 digits, q1, q2) for the first three sign changes of r - l
+    along the v axis, f = Piecewise((A, l < r), (B, True)): found on a grid of
+    [1/1000, 10^4], narrowed by bisection in 30-digit mpmath, bracketed by
+    rationals q1 < c < q2 about 2^-30 apart (relative to c above 1)."""
     try:
-        g = sp.lambdify(H, crossing_parts(f, 0, E2 if name == "P7" else E1)[0], modules="mpmath")
+        g = sp.lambdify(H, crossing_parts(f, 0, E2 if v == "e2" else E1)[0], modules="mpmath")
     except (CertificateError, TypeError, ValueError):
-        return None
+        return ()
 
     def sign(t):
         try:
-            v = g(t)
+            value = g(t)
         except (ValueError, ZeroDivisionError, TypeError, OverflowError):
             return 0
-        return int(mpmath.sign(v)) if isinstance(v, mpmath.mpf) else 0
+        return int(mpmath.sign(value)) if isinstance(value, mpmath.mpf) else 0
+    out = []
     with mpmath.workdps(30):
         grid = [mpmath.mpf(10) ** (mpmath.mpf(k) / 60 - 3) for k in range(421)]
         signs = [sign(t) for t in grid]
-        brackets = [(a, b) for a, b, sa, sb in zip(grid, grid[1:], signs, signs[1:]) if sa * sb == -1][:3]
-        for a, b in brackets:
+        for a, b in [(a, b) for a, b, sa, sb in zip(grid, grid[1:], signs, signs[1:]) if sa * sb == -1][:3]:
             sa = sign(a)
             for _ in range(80):
                 m = (a + b) / 2
                 a, b = (m, b) if sign(m) == sa else (a, m)
             scale = 2 ** (30 - max(0, int(mpmath.floor(mpmath.log(b, 2)))))
             q1, q2 = (sp.Rational(int(x), scale) for x in (mpmath.floor(a * scale), mpmath.ceil(b * scale)))
-            if not 0 < q1 < q2:
-                continue
-            at, c = ("(0, c)", "e2") if name == "P7" else ("(c, 0)", "e1")
-            found = refuted(f"df/d{c} does not exist at {at}, c = {mpmath.nstr(a, 12)} in [{q1}, {q2}], where "
-                            f"{f.args[0][1]} switches: the two branches meet there at an angle or a step",
-                            {c: mpmath.nstr(a, 12), ("e1" if name == "P7" else "e2"): "0",
-                             "crossing": [str(q1), str(q2)]})
-            if refutation_theorems(name, found, f)[0] is not None:
-                return found
-    return None
+            if 0 < q1 < q2:
+                out.append((mpmath.nstr(a, 12), q1, q2))
+    return tuple(out)
 
 
 def verify_p1(a: Analysis) -> Verdict:
