@@ -577,18 +577,24 @@ def chain_designs(draw):
 @st.composite
 def maxmin_designs(draw):
     """Max/Min of two radial functions: one dominates everywhere (f is the
-    smooth one: every truth as for it), or they cross with different slopes."""
-    which = draw(st.sampled_from(["max-dominated", "min-dominated", "max-cross", "min-cross"]))
+    smooth one: every truth as for it), they cross with different slopes, or
+    they touch to third order where they cross (f is C^2 there)."""
+    which = draw(st.sampled_from(["max-dominated", "min-dominated", "max-cross", "min-cross", "max-tangent"]))
     L = sp.log(1 + RHO)
     if which == "max-dominated":      # log(1+x) >= x/(1+x), equal only at 0
         f, t, kf = sp.Max(L, RHO / (1 + RHO)), radial_truth((Fraction(0), Fraction(1))), sp.Integer(1)
     elif which == "min-dominated":    # log(1+x) <= x
         f, t, kf = sp.Min(L, RHO), radial_truth((Fraction(0), Fraction(1))), sp.Integer(1)
+    elif which == "max-tangent":      # L + max(0, g^3/(1+x)^4), g = x - 2L < 0 before x = 2.513, > 0 after:
+        # C^2 at the crossing; F' = 2s/(1+s^2) + 2s (3 g^2 g' (1+x) - 4 g^3)/(1+x)^5 > 0, and sup F' = 1 at s = 1
+        # (below the crossing; 50-digit mpmath on a grid of [0.001, 200]: at most 0.90 beyond it)
+        f, t, kf = sp.Max(L, L + (RHO - 2 * L) ** 3 / (1 + RHO) ** 4), {p: True for p in PROPS}, sp.Integer(1)
     else:                             # log(1+x) = x/2 at x = 2.513: slopes 0.285 and 1/2
         f = sp.Max(L, RHO / 2) if which == "max-cross" else sp.Min(L, RHO / 2)
         t = {"P1": False, "P2": True, "P3": True, "P4": None, "P5": False, "P6": False, "P7": False, "P8": True}
         kf = None
-    return Case("maxmin", f, t, kf, radii=[sp.sqrt(R(2513, 1000))] if "cross" in which else [], note=which)
+    return Case("maxmin", f, t, kf, radii=[sp.sqrt(R(2513, 1000))] if "cross" in which or "tangent" in which else [],
+                note=which)
 
 
 @st.composite
