@@ -2193,7 +2193,7 @@ def _crossing_theorems(f, record):
         ranges = [evaluate(e, H, q1, q2) for e in (dd, gap)]
     except (CertificateError, Undefined) as exc:
         raise NoProof("{}", exc) from None
-    signed = [_cover(e, H, q1, q2, want=1 if v.lo + v.hi > 0 else -1, strict=True) for e, v in zip((dd, gap), ranges)]
+    signed = [_cover(e, H, q1, q2, want=1 if r.lo + r.hi > 0 else -1, strict=True) for e, r in zip((dd, gap), ranges)]
     ends = [_rule(K.value_sign, value=d.xreplace({H: q})) for q in (q1, q2)]
     bounds = []
     for e in defined:
