@@ -1251,6 +1251,10 @@ def test_f_below_zero_only_within_10_to_the_minus_200_of_the_origin_is_not_posit
     report, v = verify(tmp_path, "f = log(1 + rho) - 3*sp.exp(-(rho - 100)**2)\n")
     assert v["P3"] == "refuted" and "P3" in report.kernel["checked"]
     assert report.properties["P3"].witness["e1"] == "sqrt(3)*exp(-5000)/2"
+    # not radial (the e1 e2 term): f(0, 0) = -10^-400, and at (1/(2 10^200), 0) the same value as above
+    report, v = verify(tmp_path, "f = log(1 + rho + e1*e2/2) - Rational(1, 10**400)\n")
+    assert v["P3"] == "refuted" and "P3" in report.kernel["checked"] and v["P4"] == "refuted"
+    assert report.properties["P3"].witness == {"e1": str(sp.Rational(1, 2 * 10 ** 200)), "e2": "0"}
     # f(0, 0) = -exp(-10^6): the witness would need Arb at about 1.4 million bits; P3 stays unknown
     report, v = verify(tmp_path, "f = sqrt(1 + rho) - 1 - sp.exp(-10**6)\n")
     assert v["P3"] == "unknown"

@@ -525,7 +525,7 @@ def verify_p3(a: Analysis) -> Verdict:
     pos = _positive_on_pieces(a, 0, "F(s) > 0")
     if pos.refuted:
         return refuted(f"f is not positive: {pos.reason}", pos.witness)
-    if not pos.proved and (found := _negative_near_origin(a)):
+    if not pos.proved and (found := _negative_near_origin(a.f, one_sided_value(a.profile.pieces[0].expr, 0, +1))):
         return found
     defined = a.c0[0]       # F continuous, so defined, on every open piece
     if not defined.proved:
@@ -557,20 +557,18 @@ def verify_p3(a: Analysis) -> Verdict:
                    "F(s) -> oo as s -> oo (limit calculus)", lambda: _growth(a))
 
 
-def _negative_near_origin(a: Analysis) -> Verdict | None:
-    """P3 where F(0+) = L < 0 exactly, however small (log(1 + rho) -
-    10^-400, or - exp(-10^4)): F < 0 on some (0, w), and the kernel's
-    `value` witness at (s, 0) for s = |L|/2^j (a corner at 0) or
+def _negative_near_origin(f, L) -> Verdict | None:
+    """P3 where f tends to L < 0 at the origin (F(0+) of a radial f, else
+    f(0, 0)), however small (log(1 + rho) - 10^-400, or - exp(-10^4)): the
+    kernel's `value` witness at (s, 0) for s = |L|/2^j (a corner at 0) or
     sqrt(|L|)/2^j (a smooth minimum), exact expressions such as
     exp(-5000)/2, whose sign Arb decides with up to 32,768 bits."""
-    first = a.profile.pieces[0].expr
-    L = one_sided_value(first, 0, +1)
-    if L is None or L in (sp.oo, -sp.oo) or exact_sign(L) != -1:
+    if L is None or not L.is_number or L.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or exact_sign(L) != -1:
         return None
     for s in (sp.sqrt(-L) / 2, -L / 2, sp.sqrt(-L) / 16, -L / 16):
-        found = refuted(f"f is not positive: f(s, 0) < 0 for s = {_show(s)}, near the origin, where F tends to "
+        found = refuted(f"f is not positive: f(s, 0) < 0 for s = {_show(s)}, near the origin, where f tends to "
                         f"{_show(L)} < 0", {"e1": str(s), "e2": "0"})
-        if refutation_theorems("P3", found, a.f)[0] is not None:
+        if refutation_theorems("P3", found, f)[0] is not None:
             return found
     return None
 
@@ -806,6 +804,8 @@ def _non_radial(a: Analysis, name: str) -> Verdict:
         found = _fails_along_a_line(f, name)
         if found is not None and _stands(name, found, f):
             return found
+    if name == "P3" and (found := _negative_near_origin(f, at_point(f, (0, 0)))):
+        return found
     if name == "P8" and not f.has(*SMOOTH_ONLY):   # else df/de2's formula may be a branch's taken on a line only
         found = _e2_limit_not_zero(f)
         if found is not None:
