@@ -535,6 +535,7 @@ def test_unusable_options_end_before_anything_is_verified_or_written(tmp_path):
     cases = [
         ([d1, "--timeout", "inf"], "--timeout must be a number of seconds above 0 and at most 1e+06, not inf"),
         ([d1, "--timeout", "nan"], "--timeout must be a number of seconds above 0 and at most 1e+06, not nan"),
+        ([d1, "--timeout", "-inf"], "--timeout must be a number of seconds above 0 and at most 1e+06, not -inf"),
         ([d1, "--timeout", "2e6"], "--timeout must be a number of seconds above 0 and at most 1e+06, not 2e+06"),
         ([tmp_path / "empty"], f"no design files in {tmp_path / 'empty'} (a folder is read for its *.py files)"),
         ([d1, "--delay", "5"], "--reference, --delay and --seed only make sense with --simulate"),

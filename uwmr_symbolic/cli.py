@@ -523,7 +523,14 @@ def write_certificates(paths, results, target) -> int:
     return status
 
 
+_NUMBERS = ("--timeout", "-j", "--jobs", "--monte-carlo")     # options whose value may start with "-" (-inf, -1)
+
+
 def main(argv=None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    for i in range(len(argv) - 1, 0, -1):      # argparse reads "-inf" after --timeout as an option: join them
+        if argv[i - 1] in _NUMBERS and argv[i][:1] == "-" and argv[i][1:2] not in ("-", ""):
+            argv[i - 1:i + 1] = [f"{argv[i - 1]}={argv[i]}"]
     args = build_parser().parse_args(argv)
     args.kernel_only = not args.trust_search
     try:
