@@ -1258,3 +1258,11 @@ def test_f_below_zero_only_within_10_to_the_minus_200_of_the_origin_is_not_posit
     # f(0, 0) = -exp(-10^6): the witness would need Arb at about 1.4 million bits; P3 stays unknown
     report, v = verify(tmp_path, "f = sqrt(1 + rho) - 1 - sp.exp(-10**6)\n")
     assert v["P3"] == "unknown"
+
+
+def test_a_kf_enclosure_never_goes_below_zero(tmp_path):
+    # log(1 + rho) (cosh^2 e1 - sinh^2 e1) is log(1 + rho) (kf = 1): SymPy proves it radial, but F' has the
+    # cancelling cosh^2 - sinh^2 in it, and the branch and bound's enclosure of sup |F'| had printed
+    # [-5949.9, 5965.9] (red team 22); a sup of |F'| is at least 0.  (Search only: P1 stays unknown.)
+    report, v = verify(tmp_path, "f = log(1 + rho)*(sp.cosh(e1)**2 - sp.sinh(e1)**2)\n")
+    assert v["P1"] == "unknown" and report.kf.lower == 0 and report.kf.upper >= 1, report.kf

@@ -535,7 +535,16 @@ def show_interval(lower, upper, digits: int = 10) -> str:
 
 
 def certify_kf(analysis) -> SupCertificate:
-    """kf = sup |F'| over [0, oo) (bound (10), property P1)."""
+    """kf = sup |F'| over [0, oo) (bound (10), property P1); an enclosure's
+    lower end at least 0 (a sup of |F'|: a branch and bound that cancels
+    badly, log(1 + rho) (cosh^2 e1 - sinh^2 e1), had printed [-5949.9, 5965.9])."""
+    cert = _sup_abs_slope(analysis)
+    if cert.lower is not None and cert.lower < 0:
+        cert.lower = Fraction(0)
+    return cert
+
+
+def _sup_abs_slope(analysis) -> SupCertificate:
     pieces = analysis.profile.pieces
     dF = [prepare(derivative(p.expr, S)) for p in pieces]
     pos = certify_sup(analysis, dF, "F'")
