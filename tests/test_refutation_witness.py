@@ -599,6 +599,24 @@ def test_tampered_crossing_witness_is_rejected():
         kernel["conclusions"] = [c for i, c in enumerate(kernel["conclusions"]) if i != drop]
         with pytest.raises(DC.CertificateError, match="P6: the kernel's conclusions are not the witness 'crossing'"):
             DC.check(bad)
+    swapped = copy.deepcopy(data)        # "d is defined" and "A is defined" in each other's place
+    kernel = swapped["properties"]["P6"]["kernel"]
+    kernel["conclusions"][4:6] = kernel["conclusions"][5:3:-1]
+    with pytest.raises(DC.CertificateError, match="P6: the kernel's conclusions are not the witness 'crossing'"):
+        DC.check(swapped)
+    # d' or the gap only weakly signed (>= 0 or <= 0) show no crossing and no corner
+    from uwmr_symbolic.certify import _crossing_theorems
+    record = {"kind": "crossing", "var": "e1", "order": 1,
+              "points": [(sp.Rational(3, 2), sp.Integer(0)), (sp.Rational(8, 5), sp.Integer(0))]}
+    theorems = _crossing_theorems(MAXC, record)
+    for i in (0, 3):
+        c = theorems[i].claim
+        weak = list(theorems)
+        weak[i] = K.sign_by_cover(expr=parse(c.expr), var=DC.H, cuts=[sp.Rational(3, 2), sp.Rational(8, 5)],
+                                  want=c.want, strict=False)
+        with pytest.raises(DC.CertificateError, match="P6: the kernel's conclusions are not the witness 'crossing'"):
+            DC.check(cert(MAXC, "P6", weak, data["properties"]["P6"]["witness"]))
+    assert checked(cert(MAXC, "P6", theorems, data["properties"]["P6"]["witness"])).refutation_checked
     other = copy.deepcopy(data)          # the same certificate about a design with one more branch
     other["design"]["f"] = sp.srepr(sp.Piecewise((RHO, RHO < 1), *MAXC.args))
     with pytest.raises(DC.CertificateError, match="crossing: f is not Piecewise"):
