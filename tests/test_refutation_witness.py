@@ -661,3 +661,27 @@ def test_a_crossing_needs_each_branch_and_its_slope_defined():
     theorems, _, why = refutation_theorems("P1", refuted("", {"e1": "1.41", "e2": "0", "crossing": ["7/5", "3/2"]}),
                                            CANCEL)
     assert theorems is None
+
+
+def test_a_condition_at_a_witness_point_is_read_from_the_kernel_s_sign():
+    """Red team 23: with x = 10^-40 rho and T4 = x - x^2/2 + x^3/3 - x^4/4, g = log(1 + x) - T4 has g(0) = 0
+    and g' = x^4/(1 + x) > 0, so log(1 + x) < T4 never holds and f is log(1 + rho) everywhere: f(-3, -3) =
+    log 19 > 0.  SymPy's comparison (2 digits) takes the condition for true at (-3, -3) (log(1 + 18 10^-40)
+    evaluates as log 1), so f there had been read as 0**18 - 1 = -1 and a true P3 refuted, kernel-checked."""
+    x = RHO / 10 ** 40
+    t4 = x - x ** 2 / 2 + x ** 3 / 3 - x ** 4 / 4
+    f = sp.Piecewise((sp.Pow(0, RHO) - 1, sp.log(1 + x) < t4), (sp.log(1 + RHO), True))
+    assert sp.Lt(sp.log(1 + x), t4).xreplace({e1: -3, e2: -3}) == sp.true      # SymPy's misreading, still there
+    assert DC.at_point(f, (-3, -3)) == sp.log(19)
+    theorems, _, why = refutation_theorems("P3", refuted("", {"e1": "-3", "e2": "-3"}), f)
+    assert theorems is None
+    # a certificate that claims the value -1 there is refused: the link reads f(-3, -3) as log 19
+    forged = cert(f, "P3", [K.value_sign(value=sp.Integer(-1))], {"kind": "value", "points": [["-3", "-3"]]})
+    with pytest.raises(DC.CertificateError, match="P3: the kernel's conclusions are not the witness 'value'"):
+        DC.check(forged)
+    # Eq reads an exact 0; a sign beyond the kernel's 32,768 bits (log(2 + exp(-30000)) - log 2 > 0) is
+    # neither true nor false, and f has no value there
+    g = sp.Piecewise((1, sp.Eq(e1, 0)), (2, True))
+    assert DC.at_point(g, (0, 5)) == 1 and DC.at_point(g, (sp.Rational(1, 10 ** 30), 0)) == 2
+    tiny = sp.log(2 + sp.exp(-30000)) - sp.log(2)
+    assert DC.at_point(sp.Piecewise((1, e1 < tiny), (2, True)), (0, 0)) is sp.nan

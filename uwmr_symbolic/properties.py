@@ -838,8 +838,8 @@ def _fails_on_a_grid(f, name: str) -> Verdict | None:
             try:
                 val = fn(Interval.point(x), Interval.point(y))
                 nonpositive, shown = val.is_nonpositive(), f"in [{val.lower_float():.6g}, {val.upper_float():.6g}]"
-            except Undefined:         # (0**rho: SymPy's value at the point, an exact constant)
-                at = expr.xreplace({E1: x, E2: y})
+            except Undefined:         # (0**rho: SymPy's value at the point, an exact constant; a Piecewise's
+                at = at_point(expr, (x, y))     # conditions by the kernel's signs, not SymPy's 2-digit comparison)
                 nonpositive, shown = not at.has(sp.nan, sp.zoo) and exact_sign(at) in (0, -1), f"{at}"
             if nonpositive and (x, y) != (0, 0):
                 v = refuted(f"fails at (e1, e2) = ({x}, {y}): value {shown}", {"e1": str(x), "e2": str(y)})
