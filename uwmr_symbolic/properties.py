@@ -375,7 +375,7 @@ def _switch_on_the_axis(f, name: str) -> Verdict | None:
 def _switches(f, v: str) -> tuple:
     """(c to 12 digits, q1, q2) for the first three sign changes of r - l
     along the v axis, f = Piecewise((A, l < r), (B, True)): found on a grid of
-    [1/1000, 10^4], narrowed by bisection in 30-digit mpmath, bracketed by
+    [10^-4, 10^8], narrowed by bisection in 30-digit mpmath, bracketed by
     rationals q1 < c < q2 about 2^-30 apart (relative to c above 1)."""
     try:
         g = sp.lambdify(H, crossing_parts(f, 0, E2 if v == "e2" else E1)[0], modules="mpmath")
@@ -390,7 +390,7 @@ def _switches(f, v: str) -> tuple:
         return int(mpmath.sign(value)) if isinstance(value, mpmath.mpf) else 0
     out = []
     with mpmath.workdps(30):
-        grid = [mpmath.mpf(10) ** (mpmath.mpf(k) / 60 - 3) for k in range(421)]
+        grid = [mpmath.mpf(10) ** (mpmath.mpf(k) / 60 - 4) for k in range(721)]
         signs = [sign(t) for t in grid]
         for a, b in [(a, b) for a, b, sa, sb in zip(grid, grid[1:], signs, signs[1:]) if sa * sb == -1][:3]:
             sa = sign(a)
