@@ -1255,6 +1255,12 @@ def test_f_below_zero_only_within_10_to_the_minus_200_of_the_origin_is_not_posit
     report, v = verify(tmp_path, "f = log(1 + rho + e1*e2/2) - Rational(1, 10**400)\n")
     assert v["P3"] == "refuted" and "P3" in report.kernel["checked"] and v["P4"] == "refuted"
     assert report.properties["P3"].witness == {"e1": str(sp.Rational(1, 2 * 10 ** 200)), "e2": "0"}
+    # log(1 + rho + eps) - eps + eps^2/2 - eps^3/3, eps = 10^-400: f(0, 0) = -eps^4/4 + eps^5/5 - ... < 0, a
+    # difference of 10^-1601 that needs about 5,300 bits (red team 23: the search, at 2,048, left P3 unknown;
+    # SymPy's evalf printed f(0, 0) as -1.0E-400)
+    report, v = verify(tmp_path, "eps = Rational(1, 10**400)\nf = log(1 + rho + eps) - eps + eps**2/2 - eps**3/3\n")
+    assert v["P2"] == v["P3"] == "refuted" and {"P2", "P3"} <= set(report.kernel["checked"])
+    assert "f(0, 0) = -2.5000000e-1601 (8 digits)" in report.properties["P2"].reason
     # f(0, 0) = -exp(-10^6): the witness would need Arb at about 1.4 million bits; P3 stays unknown
     report, v = verify(tmp_path, "f = sqrt(1 + rho) - 1 - sp.exp(-10**6)\n")
     assert v["P3"] == "unknown"

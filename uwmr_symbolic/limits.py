@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from .interval import Interval, IntervalFunction, Undefined
+from .kernel.core import KernelError, _const_sign
 from .timeouts import attempt
 
 
@@ -57,6 +58,10 @@ def exact_sign(value) -> int | None:
     sign = interval_sign(value)
     if sign is not None:
         return sign
+    try:                # the kernel's: Arb up to 32,768 bits, exact zeros through the primes of logarithms
+        return _const_sign(value, zero=True)
+    except (KernelError, Undefined, ArithmeticError, TypeError, ValueError):    # (Arb's Undefined is an ArithmeticError)
+        pass
     # a symbolic zero test, only for small constants: SymPy's simplify can
     # spend minutes (minimal polynomials of nested radicals) on big ones
     if sp.count_ops(value) > 60:
