@@ -219,7 +219,7 @@ def _link_p1_p6(name, F, claims) -> list[str]:
               and got[2] == ("sup_upper", _srepr(dF if signed else sp.Abs(dF)), on))
     else:
         ok = (len(claims) in (2, 4) and got[0] == ("sign", _srepr(dF), on) and claims[0].want == 1
-              and got[1] == ("sup_upper", _srepr(dF / S), on) and parse(claims[1].other).is_positive)
+              and got[1] == ("sup_upper", _srepr(dF / S), on) and _positive(claims[1].other))
         if ok and len(claims) == 2:
             return [ORIGIN]
         ok = ok and _at_origin(F, dF, claims[2:])
@@ -360,7 +360,7 @@ def _link_plane(name, f, claims, bounds=None) -> list[str]:
     if name == "P6":            # h >= 0 (weak or strict), and phi(s)/s <= k on both sides: h <= 1
         want += [("sign", _srepr(e), *on, 1, c.strict) for e, c in zip(sides, claims[1:3])]
         want += [("sup_upper", _srepr(e / S), *on, 0, False) for e in sides]
-        ok = ok and len(claims) == 5 and claims[3].other == claims[4].other and parse(claims[3].other).is_positive
+        ok = ok and len(claims) == 5 and claims[3].other == claims[4].other and _positive(claims[3].other)
     got = [(c.kind, c.expr, c.var, c.lo, c.hi, c.lo_open, c.hi_open, c.want, c.strict) for c in claims]
     if not ok or got != want:
         raise CertificateError(f"{name}: the kernel's conclusions are not those of f analytic on the plane "
@@ -420,7 +420,7 @@ def _link_branches(name, f, claims) -> list[str]:
             bounds.add(mine[3].other)
     got = [(c.kind, c.expr, c.var, c.lo, c.hi, c.lo_open, c.hi_open, c.want, c.strict) for c in claims]
     if name == "P6" and ok:             # one k > 0 for all branches
-        ok = len(bounds) == 1 and parse(bounds.pop()).is_positive
+        ok = len(bounds) == 1 and _positive(bounds.pop())
     if not ok or got != want:
         raise CertificateError(f"{name}: the kernel's conclusions are not, for each branch of f (its last condition "
                                "True, its relations defined on the plane; P5, P6: free of e1), g defined on the plane, "
@@ -917,6 +917,15 @@ def witness_values(kind, f, points) -> list:
     if kind == "slope":
         return [at_point(derivative(f, E1), points[0])]
     raise CertificateError(f"unknown witness kind {kind!r}")
+
+
+def _positive(text) -> bool:
+    """The constant of a claim is > 0, by the kernel's sign (SymPy's
+    `is_positive` of a number evaluates it to 2 digits)."""
+    try:
+        return _const_sign(parse(text)) == 1
+    except (KernelError, ParseError):
+        return False
 
 
 def _sign(c) -> int:
