@@ -685,3 +685,13 @@ def test_a_condition_at_a_witness_point_is_read_from_the_kernel_s_sign():
     assert DC.at_point(g, (0, 5)) == 1 and DC.at_point(g, (sp.Rational(1, 10 ** 30), 0)) == 2
     tiny = sp.log(2 + sp.exp(-30000)) - sp.log(2)
     assert DC.at_point(sp.Piecewise((1, e1 < tiny), (2, True)), (0, 0)) is sp.nan
+
+
+def test_a_claim_s_constant_is_positive_by_the_kernel_s_sign():
+    """d = log(1 + 10^-40) - T4(10^-40) = 2 10^-201 (1 + ...) > 0 (the Taylor remainder x^5/5), which SymPy's
+    assumptions, evaluating to 2 digits, call negative.  P6's k > 0 (the links of f analytic on the plane,
+    separable and Piecewise f) is read with the kernel's sign."""
+    k = sp.Rational(1, 10 ** 40)
+    d = sp.log(1 + k) - (k - k ** 2 / 2 + k ** 3 / 3 - k ** 4 / 4)
+    assert d.is_negative is True                # SymPy's misreading
+    assert DC._positive(sp.srepr(d)) and not DC._positive(sp.srepr(-d)) and not DC._positive("Symbol('x')")
