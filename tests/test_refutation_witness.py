@@ -687,6 +687,26 @@ def test_a_condition_at_a_witness_point_is_read_from_the_kernel_s_sign():
     assert DC.at_point(sp.Piecewise((1, e1 < tiny), (2, True)), (0, 0)) is sp.nan
 
 
+def test_abs_sign_max_min_at_a_witness_point_are_read_from_the_kernel_s_sign():
+    """g = log(1 + x) - T4(x) > 0 for x = 10^-40 rho > 0 (remainder x^5/5), so |g| - g = 0 and f = log(1 + rho)
+    + 10^200 (|g| - g) is log(1 + rho).  SymPy's Abs of the constant g(18) asks SymPy's sign of it (2 digits:
+    negative), so f(-3, -3) had been read as log 19 - 2 10^200 g(18) < 0 and a certificate refuting the true
+    P3 there was accepted.  |u|, sign, Max and Min are read as Piecewise, their conditions by the kernel."""
+    x = RHO / 10 ** 40
+    g = sp.log(1 + x) - (x - x ** 2 / 2 + x ** 3 / 3 - x ** 4 / 4)
+    f = sp.log(1 + RHO) + 10 ** 200 * (sp.Abs(g) - g)
+    assert sp.Abs(g.xreplace({e1: -3, e2: -3})) == -g.xreplace({e1: -3, e2: -3})         # SymPy's misreading
+    assert DC.at_point(f, (-3, -3)) == sp.log(19)
+    assert refutation_theorems("P3", refuted("", {"e1": "-3", "e2": "-3"}), f)[0] is None
+    forged = cert(f, "P3", [K.value_sign(value=sp.log(19) - 2 * 10 ** 200 * g.xreplace({e1: -3, e2: -3}))],
+                  {"kind": "value", "points": [["-3", "-3"]]})
+    with pytest.raises(DC.CertificateError, match="P3: the kernel's conclusions are not the witness 'value'"):
+        DC.check(forged)
+    # the same reading everywhere else: |u| < 1 (an ITE once rewritten), sign, Max, Min of three
+    assert [DC.at_point(sp.Piecewise((1, sp.Abs(e1) < 1), (2, True)), p) for p in ((sp.Rational(1, 2), 5), (-3, 5))] == [1, 2]
+    assert (DC.at_point(sp.Abs(e1) + sp.sign(e2), (-2, 0)), DC.at_point(sp.Min(e1, e2, 1), (3, 2))) == (2, 1)
+
+
 def test_a_claim_s_constant_is_positive_by_the_kernel_s_sign():
     """d = log(1 + 10^-40) - T4(10^-40) = 2 10^-201 (1 + ...) > 0 (the Taylor remainder x^5/5), which SymPy's
     assumptions, evaluating to 2 digits, call negative.  P6's k > 0 (the links of f analytic on the plane,
