@@ -1147,3 +1147,28 @@ def test_what_is_no_identity_is_refused_by_the_cross_check_before_simplify_runs(
     g = sp.Mul(*[1 + sp.sin(t + k) ** 2 for k in range(1, 7)])
     with pytest.raises(KernelError, match=r"^the identity fails at t = 1/10: lhs - rhs = "):
         K.identity(lhs=g, rhs=g.xreplace({t: 2 * t}), var=t, lo=0, hi=1, lo_open=True, hi_open=False)
+
+
+def test_sympy_takes_a_number_s_sign_from_arb():
+    """c = log(1 + 10^-40) - T4(10^-40) = 2.0 10^-201 (1 + ...) > 0 (T4 the Taylor polynomial of degree 4;
+    mpmath at 400 digits).  SymPy's own sign of a number comes from a 2-digit evalf, which calls c negative,
+    and with it Abs, sign, sqrt(c^2), Max and the relations of c went wrong (red teams 23, 24).  Importing the
+    kernel makes SymPy ask Arb (256, 2,048, 32,768 bits) first; undecided stays undecided; numbers Arb does
+    not take (complex, gamma) keep SymPy's answer."""
+    from uwmr_symbolic.kernel import arb
+    k = Q(1, 10 ** 40)
+    t4 = k - k ** 2 / 2 + k ** 3 / 3 - k ** 4 / 4
+    c = sp.log(1 + k) - t4
+    assert arb._SYMPY_SIGN(c, False) is True and arb._SYMPY_N2(sp.log(1 + k), t4) < 0      # SymPy's own
+    assert (c.is_positive, c.is_negative, sp.sign(c), sp.Abs(-c), sp.sqrt(c ** 2)) == (True, False, 1, c, c)
+    assert sp.Lt(sp.log(1 + k), t4) == sp.false and sp.Max(sp.log(1 + k), t4) == sp.log(1 + k)
+    assert (-c).is_negative and sp.Min(c, -c) == -c and sp.Eq(c, 0) == sp.false
+    zero = sp.atan(Q(1, 2)) + sp.atan(Q(1, 3)) - sp.pi / 4      # exactly 0: no ball excludes it
+    assert zero.is_positive is None and zero.is_negative is None and isinstance(sp.Abs(zero), sp.Abs)
+    assert sp.sign(sp.I) == sp.I and (sp.gamma(Q(1, 3)) - 2).is_positive and sp.Lt(1, sp.oo) == sp.true
+    # beyond 32,768 bits nothing is decided: log(2 + exp(-30000)) - log(2) > 0 stays unsigned
+    assert (sp.log(2 + sp.exp(-30000)) - sp.log(2)).is_positive is None
+    # the kernel: lim |h^2 - c| as h -> 0+ is |c| = c > 0 (it had been -c by SymPy's Abs, and signed negative)
+    h = sp.Symbol("h", positive=True)
+    th = K.continuous_at_end(expr=sp.Abs(h ** 2 - c), var=h, c=ZERO, width=Q(1))
+    assert parse(th.claim.other) == c and K.value_sign(value=parse(th.claim.other)).claim.want == 1

@@ -666,18 +666,19 @@ def at_point(f, p):
     in order up to the first that holds, as the Piecewise is (a later one
     may have no value there: log(e1^2 + e2^2) > 0 at the origin), and an
     And (Or) is false (true) when one of its parts is, whatever the others.
-    A relation l < r (<=, >, >=, =, !=) is read from the kernel's sign of
-    r - l at p (`_const_sign`; |u|, sign, Max, Min read as Piecewise the
-    same way), never from SymPy's comparison, which
+    At a point of numbers a relation l < r (<=, >, >=, =, !=) is read from
+    the kernel's sign of r - l there (`_const_sign`; |u|, sign, Max, Min read
+    as the Piecewise they are), never from SymPy's comparison, which
     evaluates to 2 digits and took log(1 + 10^-40) < 10^-40 - 10^-80/2 +
     10^-120/3 - 10^-160/4 for true (red team 23: a branch that never applies
     gave f(-3, -3) = -1, and a true P3 was refuted).  Where a condition read
-    before it has no value or no sign the kernel decides, neither has f: nan."""
+    before it has no value or no sign the kernel decides, neither has f: nan.
+    On a line (p holding e1 or e2) a condition is SymPy's, as substituted."""
     point = {E1: sp.sympify(p[0], strict=True), E2: sp.sympify(p[1], strict=True)}
-    # |u|, sign, Max, Min, Heaviside as the Piecewise they are, so that no comparison is SymPy's: Abs of a
-    # constant asks SymPy's sign of it, and Abs(g) - g for g = log(1 + x) - T4(x) > 0 came out as -2 g
-    f = f.replace(lambda e: isinstance(e, (sp.Abs, sp.sign, sp.Max, sp.Min, sp.Heaviside)),
-                  lambda e: e.rewrite(sp.Piecewise))
+    numbers = all(v.is_number for v in point.values())
+    if numbers:     # Abs of a constant asks SymPy's sign of it: |g| - g, g = log(1 + x) - T4(x) > 0, gave -2 g
+        f = f.replace(lambda e: isinstance(e, (sp.Abs, sp.sign, sp.Max, sp.Min, sp.Heaviside)),
+                      lambda e: e.rewrite(sp.Piecewise))
 
     def sign_ok(d, want, strict):       # want (r - l) > 0 (>= 0) at p, by the kernel
         try:
@@ -687,6 +688,15 @@ def at_point(f, p):
         return s == want or (not strict and s == 0)
 
     def truth(c):           # c at p, or None where it has no value
+        if not numbers:
+            if isinstance(c, (sp.And, sp.Or)):
+                parts = [truth(a) for a in c.args]
+                decides = sp.false if isinstance(c, sp.And) else sp.true
+                return decides if decides in parts else None if None in parts else c.func(*parts)
+            try:
+                return c.xreplace(point)
+            except TypeError:   # SymPy compares no zoo or non-real number
+                return None
         c = c.to_nnf() if c.has(sp.ITE) else c      # (|u| < 1 rewritten: ITE(u >= 0, u < 1, u > -1))
         try:
             return next((sp.true if t else sp.false for t in (True, False) if _holds(c, t, sign_ok)), None)

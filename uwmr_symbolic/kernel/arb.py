@@ -242,3 +242,41 @@ def evaluate(e: sp.Expr, var: sp.Symbol | None = None, lo=None, hi=None, bits: i
             a, b = evaluate(sp.sympify(lo), bits=bits), evaluate(sp.sympify(hi), bits=bits)
             env[var] = Iv(a.lo, b.hi)
         return _eval(sp.sympify(e), env)
+
+
+
+
+# SymPy decides the sign of a number from a 2-digit evalf, and with it Abs, sign, sqrt(u^2), Max, Min and
+# relations: log(1 + 10^-40) minus its Taylor polynomial of degree 4, about 10^-201, came out negative (red
+# teams 23, 24).  Both of its places that do so ask `_sign` first; SymPy's own answer only where it is None.
+_SYMPY_SIGN, _SYMPY_N2 = sp.Expr._eval_is_extended_positive_negative, sp.core.relational._n2
+_asking = []
+
+
+def _sign(c) -> int | None:
+    """The number c's sign at 256, 2,048, then 32,768 bits, 0 where no ball
+    excludes 0 (SymPy is then told nothing), None for what this evaluator
+    does not take (complex numbers, gamma, ...) or while it evaluates."""
+    if _asking or not getattr(c, "is_number", False):
+        return None
+    _asking.append(c)
+    try:
+        signs = (1 if v.positive() else -1 if v.negative() else 0 for v in (evaluate(c, bits=b) for b in (256, 2048, 32768)))
+        return next((s for s in signs if s), 0)
+    except (Undefined, TypeError, ValueError, AttributeError):
+        return None
+    finally:
+        _asking.pop()
+
+
+def _sign_by_arb(self, positive):
+    s = _sign(self)
+    return _SYMPY_SIGN(self, positive) if s is None else s == (1 if positive else -1) if s else None
+
+
+def _difference_by_arb(a, b):
+    s = _sign(a - b) if a.is_comparable and b.is_comparable else None
+    return _SYMPY_N2(a, b) if s is None else sp.Integer(s) if s else None
+
+
+sp.Expr._eval_is_extended_positive_negative, sp.core.relational._n2 = _sign_by_arb, _difference_by_arb
