@@ -1166,8 +1166,15 @@ def test_sympy_takes_a_number_s_sign_from_arb():
     zero = sp.atan(Q(1, 2)) + sp.atan(Q(1, 3)) - sp.pi / 4      # exactly 0: no ball excludes it
     assert zero.is_positive is None and zero.is_negative is None and isinstance(sp.Abs(zero), sp.Abs)
     assert sp.sign(sp.I) == sp.I and (sp.gamma(Q(1, 3)) - 2).is_positive and sp.Lt(1, sp.oo) == sp.true
-    # beyond 32,768 bits nothing is decided: log(2 + exp(-30000)) - log(2) > 0 stays unsigned
+    # beyond 32,768 bits nothing is decided: log(2 + exp(-30000)) - log(2) > 0 stays unsigned, and the same
+    # difference as c for 10^-2500 (about 2 10^-12501), which SymPy's own evalf calls negative, too
     assert (sp.log(2 + sp.exp(-30000)) - sp.log(2)).is_positive is None
+    assert isinstance(sp.Eq(sp.log(2 + sp.exp(-30000)), sp.log(2)), sp.Eq)
+    k = Q(1, 10 ** 2500)
+    t4 = k - k ** 2 / 2 + k ** 3 / 3 - k ** 4 / 4
+    tiny = sp.log(1 + k) - t4
+    assert arb._SYMPY_SIGN(tiny, False) is True and tiny.is_positive is None and tiny.is_negative is None
+    assert isinstance(sp.Ge(sp.log(1 + k), t4), sp.GreaterThan)
     # the kernel: lim |h^2 - c| as h -> 0+ is |c| = c > 0 (it had been -c by SymPy's Abs, and signed negative)
     h = sp.Symbol("h", positive=True)
     th = K.continuous_at_end(expr=sp.Abs(h ** 2 - c), var=h, c=ZERO, width=Q(1))
