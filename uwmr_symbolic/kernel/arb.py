@@ -244,8 +244,6 @@ def evaluate(e: sp.Expr, var: sp.Symbol | None = None, lo=None, hi=None, bits: i
         return _eval(sp.sympify(e), env)
 
 
-
-
 # SymPy decides the sign of a number from a 2-digit evalf, and with it Abs, sign, sqrt(u^2), Max, Min and
 # relations: log(1 + 10^-40) minus its Taylor polynomial of degree 4, about 10^-201, came out negative (red
 # teams 23, 24).  Both of its places that do so ask `_sign` first; SymPy's own answer only where it is None.
