@@ -1276,8 +1276,8 @@ def test_a_kf_enclosure_never_goes_below_zero(tmp_path):
 
 def test_a_max_crossing_far_out_is_refuted_in_seconds(tmp_path):
     # 10^12 log(1 + rho/10^12) and rho/2 cross at rho = 2.5128 10^12, |e| = 1.585 10^6 (red team 23): SymPy's
-    # simplify of the Piecewise's conditions (P4's fallback) had run for minutes, so nothing finished in
-    # 300 s.  The corner refutes P1, P5, P6, P7; P2-P4 hold (P4 by the kernel's identity of two Piecewise).
+    # simplify of the Piecewise's conditions (P4's fallback, now 5 s at most) had run for minutes, so nothing
+    # finished in 300 s.  The corner refutes P1, P5, P6, P7; P2-P4 hold (P4 by the kernel's identity).
     report, v = verify(tmp_path, "f = sp.Max(log(1 + rho/10**12)*10**12, rho/2)\n", timeout=30)
     assert [v[p] for p in ("P1", "P2", "P3", "P4", "P5", "P6", "P7")] == ["refuted"] + ["proved"] * 3 + ["refuted"] * 3
     assert "1585201.06" in report.properties["P1"].reason

@@ -52,10 +52,9 @@ def verify_radial(f: sp.Expr, F: sp.Expr) -> Verdict:
                       "so e1 df/de2 - e2 df/de1 = (e1 e2 - e2 e1) F'(s)/s = 0")
     radial = F.subs(S, RHO)
     diff = f - radial
-    agree = numerically_equal(f, radial) and not f.has(sp.Piecewise)
+    agree = numerically_equal(f, radial)
     for simplifier in (sp.expand, sp.simplify, lambda e: sp.simplify(sp.expand(e))) if agree else ():
-        # (5 s each: simplify ran for minutes on the conditions of Max(log(1 + rho/10^12) 10^12, rho/2), whose
-        # P4 the kernel's identity of two Piecewise proves in no time)
+        # (5 s each: simplify ran for minutes on the conditions of Max(log(1 + rho/10^12) 10^12, rho/2))
         if attempt(lambda: simplifier(diff) == 0, SIMPLIFY_SECONDS, False):
             return proved("f(e1, e2) = F(sqrt(e1^2 + e2^2)) is a symbolic identity (SymPy's "
                           "simplification, cross-checked in interval arithmetic), so "
