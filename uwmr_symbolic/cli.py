@@ -290,8 +290,8 @@ def _read_reference(path, name):
         if not callable(ns.get("pose")) or "duration" not in ns:
             raise UsageError(f"{path}: define pose(t) -> (xr, yr, thr, vr, wr) and duration")
         return from_function(ns["pose"], 0.0, float(ns["duration"]), name=name)
-    if path.stat().st_size > MAX_WAYPOINT_BYTES:       # (98 MB of text took 2.8 GB to read)
-        raise UsageError(f"{path}: {path.stat().st_size / 1e6:.0f} MB of waypoints, and at most "
+    if (size := path.stat().st_size) > MAX_WAYPOINT_BYTES:       # (98 MB of text took 2.8 GB to read)
+        raise UsageError(f"{path}: {size / 1e6:.0f} MB of waypoints, and at most "
                          f"{MAX_WAYPOINT_BYTES // 10**6} MB are read; give fewer (the path is a spline through them)")
     try:
         lines = path.read_text(encoding="utf-8-sig").splitlines()      # (a byte-order mark is no column name)

@@ -328,6 +328,7 @@ def _check_real_valued(f: sp.Expr) -> None:
         raise DesignError("f contains the imaginary unit; f must be real-valued")
     pts = [(0, 0), (1, 0), (0, 1), (-1, 0), (0, -1), (sp.Rational(1, 2), sp.Rational(1, 3)),
            (3, -2), (-5, 7), (sp.Rational(1, 10), 0), (100, 100)]
+    parts = _parts_with_a_domain(f)
     for a, b in pts + _zeros_of_denominators(f):
         # at an irrational root only an exact nan or zoo counts: evalf of an exact 0 there can be noise
         # (|p|^(1/2) as (p^4)^(1/8) came out with an imaginary part of 1e-19; red team 19)
@@ -349,7 +350,7 @@ def _check_real_valued(f: sp.Expr) -> None:
         re, im = v.as_real_imag() if rational else (v, 0)
         if im != 0 and abs(im) > 1e-25:
             raise DesignError(f"f is not real-valued at (e1, e2) = ({a}, {b}): f = {sp.N(v, 6)}")
-        for part in _parts_with_a_domain(f) if rational else ():
+        for part in parts if rational else ():
             try:
                 w = part.subs({E1: a, E2: b}).evalf(30)
                 im = 0 if w.has(sp.nan, sp.zoo, sp.oo, -sp.oo) else w.as_real_imag()[1]

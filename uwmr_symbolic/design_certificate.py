@@ -939,8 +939,8 @@ def _positive(text) -> bool:
     """The constant of a claim is > 0, by the kernel's sign (SymPy's
     `is_positive` of a number evaluates it to 2 digits)."""
     try:
-        return _const_sign(parse(text)) == 1
-    except (KernelError, ParseError):
+        return _sign(parse(text)) == 1
+    except (CertificateError, ParseError):
         return False
 
 

@@ -300,7 +300,7 @@ def _short(v) -> str:
     -1.0E-400 for log(1 + 10^-400) - 10^-400 + 10^-800/2 - 10^-1200/3, which
     is -2.5E-1601)."""
     text = str(v)
-    for bits in (256, 2048, 32768) if len(text) > 60 else ():
+    for bits in kernel_arb.SIGN_BITS if len(text) > 60 else ():
         try:
             iv = kernel_arb.evaluate(v, bits=bits)
         except (kernel_arb.Undefined, TypeError, ValueError):

@@ -248,6 +248,7 @@ def evaluate(e: sp.Expr, var: sp.Symbol | None = None, lo=None, hi=None, bits: i
 # relations: log(1 + 10^-40) minus its Taylor polynomial of degree 4, about 10^-201, came out negative (red
 # teams 23, 24).  Both of its places that do so ask `_sign` first; SymPy's own answer only where it is None.
 _SYMPY_SIGN, _SYMPY_N2 = sp.Expr._eval_is_extended_positive_negative, sp.core.relational._n2
+SIGN_BITS = (256, 2048, 32768)      # a number's sign is tried at these precisions (here and `core._const_sign`)
 _asking = []
 
 
@@ -259,7 +260,7 @@ def _sign(c) -> int | None:
         return None
     _asking.append(c)
     try:
-        signs = (1 if v.positive() else -1 if v.negative() else 0 for v in (evaluate(c, bits=b) for b in (256, 2048, 32768)))
+        signs = (1 if v.positive() else -1 if v.negative() else 0 for v in (evaluate(c, bits=b) for b in SIGN_BITS))
         return next((s for s in signs if s), 0)
     except (Undefined, TypeError, ValueError, AttributeError):
         return None

@@ -47,7 +47,7 @@ from flint import arb, fmpq, fmpq_poly
 from sympy.polys.rings import PolyRing
 from sympy.printing.repr import ReprPrinter
 
-from .arb import Iv, Undefined, centered, evaluate
+from .arb import SIGN_BITS, Iv, Undefined, centered, evaluate
 from .parse import ParseError, parse
 
 _TOKEN = object()
@@ -269,7 +269,7 @@ def _const_sign(c, zero=False) -> int:
     c = _number(c)
     if c == 0:
         return 0
-    for bits in (256, 2048, 32768):     # (2,048 bits tell 10^-300 from 0; 32,768 log(1 + 2^-14000) - 10^-4300)
+    for bits in SIGN_BITS:      # (2,048 bits tell 10^-300 from 0; 32,768 log(1 + 2^-14000) - 10^-4300)
         v = evaluate(c, bits=bits)
         if v.positive() or v.negative():
             return 1 if v.positive() else -1
