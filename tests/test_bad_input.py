@@ -39,6 +39,8 @@ CASES = {
     "unevaluated_integral.py": "an unevaluated Integral in f",
     "complex_parts_cancel.py": "logarithms of negative numbers whose imaginary parts cancel",
     "complex_roots_cancel.py": "square roots of negative numbers whose product is real",
+    "params_divide_zero_by_zero.py": "params that make f 0/0 everywhere, one substituted before the other",
+    "zero_over_zero_at_origin_in_parts.py": "0/0 at the origin that one variable at a time hides",
 }
 
 #: file -> the words of the one line that name the fix
@@ -59,6 +61,8 @@ FIXES = {
     "complex_parts_cancel.py": ["f is not real-valued at (e1, e2) = (0, 0)", "its part log(2*e1 - 14)",
                                 "write f with real parts only"],
     "complex_roots_cancel.py": ["f is not real-valued at (e1, e2) = (0, 0)", "has no real value there"],
+    "params_divide_zero_by_zero.py": ["f contains nan, zoo or infinity", "a division by zero"],
+    "zero_over_zero_at_origin_in_parts.py": ["f is undefined at (e1, e2) = (0, 0)", "sympy.Piecewise"],
 }
 HANGS = "sleep_forever.py"
 

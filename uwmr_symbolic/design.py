@@ -334,7 +334,7 @@ def _check_real_valued(f: sp.Expr) -> None:
         # (|p|^(1/2) as (p^4)^(1/8) came out with an imaginary part of 1e-19; red team 19)
         rational = all(isinstance(c, int) or c.is_Rational for c in (a, b))
         try:
-            v = f.subs({E1: a, E2: b})
+            v = f.xreplace({E1: sp.sympify(a), E2: sp.sympify(b)})
             if isinstance(v, sp.Piecewise) or v.free_symbols:
                 continue
             v = v.evalf(30) if rational else v
@@ -352,7 +352,7 @@ def _check_real_valued(f: sp.Expr) -> None:
             raise DesignError(f"f is not real-valued at (e1, e2) = ({a}, {b}): f = {sp.N(v, 6)}")
         for part in parts if rational else ():
             try:
-                w = part.subs({E1: a, E2: b}).evalf(30)
+                w = part.xreplace({E1: sp.sympify(a), E2: sp.sympify(b)}).evalf(30)
                 im = 0 if w.has(sp.nan, sp.zoo, sp.oo, -sp.oo) else w.as_real_imag()[1]
             except (OverflowError, RecursionError, ZeroDivisionError, TypeError, ValueError):
                 continue
@@ -484,7 +484,7 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
     f = f.xreplace({x: exact_float(x) for x in f.atoms(sp.Float)})
     params = _parse_params(ns.get("params"), f)
     _check_assumptions(f_source, params)
-    f = f.subs({s: params[s.name] for s in f.free_symbols if s.name in params})
+    f = f.xreplace({s: sp.sympify(params[s.name]) for s in f.free_symbols if s.name in params})
     extra = sorted(s.name for s in f.free_symbols if s not in (E1, E2))
     if extra and not f.has(E1, E2):
         raise DesignError(f"f is written in {', '.join(extra)}, not in the error coordinates: name them e1 and e2 "
