@@ -24,6 +24,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from . import e1 as E1, e2 as E2
+from .design_certificate import at_point
 from .timeouts import attempt
 
 GAIN_KEYS = ("k1", "k2", "lam", "Vmax", "Wmax", "Vr_max", "Wr_max")
@@ -334,7 +335,10 @@ def _check_real_valued(f: sp.Expr) -> None:
         # (|p|^(1/2) as (p^4)^(1/8) came out with an imaginary part of 1e-19; red team 19)
         rational = all(isinstance(c, int) or c.is_Rational for c in (a, b))
         try:
-            v = f.xreplace({E1: sp.sympify(a), E2: sp.sympify(b)})
+            try:                # all variables at once: one by one, e2^2/e2^2 turned 1 before e2 = 0
+                v = f.xreplace({E1: sp.sympify(a), E2: sp.sympify(b)})
+            except TypeError:   # a later Piecewise condition with no value there: the conditions in order
+                v = at_point(f, (a, b))
             if isinstance(v, sp.Piecewise) or v.free_symbols:
                 continue
             v = v.evalf(30) if rational else v
