@@ -962,7 +962,7 @@ def _forged(f, name, theorems):
     with no note of anything left to the search: every step is a true
     kernel theorem, only the link can tell what is missing."""
     from uwmr_symbolic.kernel import core as K
-    from uwmr_symbolic.kernel.certificate import to_certificate
+    from uwmr_symbolic.certify import to_certificate
     e1, e2 = sp.symbols("e1 e2", real=True)
     f = f(e1, e2)
     F = sp.piecewise_fold(f.xreplace({e1: S, e2: sp.Integer(0)}))
@@ -1011,7 +1011,7 @@ def test_a_reduction_without_f_defined_on_the_plane_is_not_kernel_checked():
     re-checked.  P4's link and the elliptic prefix now also ask for
     `defined_on_plane`, which the kernel refuses for this f."""
     from uwmr_symbolic.kernel import core as K
-    from uwmr_symbolic.kernel.certificate import to_certificate
+    from uwmr_symbolic.certify import to_certificate
     e1, e2 = sp.symbols("e1 e2", real=True)
     f = sp.log(1 + e1 ** 2 + e2 ** 2) + e2 / (e2 - 2) - 2 / (e2 - 2) - 1
     F = sp.log(1 + S ** 2)
@@ -1059,7 +1059,7 @@ def test_a_witness_at_a_point_that_is_not_real_is_rejected(cert1, name, witness)
     P6 were "refuted" by points with an imaginary coordinate, where f and
     its derivative are real and negative."""
     from uwmr_symbolic.kernel import core as K
-    from uwmr_symbolic.kernel.certificate import to_certificate
+    from uwmr_symbolic.certify import to_certificate
     f = parse(cert1["design"]["f"], design=True)
     points = [tuple(parse(c, design=True) for c in p) for p in witness["points"]]
     value = DC.witness_values(witness["kind"], f, points)[0]

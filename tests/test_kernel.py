@@ -9,8 +9,9 @@ import mpmath
 import pytest
 import sympy as sp
 
+from uwmr_symbolic.certify import to_certificate
 from uwmr_symbolic.kernel import (RULES, VERSION, CertificateError, Claim, KernelError, Theorem, Undefined,
-                                  check_certificate, evaluate, rules as K, to_certificate)
+                                  check_certificate, evaluate, rules as K)
 from uwmr_symbolic.kernel.certificate import SCHEMA
 from uwmr_symbolic.kernel.core import _cross_check
 from uwmr_symbolic.kernel.parse import ParseError, parse

@@ -1353,7 +1353,8 @@ def small_proof():
 
 
 def test_to_certificate_lists_premises_once_and_first():
-    from uwmr_symbolic.kernel import check_certificate, to_certificate
+    from uwmr_symbolic.certify import to_certificate
+    from uwmr_symbolic.kernel import check_certificate
     (th, vs), base = small_proof()
     both = K.sign_of_product(base, sturm(x + 1, x, 1, 2, lo_open=True), expr=(x - 1) * (x + 1))
     cert = to_certificate([th, both, vs])
@@ -1371,7 +1372,8 @@ def test_to_certificate_lists_premises_once_and_first():
 def test_certificate_checker_messages():
     import copy
 
-    from uwmr_symbolic.kernel import CertificateError, check_certificate, to_certificate
+    from uwmr_symbolic.certify import to_certificate
+    from uwmr_symbolic.kernel import CertificateError, check_certificate
     (th, vs), _ = small_proof()
     good = to_certificate([th, vs])
 
@@ -1430,7 +1432,7 @@ def test_certificate_checker_messages():
 def test_command_line(tmp_path, capsys):
     import json
 
-    from uwmr_symbolic.kernel import to_certificate
+    from uwmr_symbolic.certify import to_certificate
     from uwmr_symbolic.kernel.__main__ import main
     (th, vs), _ = small_proof()
     up = K.sup_upper_by_sign(sturm(1 - x, x, 0, 1, strict=False), expr=x, bound=I1)

@@ -13,7 +13,8 @@ import dataclasses
 import pytest
 import sympy as sp
 
-from uwmr_symbolic.kernel import KernelError, check_certificate, rules as K, to_certificate
+from uwmr_symbolic.certify import to_certificate
+from uwmr_symbolic.kernel import KernelError, check_certificate, rules as K
 from uwmr_symbolic.kernel.certificate import CertificateError
 
 x = sp.Symbol("x", real=True)

@@ -21,7 +21,7 @@ import sympy as sp
 from uwmr_symbolic import design_certificate as DC, e1, e2
 from uwmr_symbolic.certify import refutation_theorems
 from uwmr_symbolic.kernel import arb, core as K
-from uwmr_symbolic.kernel.certificate import to_certificate
+from uwmr_symbolic.certify import to_certificate
 from uwmr_symbolic.kernel.parse import parse
 from uwmr_symbolic.verdict import refuted
 

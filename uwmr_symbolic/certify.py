@@ -24,6 +24,7 @@ Strategy, per piece between the caller's exact zeros:
 from __future__ import annotations
 
 import functools
+import json
 import math
 import time
 from contextlib import contextmanager
@@ -32,7 +33,7 @@ from fractions import Fraction
 import sympy as sp
 
 from . import timeouts
-from .kernel import arb, core as K
+from .kernel import arb, certificate as CERT, core as K
 from .kernel.arb import Undefined, centered, evaluate
 from .kernel.core import derivative
 from .univariate import log_groups, log_of, replaced, zero_of_denominator
@@ -2267,3 +2268,24 @@ def _encode_record(record):
         out["direction"] = [K._s(c) for c in record["direction"]]
     return out
 
+
+def to_certificate(theorems) -> dict:
+    """The kernel certificate of the given theorems (conclusions), premises
+    first, in the format `kernel.certificate.check_certificate` reads (it
+    re-checks every step, so this writer need not be trusted)."""
+    order, ids = [], {}
+
+    def visit(t: K.Theorem):
+        if id(t) in ids:
+            return
+        for p in t.premises:
+            visit(p)
+        ids[id(t)] = len(order)
+        order.append(t)
+    for t in theorems:
+        visit(t)
+    return {"format": CERT.FORMAT, "version": CERT.VERSION,
+            "theorems": [{"id": ids[id(t)], "rule": t.rule, "premises": [ids[id(p)] for p in t.premises],
+                          "data": json.loads(t.data), "claim": t.claim.to_json()} for t in order],
+            "conclusions": [ids[id(t)] for t in theorems],
+            "assumptions": sorted(set().union(*[t.assumptions for t in theorems]))}

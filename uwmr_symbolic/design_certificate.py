@@ -35,9 +35,9 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from . import e1 as E1, e2 as E2
-from .certify import REDUCTION
+from .certify import REDUCTION, to_certificate
 from .files import write_text_atomic
-from .kernel.certificate import CertificateError, check_certificate, read_json, to_certificate  # noqa: F401 (re-exported)
+from .kernel.certificate import CertificateError, check_certificate, read_json  # noqa: F401 (re-exported)
 from .kernel.core import _TRUE_WHEN, KernelError, _const_sign, _holds, _lt, _srepr, derivative  # _TRUE_WHEN: when l < r (<=, >, >=) holds, the sign of r - l
 from .kernel.parse import ParseError, parse
 from .profile import S

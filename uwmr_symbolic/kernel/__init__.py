@@ -4,8 +4,8 @@
 """
 from . import core as rules
 from .arb import Undefined, evaluate
-from .certificate import VERSION, CertificateError, check_certificate, to_certificate
+from .certificate import VERSION, CertificateError, check_certificate
 from .core import RULES, Claim, KernelError, Theorem
 
 __all__ = ["rules", "RULES", "Claim", "Theorem", "KernelError", "Undefined", "evaluate",
-           "to_certificate", "check_certificate", "CertificateError", "VERSION"]
+           "check_certificate", "CertificateError", "VERSION"]

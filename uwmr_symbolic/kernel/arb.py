@@ -118,20 +118,18 @@ def _ipow(b: arb, n: int) -> arb:
 
 
 def _pow(x: Iv, e: sp.Rational) -> Iv:
+    if e < 0:                       # 1/x**(-e); x > 0 asked first for a root (1/x asks x != 0 of a power)
+        if not (e.is_Integer or x.positive()):
+            raise Undefined(f"x**({e}) needs x > 0")
+        return _inv(_pow(x, -e))
     if e.is_Integer:
         n = int(e)
         if n == 0:
             return _point(arb(1))
-        if n < 0:
-            return _inv(_pow(x, -e))
         if n % 2 == 0:
             return _abs_like(x, lambda b: _ipow(b, n))
         return _increasing(lambda b: _ipow(b, n), x)
     r = arb(fmpq(int(e.p), int(e.q)))
-    if e < 0:
-        if not x.positive():
-            raise Undefined(f"x**({e}) needs x > 0")
-        return _inv(_pow(x, -e))
     if not x.nonnegative():
         raise Undefined(f"x**({e}) needs x >= 0")
 
@@ -163,8 +161,6 @@ _NAMED = {sp.pi: arb.pi, sp.E: arb.const_e, sp.EulerGamma: arb.const_euler, sp.C
 
 
 def _constant(e: sp.Expr) -> arb:
-    if e.is_Integer:
-        return arb(int(e))
     if e.is_Rational:
         return arb(fmpq(int(e.p), int(e.q)))
     if e in _NAMED:

@@ -1,7 +1,9 @@
 """Versioned JSON certificates: a list of theorems, each naming its rule,
 its premises (earlier entries) and the rule's data.  `check_certificate`
 rebuilds every theorem by calling the same rule again (no search) and
-compares the claim it gets with the one written down."""
+compares the claim it gets with the one written down.  (The proposer writes
+them, `certify.to_certificate`: what it writes is checked, so the writer is
+not trusted.)"""
 from __future__ import annotations
 
 import json
@@ -16,26 +18,6 @@ SCHEMA = Path(__file__).with_name("certificate.schema.json")
 
 class CertificateError(ValueError):
     """The certificate is malformed, of another version, or a step fails."""
-
-
-def to_certificate(theorems) -> dict:
-    """The certificate of the given theorems (conclusions), premises first."""
-    order, ids = [], {}
-
-    def visit(t: Theorem):
-        if id(t) in ids:
-            return
-        for p in t.premises:
-            visit(p)
-        ids[id(t)] = len(order)
-        order.append(t)
-    for t in theorems:
-        visit(t)
-    return {"format": FORMAT, "version": VERSION,
-            "theorems": [{"id": ids[id(t)], "rule": t.rule, "premises": [ids[id(p)] for p in t.premises],
-                          "data": json.loads(t.data), "claim": t.claim.to_json()} for t in order],
-            "conclusions": [ids[id(t)] for t in theorems],
-            "assumptions": sorted(set().union(*[t.assumptions for t in theorems]))}
 
 
 def _shape(data):

@@ -287,11 +287,9 @@ def _enclose(e, var, a, b, what, bits=128):
 
 
 def _expr(e, var) -> sp.Expr:
+    """e, exact (no Float), with no symbol but the variable var."""
     _need(isinstance(var, sp.Symbol), lambda: f"not a variable: {var!r}")
-    return _exact_in(_sym(e), var)
-
-
-def _exact_in(e, var) -> sp.Expr:
+    e = _sym(e)
     _need(not e.has(sp.Float), lambda: f"floats are not exact: {e}")
     _need(e.free_symbols <= {var}, lambda: f"{e} has symbols other than {var}")
     return e
@@ -340,18 +338,15 @@ def _of_kind(t: Theorem, kind: str, msg: str):
     return t.claim, t.claim.x()
 
 
-def _same_interval(a: Claim, b: Claim):
-    _need((a.var, a.lo, a.hi, a.lo_open, a.hi_open) == (b.var, b.lo, b.hi, b.lo_open, b.hi_open),
-          "premises on different intervals")
-
-
 def _signs_on_one_interval(premises) -> Claim:
     """Every premise is a sign theorem about the same interval; the first claim."""
     _need(premises, "no premises")
+    c = premises[0].claim
     for p in premises:
         _is_sign(p)
-        _same_interval(p.claim, premises[0].claim)
-    return premises[0].claim
+        _need((p.claim.var, p.claim.lo, p.claim.hi, p.claim.lo_open, p.claim.hi_open) ==
+              (c.var, c.lo, c.hi, c.lo_open, c.hi_open), "premises on different intervals")
+    return c
 
 
 def _box_ok(v: Iv, want, strict) -> bool:
@@ -1609,9 +1604,7 @@ def continuous_on_plane(*, expr, x, y):
     analytic on an open set holding its argument's values (a power's base
     and a log's argument shown > 0), so an E without Abs is analytic (C^oo)
     on the plane.  Claim kind "continuous", var (x, y), on (-oo, oo)."""
-    e = _in_plane(expr, x, y)
-    _need(defined_for_positive(e, sp.Tuple(x, y)) is not None, lambda: f"{e} not shown defined on the plane")
-    return Claim("continuous", _s(e), _s(sp.Tuple(x, y)), "-oo", "oo", True, True)
+    return _on_plane("continuous", expr, x, y)
 
 
 def defined_on_plane(*, expr, x, y):
@@ -1619,10 +1612,14 @@ def defined_on_plane(*, expr, x, y):
     `defined_for_positive` with two real variables of either sign and
     `analytic=False`.  (An identity on the plane holds where both sides are
     defined; with this, everywhere.)  Claim kind "defined", on (-oo, oo)."""
+    return _on_plane("defined", expr, x, y)
+
+
+def _on_plane(kind, expr, x, y):
     e = _in_plane(expr, x, y)
-    _need(defined_for_positive(e, sp.Tuple(x, y), analytic=False) is not None,
+    _need(defined_for_positive(e, sp.Tuple(x, y), analytic=kind == "continuous") is not None,
           lambda: f"{e} not shown defined on the plane")
-    return Claim("defined", _s(e), _s(sp.Tuple(x, y)), "-oo", "oo", True, True)
+    return Claim(kind, _s(e), _s(sp.Tuple(x, y)), "-oo", "oo", True, True)
 
 
 def continuous_at_end(*, expr, var, c, width):
@@ -1853,7 +1850,7 @@ _RULE_ASSUMPTIONS = {      # beside "sympy-core", which every rule rests on (`_a
     ("sympy-polys", "flint-polys"): "sign_by_sturm",
 }
 # Pure functions that the rules call again and again with the same arguments, and their cache sizes.
-_CACHED = {"derivative": 8192, "_lt": 8192, "_exact_in": 4096, "_roots_in": 4096, "_folded": 1024,
+_CACHED = {"derivative": 8192, "_lt": 8192, "_expr": 4096, "_roots_in": 4096, "_folded": 1024,
            "defined_for_positive": 4096, "_rational_over_q": 4096, "_zero_when_generalized": 1024}
 for _assumes, _names in _RULE_ASSUMPTIONS.items():
     for _name in _names.split():
