@@ -490,7 +490,7 @@ def test_sign_through_increasing_claims_and_messages():
     assert why(T, below, npos, expr=sp.log(x)) == "second premise must be Y > 0"
 
 
-# ---------------------------------------------------------- join, join_at_zero, weaken
+# ---------------------------------------------------------- join, join_at_point, weaken
 
 def test_join_claims_and_messages():
     a = sturm(x + 1, x, 0, 1, lo_open=True, strict=False)
@@ -507,20 +507,20 @@ def test_join_claims_and_messages():
     assert why(K.join, a, ident) == "premise is a identity theorem, not a sign theorem"
 
 
-def test_join_at_zero_claims_and_messages():
+def test_join_at_point_at_a_zero_claims_and_messages():
     e = (x - 1) ** 2 * (x + 1)
     left = sturm(e, x, 0, 1, lo_open=True, hi_open=True)
     right = sturm(e, x, 1, 2, lo_open=True, hi_open=True)
-    j = K.join_at_zero(left, right)
+    j = K.join_at_point(left, right)
     assert j.claim == sign(e, x, 0, 2, True, True, strict=False) and j.assumptions == ARB | {"sympy-polys", "flint-polys"}
-    assert why(K.join_at_zero, left, sturm(e + 1, x, 1, 2, lo_open=True)) == "different claims"
-    assert why(K.join_at_zero, left, sturm(e, x, Q(3, 2), 2, lo_open=True)) == "not adjacent"
-    f = x ** 2 - 2 * x + 2
-    assert why(K.join_at_zero, sturm(f, x, 0, 1, hi_open=True), sturm(f, x, 1, 2, lo_open=True)) == \
-        "E(1) is not exactly 0"
+    assert why(K.join_at_point, left, sturm(e + 1, x, 1, 2, lo_open=True)) == "different claims"
+    assert why(K.join_at_point, left, sturm(e, x, Q(3, 2), 2, lo_open=True)) == "not adjacent"
+    f = (x ** 2 - 1) / (x - 1)
+    assert why(K.join_at_point, sturm(f, x, 0, 1, hi_open=True), sturm(f, x, 1, 2, lo_open=True)) == \
+        "E undefined at 1: division by an interval that may contain 0"
     ident = K.identity(lhs=x, rhs=x, var=x, lo=I1, hi=I2, lo_open=False, hi_open=False)
-    assert why(K.join_at_zero, ident, right) == "premise is a identity theorem, not a sign theorem"
-    assert why(K.join_at_zero, left, ident) == "premise is a identity theorem, not a sign theorem"
+    assert why(K.join_at_point, ident, right) == "premise is a identity theorem, not a sign theorem"
+    assert why(K.join_at_point, left, ident) == "premise is a identity theorem, not a sign theorem"
 
 
 def test_weaken_claims_and_messages():
@@ -1364,7 +1364,7 @@ def test_to_certificate_lists_premises_once_and_first():
     assert [n["premises"] for n in cert["theorems"]] == [[], [0], [], [0, 2], []]   # base listed once
     assert cert["conclusions"] == [1, 3, 4]
     assert cert["assumptions"] == ["arb", "flint-polys", "sympy-core", "sympy-polys"]
-    assert (cert["format"], cert["version"]) == ("uwmr-kernel-certificate", 2)
+    assert (cert["format"], cert["version"]) == ("uwmr-kernel-certificate", 3)
     assert cert["theorems"][1]["claim"] == th.claim.to_json()
     assert [t.claim for t in check_certificate(cert)] == [th.claim, both.claim, vs.claim]
 
@@ -1388,9 +1388,9 @@ def test_certificate_checker_messages():
     assert refused(lambda c: "{").startswith("not JSON: Expecting property name enclosed in double quotes")
     assert refused(lambda c: c.update(format="other")) == "not a uwmr-kernel-certificate (format = 'other')"
     assert refused(lambda c: c.__delitem__("format")) == "not a uwmr-kernel-certificate (format = None)"
-    assert refused(lambda c: c.update(version=1)) == (
-        "certificate format version 1 is not supported: this kernel reads version 2 only; re-create the certificate")
-    assert refused(lambda c: c.update(version="2")).startswith("certificate format version '2' is not supported")
+    assert refused(lambda c: c.update(version=2)) == (
+        "certificate format version 2 is not supported: this kernel reads version 3 only; re-create the certificate")
+    assert refused(lambda c: c.update(version="3")).startswith("certificate format version '3' is not supported")
     for key in ("theorems", "conclusions", "assumptions"):
         assert refused(lambda c: c.update({key: {}})) == f"'{key}' must be a list"
     shape = "theorem 0: needs id = 0, rule, premises, data, claim"
@@ -1469,7 +1469,7 @@ def test_command_line(tmp_path, capsys):
     wrong.write_text(json.dumps(cert))
     assert main([str(wrong)]) == 1
     assert capsys.readouterr().out == (f"{wrong}: REJECTED: certificate format version 7 is not supported: "
-                                       "this kernel reads version 2 only; re-create the certificate\n")
+                                       "this kernel reads version 3 only; re-create the certificate\n")
     assert main([]) == 2
     assert capsys.readouterr().out.startswith("python -m uwmr_symbolic.kernel CERT.json ...: re-check certificates.")
     import sys

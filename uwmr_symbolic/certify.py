@@ -1877,7 +1877,7 @@ def sup_abs_theorems(dF, c, point, var, side):
 def _sup_pair(E, c, point, var):
     """E <= c and sup E >= c on (0, oo).  The upper bound is weak, so that
     E = c on a whole interval is allowed: c - E >= 0, by sign lemmas on both
-    sides of the touching point joined there (`join_at_zero`), then
+    sides of the touching point joined there (`join_at_point`, E = 0 there), then
     `sup_upper_by_sign`.  Lower: the value at the point
     (`sup_lower_by_point`) or the limit of the tail form at t = 0
     (`sup_lower_by_limit`, else `limit_at_infinity`)."""
@@ -1887,7 +1887,7 @@ def _sup_pair(E, c, point, var):
     parts, why = sign_theorems(gap, var, 0, OO, zeros=zeros, strict=False, work=WORK)
     if parts is None:
         raise NoProof("{} - ({}) >= 0: {}", c, E, why)
-    upper = parts[0] if not zeros else _rule(K.join_at_zero, *parts)
+    upper = parts[0] if not zeros else _rule(K.join_at_point, *parts)
     upper = _rule(K.sup_upper_by_sign, upper, expr=E, bound=c)
     if zeros:                   # (attained at s = 0 only: a sup over (0, oo), so a limit below)
         lower = _rule(K.sup_lower_by_point, expr=E, var=var, point=point, bound=c, lo=0, hi=OO,

@@ -12,7 +12,7 @@ from pathlib import Path
 from .core import RULES, Claim, Theorem
 
 FORMAT = "uwmr-kernel-certificate"
-VERSION = 2         # 2: every theorem lists sympy-core (version 1 did not, for some rules)
+VERSION = 3         # 3: join_at_zero is join_at_point; 2: every theorem lists sympy-core (1 did not, for some rules)
 SCHEMA = Path(__file__).with_name("certificate.schema.json")
 
 

@@ -836,40 +836,25 @@ def join(left, right):
     return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, l.strict and r.strict)
 
 
-def _join_at_point(left, right):
-    """(claim on <a, b>, value E(m)) for `join_at_zero` and `join_at_point`."""
+def join_at_point(left, right):
+    """Same E, variable and sign on <a, m) and (m, b>, and the value of E at
+    m: for a Piecewise E the branch that applies at m (`_branch`, each
+    condition decided by the sign of its constant r - l at m), E defined
+    at m (Arb).  E(m) exactly 0 (SymPy's literal 0, or polynomial
+    arithmetic over Q with its radicals and other subterms as symbols,
+    `_zero_when_generalized`; Arb enclosing 0) gives want*E >= 0 on <a, b>
+    (weak); E(m) with the premises' sign (Arb) keeps them: strict iff both are."""
     l, r = _adjacent(left, right)
     e, var, m = l.e(), l.x(), parse(l.hi)
     if e.has(sp.Piecewise):
         e = _branch(_folded(e), lambda d, want, strict: _sign_ok(_const_sign(d.xreplace({var: m})), want, strict))
     v = e.xreplace({var: m})
     box = _enclose(e, var, m, m, lambda: f"E undefined at {m}", bits=256)        # also: E defined at m
-    zero = box.hull().contains(0) and (v == 0 or _zero_when_generalized(v))    # (Arb first: exact 0 may cost)
-    return Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, False), v, zero, box
-
-
-def join_at_zero(left, right):
-    """Same E, variable and sign on <a, m) and (m, b>, and E(m) = 0:
-    exactly (SymPy's evaluation gives the literal 0, or polynomial
-    arithmetic over Q with its radicals and other subterms as symbols,
-    `_zero_when_generalized`) with E defined at m (Arb evaluates it,
-    enclosing 0).  Then want*E >= 0 on <a, b> (weak)."""
-    claim, _, zero, _ = _join_at_point(left, right)
-    _need(zero, lambda: f"E({parse(left.claim.hi)}) is not exactly 0")
-    return claim
-
-
-def join_at_point(left, right):
-    """Same E, variable and sign on <a, m) and (m, b>, and the value of E at
-    m: for a Piecewise E the branch that applies at m (`_branch`, each
-    condition decided by the sign of its constant r - l at m), E defined
-    at m (Arb).  E(m) exactly 0 (as in `join_at_zero`) gives want*E >= 0 on <a, b>; E(m) with the
-    premises' sign (Arb) keeps them: strict iff both are."""
-    claim, v, zero, box = _join_at_point(left, right)
-    if zero:
+    claim = Claim("sign", l.expr, l.var, l.lo, r.hi, l.lo_open, r.hi_open, l.want, False)
+    if box.hull().contains(0) and (v == 0 or _zero_when_generalized(v)):        # (Arb first: exact 0 may cost)
         return claim
-    _need(box.positive() if claim.want > 0 else box.negative(), lambda: f"E({parse(left.claim.hi)}) = {v} has not the sign")
-    return dataclasses.replace(claim, strict=left.claim.strict and right.claim.strict)
+    _need(box.positive() if l.want > 0 else box.negative(), lambda: f"E({m}) = {v} has not the sign")
+    return dataclasses.replace(claim, strict=l.strict and r.strict)
 
 
 _TRUE_WHEN = {sp.StrictLessThan: (1, True), sp.LessThan: (1, False),
@@ -1733,7 +1718,7 @@ def sup_upper_by_sign(thm, *, expr, bound):
 
 def sup_lower_by_point(*, expr, var, point, bound, lo, hi, lo_open, hi_open):
     """sup_I E >= L: the exact point p lies in I and E(p) >= L, either
-    exactly (E(p) - L is 0 as in `join_at_zero`) or by Arb enclosures."""
+    exactly (E(p) - L is 0 as in `join_at_point`) or by Arb enclosures."""
     lo, hi = _interval(var, lo, hi, lo_open, hi_open, at_zero=True)
     e, p, L = _expr(expr, var), _number(point), _number(bound)
     _need(_lt(lo, p) or (p == lo and not lo_open), "point before I")
@@ -1842,7 +1827,7 @@ _RULE_ASSUMPTIONS = {      # beside "sympy-core", which every rule rests on (`_a
         "sign_on_tail sign_by_substitution identity identity_plane continuous_on_plane defined_on_plane "
         "continuous_on_positive diverges_through_increasing diverges_by_comparison limit_of_bounded limit_of_product",
     ("arb",): "weaken widen sign_by_cover sign_of_product sign_of_sum sign_below_sup sign_of_increasing_difference "
-              "sign_below_product join_at_zero join_at_point sign_by_rewrite continuous_at_end value_sign "
+              "sign_below_product join_at_point sign_by_rewrite continuous_at_end value_sign "
               "sup_lower_by_point sup_lower_by_limit limit_at_infinity",
     ("arb", "sympy-diff"): "sign_by_taylor sign_by_monotone diverges_by_growth",
     ("arb", "sympy-polys"): "select_branch piecewise_branches continuous_piecewise",
