@@ -523,6 +523,48 @@ def test_join_at_point_at_a_zero_claims_and_messages():
     assert why(K.join_at_point, left, ident) == "premise is a identity theorem, not a sign theorem"
 
 
+def test_join_at_point_reads_a_piecewise_condition_at_the_point_strictly():
+    """At m = 1, x < 2 holds (2 - x = 1 > 0) and x < 1 does not (1 - x = 0
+    is not > 0): the branch that applies is read with the relation's own
+    strictness; E(m) is read at 256 bits (e^d - 1 - d, d = 10^-30, is about
+    5e-61: Arb at 128 bits cannot place it)."""
+    def sides(P):
+        return [K.select_branch(sturm(branch, x, lo, hi, lo_open=True, hi_open=True),
+                                sturm(1 - x, x, lo, hi, lo_open=True, hi_open=True, want=w), expr=P)
+                for (lo, hi), w, branch in zip(((0, 1), (1, 2)), (1, -1), [P.args[0].expr, P.args[1].expr])]
+    taken = sp.Piecewise((1 - x, x < 1), (x, True))         # E(1) = 1 from the second branch: strict
+    assert K.join_at_point(*sides(taken)).claim.strict
+    d = Q(1, 10 ** 30)
+    tiny = sp.Piecewise((sp.exp(d) - 1 - d, sp.Eq(x, 1)), (x, True))     # the value at 1 alone
+    assert K.join_at_point(*[K.select_branch(sturm(x, x, lo, hi, lo_open=True, hi_open=True),
+                                             sturm(1 - x, x, lo, hi, lo_open=True, hi_open=True, want=w), expr=tiny)
+                             for lo, hi, w in ((0, 1, 1), (1, 2, -1))]).claim.strict
+    below = sp.Piecewise((x, x < 2), (-5, True))
+    left = K.select_branch(sturm(x, x, 0, 1, lo_open=True, hi_open=True),
+                           sturm(2 - x, x, 0, 1, lo_open=True, hi_open=True), expr=below)
+    right = K.select_branch(sturm(x, x, 1, 2, lo_open=True, hi_open=True),
+                            sturm(2 - x, x, 1, 2, lo_open=True, hi_open=True), expr=below)
+    assert K.join_at_point(left, right).claim.strict
+
+
+def test_expr_messages():
+    """(A certificate cannot hold a Float: the parser refuses the name.)"""
+    from uwmr_symbolic.kernel.core import _expr
+    assert why(_expr, x + sp.Float(0.5), x) == "floats are not exact: x + 0.5"
+    assert why(_expr, x, sp.Integer(2)) == "not a variable: 2"
+    assert why(_expr, x + sp.Symbol("y"), x) == "x + y has symbols other than x"
+    assert _expr(3, x) == 3
+
+
+def test_pow_at_exponent_zero():
+    """x**0 is 1 (SymPy makes it 1 before the evaluator sees it; the
+    evaluator's own case is kept)."""
+    from flint import arb
+    from uwmr_symbolic.kernel.arb import Iv, _pow
+    one = _pow(Iv(arb(2), arb(3)), sp.Integer(0))
+    assert (one.lo, one.hi) == (1, 1) and one.lo.rad() == 0 and one.hi.rad() == 0
+
+
 def test_weaken_claims_and_messages():
     j = sturm(x + 1, x, 0, 2, lo_open=True)
     W = K.weaken
