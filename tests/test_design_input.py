@@ -231,3 +231,23 @@ def test_a_root_of_a_denominator_in_a_branch_not_taken_is_no_refusal(tmp_path):
                     "f = (1 + e1**2)*sp.expand(p**4)**sp.Rational(1, 8)*sp.Piecewise((1, e2 < 2), (sp.horner(p)/p, True))\n")
     design = load_design(path)
     assert design.f.has(sp.Piecewise)
+
+
+def test_a_power_of_a_million_bits_is_not_evaluated_exactly_at_a_sample_point(tmp_path):
+    """Red team 26: f = 2 log(1 + rho) + rho^(rho^2) - 1 ran past --timeout in
+    the loader: at (100, 100), 20000^400000000 has 5.7e9 bits, which SymPy
+    computes exactly.  Such a point is skipped; the others are still checked."""
+    from uwmr_symbolic.design import _huge_power_at
+    e1, e2 = sp.symbols("e1 e2", real=True)
+    rho = e1 ** 2 + e2 ** 2
+    tower = rho ** (rho ** 2)
+    assert _huge_power_at(tower, 100, 100) and _huge_power_at(rho ** (rho ** (rho ** 2)), 3, -2)
+    assert not _huge_power_at(tower, 3, -2) and not _huge_power_at(rho ** 400, 100, 100)   # (a constant exponent)
+    path = tmp_path / "tower.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    "f = 2*sp.log(1 + rho) + rho**(rho**2) - 1\n")
+    assert load_design(path).f == 2 * sp.log(1 + rho) + tower - 1
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nrho = e1**2 + e2**2\n"
+                    "f = sp.log(1 + rho) + rho**(rho**2)*sp.log(e1 - 7)\n")      # still refused at (0, 0)
+    with pytest.raises(DesignError, match="not real-valued|undefined"):
+        load_design(path)
