@@ -242,10 +242,10 @@ def test_other_version_gives_a_clear_error(cert1):
     bad = dict(cert1, version=1)        # version 1: P4 without f defined on the plane
     with pytest.raises(DC.CertificateError, match="version 1 is not supported: this checker reads version 2"):
         DC.check(bad)
-    older = copy.deepcopy(cert1)        # kernel certificates of version 1: sympy-core listed for some rules only
-    older["properties"]["P2"]["kernel"]["version"] = 1
-    with pytest.raises(DC.CertificateError, match="^P2: certificate format version 1 is not supported: this kernel "
-                                                  "reads version 2 only; re-create the certificate$"):
+    older = copy.deepcopy(cert1)        # kernel certificates of version 2: join_at_zero beside join_at_point
+    older["properties"]["P2"]["kernel"]["version"] = 2
+    with pytest.raises(DC.CertificateError, match="^P2: certificate format version 2 is not supported: this kernel "
+                                                  "reads version 3 only; re-create the certificate$"):
         DC.check(older)
 
 
