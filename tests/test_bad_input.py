@@ -41,6 +41,10 @@ CASES = {
     "complex_roots_cancel.py": "square roots of negative numbers whose product is real",
     "params_divide_zero_by_zero.py": "params that make f 0/0 everywhere, one substituted before the other",
     "zero_over_zero_at_origin_in_parts.py": "0/0 at the origin that one variable at a time hides",
+    "params_cancel_e1_over_e1.py": "params that make f e1/e1, which evaluation would cancel",
+    "unevaluated_zero_times_log_of_negative.py": "0 log(-1 - rho) built with evaluate=False",
+    "substitution_makes_e1_over_e1.py": "a Subs whose values make x/y e1/e1",
+    "derivative_of_sign.py": "a Derivative of sign(e1), which SymPy takes branch by branch",
 }
 
 #: file -> the words of the one line that name the fix
@@ -63,6 +67,10 @@ FIXES = {
     "complex_roots_cancel.py": ["f is not real-valued at (e1, e2) = (0, 0)", "has no real value there"],
     "params_divide_zero_by_zero.py": ["f contains nan, zoo or infinity", "a division by zero"],
     "zero_over_zero_at_origin_in_parts.py": ["f is undefined at (e1, e2) = (0, 0)", "sympy.Piecewise"],
+    "params_cancel_e1_over_e1.py": ["f is undefined at (e1, e2) = (0, 0)"],
+    "unevaluated_zero_times_log_of_negative.py": ["its part log(-e1**2 - e2**2 - 1) has no real value there"],
+    "substitution_makes_e1_over_e1.py": ["f is undefined at (e1, e2) = (0, 0)"],
+    "derivative_of_sign.py": ["f holds the derivative of sign(e1)", "write that derivative by hand"],
 }
 HANGS = "sleep_forever.py"
 

@@ -251,3 +251,14 @@ def test_a_power_of_a_million_bits_is_not_evaluated_exactly_at_a_sample_point(tm
                     "f = sp.log(1 + rho) + rho**(rho**2)*sp.log(e1 - 7)\n")      # still refused at (0, 0)
     with pytest.raises(DesignError, match="not real-valued|undefined"):
         load_design(path)
+
+
+def test_a_derivative_with_respect_to_a_parameter_is_carried_out_before_its_value_goes_in(tmp_path):
+    """Red team 27: f = d/dc (c^2 log(1 + rho)) with params c = 1 stopped with
+    an internal error (a derivative with respect to the number 1); it is
+    2 c log(1 + rho) = 2 log(1 + rho)."""
+    path = tmp_path / "by_param.py"
+    path.write_text("import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nc = sp.Symbol('c')\n"
+                    "f = sp.Derivative(c**2*sp.log(1 + e1**2 + e2**2), c)\nparams = {c: 1}\n")
+    e1, e2 = sp.symbols("e1 e2", real=True)
+    assert load_design(path).f == 2 * sp.log(1 + e1 ** 2 + e2 ** 2)

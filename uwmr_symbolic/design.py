@@ -258,10 +258,41 @@ def _check_assumptions(f_source: sp.Expr, params: dict) -> None:
                                   f"give a value that does, or declare {s.name} with fewer assumptions")
 
 
-def _canonical_symbols(expr: sp.Expr) -> sp.Expr:
+def _canonical_symbols(expr: sp.Expr, evaluate: bool = True) -> sp.Expr:
     """Replace any symbol named e1/e2 (whatever its assumptions) by ours."""
-    return expr.xreplace({s: {"e1": E1, "e2": E2}[s.name]
-                          for s in expr.free_symbols if s.name in ("e1", "e2")})
+    return _put_in(expr, {s: {"e1": E1, "e2": E2}[s.name] for s in expr.free_symbols if s.name in ("e1", "e2")},
+                   evaluate)
+
+
+def _put_in(f: sp.Expr, values: dict, evaluate: bool) -> sp.Expr:
+    """f with the symbols' values put in, all at once; `evaluate=False` keeps
+    every product and sum as written (0 (...) and e1/e1 stay: the loader's
+    check of f's values then sees them)."""
+    with sp.evaluate(evaluate):
+        return f.xreplace(values)
+
+
+#: a Derivative of these is not carried out (SymPy differentiates branch by
+#: branch, so d/de1 sign(e1) came out 0 where it does not exist; red team 27)
+_SWITCHING = (sp.Piecewise, sp.Abs, sp.sign, sp.Heaviside, sp.Max, sp.Min, sp.floor, sp.ceiling, sp.frac,
+              sp.Mod, sp.DiracDelta)
+
+
+def _held_carried_out(f: sp.Expr, evaluate: bool = True) -> sp.Expr:
+    """f with its unevaluated derivatives carried out and its substitutions
+    made, all variables at once (SymPy's Subs.doit substitutes them one after
+    another: Subs(g, (e1, e2), (e2, e1)) would become g(e1, e1)); a
+    derivative of what may switch (`_SWITCHING`) is refused."""
+    if not f.has(sp.Derivative, sp.Subs):
+        return f
+    switching = next((d.expr for d in f.atoms(sp.Derivative) if d.expr.has(*_SWITCHING)), None)
+    if switching is not None:
+        raise DesignError(f"f holds the derivative of {switching}, which switches (Piecewise, Abs, sign, Max, Min, "
+                          f"...) and may have none where it does; write that derivative by hand, with its value "
+                          f"where it switches")
+    f = f.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
+    with sp.evaluate(evaluate):         # (replace builds each term around a Subs again)
+        return f.replace(lambda e: isinstance(e, sp.Subs), lambda e: e.expr.xreplace(dict(zip(e.variables, e.point))))
 
 
 def _parse_params(raw, f: sp.Expr) -> dict:
@@ -437,14 +468,8 @@ def _plain_functions(f: sp.Expr) -> sp.Expr:
     """f with what the certificate checker does not read written with what
     it does, where that is an identity on the same domain: sech, csch, coth,
     sec, csc, cot as quotients of cosh, sinh, cos, sin; the golden ratio and
-    the tribonacci constant as radicals; unevaluated derivatives carried out,
-    and substitutions, all variables at once (SymPy's Subs.doit substitutes
-    them one after another: Subs(g, (e1, e2), (e2, e1)) would become
-    g(e1, e1)).  Sums and integrals are left as written: carrying them out
-    can bring in removable singularities or floor."""
-    if f.has(sp.Derivative, sp.Subs):
-        f = f.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
-        f = f.replace(lambda e: isinstance(e, sp.Subs), lambda e: e.expr.xreplace(dict(zip(e.variables, e.point))))
+    the tribonacci constant as radicals.  Sums and integrals are left as
+    written: carrying them out can bring in removable singularities or floor."""
     f = f.replace(lambda e: type(e) in _RECIPROCALS, lambda e: _RECIPROCALS[type(e)](e.args[0]))
     return f.xreplace({c: c.rewrite(sp.sqrt) for c in f.atoms(sp.GoldenRatio.func, sp.TribonacciConstant.func)})
 
@@ -494,6 +519,8 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
     if isinstance(f_source, bool) or not isinstance(f_source, sp.Expr):
         raise DesignError(f"`f` is a {type(f_source).__name__}, not a SymPy expression in e1, e2")
     f = _canonical_symbols(f_source)
+    raw = _held_carried_out(_canonical_symbols(f_source, evaluate=False), evaluate=False)   # f as written: see below
+    f = _held_carried_out(f)
     undefined = sorted(str(g.func) for g in f.atoms(AppliedUndef))
     if undefined:
         raise DesignError(f"f uses the undefined function {undefined[0]!r}; write f with SymPy's functions "
@@ -505,7 +532,9 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
     f = f.xreplace({x: exact_float(x) for x in f.atoms(sp.Float)})
     params = _parse_params(ns.get("params"), f)
     _check_assumptions(f_source, params)
-    f = f.xreplace({s: sp.sympify(params[s.name]) for s in f.free_symbols if s.name in params})
+    values = {s: sp.sympify(params[s.name]) for s in f.free_symbols if s.name in params}
+    f = _put_in(f, values, evaluate=True)
+    raw = _put_in(raw, {**{x: exact_float(x) for x in raw.atoms(sp.Float)}, **values}, evaluate=False)
     extra = sorted(s.name for s in f.free_symbols if s not in (E1, E2))
     if extra and not f.has(E1, E2):
         raise DesignError(f"f is written in {', '.join(extra)}, not in the error coordinates: name them e1 and e2 "
@@ -529,6 +558,7 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
         raise DesignError(f"a condition of f compares truth values, {compared}; write it with And, Or and Not "
                           f"(Eq(e1 > 0, e2 > 0) is (e1 > 0) & (e2 > 0) | (e1 <= 0) & (e2 <= 0))")
     _check_real_valued(f)
+    _check_real_valued(raw)     # where SymPy's evaluation of f as written, or with params, dropped a 0/0 or 0 log(-1)
     if any(max(abs(r.p), r.q).bit_length() > 14_000 for r in f.atoms(sp.Rational)):   # Python prints <= 4,300 digits
         raise DesignError("f holds a number of more than 4,200 digits, which cannot be printed into a certificate "
                           "or code; scale f (or its parameters) to smaller constants")
