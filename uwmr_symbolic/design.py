@@ -532,7 +532,7 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
     f = f.xreplace({x: exact_float(x) for x in f.atoms(sp.Float)})
     params = _parse_params(ns.get("params"), f)
     _check_assumptions(f_source, params)
-    values = {s: sp.sympify(params[s.name]) for s in f.free_symbols if s.name in params}
+    values = {s: sp.sympify(params[s.name]) for s in f.free_symbols | raw.free_symbols if s.name in params}
     f = _put_in(f, values, evaluate=True)
     raw = _put_in(raw, {**{x: exact_float(x) for x in raw.atoms(sp.Float)}, **values}, evaluate=False)
     extra = sorted(s.name for s in f.free_symbols if s not in (E1, E2))
@@ -558,7 +558,8 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
         raise DesignError(f"a condition of f compares truth values, {compared}; write it with And, Or and Not "
                           f"(Eq(e1 > 0, e2 > 0) is (e1 > 0) & (e2 > 0) | (e1 <= 0) & (e2 <= 0))")
     _check_real_valued(f)
-    _check_real_valued(raw)     # where SymPy's evaluation of f as written, or with params, dropped a 0/0 or 0 log(-1)
+    if raw != f:                # where SymPy's evaluation of f as written, or with params, dropped a 0/0 or 0 log(-1)
+        _check_real_valued(raw)
     if any(max(abs(r.p), r.q).bit_length() > 14_000 for r in f.atoms(sp.Rational)):   # Python prints <= 4,300 digits
         raise DesignError("f holds a number of more than 4,200 digits, which cannot be printed into a certificate "
                           "or code; scale f (or its parameters) to smaller constants")
