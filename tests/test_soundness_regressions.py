@@ -1290,3 +1290,13 @@ def test_a_max_crossing_far_out_is_refuted_in_seconds(tmp_path):
     assert [v[p] for p in ("P1", "P2", "P3", "P4", "P5", "P6", "P7")] == ["refuted"] + ["proved"] * 3 + ["refuted"] * 3
     assert "1585201.06" in report.properties["P1"].reason
     assert {"P1", "P2", "P3", "P4", "P5", "P6", "P7"} <= set(report.kernel["checked"])
+
+
+def test_a_condition_the_kernel_cannot_decide_at_the_origin_is_named_not_read_as_f_nan(tmp_path):
+    """Red team 27: atan(1/2) + atan(1/3) < pi/4 is false (the two sides are
+    equal, which no ball shows), so f = log(1 + rho) and P2 holds; the
+    verdict is unknown, and its reason said "f(0, 0) = nan"."""
+    report, v = verify(tmp_path, "f = Piecewise((log(1 + rho) + 1, atan(Rational(1, 2)) + atan(Rational(1, 3)) < "
+                                 "sp.pi/4), (log(1 + rho), True))\n", timeout=20)
+    assert v["P2"] == "unknown" and v["P3"] != "refuted" and v["P4"] != "refuted", v
+    assert report.properties["P2"].reason.startswith("cannot read f at the origin: a condition of f there")

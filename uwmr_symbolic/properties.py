@@ -349,6 +349,9 @@ def verify_p2(a: Analysis) -> Verdict:
     sgn = exact_sign(v)
     if sgn == 0:
         return proved("f(0, 0) = 0 exactly", kernel=origin_value_theorems(v), unchecked=[])
+    if sgn is None and v.has(sp.nan):   # (at_point: a condition read before the branch has no sign the kernel decides)
+        return unknown("cannot read f at the origin: a condition of f there, or a part of f, has no value or sign "
+                       "that the kernel decides")
     if sgn is None:
         return unknown(f"cannot decide whether f(0, 0) = {v} is zero")
     return refuted(f"f(0, 0) = {_short(v)} != 0", {"e1": "0", "e2": "0", "f": str(v)})
