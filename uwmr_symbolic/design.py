@@ -362,14 +362,15 @@ def _check_real_valued(f: sp.Expr) -> None:
            (3, -2), (-5, 7), (sp.Rational(1, 10), 0), (100, 100)]
     parts = _parts_with_a_domain(f)
     for a, b in pts + _zeros_of_denominators(f):
-        if _huge_power_at(f, a, b):
+        point = {E1: sp.sympify(a), E2: sp.sympify(b)}
+        if _huge_power_at(f, point):
             continue            # rho**(rho**2) at (100, 100): SymPy would compute its 6e9 bits exactly
         # at an irrational root only an exact nan or zoo counts: evalf of an exact 0 there can be noise
         # (|p|^(1/2) as (p^4)^(1/8) came out with an imaginary part of 1e-19; red team 19)
         rational = all(isinstance(c, int) or c.is_Rational for c in (a, b))
         try:
             try:                # all variables at once: one by one, e2^2/e2^2 turned 1 before e2 = 0
-                v = f.xreplace({E1: sp.sympify(a), E2: sp.sympify(b)})
+                v = f.xreplace(point)
             except TypeError:   # a later Piecewise condition with no value there: the conditions in order
                 v = at_point(f, (a, b))
             if isinstance(v, sp.Piecewise) or v.free_symbols:
@@ -389,7 +390,7 @@ def _check_real_valued(f: sp.Expr) -> None:
             raise DesignError(f"f is not real-valued at (e1, e2) = ({a}, {b}): f = {sp.N(v, 6)}")
         for part in parts if rational else ():
             try:
-                w = part.xreplace({E1: sp.sympify(a), E2: sp.sympify(b)}).evalf(30)
+                w = part.xreplace(point).evalf(30)
                 im = 0 if w.has(sp.nan, sp.zoo, sp.oo, -sp.oo) else w.as_real_imag()[1]
             except (OverflowError, RecursionError, ZeroDivisionError, TypeError, ValueError):
                 continue
@@ -398,10 +399,9 @@ def _check_real_valued(f: sp.Expr) -> None:
                                   "there (f has one only in complex arithmetic); write f with real parts only")
 
 
-def _huge_power_at(f: sp.Expr, a, b) -> bool:
+def _huge_power_at(f: sp.Expr, point: dict) -> bool:
     """A power u**y of f with a variable exponent has more than a million
-    bits at (a, b), |y| log2(|u| + 2) > 10^6 (by 15-digit evalf)."""
-    point = {E1: sp.sympify(a), E2: sp.sympify(b)}
+    bits at the point {e1: a, e2: b}, |y| log2(|u| + 2) > 10^6 (by 15-digit evalf)."""
     for p in f.atoms(sp.Pow):
         if p.exp.free_symbols:
             try:
@@ -527,14 +527,16 @@ def design_from_namespace(ns: dict, path: Path, f_line: int = 1) -> Design:
                           f"(sympy.log, sympy.sqrt, ...) of e1 and e2")
     # floats in f (0.5, or 1/3 evaluated by Python) are read by `exact_float`,
     # like params and gains
-    if any(not x.is_finite for x in f.atoms(sp.Float)):
+    floats = f.atoms(sp.Float) | raw.atoms(sp.Float)
+    if any(not x.is_finite for x in floats):
         raise DesignError("f contains a non-finite float (nan or inf)")
-    f = f.xreplace({x: exact_float(x) for x in f.atoms(sp.Float)})
+    exact = {x: exact_float(x) for x in floats}
+    f = f.xreplace(exact)
     params = _parse_params(ns.get("params"), f)
     _check_assumptions(f_source, params)
     values = {s: sp.sympify(params[s.name]) for s in f.free_symbols | raw.free_symbols if s.name in params}
     f = _put_in(f, values, evaluate=True)
-    raw = _put_in(raw, {**{x: exact_float(x) for x in raw.atoms(sp.Float)}, **values}, evaluate=False)
+    raw = _put_in(raw, {**exact, **values}, evaluate=False)
     extra = sorted(s.name for s in f.free_symbols if s not in (E1, E2))
     if extra and not f.has(E1, E2):
         raise DesignError(f"f is written in {', '.join(extra)}, not in the error coordinates: name them e1 and e2 "
