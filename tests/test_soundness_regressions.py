@@ -1300,3 +1300,25 @@ def test_a_condition_the_kernel_cannot_decide_at_the_origin_is_named_not_read_as
                                  "sp.pi/4), (log(1 + rho), True))\n", timeout=20)
     assert v["P2"] == "unknown" and v["P3"] != "refuted" and v["P4"] != "refuted", v
     assert report.properties["P2"].reason.startswith("cannot read f at the origin: a condition of f there")
+
+
+def test_a_p7_jump_of_f_second_derivative_has_its_witness_on_the_e2_axis(tmp_path):
+    """Red team 29: f = s^2/2 inside the unit circle, s - 1/2 outside, is C^1
+    with F'' = 1 | 0, so P7 is false.  At (1, 0), d2f/de2^2 = F'(s)/s = 1 on
+    both sides and the mixed partial (F'' - F'/s) e1 e2/s^2 -> 0: P7 holds
+    there.  It fails on the e2 axis, where d2f/de2^2 = F'' jumps from 1 to 0
+    at (0, 1); the witness had been (1, 0)."""
+    report, v = verify(tmp_path, "f = Piecewise((rho/2, rho <= 1), (sqrt(rho) - Rational(1, 2), True))\n")
+    assert v["P7"] == "refuted" and "P7" in report.kernel["checked"], v
+    w = report.properties["P7"].witness
+    assert (sp.Rational(w["e1"]), sp.Rational(w["e2"])) == (0, 1), w
+
+
+def test_a_refutation_by_a_branch_formula_says_so(tmp_path):
+    """Red team 29: f = 1 at (1, 0), log(1 + rho) elsewhere.  P5 is false
+    (f(5/4, 0) < f(1, 0), which the kernel checks), but df/de1 does not
+    exist at (1, 0): the reason had stated df/de1 tanh(e1) <= 0 there from
+    the formula of the branch taken at that point only."""
+    report, v = verify(tmp_path, "f = Piecewise((1, sp.And(Eq(e1, 1), Eq(e2, 0))), (log(1 + rho), True))\n")
+    assert v["P5"] == "refuted" and "P5" in report.kernel["checked"], v
+    assert "by the formula of a branch of f, whose own df/de1 may not exist there" in report.properties["P5"].reason

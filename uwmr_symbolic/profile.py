@@ -260,7 +260,7 @@ def split_profile(F: sp.Expr) -> tuple[Profile | None, Verdict]:
         sols = attempt(lambda: sp.solveset(sp.Eq(g, 0), S, sp.Interval.open(0, sp.oo)), 5.0)
         for b in (sols.args if isinstance(sols, sp.FiniteSet) else ()):
             if not certified_inside(b, 0, sp.oo):
-                return None, unknown(f"boundary candidate {b} of {rel} is not a positive real")
+                return None, unknown(f"boundary candidate {b} of {rel} is not certified to be a positive real")
             v = exact_value(g, S, b)
             if v is None or exact_sign(v) != 0:
                 return None, unknown(f"boundary candidate {b} of {rel} not confirmed")

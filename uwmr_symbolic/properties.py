@@ -57,6 +57,20 @@ def _at(s_value):
     return {"e1": str(s_value), "e2": "0", "e1_float": float_of(s_value)}
 
 
+def _on_e2_axis(v: Verdict, ratio) -> Verdict:
+    """P7's refutation with its witness (s, 0) moved to the point (0, e2) of
+    the same circle: on the e2 axis d2f/de2^2 is F''(s), while at (s, 0) it
+    is F'(s)/s, continuous where F' is, so a jump or singularity of F'' at
+    s shows there only (red team 29).  "jump": "e2" tells the proposer that
+    f or a derivative in e2 jumps there (`certify._witness_candidates`)."""
+    w = v.witness if isinstance(v.witness, dict) else {}
+    if w.get("e2") != "0" or w.get("e1") in (None, "0") or "e1_float" not in w:
+        return v
+    y = sp.sympify(w["e1"]) / sp.sqrt(ratio)
+    moved = {k: x for k, x in w.items() if k not in ("e1", "e2", "e1_float")}
+    return replace(v, witness={"e1": "0", "e2": str(y), "e2_float": float_of(y), "jump": "e2", **moved})
+
+
 class Analysis:
     """Everything the properties share for one design, computed once."""
 
@@ -130,13 +144,14 @@ class Analysis:
         pieces = self.profile.pieces
         for left, right in zip(pieces, pieces[1:]):
             b = right.lo
+            at = _at(b)
             lv = one_sided_value(self.derivative(left.expr, k), b, -1)
             rv = one_sided_value(self.derivative(right.expr, k), b, +1)
             name = "F" + "′" * k
             if lv in (sp.oo, -sp.oo) or rv in (sp.oo, -sp.oo):
                 return refuted(f"{name} is unbounded near s = {b} (|e| = {float_of(b):.6g}): left limit "
                                f"{_show(lv)}, right limit {_show(rv)}",
-                               {**_at(b), "left": _show(lv), "right": _show(rv)})
+                               {**at, "left": _show(lv), "right": _show(rv)})
             values = [lv, rv]
             if k == 0:
                 values.append(exact_value(self.profile.at_point[b], S, b))
@@ -147,7 +162,7 @@ class Analysis:
                 return refuted(
                     f"{name} jumps at s = {b} (|e| = {float_of(b):.6g}): left limit {_show(lv)}, right limit "
                     f"{_show(rv)}" + ("" if k else f", value {_show(values[2])}"),
-                    {**_at(b), "left": _show(lv), "right": _show(rv)})
+                    {**at, "left": _show(lv), "right": _show(rv)})
             return unknown(f"cannot compare the one-sided limits of {name} at s = {b}")
         return proved("no jumps at the boundaries")
 
@@ -751,7 +766,7 @@ def verify_p7(a: Analysis) -> Verdict:
         return early
     v = a.c2
     if not v.proved:
-        return v
+        return _on_e2_axis(v, a.ratio) if v.refuted else v
     v = proved(v.reason, **v.details)
     return _lemmas(v, v, "f is C^2 (continuity of F'' and F'/s, also at the origin)",
                    lambda: smoothness_theorems(a.kernel_F, S, 2, a.profile.ends))
@@ -942,7 +957,11 @@ def _fails_along_a_line(f, name: str) -> Verdict | None:
         if v.refuted and v.witness is not None and exact_sign(v.witness) == 1:
             x, y = sp.expand(dx * v.witness), sp.expand(dy * v.witness)
             what = {"P3": "f <= 0", "P5": "df/de1 tanh(e1) <= 0", "P6": "e1 df/de1 < 0"}[name]
-            return refuted(f"{what} at (e1, e2) = ({x}, {y}) (on the half-line through ({dx}, {dy}))",
+            # a branch's formula may hold on a line only (Eq(e1, 1)): such a refutation stands only
+            # where the kernel checks f's own values (`_stands`), and says so (red team 29)
+            branch = " by the formula of a branch of f, whose own df/de1 may not exist there; the kernel " \
+                     "checks values of f near it" if name != "P3" and f.has(*SMOOTH_ONLY) else ""
+            return refuted(f"{what} at (e1, e2) = ({x}, {y}) (on the half-line through ({dx}, {dy})){branch}",
                            {"e1": str(x), "e2": str(y)})
     return None
 
