@@ -27,6 +27,20 @@ def test_least_recently_used_entries_are_evicted(tmp_path):
     assert len(list(tmp_path.glob("*.json"))) == 3
 
 
+def test_eviction_deletes_only_the_cache_s_own_entries(tmp_path):
+    """Red team 28: --cache-dir . in a folder of data*.json files had the
+    oldest of them deleted once the folder held more than max_entries."""
+    for name in ("data1.json", "results.json", "0" * 63 + ".json"):
+        (tmp_path / name).write_text("{}")
+        os.utime(tmp_path / name, (1, 1))           # older than any entry
+    cache = ResultCache(tmp_path, max_entries=2)
+    for i in range(4):
+        assert cache.put({"n": i}, {"value": i})
+    assert sorted(p.name for p in tmp_path.glob("*.json") if len(p.name) != 69) == \
+        ["0" * 63 + ".json", "data1.json", "results.json"]
+    assert len(list(tmp_path.glob("*.json"))) == 5         # the three files and the 2 newest entries
+
+
 # ---------------------------------------------------------------- --timeout
 
 def test_an_entry_says_which_timeouts_it_answers(tmp_path):

@@ -137,7 +137,8 @@ def test_interruptions_and_unwritable_output(tmp_path):
     assert (run.returncode, run.stderr) == (2, "uwmr-verify: cannot write the output: No space left on device\n")
     run = subprocess.run([sys.executable, "-m", "uwmr_symbolic.cli", DESIGN1], cwd=ROOT, stderr=subprocess.PIPE,
                          text=True, timeout=600, preexec_fn=lambda: os.close(1))
-    assert (run.returncode, run.stderr) == (0, "")
+    # a closed stdout: the report cannot be written (red team 28: it was status 0 and nothing said)
+    assert (run.returncode, run.stderr) == (2, "uwmr-verify: cannot write the output: standard output is closed\n")
     (tmp_path / "kb.py").write_text("raise KeyboardInterrupt\n")
     line = one_line(run_cli([tmp_path / "kb.py", "--no-cache"]), 2)
     assert line == f"{tmp_path / 'kb.py'}: the file raised KeyboardInterrupt while loading"
@@ -235,3 +236,100 @@ def test_a_huge_waypoint_file_is_refused_before_it_is_read(tmp_path):
                              f"circle={tmp_path / 'big.csv'}"]), 2)
     assert line == (f"uwmr-verify: {tmp_path / 'big.csv'}: 21 MB of waypoints, and at most 20 MB are read; "
                     f"give fewer (the path is a spline through them)")
+
+
+# ---------------------------------------------------------------- red team 28
+
+GOOD = "import sympy as sp\ne1, e2 = sp.symbols('e1 e2', real=True)\nf = sp.log(1 + e1**2 + e2**2)/2\n"
+
+
+def test_outputs_never_replace_the_design_file(tmp_path):
+    design = tmp_path / "same.py"
+    design.write_text(GOOD)
+    for flag in ("--certificate", "--junit-xml"):
+        line = one_line(run_cli([design, "--no-cache", flag, design], timeout=120), 2)
+        assert line == (f"uwmr-verify: {flag} {design} is a design file to be checked; write the {flag[2:]} to "
+                        f"another file")
+        assert design.read_text() == GOOD
+
+
+@pytest.mark.parametrize("source, message", [
+    ("raise GeneratorExit('x')\n", "raised GeneratorExit while loading: x"),
+    ("class E(BaseException): pass\nraise E('boom')\n", "raised E while loading: boom"),
+    ("raise ValueError('line1\\nline2')\n", "raised ValueError at line 1: line1 line2"),
+    ("class E(Exception):\n    def __str__(self): raise ValueError('no')\nraise E()\n",
+     "raised E at line 3: (its message cannot be printed)"),
+])
+def test_whatever_a_design_raises_is_one_line(tmp_path, source, message):
+    (tmp_path / "d.py").write_text(source)
+    assert one_line(run_cli([tmp_path / "d.py", "--no-cache"], timeout=120), 2) == f"{tmp_path / 'd.py'}: {message}"
+
+
+def test_designs_are_read_as_python_reads_them_and_keep_their_hands_off_stdout(tmp_path):
+    """A BOM and a coding line are Python source; a design's os.write(1, ...),
+    os.system("echo ...") and stdin read must not reach the JSON on stdout, and
+    a thread it leaves running must not hold the command."""
+    (tmp_path / "bom.py").write_bytes(b"\xef\xbb\xbf" + GOOD.encode())
+    (tmp_path / "latin1.py").write_bytes(b"# -*- coding: latin-1 -*-\nname = 'Entw\xfcrfe'\n" + GOOD.encode())
+    (tmp_path / "noisy.py").write_text("import os, sys, threading, time\nos.write(1, b'junk')\n"
+                                       "os.system('echo more junk')\ndata = sys.stdin.read()\n"
+                                       "threading.Thread(target=lambda: time.sleep(1000)).start()\n" + GOOD)
+    run = run_cli([tmp_path, "--no-cache", "--format", "json", "--timeout", "20"], timeout=120)
+    assert run.returncode == 0 and run.elapsed < 100, run.describe()
+    assert [d["properties"]["P1"]["verdict"] for d in json.loads(run.stdout)] == ["proved"] * 3
+
+
+def test_a_folder_gives_its_regular_py_files_only(tmp_path):
+    (tmp_path / "a.py").write_text(GOOD)
+    (tmp_path / "sub.py").mkdir()
+    (tmp_path / ".hidden.py").write_text("raise ValueError\n")
+    (tmp_path / "broken.py").symlink_to(tmp_path / "nowhere.py")
+    run = run_cli([tmp_path, "--no-cache", "--format", "json"], timeout=120)
+    assert run.returncode == 0, run.describe()
+    assert json.loads(run.stdout)["design"] == str(tmp_path / "a.py")        # (one file: one object)
+
+
+def test_check_certificate_refuses_what_is_no_regular_file(tmp_path):
+    os.mkfifo(tmp_path / "fifo.json")
+    line = one_line(run_cli(["--check-certificate", tmp_path / "fifo.json"], timeout=60), 2)
+    assert line == f"{tmp_path / 'fifo.json'}: not a regular file: give the certificate's .json file"
+
+
+def test_check_generated_runs_designs_in_a_child(tmp_path):
+    (tmp_path / "exits.py").write_text("import os\nos._exit(0)\n")
+    line = one_line(run_cli(["--check-generated", tmp_path / "exits.py"], timeout=120), 2)
+    assert line.startswith("uwmr-verify: --check-generated: a design file ended the check (the process exited "
+                           "with code 0)")
+    (tmp_path / "spins.py").write_text("import signal\nsignal.signal(signal.SIGALRM, signal.SIG_IGN)\n"
+                                       "while True:\n    pass\n")
+    line = one_line(run_cli(["--check-generated", tmp_path / "spins.py", "--timeout", "1"], timeout=120), 3)
+    assert line == "uwmr-verify: --check-generated did not finish within 11 s (--timeout 1 s per design, with its grace)"
+
+
+def test_cache_folders_settings_and_scenario_names(tmp_path):
+    (tmp_path / "d.py").write_text(GOOD)
+    env = {**os.environ, "UWMR_CACHE_DIR": "~nosuchuser-uwmr/x"}
+    run = subprocess.run([sys.executable, "-m", "uwmr_symbolic", str(tmp_path / "d.py")], capture_output=True,
+                         text=True, env=env, cwd=tmp_path, timeout=120)
+    assert run.returncode == 2 and run.stderr.strip().splitlines() == [
+        "uwmr-verify: $UWMR_CACHE_DIR '~nosuchuser-uwmr/x': Could not determine home directory; give the "
+        "folder's full path"], run.stderr
+    # a relative cache folder is the caller's, whatever folder the design moves to
+    (tmp_path / "elsewhere").mkdir()
+    (tmp_path / "moves.py").write_text(f"import os\nos.chdir({str(tmp_path / 'elsewhere')!r})\n" + GOOD)
+    run = subprocess.run([sys.executable, "-m", "uwmr_symbolic", "moves.py", "--cache-dir", "relc"],
+                         capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert run.returncode == 0 and (tmp_path / "relc").is_dir() and not (tmp_path / "elsewhere" / "relc").exists()
+    # [tool.uwmr-symbolic] designs = [...] is no FILE for --check-certificate
+    run = subprocess.run([sys.executable, "-m", "uwmr_symbolic", "d.py", "--certificate", "d.json", "--no-cache"],
+                         capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert run.returncode == 0, run.stderr
+    (tmp_path / "pyproject.toml").write_text('[tool.uwmr-symbolic]\ndesigns = ["*.py"]\n')
+    run = subprocess.run([sys.executable, "-m", "uwmr_symbolic", "--check-certificate", "d.json"],
+                         capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert run.returncode == 0 and "certificate re-checked" in run.stdout, run.stderr
+    (tmp_path / "twice.py").write_text(GOOD + "g = dict(k1=0.25, k2=0.7, lam=1, Vmax=0.75, Wmax=2.0, Vr_max=0.5, "
+                                              "Wr_max=1.0)\ngains = {1: g, '1': g}\n")
+    line = one_line(run_cli([tmp_path / "twice.py", "--no-cache"], timeout=120), 2)
+    assert line.endswith("two gain scenarios are named '1'; give each its own name")
+

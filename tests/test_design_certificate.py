@@ -258,7 +258,7 @@ def test_cli_writes_and_rechecks_a_certificate(tmp_path):
     assert "P2: proved; 1 kernel theorem(s) re-checked (rests on arb, sympy-core); kernel-checked" in ok.stdout
     # which f was checked, the certified k of P6 (F'(s)/s = 1/(1 + s^2) <= 1) and kf = sup s/(1 + s^2) = 1/2
     head = (f"{out}: certificate re-checked for the f it holds, f = log(e1**2 + e2**2 + 1)/2 (it names the design "
-            f"'Design 1 (Jiang et al.)', file {DESIGN1})")
+            f"'Design 1 (Jiang et al.)', file {str(DESIGN1)!r})")
     assert ok.stdout.splitlines()[0] == head and "  P6: proved (k = 1); 4 kernel" in ok.stdout
     assert "  kf: proved (kf = 1/2); " in ok.stdout
     data = json.loads(out.read_text())

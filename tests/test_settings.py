@@ -4,6 +4,8 @@ when a key is unknown or a value is wrong."""
 import argparse
 import json
 
+import os
+
 import pytest
 
 from uwmr_symbolic import cli, settings
@@ -47,7 +49,7 @@ def test_flags_and_environment_override_the_file(tmp_path, monkeypatch):
     assert args.cache_dir == str(tmp_path / "env")
     args = _args(cache_dir="flag")
     settings.apply(args, 60.0)
-    assert args.cache_dir == "flag"
+    assert args.cache_dir == os.path.abspath("flag")        # (a design file may chdir: red team 28)
 
 
 def test_no_file_means_defaults(tmp_path, monkeypatch):
@@ -57,7 +59,8 @@ def test_no_file_means_defaults(tmp_path, monkeypatch):
         pytest.skip("a pyproject.toml with [tool.uwmr-symbolic] above the temporary folder")
     args = _args()
     assert settings.apply(args, 60.0).source is None
-    assert (args.timeout, args.jobs, args.cache_dir, args.files) == (60.0, None, None, [])
+    from uwmr_symbolic.cache import default_dir
+    assert (args.timeout, args.jobs, args.cache_dir, args.files) == (60.0, None, str(default_dir()), [])
 
 
 @pytest.mark.parametrize("body, message", [

@@ -118,8 +118,11 @@ class _Worker:
         env = dict(os.environ)
         package_parent = str(Path(__file__).resolve().parents[1])
         env["PYTHONPATH"] = os.pathsep.join(p for p in (package_parent, env.get("PYTHONPATH")) if p)
-        self.proc = subprocess.Popen([sys.executable, "-m", "uwmr_symbolic._worker"], stdin=subprocess.PIPE,
-                                     stdout=subprocess.PIPE, env=env)
+        # -P: a design folder's random.py or math.py is not imported in place of Python's own; a session
+        # of its own: Ctrl-C reaches the caller only, which kills the worker (red team 28: a worker still
+        # importing printed a traceback)
+        self.proc = subprocess.Popen([sys.executable, "-P", "-m", "uwmr_symbolic._worker"], stdin=subprocess.PIPE,
+                                     stdout=subprocess.PIPE, env=env, start_new_session=True)
 
     def ask(self, data: bytes, limit: float) -> bytes | None:
         """The answer to one job, or None when the process was killed at `limit`
@@ -137,6 +140,9 @@ class _Worker:
             answer = answers.get(timeout=limit)
         except queue.Empty:
             answer = None
+        except KeyboardInterrupt:
+            self.close()
+            raise
         if answer is None:
             self.close()
         return answer

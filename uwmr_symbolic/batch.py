@@ -41,13 +41,14 @@ PROPERTY_FIELDS, P6_FIELDS = {"verdict", "reason", "witness", "unchecked"}, {"k"
 
 def expand_paths(args: list[str]) -> list[str]:
     """Files from the command line: a glob (when the shell did not expand it)
-    becomes the files it matches, a directory its ``*.py`` files; anything
-    else is kept as given (a missing file is reported by the loader).
-    Duplicates are dropped, the order is kept."""
+    becomes the files it matches, a directory its ``*.py`` files (regular
+    files, not hidden: not a sub-folder, a broken link or an editor's
+    ``.#x.py``); anything else is kept as given (a missing file is reported
+    by the loader).  Duplicates are dropped, the order is kept."""
     out: list[str] = []
     for arg in args:
         if os.path.isdir(arg):
-            out.extend(sorted(str(p) for p in Path(arg).glob("*.py")))
+            out.extend(sorted(str(p) for p in Path(arg).glob("*.py") if p.is_file() and not p.name.startswith(".")))
         elif not os.path.exists(arg) and GLOB_CHARS & set(arg):
             matches = sorted(p for p in glob.glob(arg, recursive=True) if os.path.isfile(p))
             out.extend(matches or [arg])
@@ -202,6 +203,11 @@ def _child(conn, path, timeout, cache_dir, use_cache, kernel_only):
         result = _internal_error(path, exc)
     conn.send(result)
     conn.close()
+    # not a normal exit, which waits for every thread the design file started (red team 28: a
+    # thread sleeping 1000 s held the whole batch); the result is sent, nothing else is left to do
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(0)
 
 
 def check_files(paths: list[str], timeout: float, use_cache: bool = True, jobs: int | None = None,

@@ -34,6 +34,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import re
 import sys
 import tempfile
 from functools import lru_cache
@@ -47,6 +48,7 @@ from . import __version__
 CACHE_FORMAT = 2
 #: Entries kept (least recently used ones beyond this are evicted).
 MAX_ENTRIES = 2000
+_ENTRY_NAME = re.compile(r"[0-9a-f]{64}\.json")
 PACKAGE_DIR = Path(__file__).resolve().parent
 
 
@@ -163,9 +165,13 @@ class ResultCache:
         return entry["result"]
 
     def evict(self) -> int:
-        """Delete the least recently used entries beyond `max_entries`; how many."""
+        """Delete the least recently used entries beyond `max_entries`; how many.
+        Only the cache's own entries (named by a sha256, `path_for`): a folder
+        given as the cache may hold other files (red team 28: a user's
+        data1.json was deleted)."""
         try:
-            entries = sorted(self.directory.glob("*.json"), key=lambda p: p.stat().st_mtime_ns, reverse=True)
+            entries = sorted((p for p in self.directory.glob("*.json") if _ENTRY_NAME.fullmatch(p.name)),
+                             key=lambda p: p.stat().st_mtime_ns, reverse=True)
         except OSError:
             return 0
         removed = 0

@@ -6,11 +6,13 @@ import contextlib
 import functools
 import json
 import os
+import signal
 import sys
+import threading
 from pathlib import Path
 
 from . import __version__, settings
-from .batch import Progress, check_files, expand_paths, worst_status
+from .batch import Progress, check_files, expand_paths, hard_limit, worst_status
 from .cache import ResultCache
 from .files import write_text_atomic
 from .report import (render_github, render_json, render_junit, render_markdown_summary, render_summary,
@@ -36,8 +38,10 @@ certificates:
 exit status:
   0  every property P1-P8 proved, proof replay ok, every gain scenario within bound (10)
   1  a property refuted (with a witness) or a gain check fails
-  2  unusable input: the design file is missing, broken or not a valid design
+  2  unusable input: the design file is missing, broken or not a valid design; an
+     option or setting that cannot be used; an output that cannot be written
   3  inconclusive: some verdict is unknown, nothing refuted
+  130  interrupted (Ctrl-C); the files written before it are complete
   141  the output pipe closed early (`uwmr-verify ... | head`), as for other tools
 With several files the status is the worst one (2 > 1 > 3 > 0).
 
@@ -149,17 +153,35 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def check_generated(args) -> int:
-    """`--check-generated`: 0 when generated/ is up to date, 1 when stale
-    (UsageError when there is no design file or one is unusable)."""
+    """`--check-generated`: 0 when generated/ is up to date, 1 when stale, 3
+    when it did not finish in time (UsageError when there is no design file
+    or one is unusable).  The designs run in a child process, as in a check:
+    one that calls os._exit or ignores SIGALRM ends or outlives the child,
+    never the command (red team 28: os._exit(0) read as "up to date")."""
     from .codegen import CodegenRefused
     from .codegen.staleness import stale_files
     designs = [Path(p) for p in expand_paths(args.files)] if args.files else sorted(Path("designs").glob("*.py"))
     if not designs:
         raise UsageError("--check-generated found no design files (run it from the repository root or name them)")
-    try:
-        problems = stale_files(designs, Path("generated"), orphans=not args.files)    # named files: only theirs
-    except CodegenRefused as exc:           # (only an unusable design: stale_files generates with force)
-        raise UsageError(f"--check-generated: {exc.path}: {'; '.join(exc.reasons)}") from None
+
+    def stale():
+        try:
+            return "stale", stale_files(designs, Path("generated"), orphans=not args.files)   # named: only theirs
+        except CodegenRefused as exc:       # (only an unusable design: stale_files generates with force)
+            return "unusable", f"{exc.path}: {'; '.join(exc.reasons)}"
+    seconds = len(designs) * hard_limit(args.timeout)
+    kind, answer = in_fork(stale, seconds)
+    if kind == "late":
+        print(f"uwmr-verify: --check-generated did not finish within {seconds:g} s (--timeout {args.timeout:g} s "
+              f"per design, with its grace)", file=sys.stderr)
+        return 3
+    if kind != "ok":
+        what = f"the process exited with code {answer}" if kind == "died" else answer
+        raise UsageError(f"--check-generated: a design file ended the check ({what}); run each design "
+                         f"file with `uwmr-verify FILE` to see which")
+    if answer[0] == "unusable":
+        raise UsageError(f"--check-generated: {answer[1]}")
+    problems = answer[1]
     for line in problems:
         print(line)
     if not problems:
@@ -454,8 +476,11 @@ def _check_one_certificate(name: str, timeout: float = DEFAULT_TIMEOUT) -> tuple
     from .design_certificate import CertificateError, check, parse, read_json
     from .timeouts import TimeLimit, time_limit
     from .verdict import PROPERTIES
+    path = Path(name)
+    if path.exists() and not path.is_file():     # a FIFO blocks, /dev/zero never ends (red team 28)
+        return 2, "", f"{name}: not a regular file: give the certificate's .json file"
     try:
-        text = Path(name).read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         return 2, "", f"{name}: cannot read the certificate: {exc}"
     try:
@@ -478,7 +503,7 @@ def _check_one_certificate(name: str, timeout: float = DEFAULT_TIMEOUT) -> tuple
     except ValueError:                          # an integer beyond sys.get_int_max_str_digits
         f = "(a formula with a number too long to print)"
     head = (f"{name}: certificate re-checked for the f it holds, f = {f} "
-            f"(it names the design {design.get('name')!r}, file {design.get('file')})")
+            f"(it names the design {design.get('name')!r}, file {design.get('file')!r})")
     return 0, "\n".join([head, *("  " + line for line in lines)]), ""
 
 
@@ -488,11 +513,13 @@ def check_certificates(files, jobs: int | None = None, timeout: float = DEFAULT_
     file whose check outlives `timeout` seconds does not check."""
     import multiprocessing
 
-    from .timeouts import quiet_on_interrupt
     jobs = max(1, min(jobs or os.cpu_count() or 1, len(files)))
     one = functools.partial(_check_one_certificate, timeout=timeout)
     if jobs > 1 and "fork" in multiprocessing.get_all_start_methods():
-        with multiprocessing.get_context("fork").Pool(jobs, initializer=quiet_on_interrupt) as pool:
+        # the workers ignore Ctrl-C and the pool's exit terminates them: a worker that ended itself
+        # at Ctrl-C could hold the pool's task lock, and the pool's exit then waited forever (red team 28)
+        with multiprocessing.get_context("fork").Pool(jobs, initializer=signal.signal,
+                                                      initargs=(signal.SIGINT, signal.SIG_IGN)) as pool:
             results = pool.map(one, files, chunksize=1)
     else:
         results = [one(name) for name in files]
@@ -599,6 +626,11 @@ def _main(args) -> int:
     paths = expand_paths(args.files)
     if not paths:
         raise UsageError(f"no design files in {', '.join(args.files)} (a folder is read for its *.py files)")
+    inputs = {Path(p).resolve() for p in paths}
+    for flag, target in (("--certificate", args.certificate if len(paths) == 1 else None),
+                         ("--junit-xml", args.junit_xml)):
+        if target and Path(target).resolve() in inputs:     # (red team 28: the design became the JSON)
+            raise UsageError(f"{flag} {target} is a design file to be checked; write the {flag[2:]} to another file")
     if len(paths) > 1 and (args.codegen is not None or args.certificate):
         stems = {}
         for path in paths:
@@ -681,6 +713,9 @@ def run() -> None:
     if killed by SIGPIPE; Ctrl-C ends it with one line and status 130; an
     output that cannot be written (a full disk, a closed stdout) with one
     line and status 2."""
+    if sys.stdout is None:          # started with stdout closed (`uwmr-verify d.py >&-`): nothing could be reported
+        print("uwmr-verify: cannot write the output: standard output is closed", file=sys.stderr)
+        sys.exit(2)
     try:
         status = main()
         if sys.stdout is not None:
@@ -697,6 +732,12 @@ def run() -> None:
             os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         print(f"uwmr-verify: cannot write the output: {exc.strerror or exc}", file=sys.stderr)
         status = 2
+    if any(t is not threading.main_thread() and not t.daemon and t.is_alive() for t in threading.enumerate()):
+        # a thread that a --reference file started would hold the exit (red team 28): the work is done
+        with contextlib.suppress(OSError, ValueError):
+            sys.stdout.flush()
+            sys.stderr.flush()
+        os._exit(status)
     sys.exit(status)
 
 

@@ -12,9 +12,11 @@ import decimal
 import fractions
 import math
 import numbers
+import os
 import re
 import runpy
 import sys
+import tokenize
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -25,7 +27,7 @@ from sympy.core.function import AppliedUndef
 
 from . import e1 as E1, e2 as E2
 from .design_certificate import at_point
-from .timeouts import attempt
+from .timeouts import TimeLimit, attempt
 
 GAIN_KEYS = ("k1", "k2", "lam", "Vmax", "Wmax", "Vr_max", "Wr_max")
 #: |Wr|max = 0 is a straight-line reference: (3) bounds |Wr(t)| by it and
@@ -151,24 +153,30 @@ def _run_file(path: Path) -> tuple[dict, str]:
     if path.exists() and not path.is_file() and not path.is_dir():
         raise DesignError("not a regular file (a FIFO or a device): give the design's .py file")
     try:
-        source = path.read_text()
+        with tokenize.open(path) as fh:     # as Python reads a source: a BOM, a coding line (red team 28)
+            source = fh.read()
     except FileNotFoundError:
         raise DesignError("no such file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise DesignError(f"cannot read the file ({exc.__class__.__name__}: {exc})") from None
+    except (OSError, UnicodeDecodeError, SyntaxError) as exc:     # (SyntaxError: an unknown coding)
+        raise DesignError(f"cannot read the file ({exc.__class__.__name__}: {_text(exc)}); save it as "
+                          f"UTF-8") from None
     try:
         compile(source, str(path), "exec")
     except SyntaxError as exc:
         raise DesignError(f"syntax error at line {exc.lineno}: {exc.msg}") from None
     try:
         # a print() in a design file must not corrupt JSON on stdout
-        with contextlib.redirect_stdout(sys.stderr), _importable(path.parent):
+        with contextlib.redirect_stdout(sys.stderr), _standard_fds_kept(), _importable(path.parent):
             namespace = runpy.run_path(str(path), run_name="__uwmr_design__")
     except SystemExit as exc:
         raise DesignError(f"the file called exit({exc.code}) while loading") from None
     except KeyboardInterrupt:
         raise DesignError("the file raised KeyboardInterrupt while loading") from None
-    except Exception as exc:  # any failure of the user's code is unusable input
+    except TimeLimit:
+        raise
+    except BaseException as exc:  # any failure of the user's code is unusable input
+        if not isinstance(exc, Exception):      # GeneratorExit, its own BaseException class (red team 28)
+            raise DesignError(f"raised {exc.__class__.__name__} while loading: {_text(exc)}".rstrip(": ")) from None
         tb = exc.__traceback__
         line = None
         while tb is not None:
@@ -180,8 +188,44 @@ def _run_file(path: Path) -> tuple[dict, str]:
         hint = mistake_hint(exc, text)
         if hint:
             raise DesignError(f"at line {line}: {hint}" if line else hint) from None
-        raise DesignError(f"raised {exc.__class__.__name__}{where}: {exc}") from None
+        raise DesignError(f"raised {exc.__class__.__name__}{where}: {_text(exc)}".rstrip(": ")) from None
     return namespace, source
+
+
+def _text(exc: BaseException) -> str:
+    """The exception's text on one line (its __str__ may itself raise)."""
+    try:
+        return " ".join(str(exc).split())
+    except Exception:  # noqa: BLE001 - the user's own __str__
+        return "(its message cannot be printed)"
+
+
+@contextlib.contextmanager
+def _standard_fds_kept():
+    """While a design file runs, file descriptor 1 goes to stderr and 0 reads
+    /dev/null: what its os.write(1, ...), os.system("echo") or stdin.read()
+    does cannot reach the report on stdout or the code generator's worker,
+    whose messages use 0 and 1 (red team 28)."""
+    for stream in (sys.stdout, sys.stderr, sys.__stdout__):
+        with contextlib.suppress(AttributeError, OSError, ValueError):
+            stream.flush()
+    saved = []
+    try:
+        for fd, target in ((0, os.open(os.devnull, os.O_RDONLY)), (1, 2)):
+            saved.append((fd, os.dup(fd)))
+            os.dup2(target, fd)
+            if target != 2:
+                os.close(target)
+    except OSError:             # (a descriptor closed from the start: nothing to keep apart)
+        pass
+    try:
+        yield
+    finally:
+        with contextlib.suppress(AttributeError, OSError, ValueError):
+            sys.__stdout__.flush()
+        for fd, copy in reversed(saved):
+            os.dup2(copy, fd)
+            os.close(copy)
 
 
 @contextlib.contextmanager
@@ -211,7 +255,7 @@ def mistake_hint(exc: Exception, line_text: str = "") -> str | None:
     """One line naming the fix for the usual mistakes of a design file (numpy
     or math functions applied to SymPy expressions, ``^`` for a power), or
     None."""
-    message = str(exc)
+    message = _text(exc)
     calls = _FUNCTION_CALL.findall(line_text)
     if isinstance(exc, TypeError) and "unsupported operand type(s) for ^" in message:
         return "`^` is exclusive-or in Python; write powers with ** (e1**2, not e1^2)"
@@ -320,6 +364,8 @@ def _parse_gains(raw) -> dict:
     for scenario, entries in raw.items():
         if not str(scenario).isprintable():     # (a newline would start a line of its own in every report)
             raise DesignError(f"gain scenario {str(scenario)!r}: a scenario name is one line of printable text")
+        if str(scenario) in out:                # 1 and "1": one name in every report (red team 28)
+            raise DesignError(f"two gain scenarios are named {str(scenario)!r}; give each its own name")
         if not isinstance(entries, dict):
             raise DesignError(f"gain scenario {scenario!r} must be a dict with {', '.join(GAIN_KEYS)}")
         if "lambda" in entries:      # the paper's name, accepted for lam

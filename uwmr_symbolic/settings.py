@@ -114,9 +114,19 @@ def load(start: Path | str | None = None) -> Settings:
         value = table["cache-dir"]
         if not isinstance(value, str) or not value:
             raise SettingsError(f"{where} cache-dir must be a folder name, not {value!r}")
-        folder = Path(value).expanduser()
-        out.cache_dir = str(folder if folder.is_absolute() else base / folder)
+        folder = Path(_folder(value, f"{where} cache-dir", relative_to=base))
+        out.cache_dir = str(folder)
     return out
+
+
+def _folder(value: str, what: str, relative_to=None) -> str:
+    """A folder's absolute path, ~ expanded (the same folder whatever the
+    working directory is when it is used: a design file may chdir)."""
+    try:
+        folder = Path(value).expanduser()
+    except RuntimeError as exc:         # ~someone who does not exist, or no home folder
+        raise SettingsError(f"{what} {value!r}: {str(exc).rstrip('.')}; give the folder's full path") from None
+    return os.path.abspath(folder if folder.is_absolute() or relative_to is None else relative_to / folder)
 
 
 def apply(args, default_timeout: float) -> Settings:
@@ -129,7 +139,17 @@ def apply(args, default_timeout: float) -> Settings:
     if args.jobs is None:
         args.jobs = settings.jobs
     if args.cache_dir is None:
-        args.cache_dir = os.environ.get("UWMR_CACHE_DIR") or settings.cache_dir
-    if not args.files and settings.designs:
-        args.files = list(settings.designs)
+        env = os.environ.get("UWMR_CACHE_DIR")
+        args.cache_dir = _folder(env, "$UWMR_CACHE_DIR") if env else settings.cache_dir
+    elif args.cache_dir:
+        args.cache_dir = _folder(args.cache_dir, "--cache-dir")
+    if args.cache_dir is None and not getattr(args, "no_cache", False):
+        from .cache import default_dir
+        try:
+            args.cache_dir = str(default_dir())
+        except RuntimeError as exc:     # $XDG_CACHE_HOME of ~nobody, or no home folder (red team 28)
+            raise SettingsError(f"no cache folder: {str(exc).rstrip('.')}; set --cache-dir, $UWMR_CACHE_DIR or "
+                                f"--no-cache") from None
+    if not args.files and settings.designs and not getattr(args, "check_certificate", None):
+        args.files = list(settings.designs)     # (--check-certificate takes no design file: red team 28)
     return settings

@@ -23,7 +23,8 @@ def stale_files(designs, generated_root, orphans: bool = True) -> list[str]:
         for name, text in sorted(files.items()):
             target = folder / name
             if not target.exists():
-                problems.append(f"{target}: missing (generate it with `make generate`)")
+                problems.append(f"{target}: missing (write it with `python -m uwmr_symbolic.codegen --force "
+                                f"--out {root} {path}`)")
             elif target.read_text(encoding="utf-8") != text:
                 problems.append(f"{target}: stale, differs from what {path} generates now")
         if folder.is_dir():
