@@ -58,8 +58,11 @@ def expand_paths(args: list[str]) -> list[str]:
 
 
 def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool = True,
-               kernel_only: bool = True) -> dict:
-    """Verify one file, or serve its result from the cache."""
+               kernel_only: bool = True, want_report: bool = False) -> dict:
+    """Verify one file, or serve its result from the cache.  `want_report`
+    (--codegen, --simulate: they need the verifier's whole `Report`, which
+    an entry does not hold): verify it, store the result, and return the
+    Report as well, under "report", so that the command verifies it once."""
     start = time.monotonic()
     loaded = load_with_limit(path, timeout, start)
     if isinstance(loaded, Report):          # unusable, or loading timed out
@@ -67,7 +70,7 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
     design = loaded
     cache = ResultCache(cache_dir) if use_cache else None
     key = (design_key(design) | ({} if kernel_only else {"trust_search": True})) if use_cache else None
-    if cache is not None:
+    if cache is not None and not want_report:
         hit = cache.get(key, timeout)     # not if computed with less time while a limit expired
         hit = served(hit, design, kernel_only) if hit is not None else None
         if hit is not None:
@@ -77,7 +80,7 @@ def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool
     result = {**to_dict(report), "certificate": report.certificate}
     if cache is not None and report.certificate is not None and not {"error", "stopped", "failed", "refuted_by"} & set(report.kernel):
         cache.put(key, result, timeout=timeout, timed_out=report.timed_out)
-    return {**result, "cached": False}
+    return {**result, "cached": False} | ({"report": report} if want_report else {})
 
 
 def served(hit: dict, design, kernel_only: bool = True) -> dict | None:
@@ -195,10 +198,10 @@ def _timed_out_result(path: str, timeout: float) -> dict:
     return to_dict(Report(Path(path), None, props, None, seconds=hard_limit(timeout), timed_out=True))
 
 
-def _child(conn, path, timeout, cache_dir, use_cache, kernel_only):
+def _child(conn, path, timeout, cache_dir, use_cache, kernel_only, want_report):
     quiet_on_interrupt()
     try:
-        result = check_file(path, timeout, cache_dir, use_cache, kernel_only)
+        result = check_file(path, timeout, cache_dir, use_cache, kernel_only, want_report)
     except Exception as exc:  # noqa: BLE001 - a verifier bug must not hide the other files
         result = _internal_error(path, exc)
     conn.send(result)
@@ -212,11 +215,12 @@ def _child(conn, path, timeout, cache_dir, use_cache, kernel_only):
 
 def check_files(paths: list[str], timeout: float, use_cache: bool = True, jobs: int | None = None,
                 cache_dir: str | None = None, progress: Progress | None = None,
-                kernel_only: bool = True) -> list[dict]:
+                kernel_only: bool = True, want_reports: bool = False) -> list[dict]:
     """Results for `paths`, in order.  Each file is checked in a process of
     its own (forked: SymPy and the verifier are already imported), at most
     `jobs` at a time; a process that outlives `hard_limit(timeout)` is killed
-    and its file reported as timed out, one that dies is reported unusable."""
+    and its file reported as timed out, one that dies is reported unusable.
+    `want_reports`: as `check_file`'s `want_report`."""
     jobs = max(1, min(jobs or os.cpu_count() or 1, len(paths) or 1))
     cache_dir = str(ResultCache(cache_dir).directory) if use_cache else None
     progress = progress or Progress(0)
@@ -231,7 +235,8 @@ def check_files(paths: list[str], timeout: float, use_cache: bool = True, jobs: 
         while pending and len(active) < jobs:
             i = pending.pop(0)
             recv, send = ctx.Pipe(duplex=False)
-            proc = ctx.Process(target=_child, args=(send, paths[i], timeout, cache_dir, use_cache, kernel_only))
+            proc = ctx.Process(target=_child, args=(send, paths[i], timeout, cache_dir, use_cache, kernel_only,
+                                                    want_reports))
             proc.start()
             send.close()
             active[recv] = (i, proc, time.monotonic() + hard_limit(timeout))

@@ -344,13 +344,14 @@ def _read_reference(path, name):
 
 
 class Reports:
-    """The verifier's `Report` of each design file, computed at most once per
-    command (with the command's --timeout) for --simulate and --codegen,
-    which need the report object that the batch workers do not return."""
+    """The verifier's `Report` of each design file for --simulate and
+    --codegen: the one the batch's process sent back with its result (it
+    verified the file once, `check_files(want_reports=True)`), else (that
+    process was killed) computed here, with the command's --timeout."""
 
-    def __init__(self, timeout: float):
+    def __init__(self, timeout: float, results=()):
         self.timeout = timeout
-        self._reports = {}
+        self._reports = {str(d["design"]): d.pop("report") for d in results if "report" in d}
 
     def __call__(self, path):
         from .api import verify_file
@@ -647,9 +648,13 @@ def _main(args) -> int:
     progress = Progress(len(paths))
     try:
         results = check_files(paths, args.timeout, use_cache=not args.no_cache, jobs=args.jobs,
-                              cache_dir=args.cache_dir, progress=progress, kernel_only=args.kernel_only)
+                              cache_dir=args.cache_dir, progress=progress, kernel_only=args.kernel_only,
+                              want_reports=(simulate or args.codegen is not None) and args.kernel_only)
     finally:
         progress.close()
+    # (with --trust-search the batch's reports count the search's verdicts: code is generated from
+    # the kernel's only, so `Reports` verifies again, kernel only)
+    reports = Reports(args.timeout, results)
     scenarios = {name for d in results for name in (d.get("gains") or {})}
     unused = sorted(set(refs) - scenarios)
     if unused:
@@ -661,7 +666,6 @@ def _main(args) -> int:
         if d.get("error") is not None:
             print(f"{shown(d['design'])}: {d['error']}", file=sys.stderr)
     sim_status = 0
-    reports = Reports(args.timeout)
     if simulate:
         sim_status = run_simulations(results, args, refs, reports)
     good = [d for d in results if d.get("error") is None]
