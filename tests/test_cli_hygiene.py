@@ -333,3 +333,15 @@ def test_cache_folders_settings_and_scenario_names(tmp_path):
     line = one_line(run_cli([tmp_path / "twice.py", "--no-cache"], timeout=120), 2)
     assert line.endswith("two gain scenarios are named '1'; give each its own name")
 
+
+
+def test_a_reference_file_s_prints_do_not_reach_stdout(tmp_path):
+    """Red team 28: a --reference file's print() came before the JSON report."""
+    (tmp_path / "d.py").write_text(CIRCLE_ONLY)
+    (tmp_path / "ref.py").write_text("import numpy as np\nprint('loading')\nduration = 20.0\ndef pose(t):\n"
+                                     "    print('pose called')\n    return (0.5*np.cos(0.2*t), 0.5*np.sin(0.2*t), "
+                                     "0.2*t + np.pi/2, 0.1 + 0*t, 0.2 + 0*t)\n")
+    run = run_cli([tmp_path / "d.py", "--no-cache", "--simulate", "--reference", f"circle={tmp_path / 'ref.py'}",
+                   "--format", "json"], timeout=300)
+    assert json.loads(run.stdout)["design"] == str(tmp_path / "d.py"), run.describe()
+    assert "pose called" in run.stderr and "loading" in run.stderr

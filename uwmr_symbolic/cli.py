@@ -308,10 +308,16 @@ def _read_reference(path, name):
     if path.is_dir():
         raise UsageError(f"{path}: is a folder; give a CSV of waypoints or a Python file defining pose(t)")
     if path.suffix != ".csv":
-        ns = runpy.run_path(str(path))
-        if not callable(ns.get("pose")) or "duration" not in ns:
+        with contextlib.redirect_stdout(sys.stderr):    # its prints (red team 28: 224 kB before the JSON)
+            ns = runpy.run_path(str(path))
+        pose = ns.get("pose")
+        if not callable(pose) or "duration" not in ns:
             raise UsageError(f"{path}: define pose(t) -> (xr, yr, thr, vr, wr) and duration")
-        return from_function(ns["pose"], 0.0, float(ns["duration"]), name=name)
+
+        def pose_printing_to_stderr(t):
+            with contextlib.redirect_stdout(sys.stderr):
+                return pose(t)
+        return from_function(pose_printing_to_stderr, 0.0, float(ns["duration"]), name=name)
     if (size := path.stat().st_size) > MAX_WAYPOINT_BYTES:       # (98 MB of text took 2.8 GB to read)
         raise UsageError(f"{path}: {size / 1e6:.0f} MB of waypoints, and at most "
                          f"{MAX_WAYPOINT_BYTES // 10**6} MB are read; give fewer (the path is a spline through them)")
