@@ -54,7 +54,13 @@ def expand_paths(args: list[str]) -> list[str]:
             out.extend(matches or [arg])
         else:
             out.append(arg)
-    return list(dict.fromkeys(out))
+    seen, unique = set(), []
+    for path in out:            # a.py and ./a.py are one file (red team 28)
+        key = os.path.realpath(path)
+        if key not in seen:
+            seen.add(key)
+            unique.append(path)
+    return unique
 
 
 def check_file(path: str, timeout: float, cache_dir: str | None, use_cache: bool = True,

@@ -545,8 +545,14 @@ def write_certificates(paths, results, target) -> int:
     for d in results:
         cert = d.get("certificate")
         if cert is None:
-            print(f"{d['design']}: no certificate written: nothing was decided (see the verdicts)", file=sys.stderr)
+            if d.get("error") is None:      # (an unusable file has its one line already)
+                print(f"{d['design']}: no certificate written: nothing was decided (see the verdicts)",
+                      file=sys.stderr)
             continue
+        if len(paths) > 1 and out.exists() and not out.is_dir():
+            print(f"uwmr-verify: --certificate {out}: with several design files it names a folder, and {out} is a "
+                  f"file", file=sys.stderr)
+            return 2
         dest = out / (Path(d["design"]).stem + ".cert.json") if len(paths) > 1 else out
         try:
             dest.parent.mkdir(parents=True, exist_ok=True)
@@ -706,10 +712,11 @@ def _main(args) -> int:
                 print()
             print(render_summary(results))
     if args.junit_xml:
-        try:
+        try:        # (its folder made, as --certificate's; the error names the file asked for: red team 28)
+            Path(args.junit_xml).parent.mkdir(parents=True, exist_ok=True)
             write_text_atomic(args.junit_xml, render_junit(results) + "\n")
         except OSError as exc:
-            print(f"uwmr-verify: cannot write {args.junit_xml}: {exc}", file=sys.stderr)
+            print(f"uwmr-verify: cannot write {args.junit_xml}: {exc.strerror or exc}", file=sys.stderr)
             return 2
     status = worst_status([*(d["exit_status"] for d in results), sim_status, cert_status])
     if args.codegen is not None:

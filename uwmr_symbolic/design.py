@@ -152,6 +152,9 @@ def _f_line(source: str) -> int:
 def _run_file(path: Path) -> tuple[dict, str]:
     if path.exists() and not path.is_file() and not path.is_dir():
         raise DesignError("not a regular file (a FIFO or a device): give the design's .py file")
+    if path.suffix == ".json":      # (it was run as Python: "name 'true' is not defined")
+        raise DesignError("a JSON file, not a design: re-check a certificate with `uwmr-verify "
+                          "--check-certificate FILE`")
     try:
         with tokenize.open(path) as fh:     # as Python reads a source: a BOM, a coding line (red team 28)
             source = fh.read()
