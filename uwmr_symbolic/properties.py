@@ -144,14 +144,13 @@ class Analysis:
         pieces = self.profile.pieces
         for left, right in zip(pieces, pieces[1:]):
             b = right.lo
-            at = _at(b)
             lv = one_sided_value(self.derivative(left.expr, k), b, -1)
             rv = one_sided_value(self.derivative(right.expr, k), b, +1)
             name = "F" + "′" * k
             if lv in (sp.oo, -sp.oo) or rv in (sp.oo, -sp.oo):
                 return refuted(f"{name} is unbounded near s = {b} (|e| = {float_of(b):.6g}): left limit "
                                f"{_show(lv)}, right limit {_show(rv)}",
-                               {**at, "left": _show(lv), "right": _show(rv)})
+                               {**_at(b), "left": _show(lv), "right": _show(rv)})
             values = [lv, rv]
             if k == 0:
                 values.append(exact_value(self.profile.at_point[b], S, b))
@@ -162,7 +161,7 @@ class Analysis:
                 return refuted(
                     f"{name} jumps at s = {b} (|e| = {float_of(b):.6g}): left limit {_show(lv)}, right limit "
                     f"{_show(rv)}" + ("" if k else f", value {_show(values[2])}"),
-                    {**at, "left": _show(lv), "right": _show(rv)})
+                    {**_at(b), "left": _show(lv), "right": _show(rv)})
             return unknown(f"cannot compare the one-sided limits of {name} at s = {b}")
         return proved("no jumps at the boundaries")
 

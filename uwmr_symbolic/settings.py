@@ -114,8 +114,7 @@ def load(start: Path | str | None = None) -> Settings:
         value = table["cache-dir"]
         if not isinstance(value, str) or not value:
             raise SettingsError(f"{where} cache-dir must be a folder name, not {value!r}")
-        folder = Path(_folder(value, f"{where} cache-dir", relative_to=base))
-        out.cache_dir = str(folder)
+        out.cache_dir = _folder(value, f"{where} cache-dir", relative_to=base)
     return out
 
 
